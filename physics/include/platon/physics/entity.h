@@ -1,0 +1,56 @@
+// Entities and their instances: plain data, read through World::entity(), changed through World.
+#pragma once
+#include <vector>
+
+#include "platon/physics/convex.h"
+#include "platon/physics/ids.h"
+#include "platon/physics/region.h"
+
+namespace platon::physics {
+
+// One copy of an entity in one map part. While an entity straddles a warp edge it has an instance
+// on each side; instance 0 (the anchor) defines the entity's frame.
+struct Instance {
+  MapPartId part = 0;
+  Vec2 position;           // the entity origin in the part's coordinates
+  Angle frame = 0;         // rotation from the entity frame into this part (0 for the anchor)
+  Rotation rotation;       // rotationOf(frame)
+  // Where a non-anchor instance should be, in Q30 (2^30 per unit): the anchor's position mapped
+  // through the warps. Each sub-move aims at it, so rounding never accumulates into drift.
+  Vec2w idealQ30;
+  std::vector<Vec2> shape; // vertices relative to position: the entity shape turned by angle + frame
+  std::vector<LineIndex> overlapping;  // pierceable lines whose interior this instance overlaps
+  std::vector<LineIndex> blockedWarps; // warps that could not be crossed this frame (act solid)
+  Region region;
+};
+
+// Two instances joined through a warp edge; the pair lives while the entity straddles the edge.
+struct WarpLink {
+  MapPartId fromPart = 0;
+  LineIndex warpLine = 0;  // in fromPart
+  MapPartId toPart = 0;
+  bool fromOverlapping = false;
+  bool toOverlapping = false;
+};
+
+struct Entity {
+  explicit Entity(Convex s) : shape(std::move(s)) {}
+
+  Convex shape;               // as created, unrotated
+  Angle angle = 0;            // rotation of the shape in the entity (anchor) frame
+  Vec2w velocityQ16;          // 1/65536 units per frame, entity frame
+  Vec2w subunitQ16;           // motion below one unit, carried to the next frame
+  int32_t angularVelocity = 0;  // binary-angle units per frame
+  bool gravity = true;        // the anchor part's gravity applies
+  uint64_t userData = 0;
+  std::vector<Instance> instances;
+  std::vector<WarpLink> links;
+
+  const Instance* instanceIn(MapPartId part) const {
+    for (const Instance& i : instances)
+      if (i.part == part) return &i;
+    return nullptr;
+  }
+};
+
+}  // namespace platon::physics

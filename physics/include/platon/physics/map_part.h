@@ -1,0 +1,72 @@
+// A map part: the lines of one face of the solid, in that face's own 2D coordinates.
+#pragma once
+#include <span>
+#include <vector>
+
+#include "platon/physics/angle.h"
+#include "platon/physics/grid.h"
+#include "platon/physics/ids.h"
+
+namespace platon::physics {
+
+class World;
+
+enum class LineKind : uint8_t { Solid, Warp };
+
+// A line's geometry is segments()[index]; this is the rest of it.
+struct Line {
+  uint32_t tag = 0;  // free for rules and scripts: material, trigger id, ...
+  LineKind kind = LineKind::Solid;
+  uint32_t warp = UINT32_MAX;  // index into warps() when kind == Warp
+};
+
+// A warp line p0 -> p1 is the same edge as target t0 -> t1 in another part: crossing it moves the
+// entity there. Convention: a face lies to the left of its warp lines (counter-clockwise order),
+// so the target face lies to the right of t0 -> t1, and its own warp back is t1 -> t0.
+struct Warp {
+  MapPartId target = 0;
+  Segment targetSegment;
+  Angle turn = 0;        // rotation from this part's frame into the target's
+  Rotation rotation;     // rotationOf(turn), cached
+};
+
+class MapPart {
+ public:
+  MapPartId id() const { return id_; }
+
+  // Adds a solid line; returns its index. Throws on zero length, range, or after initialize().
+  LineIndex line(Vec2 p0, Vec2 p1, uint32_t tag = 0);
+  // Adds a warp line to part `target`, where the same edge runs t0 -> t1. The two edges should be
+  // equally long (a solid's edges are); they may differ by rounding, up to 1% or 2 units.
+  LineIndex warp(Vec2 p0, Vec2 p1, MapPartId target, Vec2 t0, Vec2 t1, uint32_t tag = 0);
+  // Gravity in this part's frame, in 1/65536 units per frame per frame.
+  void setGravity(Vec2w gravityQ16) { gravity_ = gravityQ16; }
+  Vec2w gravity() const { return gravity_; }
+
+  // Checks warp targets and builds the grid. Lines cannot be added afterwards.
+  void initialize();
+  bool initialized() const { return initialized_; }
+
+  std::span<const Line> lines() const { return lines_; }
+  std::span<const Segment> segments() const { return segments_; }
+  std::span<const Warp> warps() const { return warps_; }
+  const Grid& grid() const { return grid_; }
+  size_t memoryBytes() const;
+
+ private:
+  friend class World;
+  MapPart(const World& world, MapPartId id) : world_(&world), id_(id) {}
+  void checkOpen(const char* what) const;
+  void checkSegment(Vec2 p0, Vec2 p1, const char* what) const;
+
+  const World* world_;
+  MapPartId id_;
+  bool initialized_ = false;
+  Vec2w gravity_;
+  std::vector<Line> lines_;
+  std::vector<Segment> segments_;  // parallel to lines_, packed for the sweep loops
+  std::vector<Warp> warps_;
+  Grid grid_;
+};
+
+}  // namespace platon::physics

@@ -1,0 +1,57 @@
+// Rules: what happens on contact. The world asks them; it never asks a global.
+//
+// Callbacks run inside World::solve at a consistent state. They may read the world and change an
+// entity's velocity; structural changes (create, destroy, insert, erase, rules) throw Error there.
+// A callback may throw (a Lua binding turns a script error into a C++ exception): the world
+// finishes the frame with default responses, stays consistent, and rethrows the first error from
+// solve().
+#pragma once
+#include "platon/physics/fraction.h"
+#include "platon/physics/ids.h"
+#include "platon/physics/map_part.h"
+#include "platon/physics/sweep.h"
+
+namespace platon::physics {
+
+inline constexpr LineIndex kWorldBoundLine = UINT32_MAX;  // the edge of the coordinate range
+
+struct LineRef {
+  MapPartId part = 0;
+  LineIndex index = 0;  // kWorldBoundLine for the world's edge
+  uint32_t tag = 0;
+  LineKind kind = LineKind::Solid;
+};
+
+struct Contact {
+  EntityId entity;
+  MapPartId part = 0;     // the map part of the instance that touched
+  LineRef line;
+  Fraction fraction;      // of the sub-move (for solid lines) when the contact began or ended
+  Vec2w normal;           // from the line towards the entity, in the part's frame, not normalized
+  ContactPoints points;   // in the part's coordinates
+};
+
+// What a solid contact does to the motion. Defaults: slide along the line and lose the velocity
+// component that points into it.
+struct ContactResponse {
+  bool slide = true;                  // false: the rest of this frame's motion is dropped
+  bool removeNormalVelocity = true;   // false: keep the velocity as the callback left it
+};
+
+class Rules {
+ public:
+  virtual ~Rules() = default;
+  // Whether `entity` passes through `line`. Asked once when the line comes near an instance, and
+  // again after setRules(); the answer must not change while they overlap. Default: warps pierce.
+  virtual bool pierce(EntityId entity, const LineRef& line) { (void)entity; return line.kind == LineKind::Warp; }
+  // Pierceable lines: the interior of an instance starts, keeps (once per frame), stops overlapping.
+  virtual void beginContact(const Contact&) {}
+  virtual void overContact(const Contact&) {}
+  virtual void endContact(const Contact&) {}
+  // Solid lines: a moving instance reached the line.
+  virtual void contact(const Contact&, ContactResponse&) {}
+  // Solid lines: a rotation was stopped by the line.
+  virtual void touchContact(const Contact&) {}
+};
+
+}  // namespace platon::physics

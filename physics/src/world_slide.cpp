@@ -1,0 +1,315 @@
+// The frame step of one entity: gravity, rotation, then the slide: sweep every instance, move all
+// of them to the earliest contact, project the rest of the motion along the line, repeat.
+#include <algorithm>
+#include <cmath>
+
+#include "platon/physics/world.h"
+
+namespace platon::physics {
+namespace {
+
+constexpr int64_t kQ16 = 1 << 16;
+
+std::vector<Vec2> worldVertices(const Instance& inst) {
+  std::vector<Vec2> out;
+  out.reserve(inst.shape.size());
+  for (const Vec2 v : inst.shape) out.push_back({inst.position.x + v.x, inst.position.y + v.y});
+  return out;
+}
+
+// t * m rounded to whole units. With `keep`, each component rounds the way that keeps the polygon
+// on the outer side of that axis (so the contact that stopped us is touched, never crossed);
+// otherwise towards the start of the move.
+Vec2w roundedMove(Vec2w m, Fraction t, const Constraint* keep) {
+  if (t == Fraction::one()) return m;
+  auto one = [&](int64_t mk, int64_t ck) {
+    const i128 q = i128{t.num} * mk;
+    const bool down = keep && ck != 0 ? ck > 0 : mk >= 0;
+    return static_cast<int64_t>(down ? floorDiv(q, t.den) : ceilDiv(q, t.den));
+  };
+  return {one(m.x, keep ? keep->c.x : 0), one(m.y, keep ? keep->c.y : 0)};
+}
+
+// Removes the part of v that points into the surface with normal n, rounding so that what is left
+// never points into it (dot(result, n) >= 0).
+Vec2w removeInto(Vec2w v, Vec2w n) {
+  const i128 vn = dot128(v, n);
+  if (vn >= 0) return v;
+  const i128 nn = dot128(n, n);
+  auto one = [&](int64_t vk, int64_t nk) -> int64_t {
+    if (nk == 0) return vk;
+    const i128 q = vn * nk;
+    return static_cast<int64_t>(vk - (nk > 0 ? floorDiv(q, nn) : ceilDiv(q, nn)));
+  };
+  return {one(v.x, n.x), one(v.y, n.y)};
+}
+
+// Scales a direction down (keeping its sign pattern) so its components fit in 31 bits.
+Vec2w shortDirection(Vec2w n) {
+  while (n.x > (int64_t{1} << 30) || n.x < -(int64_t{1} << 30) || n.y > (int64_t{1} << 30) ||
+         n.y < -(int64_t{1} << 30)) {
+    n.x /= 2;
+    n.y /= 2;
+  }
+  return n;
+}
+
+// Constraints that keep every vertex inside the coordinate range, in the sweep's form.
+void boundConstraints(const std::vector<Vec2>& verts, Constraint out[4]) {
+  int64_t x0 = INT64_MAX, x1 = INT64_MIN, y0 = INT64_MAX, y1 = INT64_MIN;
+  for (const Vec2 v : verts) {
+    x0 = std::min<int64_t>(x0, v.x), x1 = std::max<int64_t>(x1, v.x);
+    y0 = std::min<int64_t>(y0, v.y), y1 = std::max<int64_t>(y1, v.y);
+  }
+  out[0] = {kCoordLimit - x1, {1, 0}};
+  out[1] = {x0 + kCoordLimit, {-1, 0}};
+  out[2] = {kCoordLimit - y1, {0, 1}};
+  out[3] = {y0 + kCoordLimit, {0, -1}};
+}
+
+enum class HitKind { None, Solid, Bound, Warp };
+
+struct Hit {
+  HitKind kind = HitKind::None;
+  Fraction t = Fraction::one();
+  size_t instance = 0;
+  LineIndex line = 0;
+  Sweep sweep;
+  Constraint axis;
+
+  // Earlier wins; at equal times a solid contact wins over a warp so walls at edges hold.
+  bool improvedBy(Fraction when, HitKind kind2) const {
+    if (kind == HitKind::None) return when < Fraction::one();
+    return when < t || (when == t && kind == HitKind::Warp && kind2 != HitKind::Warp);
+  }
+};
+
+}  // namespace
+
+void World::stepEntity(EntityId id, Entity& e) {
+  for (Instance& inst : e.instances) inst.blockedWarps.clear();
+  if (e.angularVelocity != 0) rotateBy(id, e, e.angularVelocity);
+  if (e.instances.empty()) return;
+  if (e.gravity) {
+    const Vec2w g = mapPart(e.instances[0].part).gravity();
+    const int64_t limit = int64_t{kMaxMove} * kQ16;
+    e.velocityQ16.x = std::clamp(e.velocityQ16.x + g.x, -limit, limit);
+    e.velocityQ16.y = std::clamp(e.velocityQ16.y + g.y, -limit, limit);
+  }
+  // Whole units this frame; the remainder below one unit waits for the next frame.
+  const Vec2w acc = e.subunitQ16 + e.velocityQ16;
+  const Vec2w move{acc.x >> 16, acc.y >> 16};
+  e.subunitQ16 = {acc.x - move.x * kQ16, acc.y - move.y * kQ16};
+  slide(id, e, move);
+}
+
+void World::slide(EntityId id, Entity& e, Vec2w motion) {
+  std::vector<Vec2w> normals;  // this frame's contact normals, entity frame
+  std::vector<std::vector<Vec2>> verts;
+  std::vector<Vec2w> moves, steps;
+  for (int iteration = 0; iteration < kMaxSubMoves && !e.instances.empty(); ++iteration) {
+    createOverlappedWarps(id, e);
+    const size_t n = e.instances.size();
+    if (motion == Vec2w{}) {
+      bool idle = true;  // non-anchor instances may still owe a correction towards their ideal
+      for (size_t i = 1; i < n; ++i) {
+        const Instance& inst = e.instances[i];
+        const Vec2 target{static_cast<int32_t>(roundDiv(inst.idealQ30.x, i128{1} << 30)),
+                          static_cast<int32_t>(roundDiv(inst.idealQ30.y, i128{1} << 30))};
+        idle = idle && target == inst.position;
+      }
+      if (idle) break;
+    }
+    ++report_.subMoves;
+    // 1. Each instance's motion: the anchor's own; the others aim at their ideal position.
+    verts.resize(n);
+    moves.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+      Instance& inst = e.instances[i];
+      verts[i] = worldVertices(inst);
+      if (i == 0) {
+        moves[i] = motion;
+      } else {
+        const Vec2w aim = inst.idealQ30 + rotateQ30(inst.rotation, motion);
+        moves[i] = {static_cast<int64_t>(roundDiv(aim.x, i128{1} << 30)) - inst.position.x,
+                    static_cast<int64_t>(roundDiv(aim.y, i128{1} << 30)) - inst.position.y};
+      }
+      coverMotion(inst, moves[i]);
+    }
+    // 2. The earliest event over all instances: a solid line, the world's edge, or a warp whose
+    //    target has no instance yet (the move stops there so the new instance starts touching).
+    Hit hit;
+    for (size_t i = 0; i < n; ++i) {
+      Instance& inst = e.instances[i];
+      if (moves[i] == Vec2w{}) continue;
+      const MapPart& part = mapPart(inst.part);
+      const auto lines = inst.region.lines();
+      for (size_t k = 0; k < lines.size(); ++k) {
+        const Segment seg = part.segments()[lines[k]];
+        const bool pierce = isPierceable(id, inst, k);
+        const Line& line = part.lines()[lines[k]];
+        if (pierce && (line.kind != LineKind::Warp ||
+                       e.instanceIn(part.warps()[line.warp].target) != nullptr))
+          continue;
+        const Sweep s = sweep(verts[i], moves[i], seg);
+        if (!s.hitsWithinFrame()) continue;
+        const HitKind kind = pierce ? HitKind::Warp : HitKind::Solid;
+        if (hit.improvedBy(s.enter, kind)) hit = {kind, s.enter, i, lines[k], s, s.enterAxis};
+      }
+      Constraint bounds[4];
+      boundConstraints(verts[i], bounds);
+      for (const Constraint& c : bounds) {
+        const int64_t rate = dot(c.c, moves[i]);
+        if (rate <= 0) continue;
+        const Fraction when{c.slack, rate};
+        if (hit.improvedBy(when, HitKind::Bound)) hit = {HitKind::Bound, when, i, kWorldBoundLine, {}, c};
+      }
+    }
+    // 3. Move every instance to that time, rounded to the safe side, and prove each rounded move
+    //    free with an exact sweep; if rounding ever leaves the safe path, pull back and retry.
+    Fraction t = hit.t;
+    bool moved = false;
+    for (int attempt = 0; attempt < 4 && !moved; ++attempt) {
+      if (attempt == 3) t = Fraction::zero();
+      steps.assign(n, Vec2w{});
+      bool ok = true;
+      for (size_t i = 0; i < n && ok; ++i) {
+        const bool keepAxis = attempt == 0 && hit.kind != HitKind::None && i == hit.instance;
+        steps[i] = roundedMove(moves[i], t, keepAxis ? &hit.axis : nullptr);
+        if (steps[i] == Vec2w{}) continue;
+        Instance& inst = e.instances[i];
+        const MapPart& part = mapPart(inst.part);
+        const auto lines = inst.region.lines();
+        Fraction first = Fraction::one();
+        for (size_t k = 0; k < lines.size(); ++k) {
+          if (isPierceable(id, inst, k)) continue;
+          const Sweep s = sweep(verts[i], steps[i], part.segments()[lines[k]]);
+          if (s.hitsWithinFrame() && s.enter < first) first = s.enter;
+        }
+        Constraint bounds[4];
+        boundConstraints(verts[i], bounds);
+        for (const Constraint& c : bounds) {
+          const int64_t rate = dot(c.c, steps[i]);
+          if (rate > 0 && Fraction{c.slack, rate} < first) first = Fraction{c.slack, rate};
+        }
+        if (first < Fraction::one()) {
+          ok = false;
+          ++report_.roundingRetries;
+          // Scale t by the free fraction, kept in 24 fractional bits (rounded down).
+          const i128 tq = floorDiv(i128{t.num} << 24, t.den);
+          t = {static_cast<int64_t>(floorDiv(tq * first.num, first.den)), int64_t{1} << 24};
+        }
+      }
+      moved = ok;
+    }
+    // 4. Commit.
+    for (size_t i = 0; i < n; ++i) {
+      Instance& inst = e.instances[i];
+      inst.position.x += static_cast<int32_t>(steps[i].x);
+      inst.position.y += static_cast<int32_t>(steps[i].y);
+      if (i > 0) inst.idealQ30 = inst.idealQ30 + rotateQ30(inst.rotation, steps[0]);
+    }
+    const bool pulledBack = t < hit.t;
+    motion = motion - steps[0];
+    // 5. Pierce events along the way; a warp reached creates the instance on the other side; the
+    //    warp links then erase instances the entity has left (which may change the anchor).
+    updatePierceState(id, e, &verts, &steps);
+    const MapPartId hitPart = e.instances[hit.instance].part;
+    const std::vector<Vec2> hitVerts = verts[hit.instance];
+    const Vec2w hitMove = moves[hit.instance];
+    if (hit.kind == HitKind::Warp && !pulledBack) {
+      // The exact touching position, in Q30, maps to where the new instance starts.
+      const Vec2 start = e.instances[hit.instance].position;
+      const Vec2w before{start.x - steps[hit.instance].x, start.y - steps[hit.instance].y};
+      const Vec2w exact{(before.x << 30) + static_cast<int64_t>(floorDiv((i128{hit.t.num} * hitMove.x) << 30, hit.t.den)),
+                        (before.y << 30) + static_cast<int64_t>(floorDiv((i128{hit.t.num} * hitMove.y) << 30, hit.t.den))};
+      if (!createWarpInstance(id, e, hit.instance, hit.line, exact))
+        e.instances[hit.instance].blockedWarps.push_back(hit.line);
+    }
+    updateLinks(e, &motion, &normals);
+    if (!moved || pulledBack) {
+      if (!moved) break;
+      continue;
+    }
+    if (hit.kind != HitKind::Solid && hit.kind != HitKind::Bound) {
+      if (hit.kind == HitKind::None) break;
+      continue;
+    }
+    // 6. A solid contact: tell the rules, then slide along the line.
+    ++report_.hits;
+    const Instance* inst = e.instanceIn(hitPart);
+    if (!inst) break;
+    const Vec2w partNormal = hit.axis.c.x == 0 && hit.axis.c.y == 0 ? Vec2w{} : -hit.axis.c;
+    ContactPoints points;
+    if (hit.kind == HitKind::Solid)
+      points = contactPoints(hitVerts, hitMove, mapPart(hitPart).segments()[hit.line], hit.sweep);
+    Contact contact = makeContact(id, *inst, hit.line, hit.t, partNormal, points);
+    ContactResponse response;
+    callRules([&](Rules& r) { r.contact(contact, response); });
+    const Rotation toEntity = inst->rotation;
+    const Vec2w normal = shortDirection(rotateWideInverse(toEntity, shortDirection(partNormal)));
+    if (response.removeNormalVelocity) e.velocityQ16 = removeInto(e.velocityQ16, normal);
+    if (!response.slide) break;
+    motion = removeInto(motion, normal);
+    for (const Vec2w& previous : normals)
+      if (dot128(motion, previous) < 0) motion = {};  // a crease: the two lines hold it in place
+    normals.push_back(normal);
+  }
+}
+
+bool World::rotateBy(EntityId id, Entity& e, int64_t delta) {
+  if (delta == 0 || e.instances.empty()) return true;
+  // Sub-steps small enough that a vertex's arc leaves its chord by under half a unit; each step's
+  // swept area is covered by the hull of the shapes before and after it.
+  int64_t radius2 = 1;
+  for (const Vec2 v : e.shape.vertices()) radius2 = std::max(radius2, dot(wide(v), wide(v)));
+  const double radius = std::sqrt(static_cast<double>(radius2));
+  const double turn = std::fabs(static_cast<double>(delta)) * (2.0 * 3.141592653589793 / 4294967296.0);
+  const int64_t steps = std::clamp<int64_t>(static_cast<int64_t>(std::ceil(turn / (2.0 / std::sqrt(radius)))), 1, 4096);
+  bool blocked = false;
+  for (int64_t j = 1; j <= steps && !blocked; ++j) {
+    const Angle angle = static_cast<Angle>(e.angle + static_cast<Angle>(delta * j / steps - delta * (j - 1) / steps));
+    std::vector<std::vector<Vec2>> shapes;
+    for (size_t i = 0; i < e.instances.size() && !blocked; ++i) {
+      Instance& inst = e.instances[i];
+      std::vector<Vec2> next;
+      try {
+        const Convex c = e.shape.rotated(static_cast<Angle>(angle + inst.frame));
+        next.assign(c.vertices().begin(), c.vertices().end());
+      } catch (const Error&) {
+        blocked = true;
+        break;
+      }
+      std::vector<Vec2> both = inst.shape;
+      both.insert(both.end(), next.begin(), next.end());
+      std::vector<Vec2> hull = convexHull(both);
+      for (Vec2& v : hull) v = {inst.position.x + v.x, inst.position.y + v.y};
+      for (const Vec2 v : hull)
+        if (!inRange(v)) blocked = true;
+      if (blocked) break;
+      const std::vector<Vec2> saved = inst.shape;
+      inst.shape = hull;  // cover the swept hull (relative to an origin at 0)
+      for (Vec2& v : inst.shape) v = {v.x - inst.position.x, v.y - inst.position.y};
+      coverMotion(inst, {});
+      inst.shape = saved;
+      const MapPart& part = mapPart(inst.part);
+      const auto lines = inst.region.lines();
+      for (size_t k = 0; k < lines.size() && !blocked; ++k) {
+        if (isPierceable(id, inst, k)) continue;
+        if (!overlapsInterior(hull, part.segments()[lines[k]])) continue;
+        blocked = true;
+        const Contact c = makeContact(id, inst, lines[k], Fraction::zero(), {}, {});
+        callRules([&](Rules& r) { r.touchContact(c); });
+      }
+      shapes.push_back(std::move(next));
+    }
+    if (blocked) break;
+    for (size_t i = 0; i < e.instances.size(); ++i) e.instances[i].shape = std::move(shapes[i]);
+    e.angle = angle;
+  }
+  updatePierceState(id, e, nullptr, nullptr);
+  updateLinks(e, nullptr, nullptr);
+  return !blocked;
+}
+
+}  // namespace platon::physics
