@@ -43,7 +43,7 @@ uint64_t World::stateHash() const {
       h.add(l.fromPart);
       h.add(l.warpLine);
       h.add(l.toPart);
-      h.add(l.fromOverlapping | (l.toOverlapping << 1));
+      h.add(l.fromState | (l.toState << 2));
     }
   }
   return h.h;

@@ -19,6 +19,10 @@ Vec2w mapThroughWarp(const Warp& w, Segment from, Vec2w pointQ30) {
   return {(int64_t{w.targetSegment.a.x} << 30) + turned.x, (int64_t{w.targetSegment.a.y} << 30) + turned.y};
 }
 
+uint8_t edgeState(const std::vector<Vec2>& verts, Segment s) {
+  return overlapsInterior(verts, s) ? 2 : (touchesOrOverlaps(verts, s) ? 1 : 0);
+}
+
 // Which side of the directed line a (non-overlapping) polygon lies on: > 0 left, <= 0 right.
 int64_t sideOf(const std::vector<Vec2>& verts, Segment s) {
   i128 sum = 0;
@@ -63,14 +67,21 @@ bool World::createWarpInstance(EntityId id, Entity& e, size_t from, LineIndex wa
     if (inward < 0) return static_cast<int64_t>(floorDiv(q, i128{1} << 30));
     return static_cast<int64_t>(roundDiv(q, i128{1} << 30));
   };
-  const int64_t px = roundInward(at.x, d.y), py = roundInward(at.y, -d.x);
-  if (std::abs(px) > kCoordLimit || std::abs(py) > kCoordLimit) return false;
+  int64_t px = roundInward(at.x, d.y), py = roundInward(at.y, -d.x);
   Instance inst;
-  try {
-    inst = makeInstance(e, warp.target, {static_cast<int32_t>(px), static_cast<int32_t>(py)},
-                        static_cast<Angle>(source.frame + warp.turn));
-  } catch (const Error&) {
-    return false;  // out of range, or the shape cannot take that rotation: the edge holds
+  // Rotated shapes are rounded, so the copy may still sit a unit off its edge: step it inwards
+  // until it touches (the edge is pierceable; solid lines are checked below).
+  for (int tries = 0;; ++tries) {
+    if (std::abs(px) > kCoordLimit || std::abs(py) > kCoordLimit) return false;
+    try {
+      inst = makeInstance(e, warp.target, {static_cast<int32_t>(px), static_cast<int32_t>(py)},
+                          static_cast<Angle>(source.frame + warp.turn));
+    } catch (const Error&) {
+      return false;  // out of range, or the shape cannot take that rotation: the edge holds
+    }
+    if (touchesOrOverlaps(worldVertices(inst), warp.targetSegment) || tries == 3) break;
+    px += (d.y > 0) - (d.y < 0);
+    py += (d.x < 0) - (d.x > 0);
   }
   // Follow the anchor through the same mapping.
   const Vec2w sourceIdeal = from == 0 ? Vec2w{int64_t{source.position.x} << 30, int64_t{source.position.y} << 30}
@@ -81,10 +92,11 @@ bool World::createWarpInstance(EntityId id, Entity& e, size_t from, LineIndex wa
   const auto lines = inst.region.lines();
   for (size_t k = 0; k < lines.size(); ++k)
     if (!isPierceable(id, inst, k) && overlapsInterior(verts, target.segments()[lines[k]])) return false;
-  const bool toOverlapping = overlapsInterior(verts, warp.targetSegment);
+  const uint8_t toState = edgeState(verts, warp.targetSegment);
+  const uint8_t fromState = edgeState(worldVertices(source), seg);
   const MapPartId fromPart = source.part;
   e.instances.push_back(std::move(inst));
-  e.links.push_back({fromPart, warpLine, warp.target, true, toOverlapping});
+  e.links.push_back({fromPart, warpLine, warp.target, fromState, toState});
   ++report_.warpsCreated;
   return true;
 }
@@ -192,22 +204,20 @@ void World::updateLinks(Entity& e, Vec2w* motion, std::vector<Vec2w>* normals) {
     const Segment warpSeg = part.segments()[link.warpLine];
     const Segment targetSeg = part.warps()[part.lines()[link.warpLine].warp].targetSegment;
     const std::vector<Vec2> va = worldVertices(*a), vb = worldVertices(*b);
-    const bool aNow = overlapsInterior(va, warpSeg);
-    const bool bNow = overlapsInterior(vb, targetSeg);
+    const uint8_t aNow = edgeState(va, warpSeg);
+    const uint8_t bNow = edgeState(vb, targetSeg);
+    // The pair ends when a side comes off its edge (or both are off): the side the source is on
+    // says which copy stays. The source's face is left of p0 -> p1; the target's is right of t0 -> t1.
     MapPartId eraseAt = 0;
-    bool decided = false;
-    if (link.fromOverlapping && !aNow) {
-      // The source left the edge: outward (right of p0 -> p1) means the entity crossed.
-      decided = true;
+    if (link.fromState > 0 && aNow == 0) {
       eraseAt = sideOf(va, warpSeg) > 0 ? link.toPart : link.fromPart;
-    } else if (link.toOverlapping && !bNow) {
-      // The target copy left its edge: outward there (left of t0 -> t1) means the entity went back.
-      decided = true;
+    } else if (link.toState > 0 && bNow == 0) {
       eraseAt = sideOf(vb, targetSeg) > 0 ? link.toPart : link.fromPart;
-    }
-    if (!decided) {
-      link.fromOverlapping = aNow;
-      link.toOverlapping = bNow;
+    } else if (aNow == 0 && bNow == 0) {
+      eraseAt = sideOf(va, warpSeg) > 0 ? link.toPart : link.fromPart;
+    } else {
+      link.fromState = aNow;
+      link.toState = bNow;
       ++l;
       continue;
     }

@@ -29,8 +29,9 @@ struct WarpLink {
   MapPartId fromPart = 0;
   LineIndex warpLine = 0;  // in fromPart
   MapPartId toPart = 0;
-  bool fromOverlapping = false;
-  bool toOverlapping = false;
+  // Each side's contact with its edge: 0 apart, 1 touching, 2 overlapping.
+  uint8_t fromState = 0;
+  uint8_t toState = 0;
 };
 
 struct Entity {

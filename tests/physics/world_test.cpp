@@ -1,0 +1,170 @@
+// Behaviour of the world step: landing, resting, sliding, corners, wedges, limits.
+#include <gtest/gtest.h>
+
+#include "platon/physics/world.h"
+
+using namespace platon::physics;
+
+namespace {
+
+constexpr int64_t kUnit = 65536;  // one unit per frame in Q16
+
+struct Scene {
+  World world;
+  MapPart* part = nullptr;
+  Scene() { part = &world.createMapPart(1); }
+  EntityId drop(const Convex& shape, Vec2 at, Vec2w velocity = {}) {
+    if (!part->initialized()) part->initialize();
+    const EntityId id = world.createEntity(shape);
+    world.insert(id, 1, at, 0);
+    world.setVelocity(id, velocity);
+    return id;
+  }
+  Vec2 pos(EntityId id) const { return world.entity(id).instances.at(0).position; }
+  void run(int frames) {
+    for (int i = 0; i < frames; ++i) {
+      world.solve();
+      ASSERT_EQ(world.countOverlaps(), 0u) << "frame " << world.frame();
+    }
+  }
+};
+
+}  // namespace
+
+TEST(World, FallsAndLandsExactlyOnFloor) {
+  Scene s;
+  s.part->line({-1000, 0}, {1000, 0});
+  s.part->setGravity({0, -kUnit / 4});
+  const EntityId box = s.drop(Convex::box(10, 10), {0, 500});
+  s.run(200);
+  EXPECT_EQ(s.pos(box), (Vec2{0, 10}));  // bottom edge exactly on the floor: no gap, no skin
+  EXPECT_EQ(s.world.entity(box).velocityQ16.y, 0);
+}
+
+TEST(World, RestsWithoutDriftForAMillionFrames) {
+  Scene s;
+  s.part->line({-1000, 0}, {1000, 0});
+  s.part->line({200, 0}, {-200, 300});  // a slope nearby, not touched
+  s.part->setGravity({0, -kUnit / 3});
+  const EntityId box = s.drop(Convex::box(10, 10), {0, 10});
+  for (int i = 0; i < 1000000; ++i) s.world.solve();
+  EXPECT_EQ(s.pos(box), (Vec2{0, 10}));
+  EXPECT_EQ(s.world.countOverlaps(), 0u);
+}
+
+TEST(World, SlidesAlongThousandCollinearSegmentsWithoutStopping) {
+  Scene s;
+  for (int i = 0; i < 1000; ++i) s.part->line({i * 16, 0}, {(i + 1) * 16, 0});
+  s.part->setGravity({0, -kUnit});
+  const EntityId box = s.drop(Convex::box(8, 8), {8, 8}, {3 * kUnit, 0});
+  for (int frame = 1; frame <= 5000; ++frame) {
+    s.world.solve();
+    ASSERT_EQ(s.pos(box), (Vec2{8 + 3 * frame, 8})) << "stopped at frame " << frame;
+  }
+}
+
+TEST(World, StopsInCornerAndStays) {
+  Scene s;
+  s.part->line({-100, 0}, {100, 0});
+  s.part->line({100, 0}, {100, 200});
+  s.part->setGravity({0, -kUnit / 2});
+  const EntityId box = s.drop(Convex::box(10, 10), {0, 50}, {7 * kUnit, 0});
+  s.run(300);
+  EXPECT_EQ(s.pos(box), (Vec2{90, 10}));
+}
+
+TEST(World, SlidesDownSlopeAndNeverSinks) {
+  Scene s;
+  s.part->line({-2000, 1000}, {2000, -1000});  // slope 1:2
+  s.part->line({-3000, -1000}, {3000, -1000});
+  s.part->setGravity({0, -kUnit / 2});
+  const EntityId ball = s.drop(Convex::regular(12, 20), {-1000, 600});
+  Vec2 last = s.pos(ball);
+  int stuck = 0;
+  for (int i = 0; i < 400; ++i) {
+    s.run(1);
+    const Vec2 p = s.pos(ball);
+    if (p == last && p.y > -900) ++stuck;
+    last = p;
+  }
+  EXPECT_GT(last.x, -1000);  // it went down the slope
+  EXPECT_LE(stuck, 2);
+}
+
+// A wedge narrowing to a very small angle: the body settles, then never moves or sinks again.
+TEST(World, AcuteWedgesHoldStill) {
+  for (const int spread : {400, 100, 20, 5, 1}) {
+    Scene s;
+    s.part->line({-spread * 20, 80000}, {0, 0});  // half-angle down to atan(1/4000), 0.014 degrees
+    s.part->line({0, 0}, {spread * 20, 80000});
+    s.part->setGravity({0, -kUnit});
+    const EntityId ball = s.drop(Convex::regular(8, 6), {0, 60000});
+    s.run(1500);
+    const Vec2 rest = s.pos(ball);
+    EXPECT_LT(rest.y, 60000) << "it fell into the wedge";
+    for (int i = 0; i < 200; ++i) {
+      s.run(1);
+      ASSERT_EQ(s.pos(ball), rest) << "jitter in wedge with spread " << spread;
+    }
+  }
+}
+
+TEST(World, TJunctionsAndDuplicateLinesHold) {
+  Scene s;
+  s.part->line({-500, 0}, {500, 0});
+  s.part->line({-500, 0}, {500, 0});  // duplicate
+  s.part->line({-200, 0}, {300, 0});  // overlapping piece
+  s.part->line({0, 0}, {0, -300});    // T-junction below the floor
+  s.part->line({100, 0}, {100, 60});  // T-junction above: a post
+  s.part->setGravity({0, -kUnit});
+  const EntityId box = s.drop(Convex::box(10, 10), {-100, 100}, {5 * kUnit, 0});
+  s.run(200);
+  EXPECT_EQ(s.pos(box), (Vec2{90, 10}));
+}
+
+TEST(World, NearParallelApproachTouchesWithoutCrossing) {
+  Scene s;
+  s.part->line({-1000000, 0}, {1000000, 1});  // rises one unit over two million
+  const EntityId box = s.drop(Convex::box(10, 10), {-900000, 20}, {1000 * kUnit, -kUnit / 64});
+  s.run(1800);
+  EXPECT_GT(s.pos(box).x, 0);
+}
+
+TEST(World, MaximumLengthMovesStopAtTheFarWall) {
+  Scene s;
+  s.part->line({kCoordLimit - 5, -100}, {kCoordLimit - 5, 100});
+  const EntityId box = s.drop(Convex::box(4, 4), {-kCoordLimit + 10, 0}, {int64_t{kMaxMove} * kUnit, 0});
+  s.run(3);
+  EXPECT_EQ(s.pos(box), (Vec2{kCoordLimit - 9, 0}));
+}
+
+TEST(World, CoordinateRangeEdgeActsAsAWall) {
+  Scene s;
+  s.part->line({0, 0}, {1, 1});
+  const EntityId box = s.drop(Convex::box(4, 4), {kCoordLimit - 100, kCoordLimit - 100}, {50 * kUnit, 70 * kUnit});
+  s.run(10);
+  EXPECT_EQ(s.pos(box), (Vec2{kCoordLimit - 4, kCoordLimit - 4}));
+}
+
+TEST(World, ExactlyTouchingStartsAreAllowed) {
+  Scene s;
+  s.part->line({-100, 0}, {100, 0});
+  s.part->line({10, 0}, {10, 50});
+  const EntityId box = s.drop(Convex::box(10, 10), {0, 10});  // touches floor and wall
+  EXPECT_EQ(s.world.countOverlaps(), 0u);
+  s.world.setVelocity(box, {0, 4 * kUnit});  // leaving along the wall is free
+  s.run(5);
+  EXPECT_EQ(s.pos(box), (Vec2{0, 30}));
+}
+
+TEST(World, OneUnitMovesAreExact) {
+  Scene s;
+  s.part->line({-100, 0}, {100, 0});
+  const EntityId box = s.drop(Convex::box(10, 10), {0, 12}, {0, -kUnit});
+  s.run(1);
+  EXPECT_EQ(s.pos(box), (Vec2{0, 11}));
+  s.run(1);
+  EXPECT_EQ(s.pos(box), (Vec2{0, 10}));
+  s.run(1);
+  EXPECT_EQ(s.pos(box), (Vec2{0, 10}));
+}
