@@ -130,7 +130,7 @@ void World::updatePierceState(EntityId id, Entity& e, const std::vector<std::vec
     const MapPart& part = mapPart(inst.part);
     const std::vector<Vec2> now = worldVertices(inst);
     const bool haveMove = startVerts && i < startVerts->size() && (*steps)[i] != Vec2w{};
-    coverMotion(inst, {});
+    if (!haveMove) coverMotion(inst, {});  // after a move the region still covers the whole path
     std::vector<LineIndex> overlapping;
     const auto lines = inst.region.lines();
     for (size_t k = 0; k < lines.size(); ++k) {
