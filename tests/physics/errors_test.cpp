@@ -1,0 +1,99 @@
+// Every misuse gets a clear error that names the bad value, and leaves the world unchanged.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "platon/physics/world.h"
+
+using namespace platon::physics;
+
+namespace {
+// Runs f, expects Error whose message contains `needle`.
+template <class F>
+void expectError(F&& f, const std::string& needle) {
+  try {
+    f();
+    ADD_FAILURE() << "no error; expected one mentioning '" << needle << "'";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << "message was: " << e.what();
+  }
+}
+}  // namespace
+
+TEST(Errors, ConvexShapesAreValidated) {
+  expectError([] { Convex({{0, 0}, {1, 0}}); }, "at least 3 vertices");
+  expectError([] { Convex({{0, 0}, {0, 10}, {10, 0}}); }, "turns clockwise");
+  expectError([] { Convex({{0, 0}, {10, 0}, {20, 0}, {10, 10}}); }, "vertex 1");  // collinear
+  expectError([] { Convex({{0, 0}, {10, 0}, {10, 0}, {0, 10}}); }, "vertex 2 repeats vertex 1 (10, 0)");
+  expectError([] { Convex({{0, 0}, {10, 0}, {5, 2}, {10, 10}, {0, 10}}); }, "vertex 2");  // reflex
+  expectError([] { Convex({{0, 0}, {kShapeLimit + 1, 0}, {0, 10}}); }, "vertex 1");
+  // A pentagram winds twice with only left turns: caught as non-convex.
+  expectError([] { Convex({{0, 100}, {-59, -81}, {95, 31}, {-95, 31}, {59, -81}}); }, "not convex");
+  std::vector<Vec2> many;
+  for (int i = 0; i < 65; ++i) many.push_back({i, i * i});
+  expectError([&] { Convex{many}; }, "limit is 64");
+}
+
+TEST(Errors, MapPartsCheckTheirLines) {
+  World world;
+  MapPart& part = world.createMapPart(3);
+  expectError([&] { world.createMapPart(3); }, "map part 3 already exists");
+  expectError([&] { part.line({5, 5}, {5, 5}); }, "zero length at (5, 5)");
+  expectError([&] { part.line({0, 0}, {kCoordLimit + 1, 0}); }, "outside the coordinate range");
+  expectError([&] { part.warp({0, 0}, {100, 0}, 9, {0, 0}, {50, 0}); }, "edge lengths differ");
+  part.warp({0, 0}, {100, 0}, 9, {0, 0}, {100, 0});
+  expectError([&] { part.initialize(); }, "target map part 9 does not exist");
+  World other;
+  MapPart& self = other.createMapPart(1);
+  self.warp({0, 0}, {100, 0}, 1, {0, 0}, {100, 0});
+  expectError([&] { self.initialize(); }, "cannot target its own part");
+  MapPart& done = other.createMapPart(2);
+  done.line({0, 0}, {10, 0});
+  done.initialize();
+  expectError([&] { done.line({0, 1}, {10, 1}); }, "after initialize()");
+  expectError([&] { done.initialize(); }, "called twice");
+  expectError([&] { other.mapPart(77); }, "map part 77 does not exist");
+}
+
+TEST(Errors, InsertChecksPlacement) {
+  World world;
+  MapPart& open = world.createMapPart(1);
+  open.line({-100, 0}, {100, 0});
+  MapPart& later = world.createMapPart(2);
+  open.initialize();
+  const EntityId box = world.createEntity(Convex::box(10, 10));
+  expectError([&] { world.insert(box, 2, {0, 0}, 0); }, "not initialized");
+  expectError([&] { world.insert(box, 1, {0, 5}, 0); }, "would overlap solid line 0");
+  EXPECT_TRUE(world.entity(box).instances.empty());
+  expectError([&] { world.insert(box, 1, {kCoordLimit - 3, 50}, 0); }, "outside the coordinate range");
+  world.insert(box, 1, {0, 10}, 0);
+  expectError([&] { world.insert(box, 1, {0, 50}, 0); }, "already has an instance in map part 1");
+  expectError([&] { world.erase(box, 2); }, "no instance in map part 2");
+  later.initialize();
+  expectError([&] { world.setVelocity(box, {int64_t{1} << 47, 0}); }, "exceeds the largest move");
+}
+
+TEST(Errors, StaleHandlesAreDetected) {
+  World world;
+  const EntityId a = world.createEntity(Convex::box(3, 3));
+  world.destroyEntity(a);
+  EXPECT_FALSE(world.valid(a));
+  expectError([&] { world.entity(a); }, "does not exist");
+  expectError([&] { world.destroyEntity(a); }, "does not exist");
+  const EntityId b = world.createEntity(Convex::box(3, 3));  // reuses the slot
+  EXPECT_EQ(b.index, a.index);
+  EXPECT_NE(b.generation, a.generation);
+  EXPECT_FALSE(world.valid(a));
+  EXPECT_TRUE(world.valid(b));
+}
+
+TEST(Errors, ShapesTooSmallToRotateAreRefused) {
+  World world;
+  MapPart& part = world.createMapPart(1);
+  part.line({-100, -50}, {100, -50});
+  part.initialize();
+  const EntityId sliver = world.createEntity(Convex({{0, 0}, {1, 1}, {0, 1}}));
+  world.insert(sliver, 1, {0, 0}, 0);
+  expectError([&] { world.rotate(sliver, angleFromDegrees(25)); }, "too small to rotate");
+  EXPECT_EQ(world.entity(sliver).angle, 0u);
+}
