@@ -35,6 +35,7 @@ namespace platon::test {
 using physics::i128;
 using physics::Vec2;
 using physics::Vec2w;
+using physics::wide;
 __extension__ typedef unsigned __int128 u128;
 
 inline std::string toString(i128 v) {
@@ -58,8 +59,8 @@ class Int256 {
   Int256() = default;
   Int256(i128 v) {  // implicit on purpose: mixes freely with int64 and i128 values
     const u128 u = static_cast<u128>(v);
-    w_ = {static_cast<uint64_t>(u), static_cast<uint64_t>(u >> 64), v < 0 ? ~0ull : 0,
-          v < 0 ? ~0ull : 0};
+    w_ = {static_cast<uint64_t>(u), static_cast<uint64_t>(u >> 64), v < 0 ? ~uint64_t{0} : 0,
+          v < 0 ? ~uint64_t{0} : 0};
   }
 
   bool negative() const { return static_cast<int64_t>(w_[3]) < 0; }
@@ -140,10 +141,9 @@ struct Rat {
   friend bool operator==(const Rat& a, const Rat& b) { return (a <=> b) == 0; }
 };
 
-inline i128 cross(Vec2w a, Vec2w b) { return i128{a.x} * b.y - i128{a.y} * b.x; }
-inline i128 dot(Vec2w a, Vec2w b) { return i128{a.x} * b.x + i128{a.y} * b.y; }
-inline Vec2w sub(Vec2w a, Vec2w b) { return {a.x - b.x, a.y - b.y}; }
-inline Vec2w wide(Vec2 p) { return {p.x, p.y}; }
+// Exact for any int64 components (unlike physics::cross, which relies on the coordinate range).
+inline i128 crossExact(Vec2w a, Vec2w b) { return i128{a.x} * b.y - i128{a.y} * b.x; }
+inline i128 dotExact(Vec2w a, Vec2w b) { return i128{a.x} * b.x + i128{a.y} * b.y; }
 
 // Counter-clockwise convex hull without collinear points (Andrew's monotone chain).
 inline std::vector<Vec2w> hull(std::vector<Vec2w> pts) {
@@ -154,7 +154,7 @@ inline std::vector<Vec2w> hull(std::vector<Vec2w> pts) {
   for (int pass = 0; pass < 2; ++pass) {  // lower chain left to right, then upper right to left
     const size_t start = h.size();
     for (const Vec2w p : pts) {
-      while (h.size() >= start + 2 && cross(sub(h.back(), h[h.size() - 2]), sub(p, h[h.size() - 2])) <= 0)
+      while (h.size() >= start + 2 && crossExact(h.back() - h[h.size() - 2], p - h[h.size() - 2]) <= 0)
         h.pop_back();
       h.push_back(p);
     }
@@ -179,8 +179,8 @@ inline RefSweep referenceSweep(std::span<const Vec2> poly, Vec2w motion, Vec2 a,
   RefSweep r;
   std::vector<Vec2w> pts;
   for (const Vec2 w : poly) {
-    pts.push_back(sub(wide(a), wide(w)));
-    pts.push_back(sub(wide(b), wide(w)));
+    pts.push_back(a - w);
+    pts.push_back(b - w);
   }
   r.obstacle = hull(std::move(pts));
   if (r.obstacle.size() < 3) throw std::logic_error("reference: obstacle has no interior");
@@ -194,11 +194,11 @@ inline RefSweep referenceSweep(std::span<const Vec2> poly, Vec2w motion, Vec2 a,
   const size_t k = r.obstacle.size();
   for (size_t i = 0; i < k; ++i) {
     const Vec2w p = r.obstacle[i];
-    const Vec2w e = sub(r.obstacle[(i + 1) % k], p);
+    const Vec2w e = r.obstacle[(i + 1) % k] - p;
     const int64_t g = std::gcd(e.x, e.y);
     const Vec2w n{e.y / g, -e.x / g};  // outward for a counter-clockwise polygon
     // Interior of O: n.(x - p) < 0. On the ray x = t * motion: t * rate < h.
-    const i128 h = dot(n, p), rate = dot(n, motion);
+    const i128 h = dotExact(n, p), rate = dotExact(n, motion);
     r.overlapsAtZero = r.overlapsAtZero && h > 0;
     r.touchesAtZero = r.touchesAtZero && h >= 0;
     if (rate < 0) {  // moving inwards across this edge: inside once t > h / rate
@@ -232,17 +232,16 @@ struct Clip {
 inline Clip clipSegment(std::span<const Vec2> poly, Vec2w motion, Vec2 a, Vec2 b, Rat<i128> t,
                         bool strict) {
   const Int256 p = t.num, q = t.den;
-  const Vec2w d = sub(wide(b), wide(a));
+  const Vec2w d = b - a;
   Rat<Int256> lo{0, 1}, hi{1, 1};
   bool loOpen = false, hiOpen = false, ok = true;
   const size_t n = poly.size();
   for (size_t i = 0; i < n; ++i) {
-    const Vec2w w = wide(poly[i]);
-    const Vec2w e = sub(wide(poly[(i + 1) % n]), w);
-    // Left of edge i of the moved polygon: cross(e, A + s d - w - t m) >= 0 (> 0 when strict),
+    const Vec2w e = poly[(i + 1) % n] - poly[i];
+    // Left of edge i of the moved polygon: cross(e, A + s d - w_i - t m) >= 0 (> 0 when strict),
     // i.e. s * ca >= cb after multiplying by q > 0.
-    const Int256 ca = q * cross(e, d);
-    const Int256 cb = p * cross(e, motion) - q * cross(e, sub(wide(a), w));
+    const Int256 ca = q * crossExact(e, d);
+    const Int256 cb = p * crossExact(e, motion) - q * crossExact(e, a - poly[i]);
     if (ca.sign() > 0) {
       const Rat<Int256> bound{cb, ca};
       if (bound > lo || (bound == lo && strict)) lo = bound, loOpen = strict;
@@ -253,8 +252,7 @@ inline Clip clipSegment(std::span<const Vec2> poly, Vec2w motion, Vec2 a, Vec2 b
       ok = false;
     }
   }
-  Clip c{ok && (lo < hi || (lo == hi && !loOpen && !hiOpen)), lo, hi};
-  return c;
+  return {ok && (lo < hi || (lo == hi && !loOpen && !hiOpen)), lo, hi};
 }
 
 // A + s(B - A) rounded to the nearest unit, halves up: floor((2x + 1) / 2) per coordinate.
