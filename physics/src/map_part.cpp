@@ -57,6 +57,14 @@ LineIndex MapPart::warp(Vec2 p0, Vec2 p1, MapPartId target, Vec2 t0, Vec2 t1, ui
   return static_cast<LineIndex>(lines_.size() - 1);
 }
 
+void MapPart::setGravity(Vec2w g) {
+  const int64_t limit = int64_t{kMaxMove} << 16;
+  if (g.x < -limit || g.x > limit || g.y < -limit || g.y > limit)
+    throw Error(partName(id_) + ": gravity (" + std::to_string(g.x) + ", " + std::to_string(g.y) +
+                ") / 65536 exceeds 2^30 units per frame per frame");
+  gravity_ = g;
+}
+
 void MapPart::initialize() {
   if (initialized_) throw Error(partName(id_) + ": initialize() called twice");
   for (size_t i = 0; i < lines_.size(); ++i) {

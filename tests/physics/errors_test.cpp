@@ -53,6 +53,7 @@ TEST(Errors, MapPartsCheckTheirLines) {
   expectError([&] { done.line({0, 1}, {10, 1}); }, "after initialize()");
   expectError([&] { done.initialize(); }, "called twice");
   expectError([&] { other.mapPart(77); }, "map part 77 does not exist");
+  expectError([&] { done.setGravity({0, int64_t{1} << 47}); }, "gravity");
 }
 
 TEST(Errors, InsertChecksPlacement) {

@@ -230,7 +230,7 @@ void checkSweep(const Case& c, Checker& k, Stats& stats) {
       std::string valid;
       bool ok = false;
       for (const Vec2w rn : r.enterNormals) {
-        ok = ok || (ref::cross(n, rn) == 0 && ref::dot(n, rn) > 0);
+        ok = ok || (ref::crossExact(n, rn) == 0 && ref::dotExact(n, rn) > 0);
         valid += " " + str(rn);
       }
       k.expect(ok, "normal = " + str(n) + ", reference allows" + valid);

@@ -39,8 +39,9 @@ class MapPart {
   // Adds a warp line to part `target`, where the same edge runs t0 -> t1. The two edges should be
   // equally long (a solid's edges are); they may differ by rounding, up to 1% or 2 units.
   LineIndex warp(Vec2 p0, Vec2 p1, MapPartId target, Vec2 t0, Vec2 t1, uint32_t tag = 0);
-  // Gravity in this part's frame, in 1/65536 units per frame per frame.
-  void setGravity(Vec2w gravityQ16) { gravity_ = gravityQ16; }
+  // Gravity in this part's frame, in 1/65536 units per frame per frame; at most 2^30 units per
+  // frame per frame in each component.
+  void setGravity(Vec2w gravityQ16);
   Vec2w gravity() const { return gravity_; }
 
   // Checks warp targets and builds the grid. Lines cannot be added afterwards.
