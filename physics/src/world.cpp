@@ -231,7 +231,7 @@ void World::erase(EntityId id, MapPartId partId) {
   for (size_t i = 0; i < e.instances.size(); ++i)
     if (e.instances[i].part == partId) {
       locked_ = true;
-      eraseInstance(e, i);
+      eraseInstance(id, e, i);
       locked_ = false;
       if (pendingError_) std::rethrow_exception(std::exchange(pendingError_, nullptr));
       return;

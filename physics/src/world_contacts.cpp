@@ -167,12 +167,7 @@ void World::updatePierceState(EntityId id, Entity& e, const std::vector<std::vec
   }
 }
 
-void World::eraseInstance(Entity& e, size_t index, Vec2w* motion, std::vector<Vec2w>* normals) {
-  const EntityId id = [&] {
-    for (uint32_t s = 0; s < slots_.size(); ++s)
-      if (slots_[s].entity.get() == &e) return EntityId{s, slots_[s].generation};
-    return EntityId{};
-  }();
+void World::eraseInstance(EntityId id, Entity& e, size_t index, Vec2w* motion, std::vector<Vec2w>* normals) {
   // The instance leaves its part: its pierceable overlaps end.
   const Instance& gone = e.instances[index];
   for (const LineIndex line : gone.overlapping) {
@@ -191,7 +186,7 @@ void World::eraseInstance(Entity& e, size_t index, Vec2w* motion, std::vector<Ve
   ++report_.instancesErased;
 }
 
-void World::updateLinks(Entity& e, Vec2w* motion, std::vector<Vec2w>* normals) {
+void World::updateLinks(EntityId id, Entity& e, Vec2w* motion, std::vector<Vec2w>* normals) {
   for (size_t l = 0; l < e.links.size();) {
     WarpLink& link = e.links[l];
     const Instance* a = e.instanceIn(link.fromPart);
@@ -223,7 +218,7 @@ void World::updateLinks(Entity& e, Vec2w* motion, std::vector<Vec2w>* normals) {
     }
     for (size_t i = 0; i < e.instances.size(); ++i)
       if (e.instances[i].part == eraseAt) {
-        eraseInstance(e, i, motion, normals);
+        eraseInstance(id, e, i, motion, normals);
         break;
       }
     l = 0;  // erasing removed links: start over

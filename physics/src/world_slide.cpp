@@ -226,7 +226,7 @@ void World::slide(EntityId id, Entity& e, Vec2w motion) {
       if (!createWarpInstance(id, e, hit.instance, hit.line, exact))
         e.instances[hit.instance].blockedWarps.push_back(hit.line);
     }
-    updateLinks(e, &motion, &normals);
+    updateLinks(id, e, &motion, &normals);
     if (!moved || pulledBack) {
       if (!moved) break;
       continue;
@@ -308,7 +308,7 @@ bool World::rotateBy(EntityId id, Entity& e, int64_t delta) {
     e.angle = angle;
   }
   updatePierceState(id, e, nullptr, nullptr);
-  updateLinks(e, nullptr, nullptr);
+  updateLinks(id, e, nullptr, nullptr);
   return !blocked;
 }
 

@@ -95,8 +95,9 @@ class World {
   void createOverlappedWarps(EntityId id, Entity& e);
   void updatePierceState(EntityId id, Entity& e, const std::vector<std::vector<Vec2>>* startVerts,
                          const std::vector<Vec2w>* steps);
-  void updateLinks(Entity& e, Vec2w* motion, std::vector<Vec2w>* normals);
-  void eraseInstance(Entity& e, size_t index, Vec2w* motion = nullptr, std::vector<Vec2w>* normals = nullptr);
+  void updateLinks(EntityId id, Entity& e, Vec2w* motion, std::vector<Vec2w>* normals);
+  void eraseInstance(EntityId id, Entity& e, size_t index, Vec2w* motion = nullptr,
+                     std::vector<Vec2w>* normals = nullptr);
   void fireOverContacts();
   // Runs a rules callback; an exception is kept for solve() to rethrow once the frame is whole.
   template <class F>
