@@ -94,6 +94,7 @@ Angle angleOf(Vec2w v) {
 }
 
 Vec2w rotateWide(Rotation r, Vec2w v) {
+  if (r.s == 0 && r.c == int64_t{1} << 30) return v;  // the anchor's frame: nothing to turn
   const i128 x = i128{r.c} * v.x - i128{r.s} * v.y;
   const i128 y = i128{r.s} * v.x + i128{r.c} * v.y;
   return {static_cast<int64_t>(roundDiv(x, i128{1} << 30)),

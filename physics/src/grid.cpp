@@ -35,6 +35,28 @@ CellRect Grid::cellsCovering(const Box& box) const {
   return {columnOf(box.x0), rowOf(box.y0), columnOf(box.x1), rowOf(box.y1)};
 }
 
+int Grid::cutNear(const std::vector<int32_t>& cuts, int64_t v, int hint) {
+  const int n = static_cast<int>(cuts.size());
+  for (int step = 0; step < 4; ++step) {
+    if (hint > 0 && v < cuts[hint]) {
+      --hint;
+    } else if (hint + 1 < n && v >= cuts[hint + 1]) {
+      ++hint;
+    } else {
+      return hint;
+    }
+  }
+  const auto it = std::upper_bound(cuts.begin(), cuts.end(), v);
+  return std::max(0, static_cast<int>(it - cuts.begin()) - 1);
+}
+
+CellRect Grid::cellsCovering(const Box& box, const CellRect& near) const {
+  if (cellLines_.empty()) return {};
+  if (near.empty()) return cellsCovering(box);
+  return {cutNear(xCuts_, box.x0, near.x0), cutNear(yCuts_, box.y0, near.y0), cutNear(xCuts_, box.x1, near.x1),
+          cutNear(yCuts_, box.y1, near.y1)};
+}
+
 // Visits every cell a segment passes through (a superset near cell corners is harmless):
 // column by column, the y-range of the segment inside the column's slab, rounded outwards.
 template <class Visit>

@@ -15,11 +15,11 @@ void MapPart::checkOpen(const char* what) const {
 }
 
 void MapPart::checkSegment(Vec2 p0, Vec2 p1, const char* what) const {
+  if (inRange(p0) && inRange(p1) && p0 != p1) return;
   const std::string line = partName(id_) + " " + what + " " + std::to_string(lines_.size());
-  if (!inRange(p0) || !inRange(p1))
-    throw Error(line + ": endpoint " + toString(inRange(p0) ? p1 : p0) +
-                " is outside the coordinate range |x|,|y| <= 2^30 - 1");
   if (p0 == p1) throw Error(line + ": zero length at " + toString(p0));
+  throw Error(line + ": endpoint " + toString(inRange(p0) ? p1 : p0) +
+              " is outside the coordinate range |x|,|y| <= 2^30 - 1");
 }
 
 LineIndex MapPart::line(Vec2 p0, Vec2 p1, uint32_t tag) {

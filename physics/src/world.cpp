@@ -158,7 +158,7 @@ void World::coverMotion(Instance& inst, Vec2w motion) {
   // One unit of margin: points on the box edge round into the next cell's range.
   b.x0 -= 1, b.y0 -= 1, b.x1 += 1, b.y1 += 1;
   const Grid& grid = mapPart(inst.part).grid();
-  inst.region.update(grid, grid.cellsCovering(b));
+  inst.region.update(grid, grid.cellsCovering(b, inst.region.rect()));
 }
 
 void World::rebase(Entity& e, size_t k, Vec2w* motion) {

@@ -6,13 +6,6 @@
 namespace platon::physics {
 namespace {
 
-std::vector<Vec2> worldVertices(const Instance& inst) {
-  std::vector<Vec2> out;
-  out.reserve(inst.shape.size());
-  for (const Vec2 v : inst.shape) out.push_back({inst.position.x + v.x, inst.position.y + v.y});
-  return out;
-}
-
 Vec2w mapThroughWarp(const Warp& w, Segment from, Vec2w pointQ30) {
   const Vec2w rel{pointQ30.x - (int64_t{from.a.x} << 30), pointQ30.y - (int64_t{from.a.y} << 30)};
   const Vec2w turned = rotateWide(w.rotation, rel);
@@ -115,7 +108,7 @@ void World::createOverlappedWarps(EntityId id, Entity& e) {
 }
 
 void World::updatePierceState(EntityId id, Entity& e, const std::vector<std::vector<Vec2>>* startVerts,
-                              const std::vector<Vec2w>* steps) {
+                              const std::vector<Vec2w>* steps, const std::vector<uint8_t>* pierceNear) {
   struct Event {
     Fraction t;
     size_t instance;
@@ -127,8 +120,11 @@ void World::updatePierceState(EntityId id, Entity& e, const std::vector<std::vec
   std::vector<Event> events;
   for (size_t i = 0; i < e.instances.size(); ++i) {
     Instance& inst = e.instances[i];
+    // Nothing pierceable near the path and nothing overlapped: no event is possible.
+    if (pierceNear && i < pierceNear->size() && !(*pierceNear)[i] && inst.overlapping.empty()) continue;
     const MapPart& part = mapPart(inst.part);
-    const std::vector<Vec2> now = worldVertices(inst);
+    std::vector<Vec2>& now = scratch_.now;
+    worldVertices(inst, now);
     const bool haveMove = startVerts && i < startVerts->size() && (*steps)[i] != Vec2w{};
     if (!haveMove) coverMotion(inst, {});  // after a move the region still covers the whole path
     std::vector<LineIndex> overlapping;

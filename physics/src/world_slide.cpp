@@ -10,13 +10,6 @@ namespace {
 
 constexpr int64_t kQ16 = 1 << 16;
 
-std::vector<Vec2> worldVertices(const Instance& inst) {
-  std::vector<Vec2> out;
-  out.reserve(inst.shape.size());
-  for (const Vec2 v : inst.shape) out.push_back({inst.position.x + v.x, inst.position.y + v.y});
-  return out;
-}
-
 // t * m rounded to whole units. With `keep`, each component rounds the way that keeps the polygon
 // on the outer side of that axis (so the contact that stopped us is touched, never crossed);
 // otherwise towards the start of the move.
@@ -103,10 +96,61 @@ void World::stepEntity(EntityId id, Entity& e) {
   slide(id, e, move);
 }
 
+namespace {
+
+// The box swept by a polygon moving by m; lines wholly outside it cannot be met.
+Box sweptBox(const std::vector<Vec2>& verts, Vec2w m) {
+  Box b{INT64_MAX, INT64_MAX, INT64_MIN, INT64_MIN};
+  for (const Vec2 v : verts) {
+    b.x0 = std::min<int64_t>(b.x0, v.x), b.x1 = std::max<int64_t>(b.x1, v.x);
+    b.y0 = std::min<int64_t>(b.y0, v.y), b.y1 = std::max<int64_t>(b.y1, v.y);
+  }
+  if (m.x < 0) b.x0 += m.x; else b.x1 += m.x;
+  if (m.y < 0) b.y0 += m.y; else b.y1 += m.y;
+  return b;
+}
+
+inline bool outside(const Segment& s, const Box& b) {
+  return std::max(s.a.x, s.b.x) < b.x0 || std::min(s.a.x, s.b.x) > b.x1 ||
+         std::max(s.a.y, s.b.y) < b.y0 || std::min(s.a.y, s.b.y) > b.y1;
+}
+
+// Whether t * m is whole: then the rounded step lies on the swept path itself.
+bool exactMove(Vec2w m, Fraction t) {
+  return t == Fraction::one() || ((i128{t.num} * m.x) % t.den == 0 && (i128{t.num} * m.y) % t.den == 0);
+}
+
+}  // namespace
+
+// The earliest time in [0, limit) at which `verts` moved by `step` meets a solid line or the range's
+// edge; `limit` when none.
+Fraction World::firstBlock(EntityId id, Instance& inst, const std::vector<Vec2>& verts, Vec2w step) {
+  const MapPart& part = mapPart(inst.part);
+  const auto lines = inst.region.lines();
+  const Box box = sweptBox(verts, step);
+  Fraction first = Fraction::one();
+  for (size_t k = 0; k < lines.size(); ++k) {
+    const Segment& seg = part.segments()[lines[k]];
+    if (outside(seg, box) || isPierceable(id, inst, k)) continue;
+    const Sweep s = sweep(verts, step, seg);
+    if (s.hitsWithinFrame() && s.enter < first) first = s.enter;
+  }
+  Constraint bounds[4];
+  boundConstraints(verts, bounds);
+  for (const Constraint& c : bounds) {
+    const int64_t rate = dot(c.c, step);
+    if (rate > 0 && Fraction{c.slack, rate} < first) first = Fraction{c.slack, rate};
+  }
+  return first;
+}
+
 void World::slide(EntityId id, Entity& e, Vec2w motion) {
-  std::vector<Vec2w> normals;  // this frame's contact normals, entity frame
-  std::vector<std::vector<Vec2>> verts;
-  std::vector<Vec2w> moves, steps;
+  std::vector<Vec2w>& normals = scratch_.normals;  // this frame's contact normals, entity frame
+  std::vector<std::vector<Vec2>>& verts = scratch_.verts;
+  std::vector<Vec2w>& moves = scratch_.moves;
+  std::vector<Vec2w>& steps = scratch_.steps;
+  std::vector<uint8_t>& pierceNear = scratch_.pierceNear;
+  normals.clear();
   for (int iteration = 0; iteration < kMaxSubMoves && !e.instances.empty(); ++iteration) {
     createOverlappedWarps(id, e);
     const size_t n = e.instances.size();
@@ -124,9 +168,10 @@ void World::slide(EntityId id, Entity& e, Vec2w motion) {
     // 1. Each instance's motion: the anchor's own; the others aim at their ideal position.
     verts.resize(n);
     moves.resize(n);
+    pierceNear.assign(n, 0);
     for (size_t i = 0; i < n; ++i) {
       Instance& inst = e.instances[i];
-      verts[i] = worldVertices(inst);
+      worldVertices(inst, verts[i]);
       if (i == 0) {
         moves[i] = motion;
       } else {
@@ -141,15 +186,17 @@ void World::slide(EntityId id, Entity& e, Vec2w motion) {
     Hit hit;
     for (size_t i = 0; i < n; ++i) {
       Instance& inst = e.instances[i];
-      if (moves[i] == Vec2w{}) continue;
       const MapPart& part = mapPart(inst.part);
       const auto lines = inst.region.lines();
+      const Box box = sweptBox(verts[i], moves[i]);
       for (size_t k = 0; k < lines.size(); ++k) {
-        const Segment seg = part.segments()[lines[k]];
+        const Segment& seg = part.segments()[lines[k]];
+        if (outside(seg, box)) continue;
         const bool pierce = isPierceable(id, inst, k);
+        pierceNear[i] |= pierce;
+        if (moves[i] == Vec2w{}) continue;
         const Line& line = part.lines()[lines[k]];
-        if (pierce && (line.kind != LineKind::Warp ||
-                       e.instanceIn(part.warps()[line.warp].target) != nullptr))
+        if (pierce && (line.kind != LineKind::Warp || e.instanceIn(part.warps()[line.warp].target) != nullptr))
           continue;
         const Sweep s = sweep(verts[i], moves[i], seg);
         if (!s.hitsWithinFrame()) continue;
@@ -165,8 +212,9 @@ void World::slide(EntityId id, Entity& e, Vec2w motion) {
         if (hit.improvedBy(when, HitKind::Bound)) hit = {HitKind::Bound, when, i, kWorldBoundLine, {}, c};
       }
     }
-    // 3. Move every instance to that time, rounded to the safe side, and prove each rounded move
-    //    free with an exact sweep; if rounding ever leaves the safe path, pull back and retry.
+    // 3. Move every instance to that time, rounded to the safe side. A step that is exactly on
+    //    the swept path is free by the search above; a rounded one is proved free by an exact
+    //    sweep of its own, and if rounding left the safe path, t is pulled back and retried.
     Fraction t = hit.t;
     bool moved = false;
     for (int attempt = 0; attempt < 4 && !moved; ++attempt) {
@@ -176,22 +224,8 @@ void World::slide(EntityId id, Entity& e, Vec2w motion) {
       for (size_t i = 0; i < n && ok; ++i) {
         const bool keepAxis = attempt == 0 && hit.kind != HitKind::None && i == hit.instance;
         steps[i] = roundedMove(moves[i], t, keepAxis ? &hit.axis : nullptr);
-        if (steps[i] == Vec2w{}) continue;
-        Instance& inst = e.instances[i];
-        const MapPart& part = mapPart(inst.part);
-        const auto lines = inst.region.lines();
-        Fraction first = Fraction::one();
-        for (size_t k = 0; k < lines.size(); ++k) {
-          if (isPierceable(id, inst, k)) continue;
-          const Sweep s = sweep(verts[i], steps[i], part.segments()[lines[k]]);
-          if (s.hitsWithinFrame() && s.enter < first) first = s.enter;
-        }
-        Constraint bounds[4];
-        boundConstraints(verts[i], bounds);
-        for (const Constraint& c : bounds) {
-          const int64_t rate = dot(c.c, steps[i]);
-          if (rate > 0 && Fraction{c.slack, rate} < first) first = Fraction{c.slack, rate};
-        }
+        if (steps[i] == Vec2w{} || (attempt == 0 && exactMove(moves[i], t))) continue;
+        const Fraction first = firstBlock(id, e.instances[i], verts[i], steps[i]);
         if (first < Fraction::one()) {
           ok = false;
           ++report_.roundingRetries;
@@ -213,9 +247,8 @@ void World::slide(EntityId id, Entity& e, Vec2w motion) {
     motion = motion - steps[0];
     // 5. Pierce events along the way; a warp reached creates the instance on the other side; the
     //    warp links then erase instances the entity has left (which may change the anchor).
-    updatePierceState(id, e, &verts, &steps);
+    updatePierceState(id, e, &verts, &steps, &pierceNear);
     const MapPartId hitPart = e.instances[hit.instance].part;
-    const std::vector<Vec2> hitVerts = verts[hit.instance];
     const Vec2w hitMove = moves[hit.instance];
     if (hit.kind == HitKind::Warp && !pulledBack) {
       // The exact touching position, in Q30, maps to where the new instance starts.
@@ -226,28 +259,23 @@ void World::slide(EntityId id, Entity& e, Vec2w motion) {
       if (!createWarpInstance(id, e, hit.instance, hit.line, exact))
         e.instances[hit.instance].blockedWarps.push_back(hit.line);
     }
-    updateLinks(id, e, &motion, &normals);
-    if (!moved || pulledBack) {
-      if (!moved) break;
-      continue;
-    }
-    if (hit.kind != HitKind::Solid && hit.kind != HitKind::Bound) {
-      if (hit.kind == HitKind::None) break;
-      continue;
-    }
+    if (!e.links.empty()) updateLinks(id, e, &motion, &normals);
+    if (!moved) break;
+    if (pulledBack) continue;
+    if (hit.kind == HitKind::None) break;
+    if (hit.kind == HitKind::Warp) continue;
     // 6. A solid contact: tell the rules, then slide along the line.
     ++report_.hits;
     const Instance* inst = e.instanceIn(hitPart);
     if (!inst) break;
-    const Vec2w partNormal = hit.axis.c.x == 0 && hit.axis.c.y == 0 ? Vec2w{} : -hit.axis.c;
-    ContactPoints points;
-    if (hit.kind == HitKind::Solid)
-      points = contactPoints(hitVerts, hitMove, mapPart(hitPart).segments()[hit.line], hit.sweep);
-    Contact contact = makeContact(id, *inst, hit.line, hit.t, partNormal, points);
+    const Vec2w partNormal = -hit.axis.c;
+    ContactPoints points;  // only the rules read them: skip the work when nobody listens
+    if (hit.kind == HitKind::Solid && rules_ != &defaultRules_)
+      points = contactPoints(verts[hit.instance], hitMove, mapPart(hitPart).segments()[hit.line], hit.sweep);
+    const Contact contact = makeContact(id, *inst, hit.line, hit.t, partNormal, points);
     ContactResponse response;
     callRules([&](Rules& r) { r.contact(contact, response); });
-    const Rotation toEntity = inst->rotation;
-    const Vec2w normal = shortDirection(rotateWideInverse(toEntity, shortDirection(partNormal)));
+    const Vec2w normal = shortDirection(rotateWideInverse(inst->rotation, shortDirection(partNormal)));
     if (response.removeNormalVelocity) e.velocityQ16 = removeInto(e.velocityQ16, normal);
     if (!response.slide) break;
     motion = removeInto(motion, normal);

@@ -34,6 +34,18 @@ struct WarpLink {
   uint8_t toState = 0;
 };
 
+// The instance's vertices in its part's coordinates.
+inline void worldVertices(const Instance& inst, std::vector<Vec2>& out) {
+  out.resize(inst.shape.size());
+  for (size_t i = 0; i < inst.shape.size(); ++i)
+    out[i] = {inst.position.x + inst.shape[i].x, inst.position.y + inst.shape[i].y};
+}
+inline std::vector<Vec2> worldVertices(const Instance& inst) {
+  std::vector<Vec2> out;
+  worldVertices(inst, out);
+  return out;
+}
+
 struct Entity {
   explicit Entity(Convex s) : shape(std::move(s)) {}
 

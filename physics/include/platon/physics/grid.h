@@ -36,6 +36,9 @@ class Grid {
   int rows() const { return static_cast<int>(yCuts_.size()); }
   // Cells whose area meets the closed box (clamped to the grid; cells on the border extend outwards).
   CellRect cellsCovering(const Box& box) const;
+  // The same, searching outwards from `near` first: a moving entity's rectangle shifts by a cell
+  // or two per frame, so this is a few comparisons instead of four binary searches.
+  CellRect cellsCovering(const Box& box, const CellRect& near) const;
   std::span<const uint32_t> cell(int column, int row) const {
     const size_t c = static_cast<size_t>(row) * xCuts_.size() + column;
     return {cellLines_.data() + cellStart_[c], cellLines_.data() + cellStart_[c + 1]};
@@ -46,6 +49,7 @@ class Grid {
  private:
   int columnOf(int64_t x) const;
   int rowOf(int64_t y) const;
+  static int cutNear(const std::vector<int32_t>& cuts, int64_t v, int hint);
   template <class Visit>
   void forEachCell(const Segment& s, Visit&& visit) const;
 

@@ -54,8 +54,15 @@ constexpr bool inRange(Vec2 p) {
 
 std::string toString(Vec2 p);
 
-// Floor and ceiling of a / b for b != 0, exact for any signs.
+// Floor and ceiling of a / b for b != 0, exact for any signs. 128-bit division is a library call;
+// most operands fit in 64 bits, so that case takes the hardware divide.
 constexpr i128 floorDiv(i128 a, i128 b) {
+  if (a == static_cast<int64_t>(a) && b == static_cast<int64_t>(b) && !(a == INT64_MIN && b == -1)) {
+    const int64_t x = static_cast<int64_t>(a), y = static_cast<int64_t>(b);
+    int64_t q = x / y;
+    if ((x % y != 0) && ((x < 0) != (y < 0))) --q;
+    return q;
+  }
   i128 q = a / b;
   if ((a % b != 0) && ((a < 0) != (b < 0))) --q;
   return q;

@@ -89,12 +89,13 @@ class World {
   // world_slide.cpp
   void stepEntity(EntityId id, Entity& e);
   void slide(EntityId id, Entity& e, Vec2w motion);
+  Fraction firstBlock(EntityId id, Instance& inst, const std::vector<Vec2>& verts, Vec2w step);
   bool rotateBy(EntityId id, Entity& e, int64_t delta);
   // world_contacts.cpp
   bool createWarpInstance(EntityId id, Entity& e, size_t from, LineIndex warpLine, Vec2w fromQ30);
   void createOverlappedWarps(EntityId id, Entity& e);
   void updatePierceState(EntityId id, Entity& e, const std::vector<std::vector<Vec2>>* startVerts,
-                         const std::vector<Vec2w>* steps);
+                         const std::vector<Vec2w>* steps, const std::vector<uint8_t>* pierceNear = nullptr);
   void updateLinks(EntityId id, Entity& e, Vec2w* motion, std::vector<Vec2w>* normals);
   void eraseInstance(EntityId id, Entity& e, size_t index, Vec2w* motion = nullptr,
                      std::vector<Vec2w>* normals = nullptr);
@@ -121,7 +122,13 @@ class World {
   bool locked_ = false;
   std::exception_ptr pendingError_;
   SolveReport report_;
-  std::vector<Vec2> scratch_;
+  // Per-frame buffers, kept to avoid allocating on every step (solve is not reentrant).
+  struct Scratch {
+    std::vector<std::vector<Vec2>> verts;
+    std::vector<Vec2w> moves, steps, normals;
+    std::vector<uint8_t> pierceNear;
+    std::vector<Vec2> now;
+  } scratch_;
 };
 
 }  // namespace platon::physics
