@@ -9,14 +9,14 @@
 //
 // Overflow: every product goes through a checked multiply that throws, so a wrong bound below
 // shows up as a test error, never as a silently wrong answer.
-// Bounds, for any input the physics accepts (points within kCoordLimit = 2^30 - 1, so
-// differences below 2^31; motion components within kMaxMove = 2^30):
+// Bounds, for any input sweep() accepts (points within kCoordLimit = 2^30 - 1, so differences
+// below 2^31; motion components below 2^31):
 //  - O's vertices are differences of points: |component| < 2^31. Its edge normals are reduced to
 //    primitive vectors, which divide a polygon edge or B - A, so |component| < 2^31 as well.
-//    Then |h| = |n.p| < 2^63 and |rate| = |n.m| < 2^62, and comparing two such fractions costs
-//    < 2^125: the ray clipping fits in __int128 at every coordinate the physics allows.
-//  - Segment clipping at time p/q (|p| < 2^63, q < 2^62): ca = q * cross(e, d) < 2^125 and
-//    cb = p * cross(e, m) - q * cross(e, A - w) < 2^126, compared in products < 2^251: Int256.
+//    Then |h| = |n.p| < 2^63 and |rate| = |n.m| < 2^63, and comparing two such fractions costs
+//    < 2^126: the ray clipping fits in __int128 at every coordinate the physics allows.
+//  - Segment clipping at time p/q (|p|, q < 2^63): ca = q * cross(e, d) < 2^126 and
+//    cb = p * cross(e, m) - q * cross(e, A - w) < 2^127, compared in products < 2^253: Int256.
 #pragma once
 #include <algorithm>
 #include <array>
@@ -45,12 +45,6 @@ inline std::string toString(i128 v) {
   std::string s;
   for (; u != 0; u /= 10) s.insert(s.begin(), char('0' + int(u % 10)));
   return neg ? "-" + s : s;
-}
-
-inline i128 mulChecked(i128 a, i128 b) {
-  i128 r;
-  if (__builtin_mul_overflow(a, b, &r)) throw std::overflow_error("reference: i128 overflow");
-  return r;
 }
 
 // Signed 256-bit two's-complement integer: just enough (+, -, *, compare) for exact clipping.
@@ -84,7 +78,8 @@ class Int256 {
   // Schoolbook product modulo 2^256, which is the true signed product whenever it fits; the
   // bit-length test makes "fits" a checked precondition (|result| < 2^254).
   friend Int256 operator*(const Int256& a, const Int256& b) {
-    if (a.magnitudeBits() + b.magnitudeBits() > 254) throw std::overflow_error("reference: Int256 overflow");
+    if (a.magnitudeBits() + b.magnitudeBits() > 254)
+      throw std::overflow_error("reference: Int256 overflow");
     Int256 r;
     for (int i = 0; i < 4; ++i) {
       u128 carry = 0;
@@ -114,7 +109,12 @@ class Int256 {
   std::array<uint64_t, 4> w_{};
 };
 
-inline i128 mul(i128 a, i128 b) { return mulChecked(a, b); }
+// Checked products for Rat<T>.
+inline i128 mul(i128 a, i128 b) {
+  i128 r;
+  if (__builtin_mul_overflow(a, b, &r)) throw std::overflow_error("reference: i128 overflow");
+  return r;
+}
 inline Int256 mul(const Int256& a, const Int256& b) { return a * b; }
 
 // Largest z with z * den <= num (den > 0), for results known to lie in |z| < 2^40: found by
@@ -147,14 +147,16 @@ inline i128 dotExact(Vec2w a, Vec2w b) { return i128{a.x} * b.x + i128{a.y} * b.
 
 // Counter-clockwise convex hull without collinear points (Andrew's monotone chain).
 inline std::vector<Vec2w> hull(std::vector<Vec2w> pts) {
-  std::sort(pts.begin(), pts.end(), [](Vec2w a, Vec2w b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });
+  std::sort(pts.begin(), pts.end(),
+            [](Vec2w a, Vec2w b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });
   pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
   if (pts.size() < 3) return pts;
   std::vector<Vec2w> h;
   for (int pass = 0; pass < 2; ++pass) {  // lower chain left to right, then upper right to left
     const size_t start = h.size();
     for (const Vec2w p : pts) {
-      while (h.size() >= start + 2 && crossExact(h.back() - h[h.size() - 2], p - h[h.size() - 2]) <= 0)
+      while (h.size() >= start + 2 &&
+             crossExact(h.back() - h[h.size() - 2], p - h[h.size() - 2]) <= 0)
         h.pop_back();
       h.push_back(p);
     }
