@@ -2,13 +2,29 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace platon::physics {
 namespace {
 
+// LSD radix sort, a byte per pass: linear, where std::sort's n log n dominated initialize().
+void radixSort(std::vector<int32_t>& values) {
+  std::vector<uint32_t> a(values.size()), b(values.size());
+  for (size_t i = 0; i < values.size(); ++i) a[i] = static_cast<uint32_t>(values[i]) ^ 0x80000000u;
+  for (int shift = 0; shift < 32; shift += 8) {
+    size_t start[257] = {};
+    for (const uint32_t x : a) ++start[((x >> shift) & 255) + 1];
+    if (start[((a.empty() ? 0 : a[0]) >> shift & 255) + 1] == a.size()) continue;  // one bucket: nothing to do
+    for (int k = 0; k < 256; ++k) start[k + 1] += start[k];
+    for (const uint32_t x : a) b[start[(x >> shift) & 255]++] = x;
+    a.swap(b);
+  }
+  for (size_t i = 0; i < values.size(); ++i) values[i] = static_cast<int32_t>(a[i] ^ 0x80000000u);
+}
+
 // Every k-th distinct value of the sorted projections, so about `count` cuts.
 std::vector<int32_t> pickCuts(std::vector<int32_t> values, size_t count) {
-  std::sort(values.begin(), values.end());
+  radixSort(values);
   values.erase(std::unique(values.begin(), values.end()), values.end());
   std::vector<int32_t> cuts;
   if (values.empty()) return {0};
@@ -20,14 +36,28 @@ std::vector<int32_t> pickCuts(std::vector<int32_t> values, size_t count) {
 
 }  // namespace
 
-int Grid::columnOf(int64_t x) const {
-  const auto it = std::upper_bound(xCuts_.begin(), xCuts_.end(), x);
-  return std::max(0, static_cast<int>(it - xCuts_.begin()) - 1);
+void Grid::Axis::index() {
+  // About four buckets per cut, each a power-of-two wide.
+  origin = cuts.front();
+  const int64_t span = int64_t{cuts.back()} - origin + 1;
+  shift = 0;
+  while ((span >> shift) > static_cast<int64_t>(4 * cuts.size())) ++shift;
+  const size_t buckets = static_cast<size_t>((span >> shift) + 2);
+  first.assign(buckets + 1, 0);
+  size_t cut = 0;
+  for (size_t b = 0; b <= buckets; ++b) {
+    const int64_t start = origin + (static_cast<int64_t>(b) << shift);
+    while (cut < cuts.size() && cuts[cut] < start) ++cut;
+    first[b] = static_cast<uint32_t>(cut);
+  }
 }
 
-int Grid::rowOf(int64_t y) const {
-  const auto it = std::upper_bound(yCuts_.begin(), yCuts_.end(), y);
-  return std::max(0, static_cast<int>(it - yCuts_.begin()) - 1);
+int Grid::Axis::cellOf(int64_t v) const {
+  if (v < origin) return 0;
+  const size_t b = std::min(static_cast<size_t>((v - origin) >> shift), first.size() - 2);
+  // Cuts before bucket b are all <= v; search the bucket's own cuts for the last one <= v.
+  const auto begin = cuts.begin() + first[b], end = cuts.begin() + first[b + 1];
+  return std::max(0, static_cast<int>(std::upper_bound(begin, end, v) - cuts.begin()) - 1);
 }
 
 CellRect Grid::cellsCovering(const Box& box) const {
@@ -35,9 +65,10 @@ CellRect Grid::cellsCovering(const Box& box) const {
   return {columnOf(box.x0), rowOf(box.y0), columnOf(box.x1), rowOf(box.y1)};
 }
 
-int Grid::cutNear(const std::vector<int32_t>& cuts, int64_t v, int hint) {
+int Grid::Axis::cellNear(int64_t v, int hint) const {
   const int n = static_cast<int>(cuts.size());
-  for (int step = 0; step < 4; ++step) {
+  if (hint < 0 || hint >= n) return cellOf(v);
+  for (int step = 0; step < 3; ++step) {
     if (hint > 0 && v < cuts[hint]) {
       --hint;
     } else if (hint + 1 < n && v >= cuts[hint + 1]) {
@@ -46,78 +77,100 @@ int Grid::cutNear(const std::vector<int32_t>& cuts, int64_t v, int hint) {
       return hint;
     }
   }
-  const auto it = std::upper_bound(cuts.begin(), cuts.end(), v);
-  return std::max(0, static_cast<int>(it - cuts.begin()) - 1);
+  return cellOf(v);
 }
 
 CellRect Grid::cellsCovering(const Box& box, const CellRect& near) const {
   if (cellLines_.empty()) return {};
   if (near.empty()) return cellsCovering(box);
-  return {cutNear(xCuts_, box.x0, near.x0), cutNear(yCuts_, box.y0, near.y0), cutNear(xCuts_, box.x1, near.x1),
-          cutNear(yCuts_, box.y1, near.y1)};
+  return {xAxis_.cellNear(box.x0, near.x0), yAxis_.cellNear(box.y0, near.y0), xAxis_.cellNear(box.x1, near.x1),
+          yAxis_.cellNear(box.y1, near.y1)};
 }
 
-// Visits every cell a segment passes through (a superset near cell corners is harmless):
-// column by column, the y-range of the segment inside the column's slab, rounded outwards.
+// Visits every cell a segment passes through (a superset near cell corners is harmless). `span` is
+// the segment's column and row range, found once by the caller. Within one column (most lines are
+// short) that range is the answer; otherwise the segment is walked column by column, taking the
+// y-range of the segment inside each column's slab, rounded outwards.
 template <class Visit>
-void Grid::forEachCell(const Segment& s, Visit&& visit) const {
+void Grid::forEachCell(const Segment& s, const CellRect& span, Visit&& visit) const {
+  const size_t stride = xAxis_.cuts.size();
+  if (span.x0 == span.x1 || span.y0 == span.y1) {  // one column or one row: the box is the answer
+    for (int r = span.y0; r <= span.y1; ++r)
+      for (int c = span.x0; c <= span.x1; ++c) visit(static_cast<size_t>(r) * stride + c);
+    return;
+  }
   Vec2 a = s.a, b = s.b;
   if (b.x < a.x) std::swap(a, b);
-  const int c0 = columnOf(a.x), c1 = columnOf(b.x);
-  const int64_t dx = int64_t{b.x} - a.x, dy = int64_t{b.y} - a.y;
-  for (int c = c0; c <= c1; ++c) {
-    int64_t lo, hi;
-    if (dx == 0) {
-      lo = std::min(a.y, b.y);
-      hi = std::max(a.y, b.y);
-    } else {
-      const int64_t xl = c == c0 ? a.x : xCuts_[c];
-      const int64_t xr = c == c1 ? b.x : xCuts_[c + 1];
-      const int64_t yl = a.y + static_cast<int64_t>(floorDiv(i128{xl - a.x} * dy, dx));
-      const int64_t yr = a.y + static_cast<int64_t>(floorDiv(i128{xr - a.x} * dy, dx));
-      lo = std::min(yl, yr);
-      hi = std::max(yl, yr) + 1;  // the floors above round down; one unit covers the ceiling
-      lo = std::max<int64_t>(lo, std::min(a.y, b.y));
-      hi = std::min<int64_t>(hi, std::max(a.y, b.y));
-    }
-    const int r0 = rowOf(lo), r1 = rowOf(hi);
-    for (int r = r0; r <= r1; ++r) visit(static_cast<size_t>(r) * xCuts_.size() + c);
+  const int64_t dx = int64_t{b.x} - a.x, dy = int64_t{b.y} - a.y;  // dx > 0 here
+  for (int c = span.x0; c <= span.x1; ++c) {
+    const int64_t xl = c == span.x0 ? a.x : xAxis_.cuts[c];
+    const int64_t xr = c == span.x1 ? b.x : xAxis_.cuts[c + 1];
+    const int64_t yl = a.y + static_cast<int64_t>(floorDiv((xl - a.x) * dy, dx));
+    const int64_t yr = a.y + static_cast<int64_t>(floorDiv((xr - a.x) * dy, dx));
+    // The floors round down; one more unit covers the ceiling. Clamp to the segment's own range.
+    const int64_t lo = std::max<int64_t>(std::min(yl, yr), std::min(a.y, b.y));
+    const int64_t hi = std::min<int64_t>(std::max(yl, yr) + 1, std::max(a.y, b.y));
+    const int r0 = yAxis_.cellNear(lo, span.y0), r1 = yAxis_.cellNear(hi, span.y1);
+    for (int r = r0; r <= r1; ++r) visit(static_cast<size_t>(r) * stride + c);
   }
 }
 
 void Grid::build(std::span<const Segment> segments) {
   const size_t n = segments.size();
-  std::vector<int32_t> xs, ys;
-  xs.reserve(2 * n);
-  ys.reserve(2 * n);
   int64_t minX = INT64_MAX, maxX = INT64_MIN, minY = INT64_MAX, maxY = INT64_MIN;
   for (const Segment& s : segments) {
-    for (const Vec2 p : {s.a, s.b}) {
-      xs.push_back(p.x);
-      ys.push_back(p.y);
-      minX = std::min<int64_t>(minX, p.x), maxX = std::max<int64_t>(maxX, p.x);
-      minY = std::min<int64_t>(minY, p.y), maxY = std::max<int64_t>(maxY, p.y);
-    }
+    minX = std::min<int64_t>({minX, s.a.x, s.b.x}), maxX = std::max<int64_t>({maxX, s.a.x, s.b.x});
+    minY = std::min<int64_t>({minY, s.a.y, s.b.y}), maxY = std::max<int64_t>({maxY, s.a.y, s.b.y});
   }
   // About n cells, shaped after the map's extent so long levels get more columns than rows.
   const double width = n ? static_cast<double>(maxX - minX + 1) : 1.0;
   const double height = n ? static_cast<double>(maxY - minY + 1) : 1.0;
   const double cells = std::max<double>(1.0, static_cast<double>(n));
   const double aspect = std::clamp(width / height, 1.0 / cells, cells);
-  xCuts_ = pickCuts(std::move(xs), static_cast<size_t>(std::ceil(std::sqrt(cells * aspect))));
-  yCuts_ = pickCuts(std::move(ys), static_cast<size_t>(std::ceil(std::sqrt(cells / aspect))));
+  // Cuts at endpoint projections. Only quantiles are needed, so a systematic sample of about 16
+  // projections per cut serves as well as all of them and keeps the sort small.
+  auto cutsFor = [&](bool x, size_t count) {
+    const size_t values = 2 * n;
+    const size_t stride = std::max<size_t>(1, values / (16 * std::max<size_t>(count, 1)));
+    std::vector<int32_t> sample;
+    sample.reserve(values / stride + 1);
+    for (size_t v = 0; v < values; v += stride) {
+      const Segment& s = segments[v / 2];
+      const Vec2 p = (v & 1) ? s.b : s.a;
+      sample.push_back(x ? p.x : p.y);
+    }
+    return pickCuts(std::move(sample), count);
+  };
+  xAxis_.cuts = cutsFor(true, static_cast<size_t>(std::ceil(std::sqrt(cells * aspect))));
+  yAxis_.cuts = cutsFor(false, static_cast<size_t>(std::ceil(std::sqrt(cells / aspect))));
+  xAxis_.index();
+  yAxis_.index();
 
-  const size_t cellCount = xCuts_.size() * yCuts_.size();
+  // Two passes over the lines: count each cell's entries, then fill the compressed table. Each
+  // line's cells are found from the previous line's (levels list neighbouring lines together),
+  // so the cell table is visited in nearly sequential order.
+  const size_t cellCount = xAxis_.cuts.size() * yAxis_.cuts.size();
+  auto forEachLineCell = [&](auto&& visit) {
+    CellRect span{0, 0, 0, 0};
+    for (uint32_t i = 0; i < n; ++i) {
+      const Segment& s = segments[i];
+      span = {xAxis_.cellNear(std::min(s.a.x, s.b.x), span.x0), yAxis_.cellNear(std::min(s.a.y, s.b.y), span.y0),
+              xAxis_.cellNear(std::max(s.a.x, s.b.x), span.x1), yAxis_.cellNear(std::max(s.a.y, s.b.y), span.y1)};
+      forEachCell(s, span, [&](size_t cell) { visit(cell, i); });
+    }
+  };
   cellStart_.assign(cellCount + 1, 0);
-  for (const Segment& s : segments) forEachCell(s, [&](size_t c) { ++cellStart_[c + 1]; });
-  for (size_t c = 0; c < cellCount; ++c) cellStart_[c + 1] += cellStart_[c];
-  cellLines_.resize(cellStart_[cellCount]);
-  std::vector<uint32_t> fill(cellStart_.begin(), cellStart_.end() - 1);
-  for (uint32_t i = 0; i < n; ++i) forEachCell(segments[i], [&](size_t c) { cellLines_[fill[c]++] = i; });
+  forEachLineCell([&](size_t cell, uint32_t) { ++cellStart_[cell + 1]; });
+  // cellStart_[c + 1] becomes cell c's start and serves as its write cursor, so that after the
+  // fill it holds cell c's end, which is cell c + 1's start: no second table needed.
+  uint32_t running = 0;
+  for (size_t c = 0; c < cellCount; ++c) running += std::exchange(cellStart_[c + 1], running);
+  cellLines_.resize(running);
+  forEachLineCell([&](size_t cell, uint32_t line) { cellLines_[cellStart_[cell + 1]++] = line; });
 }
 
 size_t Grid::memoryBytes() const {
-  return (xCuts_.capacity() + yCuts_.capacity()) * sizeof(int32_t) +
+  return xAxis_.bytes() + yAxis_.bytes() +
          (cellStart_.capacity() + cellLines_.capacity()) * sizeof(uint32_t);
 }
 

@@ -57,6 +57,11 @@ LineIndex MapPart::warp(Vec2 p0, Vec2 p1, MapPartId target, Vec2 t0, Vec2 t1, ui
   return static_cast<LineIndex>(lines_.size() - 1);
 }
 
+void MapPart::reserve(size_t count) {
+  lines_.reserve(count);
+  segments_.reserve(count);
+}
+
 void MapPart::setGravity(Vec2w g) {
   const int64_t limit = int64_t{kMaxMove} << 16;
   if (g.x < -limit || g.x > limit || g.y < -limit || g.y > limit)

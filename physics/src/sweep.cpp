@@ -70,6 +70,16 @@ Sweep sweep(std::span<const Vec2> poly, Vec2w motion, Segment seg) {
   return r;
 }
 
+Vec2w roundedStep(Vec2w m, Fraction t, const Constraint* keep) {
+  if (t == Fraction::one()) return m;
+  auto one = [&](int64_t mk, int64_t ck) {
+    const i128 q = i128{t.num} * mk;
+    const bool down = keep && ck != 0 ? ck > 0 : mk >= 0;
+    return static_cast<int64_t>(down ? floorDiv(q, t.den) : ceilDiv(q, t.den));
+  };
+  return {one(m.x, keep ? keep->c.x : 0), one(m.y, keep ? keep->c.y : 0)};
+}
+
 bool overlapsInterior(std::span<const Vec2> poly, Segment seg) {
   const int n = static_cast<int>(poly.size());
   for (int i = 0; i < n; ++i) {

@@ -10,19 +10,6 @@ namespace {
 
 constexpr int64_t kQ16 = 1 << 16;
 
-// t * m rounded to whole units. With `keep`, each component rounds the way that keeps the polygon
-// on the outer side of that axis (so the contact that stopped us is touched, never crossed);
-// otherwise towards the start of the move.
-Vec2w roundedMove(Vec2w m, Fraction t, const Constraint* keep) {
-  if (t == Fraction::one()) return m;
-  auto one = [&](int64_t mk, int64_t ck) {
-    const i128 q = i128{t.num} * mk;
-    const bool down = keep && ck != 0 ? ck > 0 : mk >= 0;
-    return static_cast<int64_t>(down ? floorDiv(q, t.den) : ceilDiv(q, t.den));
-  };
-  return {one(m.x, keep ? keep->c.x : 0), one(m.y, keep ? keep->c.y : 0)};
-}
-
 // Removes the part of v that points into the surface with normal n, rounding so that what is left
 // never points into it (dot(result, n) >= 0).
 Vec2w removeInto(Vec2w v, Vec2w n) {
@@ -223,7 +210,7 @@ void World::slide(EntityId id, Entity& e, Vec2w motion) {
       bool ok = true;
       for (size_t i = 0; i < n && ok; ++i) {
         const bool keepAxis = attempt == 0 && hit.kind != HitKind::None && i == hit.instance;
-        steps[i] = roundedMove(moves[i], t, keepAxis ? &hit.axis : nullptr);
+        steps[i] = roundedStep(moves[i], t, keepAxis ? &hit.axis : nullptr);
         if (steps[i] == Vec2w{} || (attempt == 0 && exactMove(moves[i], t))) continue;
         const Fraction first = firstBlock(id, e.instances[i], verts[i], steps[i]);
         if (first < Fraction::one()) {

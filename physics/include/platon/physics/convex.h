@@ -16,7 +16,8 @@ class Convex {
   // strictly convex. Throws Error naming the offending vertex index.
   explicit Convex(std::vector<Vec2> vertices);
 
-  std::span<const Vec2> vertices() const { return vertices_; }
+  std::span<const Vec2> vertices() const& { return vertices_; }
+  std::span<const Vec2> vertices() const&& = delete;  // would dangle: keep the Convex alive
   int size() const { return static_cast<int>(vertices_.size()); }
 
   // The shape turned by `angle` about its origin: each vertex rotated and rounded to the nearest

@@ -5,7 +5,10 @@
 // dense areas get small cells) but take only every k-th projection: about sqrt(n * aspect) columns
 // and sqrt(n / aspect) rows, so about n cells in all. Building sorts the projections (n log n), then
 // counts and fills a compressed cell -> lines table in two linear passes; memory is one offset
-// per cell plus one entry per (line, cell) crossing.
+// per cell plus one entry per (line, cell) crossing. Lines are taken in the order given and each
+// line's cells are searched for beside the previous line's, so a level that lists neighbouring
+// lines together (they all do) fills the table nearly sequentially; a shuffled list is about three
+// times slower, from cache misses alone.
 #pragma once
 #include <span>
 #include <vector>
@@ -32,29 +35,39 @@ class Grid {
  public:
   void build(std::span<const Segment> segments);
 
-  int columns() const { return static_cast<int>(xCuts_.size()); }
-  int rows() const { return static_cast<int>(yCuts_.size()); }
+  int columns() const { return static_cast<int>(xAxis_.cuts.size()); }
+  int rows() const { return static_cast<int>(yAxis_.cuts.size()); }
   // Cells whose area meets the closed box (clamped to the grid; cells on the border extend outwards).
   CellRect cellsCovering(const Box& box) const;
   // The same, searching outwards from `near` first: a moving entity's rectangle shifts by a cell
   // or two per frame, so this is a few comparisons instead of four binary searches.
   CellRect cellsCovering(const Box& box, const CellRect& near) const;
   std::span<const uint32_t> cell(int column, int row) const {
-    const size_t c = static_cast<size_t>(row) * xCuts_.size() + column;
+    const size_t c = static_cast<size_t>(row) * xAxis_.cuts.size() + column;
     return {cellLines_.data() + cellStart_[c], cellLines_.data() + cellStart_[c + 1]};
   }
   size_t memoryBytes() const;
   size_t entries() const { return cellLines_.size(); }
 
  private:
-  int columnOf(int64_t x) const;
-  int rowOf(int64_t y) const;
-  static int cutNear(const std::vector<int32_t>& cuts, int64_t v, int hint);
+  // Cuts along one axis, with a uniform bucket table over their range so that finding the cell of
+  // a coordinate is a table read and a search among the few cuts in one bucket.
+  struct Axis {
+    std::vector<int32_t> cuts;   // cell i covers [cuts[i], cuts[i+1]); the ends extend to infinity
+    std::vector<uint32_t> first; // per bucket: index of the first cut at or after the bucket's start
+    int64_t origin = 0;
+    int shift = 0;
+    void index();
+    int cellOf(int64_t v) const;
+    int cellNear(int64_t v, int hint) const;  // looks beside `hint` first
+    size_t bytes() const { return cuts.capacity() * 4 + first.capacity() * 4; }
+  };
+  int columnOf(int64_t x) const { return xAxis_.cellOf(x); }
+  int rowOf(int64_t y) const { return yAxis_.cellOf(y); }
   template <class Visit>
-  void forEachCell(const Segment& s, Visit&& visit) const;
+  void forEachCell(const Segment& s, const CellRect& span, Visit&& visit) const;
 
-  std::vector<int32_t> xCuts_;  // column c covers [xCuts_[c], xCuts_[c+1]); the ends extend to infinity
-  std::vector<int32_t> yCuts_;
+  Axis xAxis_, yAxis_;
   std::vector<uint32_t> cellStart_;  // size cells + 1
   std::vector<uint32_t> cellLines_;
 };

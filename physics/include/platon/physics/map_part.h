@@ -44,6 +44,9 @@ class MapPart {
   void setGravity(Vec2w gravityQ16);
   Vec2w gravity() const { return gravity_; }
 
+  // Room for `count` lines in all: a loader that knows the count saves the vectors' regrowth.
+  void reserve(size_t count);
+
   // Checks warp targets and builds the grid. Lines cannot be added afterwards.
   void initialize();
   bool initialized() const { return initialized_; }

@@ -46,9 +46,15 @@ struct Sweep {
   Vec2w normal() const { return -enterAxis.c; }
 };
 
-// `polygon`: world vertices, counter-clockwise. |motion component| <= 2^31 - 2 and every point in
+// `polygon`: world vertices, counter-clockwise; `segment` of non-zero length (map parts refuse
+// others). |motion component| <= 2^31 - 2 and every point in
 // range (see vec2.h). No allocation, no floating point.
 Sweep sweep(std::span<const Vec2> polygon, Vec2w motion, Segment segment);
+
+// t * motion rounded to whole units the way the world stops a move. With `keep` (the axis of the
+// contact that stopped it), each component rounds to the side that keeps the polygon on the outer
+// side of that axis, so it ends touching or short, never across; without, towards the start.
+Vec2w roundedStep(Vec2w motion, Fraction t, const Constraint* keep = nullptr);
 
 // Static tests at the current position.
 bool overlapsInterior(std::span<const Vec2> polygon, Segment segment);  // interiors meet
