@@ -22,6 +22,7 @@
 #include <memory>
 #include <vector>
 
+#include "rng.h"
 #include "platon/physics/world.h"
 
 namespace {
@@ -57,19 +58,7 @@ double rssBytes() {
   return static_cast<double>(resident) * static_cast<double>(sysconf(_SC_PAGESIZE));
 }
 
-// splitmix64: the same map on every platform and standard library.
-struct Rng {
-  uint64_t state;
-  uint64_t next() {
-    uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-  }
-  double uniform(double lo, double hi) {
-    return lo + (hi - lo) * static_cast<double>(next() >> 11) * 0x1p-53;
-  }
-};
+using platon::bench::Rng;
 
 Vec2 units(double xMetres, double yMetres) {
   return {static_cast<int32_t>(std::lround(xMetres * kUnitsPerMetre)),

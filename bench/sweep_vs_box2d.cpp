@@ -23,6 +23,7 @@
 #include <optional>
 #include <vector>
 
+#include "rng.h"
 #include "platon/physics/convex.h"
 #include "platon/physics/sweep.h"
 
@@ -40,20 +41,7 @@ constexpr ld kPenetrationMetres = 1e-9L;
 // radii minus one b2_polygonRadius); a start already closer counts as initial overlap, no hit.
 constexpr float kCastTargetMetres = b2_polygonRadius;
 
-// splitmix64: the same queries on every platform and standard library.
-struct Rng {
-  uint64_t state;
-  uint64_t next() {
-    uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-  }
-  double uniform(double lo, double hi) {
-    return lo + (hi - lo) * static_cast<double>(next() >> 11) * 0x1p-53;
-  }
-  int between(int lo, int hi) { return lo + static_cast<int>(next() % static_cast<uint64_t>(hi - lo + 1)); }
-};
+using platon::bench::Rng;
 
 struct Query {
   Vec2 origin;                    // polygon position, world units

@@ -152,7 +152,13 @@ void World::updatePierceState(EntityId id, Entity& e, const std::vector<std::vec
     std::sort(overlapping.begin(), overlapping.end());
     inst.overlapping = std::move(overlapping);
   }
-  std::stable_sort(events.begin(), events.end(), [](const Event& a, const Event& b) { return a.t < b.t; });
+  // Time order; ties in a fixed order (instance, line, begin before end), never region order.
+  std::sort(events.begin(), events.end(), [](const Event& a, const Event& b) {
+    if (a.t != b.t) return a.t < b.t;
+    if (a.instance != b.instance) return a.instance < b.instance;
+    if (a.line != b.line) return a.line < b.line;
+    return a.begin > b.begin;
+  });
   for (const Event& ev : events) {
     const Contact c = makeContact(id, e.instances[ev.instance], ev.line, ev.t, ev.normal, ev.points);
     ++report_.pierceEvents;

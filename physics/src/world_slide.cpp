@@ -57,10 +57,16 @@ struct Hit {
   Sweep sweep;
   Constraint axis;
 
-  // Earlier wins; at equal times a solid contact wins over a warp so walls at edges hold.
-  bool improvedBy(Fraction when, HitKind kind2) const {
+  // Earlier wins. At equal times: a solid contact before a warp (so walls at edges hold), then the
+  // lower instance, then the lower line index. The order never depends on the grid or on the
+  // order lines entered a region, so the same map gives the same motion however it is indexed.
+  bool improvedBy(Fraction when, HitKind kind2, size_t instance2, LineIndex line2) const {
     if (kind == HitKind::None) return when < Fraction::one();
-    return when < t || (when == t && kind == HitKind::Warp && kind2 != HitKind::Warp);
+    if (when != t) return when < t;
+    const bool warp = kind == HitKind::Warp, warp2 = kind2 == HitKind::Warp;
+    if (warp != warp2) return warp;
+    if (instance2 != instance) return instance2 < instance;
+    return line2 < line;
   }
 };
 
@@ -188,7 +194,7 @@ void World::slide(EntityId id, Entity& e, Vec2w motion) {
         const Sweep s = sweep(verts[i], moves[i], seg);
         if (!s.hitsWithinFrame()) continue;
         const HitKind kind = pierce ? HitKind::Warp : HitKind::Solid;
-        if (hit.improvedBy(s.enter, kind)) hit = {kind, s.enter, i, lines[k], s, s.enterAxis};
+        if (hit.improvedBy(s.enter, kind, i, lines[k])) hit = {kind, s.enter, i, lines[k], s, s.enterAxis};
       }
       Constraint bounds[4];
       boundConstraints(verts[i], bounds);
@@ -196,7 +202,7 @@ void World::slide(EntityId id, Entity& e, Vec2w motion) {
         const int64_t rate = dot(c.c, moves[i]);
         if (rate <= 0) continue;
         const Fraction when{c.slack, rate};
-        if (hit.improvedBy(when, HitKind::Bound)) hit = {HitKind::Bound, when, i, kWorldBoundLine, {}, c};
+        if (hit.improvedBy(when, HitKind::Bound, i, kWorldBoundLine)) hit = {HitKind::Bound, when, i, kWorldBoundLine, {}, c};
       }
     }
     // 3. Move every instance to that time, rounded to the safe side. A step that is exactly on

@@ -54,7 +54,9 @@ TEST(Grid, CellsCoveringABoxHoldEveryLineThatMeetsIt) {
       const Box box{x, y, x + static_cast<int64_t>(rng() % 300) + 1, y + static_cast<int64_t>(rng() % 300) + 1};
       const std::set<uint32_t> found = scan(grid, grid.cellsCovering(box));
       for (uint32_t i = 0; i < segments.size(); ++i)
-        if (meets(segments[i], box)) ASSERT_TRUE(found.count(i)) << "line " << i << " missed, max length " << maxLength;
+        if (meets(segments[i], box)) {
+          ASSERT_TRUE(found.count(i)) << "line " << i << " missed, max length " << maxLength;
+        }
     }
   }
 }
