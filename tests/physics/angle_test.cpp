@@ -1,8 +1,11 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
-#include "platon/physics/angle.h"
+#include "platon/physics/convex.h"
+#include "platon/physics/fraction.h"
 
 using namespace platon::physics;
 
@@ -12,4 +15,59 @@ TEST(Angle, QuarterTurnsAreExact) {
   EXPECT_EQ(rotationOf(kQuarterTurn).c, 0);
   EXPECT_EQ(rotationOf(kHalfTurn).c, -(1 << 30));
   EXPECT_EQ(rotationOf(3 * kQuarterTurn).s, -(1 << 30));
+}
+
+TEST(Angle, RotationIsUnitLengthAndMatchesTheAngle) {
+  for (int64_t deg = -720; deg <= 720; deg += 7) {
+    const Rotation r = rotationOf(angleFromDegrees(deg));
+    const double rad = static_cast<double>(deg) * 3.14159265358979323846 / 180.0;
+    EXPECT_NEAR(static_cast<double>(r.c) / (1 << 30), std::cos(rad), 1.5e-9) << deg;
+    EXPECT_NEAR(static_cast<double>(r.s) / (1 << 30), std::sin(rad), 1.5e-9) << deg;
+  }
+}
+
+TEST(Angle, AngleOfInvertsRotation) {
+  for (int64_t deg = 0; deg < 360; deg += 5) {
+    const Angle a = angleFromDegrees(deg);
+    const Rotation r = rotationOf(a);
+    for (const int64_t scale : {int64_t{1}, int64_t{1000}, int64_t{1} << 20}) {
+      const Angle back = angleOf({r.c * scale, r.s * scale});
+      const int32_t error = static_cast<int32_t>(back - a);
+      EXPECT_LE(std::abs(error), 1) << deg << " degrees, scale " << scale;
+    }
+  }
+  EXPECT_EQ(angleOf({0, 0}), 0u);
+  EXPECT_EQ(angleOf({5, 0}), 0u);
+  EXPECT_EQ(angleOf({-5, 0}), kHalfTurn);
+}
+
+TEST(Angle, DegreesConvertExactlyAtQuarterTurns) {
+  EXPECT_EQ(angleFromDegrees(90), kQuarterTurn);
+  EXPECT_EQ(angleFromDegrees(-90), 3 * kQuarterTurn);
+  EXPECT_EQ(angleFromDegrees(450), kQuarterTurn);
+  const int32_t pentagon = static_cast<int32_t>(angleFromDegrees(72) * 5u);  // 2^32 / 5 is not whole
+  EXPECT_LE(std::abs(pentagon), 5);
+}
+
+TEST(Fraction, ComparesExactlyAtTheLimits) {
+  const int64_t big = INT64_MAX;
+  EXPECT_LT((Fraction{big - 1, big}), (Fraction{big, big}));
+  EXPECT_LT((Fraction{-big, 1}), (Fraction{big, 1}));
+  EXPECT_EQ((Fraction{2, 4}), (Fraction{1, 2}));
+  EXPECT_GT((Fraction{1, big}), Fraction::zero());
+  EXPECT_EQ((Fraction{3, 4}).scaledFloor(8), 192);
+}
+
+TEST(Convex, RotationRoundsAndStaysConvex) {
+  const Convex box = Convex::box(100, 50);
+  const Convex quarter = box.rotated(kQuarterTurn);
+  int64_t maxX = 0, maxY = 0;
+  for (const Vec2 v : quarter.vertices()) maxX = std::max<int64_t>(maxX, v.x), maxY = std::max<int64_t>(maxY, v.y);
+  EXPECT_EQ(maxX, 50);
+  EXPECT_EQ(maxY, 100);
+  for (int64_t deg = 1; deg < 360; deg += 13) {
+    const Convex turned = box.rotated(angleFromDegrees(deg));
+    EXPECT_NO_THROW(Convex(std::vector<Vec2>(turned.vertices().begin(), turned.vertices().end()))) << deg;
+  }
+  EXPECT_EQ(convexHull({{0, 0}, {2, 2}, {1, 1}, {2, 0}, {0, 2}, {1, 0}}).size(), 4u);
 }
