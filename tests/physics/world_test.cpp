@@ -177,7 +177,8 @@ TEST(World, MotionDoesNotDependOnTheGrid) {
     for (int i = 0; i < 60; ++i) s.part->line({i * 50, (i % 3) * 7}, {(i + 1) * 50, ((i + 1) % 3) * 7});
     for (int i = 0; i < 12; ++i) s.part->line({200 + i * 230, 90}, {300 + i * 230, 90 + (i % 2) * 30});
     for (int i = 0; i < farLines; ++i) {
-      const int32_t x = 100000 + (i * 7919) % 50000, y = 100000 + (i * 104729) % 50000;
+      const int32_t x = 100000 + static_cast<int32_t>((int64_t{i} * 7919) % 50000);
+      const int32_t y = 100000 + static_cast<int32_t>((int64_t{i} * 104729) % 50000);
       s.part->line({x, y}, {x + 40, y + 13});
     }
     s.part->setGravity({0, -kUnit / 2});
@@ -200,7 +201,8 @@ TEST(World, TiesBetweenLinesAreBrokenTheSameWayOnAnyGrid) {
     Scene s;
     for (int i = 0; i < 40; ++i) s.part->line({i * 100, (i % 2) * 30}, {(i + 1) * 100, ((i + 1) % 2) * 30});
     for (int i = 0; i < farLines; ++i) {
-      const int32_t x = -300000 + (i * 7919) % 600000, y = 50000 + (i * 104729) % 50000;
+      const int32_t x = -300000 + static_cast<int32_t>((int64_t{i} * 7919) % 600000);
+      const int32_t y = 50000 + static_cast<int32_t>((int64_t{i} * 104729) % 50000);
       s.part->line({x, y}, {x + 40, y + 13});
     }
     s.part->setGravity({0, -kUnit});
