@@ -1,0 +1,69 @@
+// The stiff and extreme scenes (tests/scenes): Platon's outcome must be perfect on each, at the
+// origin and pressed against both ends of the coordinate range.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "platon/physics/vec2.h"
+#include "stability_scenes.h"
+
+using namespace platon::scenes;
+
+namespace {
+constexpr double kUnitsPerMetre = 1024;
+
+// Largest |coordinate| a scene can reach (its lines, and the body's start plus its travel), in
+// units, so it can be moved flush against the range limit.
+int64_t extentUnits(const Scene& s) {
+  const double travel = std::hypot(s.vx, s.vy) * s.frames / s.hz;
+  double m = std::max(std::fabs(s.start.x), std::fabs(s.start.y)) + travel + 20;
+  for (const auto* list : {&s.solids, &s.triggers})
+    for (const Seg& g : *list)
+      for (const double v : g) m = std::max(m, std::fabs(v));
+  return static_cast<int64_t>(std::ceil(m * kUnitsPerMetre)) + 16;
+}
+
+void expectClean(const Scene& s, const Outcome& o, const std::string& where) {
+  SCOPED_TRACE(s.name + " " + where);
+  EXPECT_EQ(o.overlapFrames, 0) << "penetration";
+  EXPECT_EQ(o.tunnelFrames, 0) << "tunnel";
+  EXPECT_EQ(o.missedEvents, 0) << "missed trigger events";
+  EXPECT_EQ(o.triggerBegins, s.expectedCrossings);
+  EXPECT_EQ(o.triggerEnds, s.expectedCrossings);
+  if (s.settleFrames >= 0) {
+    EXPECT_EQ(o.drift, 0.0) << "drift at rest";
+  }
+  EXPECT_EQ(o.stuckFrames, 0) << "stuck";
+}
+}  // namespace
+
+class Stability : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(Stability, PlatonIsExactAtTheOriginAndAtBothRangeLimits) {
+  for (const Scene& s : stabilityScenes()) {
+    if (s.name != GetParam()) continue;
+    expectClean(s, runPlaton(s, kUnitsPerMetre), "at the origin");
+    if (s.platonOnly || s.frames > 100000) return;  // the long rest runs once
+    const int64_t limit = platon::physics::kCoordLimit - extentUnits(s);
+    expectClean(s, runPlaton(s, kUnitsPerMetre, limit), "near +2^30");
+    expectClean(s, runPlaton(s, kUnitsPerMetre, -limit), "near -2^30");
+    return;
+  }
+  FAIL() << "no scene named " << GetParam();
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, Stability,
+                         ::testing::Values("high-gravity", "max-speed", "thin-stick", "tiny-body", "slide-chain",
+                                           "wedge-10.0deg", "wedge-1.0deg", "wedge-0.1deg", "star-hub",
+                                           "dense-parallel", "spin-corridor", "fast-trigger", "warp-corner",
+                                           "rest-1e6"),
+                         [](const auto& param) {
+                           std::string n = param.param;
+                           for (char& c : n)
+                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                           return n;
+                         });
+
+TEST(StabilityScenes, EverySceneIsCovered) {
+  EXPECT_EQ(stabilityScenes().size(), 14u);
+}

@@ -1,0 +1,277 @@
+#include "stability_scenes.h"
+
+#include <chrono>
+#include <cmath>
+
+#include "platon/physics/world.h"
+
+namespace platon::scenes {
+namespace {
+
+using namespace platon::physics;
+
+constexpr double kPi = 3.14159265358979323846;
+
+std::vector<Point> box(double halfWidth, double halfHeight) {
+  return {{-halfWidth, -halfHeight}, {halfWidth, -halfHeight}, {halfWidth, halfHeight}, {-halfWidth, halfHeight}};
+}
+
+std::vector<Point> regular(int n, double radius) {
+  std::vector<Point> out;
+  for (int i = 0; i < n; ++i)
+    out.push_back({radius * std::cos(2 * kPi * i / n), radius * std::sin(2 * kPi * i / n)});
+  return out;
+}
+
+Scene restOnFloor(std::string name, std::string what, double gravity, std::vector<Point> shape, double height,
+                  int frames) {
+  Scene s;
+  s.name = std::move(name);
+  s.what = std::move(what);
+  s.gravityY = -gravity;
+  s.solids = {{-50, 0, 50, 0}};
+  s.shape = std::move(shape);
+  s.start = {0, height, 0};
+  s.frames = frames;
+  s.settleFrames = frames / 2;
+  s.allowed = [](const Pose& p) { return p.y > 0; };
+  return s;
+}
+
+Outcome runWarpCorner(double upm);
+
+}  // namespace
+
+std::vector<Scene> stabilityScenes(double offset) {
+  std::vector<Scene> scenes;
+  scenes.push_back(restOnFloor("high-gravity", "100 g: a 0.5 m box dropped from 10 m onto a floor", 981, box(0.25, 0.25),
+                               10, 600));
+  {
+    Scene s;
+    s.name = "max-speed";
+    s.what = "a 0.2 m box at 6 km/s (100 m per frame) towards three 1 mm-apart walls 1 km away";
+    s.solids = {{1000, -5, 1000, 5}, {1000.001, -5, 1000.001, 5}, {1000.002, -5, 1000.002, 5}};
+    s.shape = box(0.1, 0.1);
+    s.vx = 6000;
+    s.frames = 60;
+    s.settleFrames = 30;
+    s.allowed = [](const Pose& p) { return p.x < 1000; };
+    scenes.push_back(s);
+  }
+  scenes.push_back(restOnFloor("thin-stick", "a 20 m x 2 cm stick falling flat onto a floor", 9.81, box(10, 0.01), 3, 600));
+  scenes.push_back(restOnFloor("tiny-body", "a 3 mm triangle falling onto a floor", 9.81,
+                               {{-0.0015, -0.001}, {0.0015, -0.001}, {0, 0.002}}, 1, 600));
+  {
+    Scene s;
+    s.name = "slide-chain";
+    s.what = "a 0.5 m box driven at 5 m/s along 200 collinear 0.25 m segments";
+    for (int i = 0; i < 200; ++i) s.solids.push_back({i * 0.25 - 1, 0, (i + 1) * 0.25 - 1, 0});
+    s.gravityY = -9.81;
+    s.shape = box(0.25, 0.25);
+    s.start = {0, 0.25, 0};
+    s.vx = 5;
+    s.drive = true;
+    s.frames = 480;
+    s.minSpeedX = 5;
+    s.allowed = [](const Pose& p) { return p.y > 0; };
+    scenes.push_back(s);
+  }
+  for (const double halfAngle : {10.0, 1.0, 0.1}) {
+    Scene s;
+    s.name = "wedge-" + std::to_string(halfAngle).substr(0, std::to_string(halfAngle).find('.') + 2) + "deg";
+    s.what = "a 0.2 m octagon dropped into a V of half-angle " + std::to_string(halfAngle).substr(0, 4) + " degrees";
+    const double t = std::tan(halfAngle * kPi / 180);
+    s.solids = {{-t * 1000, 1000, 0, 0}, {0, 0, t * 1000, 1000}};
+    s.gravityY = -9.81;
+    s.shape = regular(8, 0.1);
+    s.start = {0, 0.1 / t + 1, 0};
+    s.frames = 1200;
+    s.settleFrames = 900;
+    s.allowed = [](const Pose& p) { return p.y > 0; };
+    scenes.push_back(s);
+  }
+  {
+    Scene s;
+    s.name = "star-hub";
+    s.what = "a 0.2 m octagon dropped into a star of 64 lines meeting at one point";
+    for (int i = 0; i < 64; ++i)
+      s.solids.push_back({0, 0, 3 * std::cos(2 * kPi * (i + 0.5) / 64), 3 * std::sin(2 * kPi * (i + 0.5) / 64)});
+    s.gravityY = -9.81;
+    s.shape = regular(8, 0.1);
+    s.start = {0.013, 3.5, 0};
+    s.frames = 900;
+    s.settleFrames = 600;
+    s.allowed = [](const Pose& p) { return p.y > 0; };
+    scenes.push_back(s);
+  }
+  {
+    Scene s;
+    s.name = "dense-parallel";
+    s.what = "a 0.5 m box at 50 g driven at 3 m/s over 200 lines 1 mm apart";
+    for (int i = 0; i < 200; ++i) s.solids.push_back({-10, -i * 0.001, 40, -i * 0.001});
+    s.gravityY = -490;
+    s.shape = box(0.25, 0.25);
+    s.start = {0, 0.3, 0};
+    s.vx = 3;
+    s.drive = true;
+    s.frames = 600;
+    s.allowed = [](const Pose& p) { return p.y > 0; };
+    scenes.push_back(s);
+  }
+  {
+    Scene s;
+    s.name = "spin-corridor";
+    s.what = "a 1 m x 0.1 m stick spinning at 10 rad/s, driven at 1 m/s in a 0.3 m corridor";
+    s.solids = {{-5, 0.15, 40, 0.15}, {40, -0.15, -5, -0.15}};
+    s.shape = box(0.5, 0.05);
+    s.vx = 1;
+    s.drive = true;
+    s.spin = 10;
+    s.rotates = true;
+    s.frames = 600;
+    s.allowed = [](const Pose& p) { return std::fabs(p.y) < 0.15; };
+    scenes.push_back(s);
+  }
+  {
+    Scene s;
+    s.name = "fast-trigger";
+    s.what = "a 0.2 m box at 3 km/s through 10 trigger lines 5 m apart (2 frames)";
+    for (int i = 0; i < 10; ++i) s.triggers.push_back({10.0 + 5 * i, -5, 10.0 + 5 * i, 5});
+    s.shape = box(0.1, 0.1);
+    s.vx = 3000;
+    s.frames = 3;
+    s.expectedCrossings = 10;
+    s.allowed = [](const Pose&) { return true; };
+    scenes.push_back(s);
+  }
+  {
+    Scene s;
+    s.name = "warp-corner";
+    s.what = "a 0.5 m box straddling a cube edge, pressed into a corner on both faces, 10^4 frames";
+    s.frames = 10000;
+    s.platonOnly = [](double upm) { return runWarpCorner(upm); };
+    scenes.push_back(s);
+  }
+  scenes.push_back(restOnFloor("rest-1e6", "a 0.5 m box resting on a floor for 10^6 frames", 9.81, box(0.25, 0.25), 0.25,
+                               1000000));
+  scenes.back().settleFrames = 10;
+  for (Scene& s : scenes) {
+    if (offset == 0) continue;
+    for (Seg& g : s.solids) g = {g[0] + offset, g[1] + offset, g[2] + offset, g[3] + offset};
+    for (Seg& g : s.triggers) g = {g[0] + offset, g[1] + offset, g[2] + offset, g[3] + offset};
+    s.start.x += offset;
+    s.start.y += offset;
+    s.allowed = [inner = s.allowed, offset](const Pose& p) { return inner({p.x - offset, p.y - offset, p.angle}); };
+  }
+  return scenes;
+}
+
+namespace {
+
+struct TriggerCounter : Rules {
+  int begins = 0, ends = 0;
+  bool pierce(EntityId, const LineRef& line) override { return line.tag == 1 || line.kind == LineKind::Warp; }
+  void beginContact(const Contact& c) override { begins += c.line.tag == 1; }
+  void endContact(const Contact& c) override { ends += c.line.tag == 1; }
+};
+
+int32_t toUnits(double metres, double upm) { return static_cast<int32_t>(std::llround(metres * upm)); }
+
+// Two faces of a cube (edge L = 10 m): face A's right edge is face B's bottom edge, turned a quarter.
+// A has a floor; B has the floor's continuation and a wall 0.1 m past the edge. Driven right, the
+// box crosses 0.1 m onto B and is held in the corner the floor (on A) and the wall (on B) make.
+Outcome runWarpCorner(double upm) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const int32_t L = toUnits(10, upm), wall = toUnits(0.1, upm), half = toUnits(0.25, upm);
+  World world;
+  MapPart& a = world.createMapPart(1);
+  MapPart& b = world.createMapPart(2);
+  a.line({0, 0}, {L, 0});
+  a.warp({L, 0}, {L, L}, 2, {L, 0}, {0, 0});
+  b.warp({0, 0}, {L, 0}, 1, {L, L}, {L, 0});
+  b.line({L, 0}, {L, L});           // A's floor continued onto B
+  b.line({0, wall}, {L, wall});     // the wall on B
+  const double q16 = 65536.0 * upm;
+  a.setGravity({0, std::llround(-9.81 * q16 / 3600)});
+  b.setGravity({0, std::llround(-9.81 * q16 / 3600)});
+  a.initialize();
+  b.initialize();
+  const EntityId body = world.createEntity(Convex::box(half, half));
+  world.insert(body, 1, {L - toUnits(1, upm), half}, 0);
+  const int64_t vx = std::llround(2 * q16 / 60);
+  Outcome out;
+  Vec2 settled{};
+  for (int f = 1; f <= 10000; ++f) {
+    world.setVelocity(body, {vx, world.entity(body).velocityQ16.y});
+    world.solve();
+    out.overlapFrames += world.countOverlaps() > 0;
+    const Entity& e = world.entity(body);
+    const Instance* onA = e.instanceIn(1);
+    if (!onA || onA->position.x > L + wall - half || onA->position.y < half) ++out.tunnelFrames;
+    if (f == 2000 && onA) settled = onA->position;
+    if (f > 2000 && onA)
+      out.drift = std::max(out.drift, std::hypot(onA->position.x - settled.x, onA->position.y - settled.y) / upm);
+    if (f > 2000 && e.instances.size() != 2) ++out.stuckFrames;  // the straddle must hold steadily
+  }
+  const Instance* onA = world.entity(body).instanceIn(1);
+  if (onA) out.final = {onA->position.x / upm, onA->position.y / upm, 0};
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace
+
+Outcome runPlaton(const Scene& scene, double upm, int64_t offsetUnits) {
+  if (scene.platonOnly) return scene.platonOnly(upm);
+  const auto t0 = std::chrono::steady_clock::now();
+  auto at = [&](double x, double y) {
+    return Vec2{static_cast<int32_t>(toUnits(x, upm) + offsetUnits), static_cast<int32_t>(toUnits(y, upm) + offsetUnits)};
+  };
+  World world;
+  MapPart& part = world.createMapPart(1);
+  for (const Seg& g : scene.solids) part.line(at(g[0], g[1]), at(g[2], g[3]));
+  for (const Seg& g : scene.triggers) part.line(at(g[0], g[1]), at(g[2], g[3]), 1);
+  const double q16 = 65536.0 * upm;
+  part.setGravity({std::llround(scene.gravityX * q16 / (scene.hz * scene.hz)),
+                   std::llround(scene.gravityY * q16 / (scene.hz * scene.hz))});
+  part.initialize();
+  TriggerCounter counter;
+  world.setRules(&counter);
+  std::vector<Vec2> shape;
+  for (const Point& p : scene.shape) shape.push_back({toUnits(p[0], upm), toUnits(p[1], upm)});
+  const EntityId body = world.createEntity(Convex(convexHull(shape)));
+  world.insert(body, 1, at(scene.start.x, scene.start.y), 0);
+  const int64_t vx = std::llround(scene.vx * q16 / scene.hz);
+  world.setVelocity(body, {vx, std::llround(scene.vy * q16 / scene.hz)});
+  world.setAngularVelocity(body, static_cast<int32_t>(std::llround(scene.spin / scene.hz * 4294967296.0 / (2 * kPi))));
+  const bool checkEveryFrame = scene.frames <= 100000;
+  Outcome out;
+  Pose settled;
+  auto pose = [&] {
+    const Instance& inst = world.entity(body).instances.at(0);
+    return Pose{static_cast<double>(inst.position.x - offsetUnits) / upm,
+                static_cast<double>(inst.position.y - offsetUnits) / upm,
+                world.entity(body).angle * 2 * kPi / 4294967296.0};
+  };
+  Pose previous = pose();
+  for (int f = 1; f <= scene.frames; ++f) {
+    if (scene.drive) world.setVelocity(body, {vx, world.entity(body).velocityQ16.y});
+    world.solve();
+    const Pose p = pose();
+    if (checkEveryFrame || f == scene.frames) out.overlapFrames += world.countOverlaps() > 0;
+    if (!scene.allowed({p.x, p.y, p.angle})) ++out.tunnelFrames;
+    if (scene.minSpeedX > 0 && (p.x - previous.x) * scene.hz < 0.5 * scene.minSpeedX) ++out.stuckFrames;
+    if (f == scene.settleFrames) settled = p;
+    if (scene.settleFrames >= 0 && f > scene.settleFrames)
+      out.drift = std::max(out.drift, std::hypot(p.x - settled.x, p.y - settled.y));
+    previous = p;
+  }
+  out.final = pose();
+  out.triggerBegins = counter.begins;
+  out.triggerEnds = counter.ends;
+  out.missedEvents = std::max(0, scene.expectedCrossings - counter.begins) + std::max(0, scene.expectedCrossings - counter.ends);
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace platon::scenes

@@ -1,0 +1,65 @@
+// The stiff and extreme scenes, described once in SI units so that the ctest assertions (Platon)
+// and the comparison table (Platon, Box2D, Chipmunk) run exactly the same thing.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace platon::scenes {
+
+using Point = std::array<double, 2>;
+using Seg = std::array<double, 4>;  // x0 y0 x1 y1, metres
+
+struct Pose {
+  double x = 0, y = 0, angle = 0;
+};
+
+struct Scene {
+  std::string name;
+  std::string what;                  // one line for the table
+  double gravityX = 0, gravityY = 0; // m/s^2
+  std::vector<Seg> solids;
+  std::vector<Seg> triggers;         // pierceable lines whose crossings are counted
+  std::vector<Point> shape;          // the body, counter-clockwise, relative to its origin
+  Pose start;
+  double vx = 0, vy = 0;             // m/s, set once (or every frame when `drive`)
+  bool drive = false;                // keep setting (vx, vy-component-if-free) every frame
+  double spin = 0;                   // rad/s
+  bool rotates = false;              // false: fixed rotation (the peers' bodies too)
+  double hz = 60;
+  int frames = 600;
+  int expectedCrossings = 0;         // trigger lines crossed, counted begin + end
+  // Where the body's origin is allowed to be (false = it went through a line: a tunnel).
+  std::function<bool(const Pose&)> allowed;
+  // For rest scenes: frames after which the body must not move any more (drift is measured after).
+  int settleFrames = -1;
+  // For sliding scenes: the body should keep moving along x at least this fast (m/s).
+  double minSpeedX = 0;
+  // Scenes only Platon can express (warps between map parts) run this instead; peers show n/a.
+  std::function<struct Outcome(double unitsPerMetre)> platonOnly;
+};
+
+// Outcomes of one run, in metres where lengths.
+struct Outcome {
+  int overlapFrames = 0;       // frames with any overlap of a solid line's interior
+  double maxPenetration = 0;
+  int tunnelFrames = 0;        // frames with the origin outside `allowed`
+  int triggerBegins = 0;       // begin events on trigger lines (the peers report these too)
+  int triggerEnds = 0;
+  int missedEvents = 0;        // expected crossings without a begin or an end
+  double drift = 0;            // movement after settleFrames
+  int stuckFrames = 0;         // frames moving slower than minSpeedX
+  Pose final;
+  double seconds = 0;          // wall time of the run
+};
+
+// The scenes of the stability suite. `offset` moves everything by (offset, offset) metres.
+std::vector<Scene> stabilityScenes(double offset = 0);
+
+// Runs a scene in Platon at `unitsPerMetre`; `offsetUnits` shifts it in whole units (the range-limit
+// runs put it near 2^30).
+Outcome runPlaton(const Scene& scene, double unitsPerMetre, int64_t offsetUnits = 0);
+
+}  // namespace platon::scenes
