@@ -34,6 +34,7 @@ void expectClean(const Scene& s, const Outcome& o, const std::string& where) {
     EXPECT_EQ(o.drift, 0.0) << "drift at rest";
   }
   EXPECT_EQ(o.stuckFrames, 0) << "stuck";
+  EXPECT_FALSE(o.missedTarget) << "ended at x = " << o.final.x << ", not " << s.targetX;
 }
 }  // namespace
 

@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,8 @@ struct Scene {
   int settleFrames = -1;
   // For sliding scenes: the body should keep moving along x at least this fast (m/s).
   double minSpeedX = 0;
+  // When set, the body must end with its origin within 1 cm of this x (it got where it was sent).
+  double targetX = std::numeric_limits<double>::quiet_NaN();
   // Scenes only Platon can express (warps between map parts) run this instead; peers show n/a.
   std::function<struct Outcome(double unitsPerMetre)> platonOnly;
 };
@@ -51,6 +54,7 @@ struct Outcome {
   int missedEvents = 0;        // expected crossings without a begin or an end
   double drift = 0;            // movement after settleFrames
   int stuckFrames = 0;         // frames moving slower than minSpeedX
+  bool missedTarget = false;   // ended away from targetX
   Pose final;
   double seconds = 0;          // wall time of the run
 };
