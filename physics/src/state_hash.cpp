@@ -26,8 +26,8 @@ uint64_t World::stateHash() const {
     h.add(e->angle);
     h.add(static_cast<uint64_t>(e->velocityQ16.x));
     h.add(static_cast<uint64_t>(e->velocityQ16.y));
-    h.add(static_cast<uint64_t>(e->subunitQ16.x));
-    h.add(static_cast<uint64_t>(e->subunitQ16.y));
+    h.add(static_cast<uint64_t>(e->subunitQ17.x));
+    h.add(static_cast<uint64_t>(e->subunitQ17.y));
     h.add(static_cast<uint64_t>(e->angularVelocity));
     for (const Instance& inst : e->instances) {
       h.add(inst.part);

@@ -153,10 +153,10 @@ Box shapeBox(const Instance& inst, Vec2w motion) {
 }
 }  // namespace
 
-void World::coverMotion(Instance& inst, Vec2w motion) {
+void World::coverMotion(Instance& inst, Vec2w motion, int64_t slack) {
   Box b = shapeBox(inst, motion);
   // One unit of margin: points on the box edge round into the next cell's range.
-  b.x0 -= 1, b.y0 -= 1, b.x1 += 1, b.y1 += 1;
+  b.x0 -= 1 + slack, b.y0 -= 1 + slack, b.x1 += 1 + slack, b.y1 += 1 + slack;
   const Grid& grid = mapPart(inst.part).grid();
   inst.region.update(grid, grid.cellsCovering(b, inst.region.rect()));
 }
@@ -174,10 +174,10 @@ void World::rebase(Entity& e, size_t k, Vec2w* motion) {
   e.angle = static_cast<Angle>(e.angle + theta);
   const Rotation r = rotationOf(theta);
   e.velocityQ16 = rotateWide(r, e.velocityQ16);
-  e.subunitQ16 = rotateWide(r, e.subunitQ16);
+  e.subunitQ17 = rotateWide(r, e.subunitQ17);
   // Keep the carried remainder below one unit after rounding.
-  e.subunitQ16.x = std::clamp<int64_t>(e.subunitQ16.x, 0, 0xffff);
-  e.subunitQ16.y = std::clamp<int64_t>(e.subunitQ16.y, 0, 0xffff);
+  e.subunitQ17.x = std::clamp<int64_t>(e.subunitQ17.x, 0, (1 << 17) - 1);
+  e.subunitQ17.y = std::clamp<int64_t>(e.subunitQ17.y, 0, (1 << 17) - 1);
   if (motion) *motion = rotateWide(r, *motion);
 }
 

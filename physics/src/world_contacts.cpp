@@ -1,5 +1,6 @@
 // Contact events, warps and instance bookkeeping.
 #include <algorithm>
+#include <array>
 
 #include "platon/physics/world.h"
 
@@ -43,7 +44,8 @@ Contact World::makeContact(EntityId id, const Instance& inst, LineIndex line, Fr
   return c;
 }
 
-bool World::createWarpInstance(EntityId id, Entity& e, size_t from, LineIndex warpLine, Vec2w fromQ30) {
+bool World::createWarpInstance(EntityId id, Entity& e, size_t from, LineIndex warpLine, Vec2w fromQ30,
+                               Vec2w motion) {
   const Instance& source = e.instances[from];
   const MapPart& part = mapPart(source.part);
   const Warp& warp = part.warps()[part.lines()[warpLine].warp];
@@ -51,47 +53,69 @@ bool World::createWarpInstance(EntityId id, Entity& e, size_t from, LineIndex wa
   if (e.instanceIn(warp.target)) return true;
   const MapPart& target = mapPart(warp.target);
   if (!target.initialized()) return false;
-  // Start where the touching position maps, rounded into the target face (to the right of
-  // t0 -> t1) so the new instance touches or just overlaps its side of the edge.
+  // The copy goes where the touching position maps. Rotated shapes and positions are rounded, so
+  // that spot can be a unit off: the copy may miss its edge, or graze a line that the original
+  // only touched. placeNear picks a free whole-unit position within two units of it.
   const Vec2w at = mapThroughWarp(warp, seg, fromQ30);
-  const Vec2w d = warp.targetSegment.b - warp.targetSegment.a;
-  auto roundInward = [](int64_t q, int64_t inward) {
-    if (inward > 0) return static_cast<int64_t>(ceilDiv(q, i128{1} << 30));
-    if (inward < 0) return static_cast<int64_t>(floorDiv(q, i128{1} << 30));
-    return static_cast<int64_t>(roundDiv(q, i128{1} << 30));
-  };
-  int64_t px = roundInward(at.x, d.y), py = roundInward(at.y, -d.x);
+  const Angle frame = static_cast<Angle>(source.frame + warp.turn);
   Instance inst;
-  // Rotated shapes are rounded, so the copy may still sit a unit off its edge: step it inwards
-  // until it touches (the edge is pierceable; solid lines are checked below).
-  for (int tries = 0;; ++tries) {
-    if (std::abs(px) > kCoordLimit || std::abs(py) > kCoordLimit) return false;
-    try {
-      inst = makeInstance(e, warp.target, {static_cast<int32_t>(px), static_cast<int32_t>(py)},
-                          static_cast<Angle>(source.frame + warp.turn));
-    } catch (const Error&) {
-      return false;  // out of range, or the shape cannot take that rotation: the edge holds
-    }
-    if (touchesOrOverlaps(worldVertices(inst), warp.targetSegment) || tries == 3) break;
-    px += (d.y > 0) - (d.y < 0);
-    py += (d.x < 0) - (d.x > 0);
+  try {
+    inst = makeInstance(e, warp.target, {static_cast<int32_t>(roundDiv(at.x, i128{1} << 30)),
+                                         static_cast<int32_t>(roundDiv(at.y, i128{1} << 30))}, frame);
+  } catch (const Error&) {
+    return false;  // out of range, or the shape cannot take that rotation: the edge holds
   }
+  if (!placeNear(id, inst, at, &warp.targetSegment, rotateWide(rotationOf(frame), motion))) return false;
   // Follow the anchor through the same mapping.
   const Vec2w sourceIdeal = from == 0 ? Vec2w{int64_t{source.position.x} << 30, int64_t{source.position.y} << 30}
                                       : source.idealQ30;
   inst.idealQ30 = mapThroughWarp(warp, seg, sourceIdeal);
-  coverMotion(inst, {});
-  const std::vector<Vec2> verts = worldVertices(inst);
-  const auto lines = inst.region.lines();
-  for (size_t k = 0; k < lines.size(); ++k)
-    if (!isPierceable(id, inst, k) && overlapsInterior(verts, target.segments()[lines[k]])) return false;
-  const uint8_t toState = edgeState(verts, warp.targetSegment);
+  const uint8_t toState = edgeState(worldVertices(inst), warp.targetSegment);
   const uint8_t fromState = edgeState(worldVertices(source), seg);
   const MapPartId fromPart = source.part;
   e.instances.push_back(std::move(inst));
   e.links.push_back({fromPart, warpLine, warp.target, fromState, toState});
   ++report_.warpsCreated;
   return true;
+}
+
+bool World::placeNear(EntityId id, Instance& inst, Vec2w targetQ30, const Segment* mustTouch, Vec2w probe) {
+  const Vec2 base{static_cast<int32_t>(roundDiv(targetQ30.x, i128{1} << 30)),
+                  static_cast<int32_t>(roundDiv(targetQ30.y, i128{1} << 30))};
+  std::array<Vec2, 25> offsets;
+  for (int k = 0; k < 25; ++k) offsets[k] = {k % 5 - 2, k / 5 - 2};
+  auto distance = [&](Vec2 o) {  // from the target, in Q30 squared; ties keep a fixed order
+    const i128 dx = (i128{base.x + o.x} << 30) - targetQ30.x, dy = (i128{base.y + o.y} << 30) - targetQ30.y;
+    return dx * dx + dy * dy;
+  };
+  std::stable_sort(offsets.begin(), offsets.end(), [&](Vec2 a, Vec2 b) { return distance(a) < distance(b); });
+  probe = {std::clamp<int64_t>(probe.x, -kMaxMove, kMaxMove), std::clamp<int64_t>(probe.y, -kMaxMove, kMaxMove)};
+  inst.position = base;
+  coverMotion(inst, probe, 2);  // every candidate, and where the probe takes it
+  const MapPart& part = mapPart(inst.part);
+  std::vector<Vec2> verts;
+  bool placed = false;
+  Vec2 best = base;
+  Fraction bestFree = Fraction::zero();
+  for (const Vec2 o : offsets) {
+    inst.position = {base.x + o.x, base.y + o.y};
+    worldVertices(inst, verts);
+    bool free = !mustTouch || touchesOrOverlaps(verts, *mustTouch);
+    for (const Vec2 v : verts) free = free && inRange(v);
+    const auto lines = inst.region.lines();
+    for (size_t k = 0; k < lines.size() && free; ++k)
+      free = isPierceable(id, inst, k) || !overlapsInterior(verts, part.segments()[lines[k]]);
+    if (!free) continue;
+    const Fraction go = probe == Vec2w{} ? Fraction::one() : firstBlock(id, inst, verts, probe);
+    if (!placed || go > bestFree) {
+      placed = true;
+      best = inst.position;
+      bestFree = go;
+      if (go == Fraction::one()) break;
+    }
+  }
+  inst.position = best;
+  return placed && (probe == Vec2w{} || bestFree > Fraction::zero() || mustTouch);
 }
 
 void World::createOverlappedWarps(EntityId id, Entity& e) {
@@ -102,7 +126,8 @@ void World::createOverlappedWarps(EntityId id, Entity& e) {
       if (e.instanceIn(part.warps()[part.lines()[line].warp].target)) continue;
       const Instance& inst = e.instances[i];
       const Vec2w q = i == 0 ? Vec2w{int64_t{inst.position.x} << 30, int64_t{inst.position.y} << 30} : inst.idealQ30;
-      if (!createWarpInstance(id, e, i, line, q)) e.instances[i].blockedWarps.push_back(line);
+      const Vec2w perFrame{e.velocityQ16.x >> 16, e.velocityQ16.y >> 16};
+      if (!createWarpInstance(id, e, i, line, q, perFrame)) e.instances[i].blockedWarps.push_back(line);
     }
   }
 }

@@ -9,6 +9,7 @@ namespace platon::physics {
 namespace {
 
 constexpr int64_t kQ16 = 1 << 16;
+constexpr int64_t kQ17 = 1 << 17;
 
 // Removes the part of v that points into the surface with normal n, rounding so that what is left
 // never points into it (dot(result, n) >= 0).
@@ -22,6 +23,27 @@ Vec2w removeInto(Vec2w v, Vec2w n) {
     return static_cast<int64_t>(vk - (nk > 0 ? floorDiv(q, nn) : ceilDiv(q, nn)));
   };
   return {one(v.x, n.x), one(v.y, n.y)};
+}
+
+// Like removeInto for a whole-unit motion, and also returns, in Q17, what the rounding left out:
+// carried into the next frame, it keeps a slide along a sloped line from drifting by a unit a frame.
+Vec2w removeIntoCarrying(Vec2w v, Vec2w n, Vec2w& carryQ17) {
+  const Vec2w kept = removeInto(v, n);
+  const i128 vn = dot128(v, n);
+  if (vn >= 0) return kept;
+  const i128 nn = dot128(n, n);
+  auto left = [&](int64_t vk, int64_t nk, int64_t keptk) {
+    const i128 exactQ17 = i128{vk} * kQ17 - roundDiv(vn * nk * kQ17, nn);
+    return static_cast<int64_t>(exactQ17 - i128{keptk} * kQ17);
+  };
+  carryQ17 = {left(v.x, n.x, kept.x), left(v.y, n.y, kept.y)};
+  return kept;
+}
+
+// v minus its component along n, to the nearest unit of v's scale.
+Vec2w withoutComponent(Vec2w v, Vec2w n) {
+  const i128 vn = dot128(v, n), nn = dot128(n, n);
+  return {v.x - static_cast<int64_t>(roundDiv(vn * n.x, nn)), v.y - static_cast<int64_t>(roundDiv(vn * n.y, nn))};
 }
 
 // Scales a direction down (keeping its sign pattern) so its components fit in 31 bits.
@@ -76,16 +98,20 @@ void World::stepEntity(EntityId id, Entity& e) {
   for (Instance& inst : e.instances) inst.blockedWarps.clear();
   if (e.angularVelocity != 0) rotateBy(id, e, e.angularVelocity);
   if (e.instances.empty()) return;
+  const Vec2w before = e.velocityQ16;
   if (e.gravity) {
     const Vec2w g = mapPart(e.instances[0].part).gravity();
     const int64_t limit = int64_t{kMaxMove} * kQ16;
     e.velocityQ16.x = std::clamp(e.velocityQ16.x + g.x, -limit, limit);
     e.velocityQ16.y = std::clamp(e.velocityQ16.y + g.y, -limit, limit);
   }
-  // Whole units this frame; the remainder below one unit waits for the next frame.
-  const Vec2w acc = e.subunitQ16 + e.velocityQ16;
-  const Vec2w move{acc.x >> 16, acc.y >> 16};
-  e.subunitQ16 = {acc.x - move.x * kQ16, acc.y - move.y * kQ16};
+  // The frame moves by the average of the velocities at its start and end: for constant gravity
+  // that is the exact parabola at every frame, not the first-order step most engines take. The
+  // sum of the two Q16 velocities is the average in Q17; whole units move now, the remainder
+  // below one unit waits for the next frame.
+  const Vec2w acc = e.subunitQ17 + before + e.velocityQ16;
+  const Vec2w move{acc.x >> 17, acc.y >> 17};
+  e.subunitQ17 = {acc.x - move.x * kQ17, acc.y - move.y * kQ17};
   slide(id, e, move);
 }
 
@@ -158,7 +184,10 @@ void World::slide(EntityId id, Entity& e, Vec2w motion) {
       if (idle) break;
     }
     ++report_.subMoves;
-    // 1. Each instance's motion: the anchor's own; the others aim at their ideal position.
+    // 1. Each instance's motion: the anchor's own; the others move as their ideal position does
+    //    (the anchor's motion turned into their frame). Closing the gap to the ideal is a separate
+    //    step after the move (step 4), so a copy that rounding left a unit off never holds the
+    //    entity back.
     verts.resize(n);
     moves.resize(n);
     pierceNear.assign(n, 0);
@@ -169,8 +198,8 @@ void World::slide(EntityId id, Entity& e, Vec2w motion) {
         moves[i] = motion;
       } else {
         const Vec2w aim = inst.idealQ30 + rotateQ30(inst.rotation, motion);
-        moves[i] = {static_cast<int64_t>(roundDiv(aim.x, i128{1} << 30)) - inst.position.x,
-                    static_cast<int64_t>(roundDiv(aim.y, i128{1} << 30)) - inst.position.y};
+        moves[i] = {static_cast<int64_t>(roundDiv(aim.x, i128{1} << 30) - roundDiv(inst.idealQ30.x, i128{1} << 30)),
+                    static_cast<int64_t>(roundDiv(aim.y, i128{1} << 30) - roundDiv(inst.idealQ30.y, i128{1} << 30))};
       }
       coverMotion(inst, moves[i]);
     }
@@ -205,6 +234,24 @@ void World::slide(EntityId id, Entity& e, Vec2w motion) {
         if (hit.improvedBy(when, HitKind::Bound, i, kWorldBoundLine)) hit = {HitKind::Bound, when, i, kWorldBoundLine, {}, c};
       }
     }
+    // A copy that rounding left a hair low snags on the first point of a line that continues the
+    // original's floor across the edge: it is stopped at once while the original is free. If a
+    // whole-unit position within two units of its ideal lets it run freely for at least 64 units
+    // the same way, it moves there and the sub-move is redone; a real wall allows no such place.
+    if (hit.kind == HitKind::Solid && hit.instance > 0 && hit.t == Fraction::zero()) {
+      Instance& copy = e.instances[hit.instance];
+      const Vec2w m = moves[hit.instance];
+      const int64_t longest = std::max(std::abs(m.x), std::abs(m.y));
+      const int64_t scale = longest >= 64 ? 1 : (64 + longest - 1) / longest;
+      const Vec2w probe{m.x * scale, m.y * scale};
+      const Vec2 was = copy.position;
+      if (placeNear(id, copy, copy.idealQ30, nullptr, probe) && copy.position != was &&
+          firstBlock(id, copy, worldVertices(copy), probe) == Fraction::one()) {
+        ++report_.copiesReplaced;
+        continue;
+      }
+      copy.position = was;
+    }
     // 3. Move every instance to that time, rounded to the safe side. A step that is exactly on
     //    the swept path is free by the search above; a rounded one is proved free by an exact
     //    sweep of its own, and if rounding left the safe path, t is pulled back and retried.
@@ -229,12 +276,23 @@ void World::slide(EntityId id, Entity& e, Vec2w motion) {
       }
       moved = ok;
     }
-    // 4. Commit.
+    // 4. Commit; then each copy closes its gap to its ideal position where that path is free.
     for (size_t i = 0; i < n; ++i) {
       Instance& inst = e.instances[i];
       inst.position.x += static_cast<int32_t>(steps[i].x);
       inst.position.y += static_cast<int32_t>(steps[i].y);
-      if (i > 0) inst.idealQ30 = inst.idealQ30 + rotateQ30(inst.rotation, steps[0]);
+      if (i == 0) continue;
+      inst.idealQ30 = inst.idealQ30 + rotateQ30(inst.rotation, steps[0]);
+      const Vec2w gap{static_cast<int64_t>(roundDiv(inst.idealQ30.x, i128{1} << 30)) - inst.position.x,
+                      static_cast<int64_t>(roundDiv(inst.idealQ30.y, i128{1} << 30)) - inst.position.y};
+      if (gap == Vec2w{} || gap.x < -2 || gap.x > 2 || gap.y < -2 || gap.y > 2) continue;
+      std::vector<Vec2> at;
+      worldVertices(inst, at);
+      coverMotion(inst, gap);
+      if (firstBlock(id, inst, at, gap) < Fraction::one()) continue;
+      inst.position.x += static_cast<int32_t>(gap.x);
+      inst.position.y += static_cast<int32_t>(gap.y);
+      steps[i] = steps[i] + gap;  // pierce events see the whole way it went
     }
     const bool pulledBack = t < hit.t;
     motion = motion - steps[0];
@@ -249,7 +307,7 @@ void World::slide(EntityId id, Entity& e, Vec2w motion) {
       const Vec2w before{start.x - steps[hit.instance].x, start.y - steps[hit.instance].y};
       const Vec2w exact{(before.x << 30) + static_cast<int64_t>(floorDiv((i128{hit.t.num} * hitMove.x) << 30, hit.t.den)),
                         (before.y << 30) + static_cast<int64_t>(floorDiv((i128{hit.t.num} * hitMove.y) << 30, hit.t.den))};
-      if (!createWarpInstance(id, e, hit.instance, hit.line, exact))
+      if (!createWarpInstance(id, e, hit.instance, hit.line, exact, motion))
         e.instances[hit.instance].blockedWarps.push_back(hit.line);
     }
     if (!e.links.empty()) updateLinks(id, e, &motion, &normals);
@@ -271,9 +329,18 @@ void World::slide(EntityId id, Entity& e, Vec2w motion) {
     const Vec2w normal = shortDirection(rotateWideInverse(inst->rotation, shortDirection(partNormal)));
     if (response.removeNormalVelocity) e.velocityQ16 = removeInto(e.velocityQ16, normal);
     if (!response.slide) break;
-    motion = removeInto(motion, normal);
-    for (const Vec2w& previous : normals)
-      if (dot128(motion, previous) < 0) motion = {};  // a crease: the two lines hold it in place
+    Vec2w carryQ17;
+    motion = removeIntoCarrying(motion, normal, carryQ17);
+    bool crease = false;
+    for (const Vec2w& previous : normals) crease = crease || dot128(motion, previous) < 0;
+    if (crease) {
+      motion = {};  // a crease: the two lines hold it in place
+      e.subunitQ17 = {};
+    } else {
+      // Touching the line, the entity has no fraction of a unit left to move across it, nor away
+      // from it; along it, it keeps what rounding left out.
+      e.subunitQ17 = withoutComponent(e.subunitQ17 + carryQ17, normal);
+    }
     normals.push_back(normal);
   }
 }

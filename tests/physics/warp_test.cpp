@@ -224,3 +224,36 @@ TEST(Warp, WorldsRunInParallelThreads) {
   run(&serial);
   for (const uint64_t x : h) EXPECT_EQ(x, serial);
 }
+
+// Walking along a floor that continues across a 120-degree or 252-degree edge: the rounded copy on
+// the far side must not snag on the first point of the continued floor.
+TEST(Warp, WalkingAcrossTurnedEdgesOntoAContinuingFloor) {
+  for (const int64_t degrees : {120, 72 + 180}) {
+    World world;
+    MapPart& a = world.createMapPart(1);
+    MapPart& b = world.createMapPart(2);
+    const Rotation r = rotationOf(angleFromDegrees(degrees));
+    auto turn = [&](Vec2 p) {
+      const Vec2w q = rotateWide(r, wide(p));
+      return Vec2{static_cast<int32_t>(q.x), static_cast<int32_t>(q.y)};
+    };
+    a.line({0, 0}, {8192, 0});
+    a.warp({8192, 0}, {8192, 8192}, 2, turn({8192, 0}), turn({8192, 8192}));
+    b.warp(turn({8192, 8192}), turn({8192, 0}), 1, {8192, 8192}, {8192, 0});
+    b.line(turn({8192, 0}), turn({16384, 0}));  // the floor, continued on the far side
+    a.setGravity({0, -182862});
+    b.setGravity(rotateWide(r, {0, -182862}));
+    a.initialize();
+    b.initialize();
+    const EntityId box = world.createEntity(Convex::box(256, 256));
+    world.insert(box, 1, {5120, 256}, 0);
+    world.setVelocity(box, {4473924, 0});  // no friction: it keeps going along the floor
+    for (int f = 0; f < 150; ++f) {
+      world.solve();
+      ASSERT_EQ(world.countOverlaps(), 0u) << degrees << " degrees, frame " << f;
+    }
+    const Entity& e = world.entity(box);
+    ASSERT_EQ(e.instances.size(), 1u) << degrees;
+    EXPECT_EQ(e.instances[0].part, 2u) << degrees << " degrees: stopped at the edge";
+  }
+}

@@ -1,6 +1,8 @@
 // Behaviour of the world step: landing, resting, sliding, corners, wedges, limits.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "platon/physics/world.h"
 
 using namespace platon::physics;
@@ -215,4 +217,37 @@ TEST(World, TiesBetweenLinesAreBrokenTheSameWayOnAnyGrid) {
   };
   const std::vector<Vec2> plain = run(0);
   for (const int far : {1000, 5000, 30000}) EXPECT_EQ(plain, run(far)) << far << " far lines";
+}
+
+// Free flight is the exact parabola at every frame (the frame moves by the average of its start and
+// end velocities), to within the unit rounding.
+TEST(World, FreeFlightFollowsTheExactParabola) {
+  Scene s;
+  s.part->line({-1000000, -1000000}, {1000000, -1000000});
+  const int64_t g = 11429;  // 9.81 m/s^2 at 64 units per metre and 60 Hz, in Q16
+  s.part->setGravity({0, -g});
+  const EntityId ball = s.drop(Convex::regular(8, 16), {0, 0}, {5 * kUnit, 3 * kUnit});
+  for (int n = 1; n <= 600; ++n) {
+    s.world.solve();
+    // y(n) = vy n - g n^2 / 2, in Q16, floored by the whole-unit position.
+    const int64_t exactQ16 = 3 * kUnit * n - g * n * n / 2;
+    const int64_t y = s.pos(ball).y;
+    ASSERT_LE(std::abs(y * kUnit - exactQ16), kUnit) << "frame " << n;
+    ASSERT_EQ(s.pos(ball).x, 5 * n);
+  }
+}
+
+// Sliding down a frictionless slope: the distance travelled matches s = g sin(a) t^2 / 2 to within
+// a unit or two, with no drift from the per-frame rounding along the line.
+TEST(World, SlidesDownASlopeAsFarAsTheAnalyticAnswer) {
+  Scene s;
+  s.part->line({-1008, 178}, {2017, -356});  // 10 degrees
+  s.part->setGravity({0, -11429});
+  const EntityId box = s.drop(Convex::box(16, 16), {16, 17});
+  s.run(120);
+  const double dx = s.pos(box).x - 16, dy = s.pos(box).y - 17;
+  const double travelled = std::hypot(dx, dy);
+  const double g = 11429.0 / 65536.0;  // units per frame^2
+  const double exact = 0.5 * g * std::sin(10.0 * 3.14159265358979 / 180.0) * 120 * 120;
+  EXPECT_NEAR(travelled, exact, 2.0);
 }

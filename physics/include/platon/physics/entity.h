@@ -52,7 +52,7 @@ struct Entity {
   Convex shape;               // as created, unrotated
   Angle angle = 0;            // rotation of the shape in the entity (anchor) frame
   Vec2w velocityQ16;          // 1/65536 units per frame, entity frame
-  Vec2w subunitQ16;           // motion below one unit, carried to the next frame
+  Vec2w subunitQ17;           // motion below one unit (1/131072 units), carried to the next frame
   int32_t angularVelocity = 0;  // binary-angle units per frame
   bool gravity = true;        // the anchor part's gravity applies
   uint64_t userData = 0;

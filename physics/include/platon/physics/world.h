@@ -24,6 +24,7 @@ struct SolveReport {
   uint32_t roundingRetries = 0;  // a rounded position failed its exact check and was pulled back
   uint32_t warpsCreated = 0;
   uint32_t instancesErased = 0;
+  uint32_t copiesReplaced = 0;  // copies moved within two units to free them from a rounding snag
 };
 
 class World {
@@ -84,7 +85,9 @@ class World {
   // world.cpp
   Instance makeInstance(const Entity& e, MapPartId part, Vec2 position, Angle frame) const;
   bool isPierceable(EntityId id, Instance& inst, size_t regionIndex);
-  void coverMotion(Instance& inst, Vec2w motion);
+  // Makes the instance's region hold every line near its shape moved by anything from 0 to `motion`,
+  // and within `slack` more units around that.
+  void coverMotion(Instance& inst, Vec2w motion, int64_t slack = 0);
   void rebase(Entity& e, size_t newAnchor, Vec2w* motion);
   // world_slide.cpp
   void stepEntity(EntityId id, Entity& e);
@@ -92,8 +95,11 @@ class World {
   Fraction firstBlock(EntityId id, Instance& inst, const std::vector<Vec2>& verts, Vec2w step);
   bool rotateBy(EntityId id, Entity& e, int64_t delta);
   // world_contacts.cpp
-  bool createWarpInstance(EntityId id, Entity& e, size_t from, LineIndex warpLine, Vec2w fromQ30);
+  bool createWarpInstance(EntityId id, Entity& e, size_t from, LineIndex warpLine, Vec2w fromQ30, Vec2w motion);
   void createOverlappedWarps(EntityId id, Entity& e);
+  // Moves `inst` to the free whole-unit position within two units of `targetQ30` (touching
+  // `mustTouch` if given) that lets it travel furthest along `probe`, nearest first among equals.
+  bool placeNear(EntityId id, Instance& inst, Vec2w targetQ30, const Segment* mustTouch, Vec2w probe);
   void updatePierceState(EntityId id, Entity& e, const std::vector<std::vector<Vec2>>* startVerts,
                          const std::vector<Vec2w>* steps, const std::vector<uint8_t>* pierceNear = nullptr);
   void updateLinks(EntityId id, Entity& e, Vec2w* motion, std::vector<Vec2w>* normals);
