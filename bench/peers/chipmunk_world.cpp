@@ -10,8 +10,9 @@ namespace {
 
 class ChipmunkWorld final : public PeerWorld {
  public:
-  explicit ChipmunkWorld(int iterations) : space_(cpSpaceNew()), iterations_(iterations) {
+  ChipmunkWorld(int iterations, double collisionSlop) : space_(cpSpaceNew()), iterations_(iterations) {
     cpSpaceSetIterations(space_, iterations);
+    cpSpaceSetCollisionSlop(space_, collisionSlop);
     // Sensor begin events come through the default handler; a pair with no sensor still collides.
     cpCollisionHandler* handler = cpSpaceAddDefaultCollisionHandler(space_);
     handler->userData = &sensorBegins_;
@@ -96,6 +97,8 @@ class ChipmunkWorld final : public PeerWorld {
 
 }  // namespace
 
-std::unique_ptr<PeerWorld> makeChipmunk(int iterations) { return std::make_unique<ChipmunkWorld>(iterations); }
+std::unique_ptr<PeerWorld> makeChipmunk(int iterations, double collisionSlop) {
+  return std::make_unique<ChipmunkWorld>(iterations, collisionSlop);
+}
 
 }  // namespace platon::bench

@@ -10,8 +10,9 @@
 //     sides); each body a b2PolygonShape fixture of density 1 with the engine's skin
 //     (b2_polygonRadius = 1 cm); sleeping allowed (the default).
 //   Chipmunk 7.0.3: cpSegmentShape of radius 0 on the space's static body; cpPolyShape of radius 0,
-//     mass from density 1, moment infinite for fixed rotation; cpSpaceSetIterations; the default
-//     collision slop (0.1, in the scene's units: 10 cm here) and bias; sleeping off (the default).
+//     mass from density 1, moment infinite for fixed rotation; cpSpaceSetIterations; collision slop
+//     5 mm (Box2D's linear slop: Chipmunk's default of 0.1 is meant for pixel units and would be
+//     10 cm here), the default bias; sleeping off (the default).
 //     Debian builds the library without NDEBUG: its run-time assertions are on, so it is slower
 //     than a release build.
 //
@@ -52,8 +53,8 @@ class PeerWorld {
 
 // velocityIterations / positionIterations as b2World::Step takes them (Box2D's default is 8 / 3).
 std::unique_ptr<PeerWorld> makeBox2D(int velocityIterations, int positionIterations);
-// cpSpaceSetIterations (Chipmunk's default is 10).
-std::unique_ptr<PeerWorld> makeChipmunk(int iterations);
+// cpSpaceSetIterations (Chipmunk's default is 10) and cpSpaceSetCollisionSlop (metres).
+std::unique_ptr<PeerWorld> makeChipmunk(int iterations, double collisionSlop = 0.005);
 
 // How deep the polygon placed at `pose` overlaps the interior of any segment: the largest, over
 // the segments, of the shortest push that separates the two (metres); 0 when none overlaps.

@@ -163,6 +163,33 @@ Fraction World::firstBlock(EntityId id, Instance& inst, const std::vector<Vec2>&
   return first;
 }
 
+bool World::liftCopy(EntityId id, Instance& copy, Vec2w floorNormal, Vec2w move) {
+  const Vec2w n = shortDirection(rotateWide(copy.rotation, floorNormal));
+  const uint64_t length2 = static_cast<uint64_t>(n.x * n.x + n.y * n.y);
+  uint64_t length = static_cast<uint64_t>(std::sqrt(static_cast<double>(length2)));
+  while (length * length > length2) --length;  // exact integer square root, rounded down
+  while ((length + 1) * (length + 1) <= length2) ++length;
+  if (length == 0) return false;
+  const Vec2 was = copy.position;
+  std::vector<Vec2> verts;
+  for (int64_t lift = 1; lift <= 3; ++lift) {
+    copy.position = {was.x + static_cast<int32_t>(roundDiv(i128{n.x} * lift, length)),
+                     was.y + static_cast<int32_t>(roundDiv(i128{n.y} * lift, length))};
+    if (copy.position == was) continue;
+    worldVertices(copy, verts);
+    coverMotion(copy, move, 3);
+    const MapPart& part = mapPart(copy.part);
+    const auto lines = copy.region.lines();
+    bool free = true;
+    for (const Vec2 v : verts) free = free && inRange(v);
+    for (size_t k = 0; k < lines.size() && free; ++k)
+      free = isPierceable(id, copy, k) || !overlapsInterior(verts, part.segments()[lines[k]]);
+    if (free && firstBlock(id, copy, verts, move) > Fraction::zero()) return true;
+  }
+  copy.position = was;
+  return false;
+}
+
 void World::slide(EntityId id, Entity& e, Vec2w motion) {
   std::vector<Vec2w>& normals = scratch_.normals;  // this frame's contact normals, entity frame
   std::vector<std::vector<Vec2>>& verts = scratch_.verts;
@@ -235,22 +262,14 @@ void World::slide(EntityId id, Entity& e, Vec2w motion) {
       }
     }
     // A copy that rounding left a hair low snags on the first point of a line that continues the
-    // original's floor across the edge: it is stopped at once while the original is free. If a
-    // whole-unit position within two units of its ideal lets it run freely for at least 64 units
-    // the same way, it moves there and the sub-move is redone; a real wall allows no such place.
-    if (hit.kind == HitKind::Solid && hit.instance > 0 && hit.t == Fraction::zero()) {
-      Instance& copy = e.instances[hit.instance];
-      const Vec2w m = moves[hit.instance];
-      const int64_t longest = std::max(std::abs(m.x), std::abs(m.y));
-      const int64_t scale = longest >= 64 ? 1 : (64 + longest - 1) / longest;
-      const Vec2w probe{m.x * scale, m.y * scale};
-      const Vec2 was = copy.position;
-      if (placeNear(id, copy, copy.idealQ30, nullptr, probe) && copy.position != was &&
-          firstBlock(id, copy, worldVertices(copy), probe) == Fraction::one()) {
-        ++report_.copiesReplaced;
-        continue;
-      }
-      copy.position = was;
+    // original's floor across the edge: it is stopped at once while the original slides freely.
+    // The copy is then lifted off that floor, along the normal of the original's latest contact
+    // turned into the copy's frame, by one to three units, if that frees it; the sub-move is redone.
+    // A real wall is not helped by a lift along the floor's normal, so it still holds.
+    if (hit.kind == HitKind::Solid && hit.instance > 0 && hit.t == Fraction::zero() && !normals.empty() &&
+        liftCopy(id, e.instances[hit.instance], normals.back(), moves[hit.instance])) {
+      ++report_.copiesReplaced;
+      continue;
     }
     // 3. Move every instance to that time, rounded to the safe side. A step that is exactly on
     //    the swept path is free by the search above; a rounded one is proved free by an exact
@@ -285,7 +304,9 @@ void World::slide(EntityId id, Entity& e, Vec2w motion) {
       inst.idealQ30 = inst.idealQ30 + rotateQ30(inst.rotation, steps[0]);
       const Vec2w gap{static_cast<int64_t>(roundDiv(inst.idealQ30.x, i128{1} << 30)) - inst.position.x,
                       static_cast<int64_t>(roundDiv(inst.idealQ30.y, i128{1} << 30)) - inst.position.y};
-      if (gap == Vec2w{} || gap.x < -2 || gap.x > 2 || gap.y < -2 || gap.y > 2) continue;
+      // A copy keeps a lift of up to three units (see liftCopy); a larger gap, left by a blocked
+      // step, is closed where the way is free.
+      if (std::max(std::abs(gap.x), std::abs(gap.y)) <= 3) continue;
       std::vector<Vec2> at;
       worldVertices(inst, at);
       coverMotion(inst, gap);

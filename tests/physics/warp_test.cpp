@@ -1,6 +1,7 @@
 // Crossing warp edges: instances on both sides, exact quarter turns, rotated frames, blocked edges.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 #include <thread>
 
@@ -225,35 +226,42 @@ TEST(Warp, WorldsRunInParallelThreads) {
   for (const uint64_t x : h) EXPECT_EQ(x, serial);
 }
 
-// Walking along a floor that continues across a 120-degree or 252-degree edge: the rounded copy on
-// the far side must not snag on the first point of the continued floor.
+// Walking along a floor that continues across a 120-degree or 252-degree edge (a box 0.5 m wide at
+// 4 m/s, several resolutions and frame rates): the rounded copy on the far side must never snag on
+// the first point of the continued floor.
 TEST(Warp, WalkingAcrossTurnedEdgesOntoAContinuingFloor) {
-  for (const int64_t degrees : {120, 72 + 180}) {
-    World world;
-    MapPart& a = world.createMapPart(1);
-    MapPart& b = world.createMapPart(2);
-    const Rotation r = rotationOf(angleFromDegrees(degrees));
-    auto turn = [&](Vec2 p) {
-      const Vec2w q = rotateWide(r, wide(p));
-      return Vec2{static_cast<int32_t>(q.x), static_cast<int32_t>(q.y)};
-    };
-    a.line({0, 0}, {8192, 0});
-    a.warp({8192, 0}, {8192, 8192}, 2, turn({8192, 0}), turn({8192, 8192}));
-    b.warp(turn({8192, 8192}), turn({8192, 0}), 1, {8192, 8192}, {8192, 0});
-    b.line(turn({8192, 0}), turn({16384, 0}));  // the floor, continued on the far side
-    a.setGravity({0, -182862});
-    b.setGravity(rotateWide(r, {0, -182862}));
-    a.initialize();
-    b.initialize();
-    const EntityId box = world.createEntity(Convex::box(256, 256));
-    world.insert(box, 1, {5120, 256}, 0);
-    world.setVelocity(box, {4473924, 0});  // no friction: it keeps going along the floor
-    for (int f = 0; f < 150; ++f) {
-      world.solve();
-      ASSERT_EQ(world.countOverlaps(), 0u) << degrees << " degrees, frame " << f;
-    }
-    const Entity& e = world.entity(box);
-    ASSERT_EQ(e.instances.size(), 1u) << degrees;
-    EXPECT_EQ(e.instances[0].part, 2u) << degrees << " degrees: stopped at the edge";
-  }
+  for (const int degrees : {120, 252, 90})
+    for (const int upm : {64, 256, 1024, 4096})
+      for (const double hz : {30.0, 60.0, 120.0, 240.0}) {
+        const long double a = degrees * 3.14159265358979323846L / 180, c = std::cos(a), s = std::sin(a);
+        auto units = [&](long double x, long double y) {
+          return Vec2{static_cast<int32_t>(std::lround(x * upm)), static_cast<int32_t>(std::lround(y * upm))};
+        };
+        auto turned = [&](long double x, long double y) { return units(c * x - s * y, s * x + c * y); };
+        World world;
+        MapPart& faceA = world.createMapPart(1);
+        MapPart& faceB = world.createMapPart(2);
+        const Vec2 t0 = turned(8, 0), t1 = turned(8, 8);
+        faceA.warp(units(8, 0), units(8, 8), 2, t0, t1);
+        faceB.warp(t1, t0, 1, units(8, 8), units(8, 0));
+        faceA.line(units(0, 0), units(8, 0));
+        faceB.line(t0, turned(16, 0));  // the floor, continued on the far side
+        const long double g = -9.81L * upm / (hz * hz) * 65536;
+        faceA.setGravity({0, std::llround(g)});
+        faceB.setGravity({std::llround(-s * g), std::llround(c * g)});
+        faceA.initialize();
+        faceB.initialize();
+        const int32_t half = upm / 4;
+        const EntityId box = world.createEntity(Convex::box(half, half));
+        world.insert(box, 1, units(5, 0.25), 0);
+        world.setVelocity(box, {std::llround(4.0 * upm / hz * 65536), 0});  // no friction: it keeps going
+        const int frames = static_cast<int>(2.5 * hz);
+        for (int f = 0; f < frames; ++f) {
+          world.solve();
+          ASSERT_EQ(world.countOverlaps(), 0u) << degrees << " degrees, " << upm << " u/m, " << hz << " Hz, frame " << f;
+        }
+        const Entity& e = world.entity(box);
+        EXPECT_EQ(e.instances.size(), 1u) << degrees << " degrees, " << upm << " u/m, " << hz << " Hz";
+        EXPECT_EQ(e.instances[0].part, 2u) << degrees << " degrees, " << upm << " u/m, " << hz << " Hz: stopped at the edge";
+      }
 }

@@ -93,6 +93,7 @@ class World {
   void stepEntity(EntityId id, Entity& e);
   void slide(EntityId id, Entity& e, Vec2w motion);
   Fraction firstBlock(EntityId id, Instance& inst, const std::vector<Vec2>& verts, Vec2w step);
+  bool liftCopy(EntityId id, Instance& copy, Vec2w floorNormal, Vec2w move);
   bool rotateBy(EntityId id, Entity& e, int64_t delta);
   // world_contacts.cpp
   bool createWarpInstance(EntityId id, Entity& e, size_t from, LineIndex warpLine, Vec2w fromQ30, Vec2w motion);
