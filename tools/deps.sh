@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Installs the Debian packages the build needs, only if some are missing (root on a fresh machine).
 set -euo pipefail
-packages=(cmake make g++ pkg-config libgtest-dev libgmock-dev libbenchmark-dev libbox2d-dev libchipmunk-dev)
+# clang + libclang-rt-14-dev (the libFuzzer and sanitizer runtimes): the fuzz stage of tools/test.
+packages=(cmake make g++ pkg-config libgtest-dev libgmock-dev libbenchmark-dev libbox2d-dev libchipmunk-dev
+  clang libclang-rt-14-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
