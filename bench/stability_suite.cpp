@@ -23,7 +23,6 @@ namespace {
 constexpr double kUnitsPerMetre = 1024;
 
 Outcome runPeer(const Scene& s, bench::PeerWorld& world) {
-  Outcome out;
   world.setGravity(s.gravityX, s.gravityY);
   for (const scenes::Seg& g : s.solids) world.addSegment(g[0], g[1], g[2], g[3]);
   for (const scenes::Seg& g : s.triggers) world.addSegment(g[0], g[1], g[2], g[3], true);
@@ -31,30 +30,26 @@ Outcome runPeer(const Scene& s, bench::PeerWorld& world) {
   world.setVelocity(body, s.vx, s.vy);
   if (s.spin != 0) world.setAngularVelocity(body, s.spin);
   const double dt = 1.0 / s.hz;
-  bench::Pose previous = world.pose(body), settled{};
-  double vy = s.vy;
+  const bench::Pose start = world.pose(body);
+  scenes::OutcomeTracker track(s, {start.x, start.y, start.angle});
+  double vy = s.vy, lastY = start.y;
   for (int f = 1; f <= s.frames; ++f) {
     if (s.drive) world.setVelocity(body, s.vx, vy);
     if (s.spin != 0 && s.drive) world.setAngularVelocity(body, s.spin);
     world.step(dt);
     const bench::Pose p = world.pose(body);
-    vy = (p.y - previous.y) / dt;  // the peers' own vertical motion, kept while driving
+    vy = (p.y - lastY) / dt;  // the peers' own vertical motion, kept while driving
+    lastY = p.y;
     if (s.frames <= 100000 || f == s.frames) {
       const double depth = bench::penetrationDepth(s.shape, p, s.solids);
       if (depth > 1e-9) {
-        ++out.overlapFrames;
-        out.maxPenetration = std::max(out.maxPenetration, depth);
+        ++track.outcome().overlapFrames;
+        track.outcome().maxPenetration = std::max(track.outcome().maxPenetration, depth);
       }
     }
-    if (!s.allowed({p.x, p.y, p.angle})) ++out.tunnelFrames;
-    if (s.minSpeedX > 0 && (p.x - previous.x) * s.hz < 0.5 * s.minSpeedX) ++out.stuckFrames;
-    if (f == s.settleFrames) settled = p;
-    if (s.settleFrames >= 0 && f > s.settleFrames)
-      out.drift = std::max(out.drift, std::hypot(p.x - settled.x, p.y - settled.y));
-    previous = p;
+    track.frame(f, {p.x, p.y, p.angle});
   }
-  out.final = {previous.x, previous.y, previous.angle};
-  out.missedTarget = !std::isnan(s.targetX) && std::fabs(out.final.x - s.targetX) > 0.01;
+  Outcome out = track.finish();
   out.triggerBegins = world.sensorBeginEvents();
   out.missedEvents = std::max(0, s.expectedCrossings - out.triggerBegins);
   return out;
@@ -81,15 +76,6 @@ std::string summary(const Scene& s, const Outcome& o) {
     add(buf);
   }
   return t.tellp() > 0 ? t.str() : "ok";
-}
-
-int64_t extentUnits(const Scene& s) {
-  const double travel = std::hypot(s.vx, s.vy) * s.frames / s.hz;
-  double m = std::max(std::fabs(s.start.x), std::fabs(s.start.y)) + travel + 20;
-  for (const auto* list : {&s.solids, &s.triggers})
-    for (const scenes::Seg& g : *list)
-      for (const double v : g) m = std::max(m, std::fabs(v));
-  return static_cast<int64_t>(std::ceil(m * kUnitsPerMetre)) + 16;
 }
 
 }  // namespace
@@ -121,7 +107,7 @@ int main(int argc, char** argv) {
       table << "n/a (one part) | n/a | n/a | n/a | n/a | n/a | n/a | n/a | n/a |\n";
       continue;
     }
-    table << summary(s, scenes::runPlaton(s, kUnitsPerMetre, physics::kCoordLimit - extentUnits(s))) << " | ";
+    table << summary(s, scenes::runPlaton(s, kUnitsPerMetre, physics::kCoordLimit - scenes::extentUnits(s, kUnitsPerMetre))) << " | ";
     for (const bool box2d : {true, false})
       for (const double offset : offsets) {
         const Scene moved = scenes::stabilityScenes(offset)[k];

@@ -12,17 +12,6 @@ using namespace platon::scenes;
 namespace {
 constexpr double kUnitsPerMetre = 1024;
 
-// Largest |coordinate| a scene can reach (its lines, and the body's start plus its travel), in
-// units, so it can be moved flush against the range limit.
-int64_t extentUnits(const Scene& s) {
-  const double travel = std::hypot(s.vx, s.vy) * s.frames / s.hz;
-  double m = std::max(std::fabs(s.start.x), std::fabs(s.start.y)) + travel + 20;
-  for (const auto* list : {&s.solids, &s.triggers})
-    for (const Seg& g : *list)
-      for (const double v : g) m = std::max(m, std::fabs(v));
-  return static_cast<int64_t>(std::ceil(m * kUnitsPerMetre)) + 16;
-}
-
 void expectClean(const Scene& s, const Outcome& o, const std::string& where) {
   SCOPED_TRACE(s.name + " " + where);
   EXPECT_EQ(o.overlapFrames, 0) << "penetration";
@@ -45,7 +34,7 @@ TEST_P(Stability, PlatonIsExactAtTheOriginAndAtBothRangeLimits) {
     if (s.name != GetParam()) continue;
     expectClean(s, runPlaton(s, kUnitsPerMetre), "at the origin");
     if (s.platonOnly || s.frames > 100000) return;  // the long rest runs once
-    const int64_t limit = platon::physics::kCoordLimit - extentUnits(s);
+    const int64_t limit = platon::physics::kCoordLimit - extentUnits(s, kUnitsPerMetre);
     expectClean(s, runPlaton(s, kUnitsPerMetre, limit), "near +2^30");
     expectClean(s, runPlaton(s, kUnitsPerMetre, -limit), "near -2^30");
     return;

@@ -224,6 +224,30 @@ Outcome runWarpCorner(double upm) {
 
 }  // namespace
 
+void OutcomeTracker::frame(int f, const Pose& p) {
+  if (!scene_.allowed(p)) ++out_.tunnelFrames;
+  if (scene_.minSpeedX > 0 && (p.x - previous_.x) * scene_.hz < 0.5 * scene_.minSpeedX) ++out_.stuckFrames;
+  if (f == scene_.settleFrames) settled_ = p;
+  if (scene_.settleFrames >= 0 && f > scene_.settleFrames)
+    out_.drift = std::max(out_.drift, std::hypot(p.x - settled_.x, p.y - settled_.y));
+  previous_ = p;
+}
+
+Outcome OutcomeTracker::finish() {
+  out_.final = previous_;
+  out_.missedTarget = !std::isnan(scene_.targetX) && std::fabs(out_.final.x - scene_.targetX) > 0.01;
+  return out_;
+}
+
+int64_t extentUnits(const Scene& s, double upm) {
+  const double travel = std::hypot(s.vx, s.vy) * s.frames / s.hz;
+  double m = std::max(std::fabs(s.start.x), std::fabs(s.start.y)) + travel + 20;
+  for (const auto* list : {&s.solids, &s.triggers})
+    for (const Seg& g : *list)
+      for (const double v : g) m = std::max(m, std::fabs(v));
+  return static_cast<int64_t>(std::ceil(m * upm)) + 16;
+}
+
 Outcome runPlaton(const Scene& scene, double upm, int64_t offsetUnits) {
   if (scene.platonOnly) return scene.platonOnly(upm);
   const auto t0 = std::chrono::steady_clock::now();
@@ -248,29 +272,20 @@ Outcome runPlaton(const Scene& scene, double upm, int64_t offsetUnits) {
   world.setVelocity(body, {vx, std::llround(scene.vy * q16 / scene.hz)});
   world.setAngularVelocity(body, static_cast<int32_t>(std::llround(scene.spin / scene.hz * 4294967296.0 / (2 * kPi))));
   const bool checkEveryFrame = scene.frames <= 100000;
-  Outcome out;
-  Pose settled;
   auto pose = [&] {
     const Instance& inst = world.entity(body).instances.at(0);
     return Pose{static_cast<double>(inst.position.x - offsetUnits) / upm,
                 static_cast<double>(inst.position.y - offsetUnits) / upm,
                 world.entity(body).angle * 2 * kPi / 4294967296.0};
   };
-  Pose previous = pose();
+  OutcomeTracker track(scene, pose());
   for (int f = 1; f <= scene.frames; ++f) {
     if (scene.drive) world.setVelocity(body, {vx, world.entity(body).velocityQ16.y});
     world.solve();
-    const Pose p = pose();
-    if (checkEveryFrame || f == scene.frames) out.overlapFrames += world.countOverlaps() > 0;
-    if (!scene.allowed({p.x, p.y, p.angle})) ++out.tunnelFrames;
-    if (scene.minSpeedX > 0 && (p.x - previous.x) * scene.hz < 0.5 * scene.minSpeedX) ++out.stuckFrames;
-    if (f == scene.settleFrames) settled = p;
-    if (scene.settleFrames >= 0 && f > scene.settleFrames)
-      out.drift = std::max(out.drift, std::hypot(p.x - settled.x, p.y - settled.y));
-    previous = p;
+    if (checkEveryFrame || f == scene.frames) track.outcome().overlapFrames += world.countOverlaps() > 0;
+    track.frame(f, pose());
   }
-  out.final = pose();
-  out.missedTarget = !std::isnan(scene.targetX) && std::fabs(out.final.x - scene.targetX) > 0.01;
+  Outcome out = track.finish();
   out.triggerBegins = counter.begins;
   out.triggerEnds = counter.ends;
   out.missedEvents = std::max(0, scene.expectedCrossings - counter.begins) + std::max(0, scene.expectedCrossings - counter.ends);

@@ -59,6 +59,25 @@ struct Outcome {
   double seconds = 0;          // wall time of the run
 };
 
+// Scores one run frame by frame, the same way for every engine: tunnels, stuck frames, drift after
+// settling, and at the end whether the body got where it was sent.
+class OutcomeTracker {
+ public:
+  OutcomeTracker(const Scene& scene, Pose start) : scene_(scene), previous_(start) {}
+  void frame(int f, const Pose& p);
+  Outcome& outcome() { return out_; }
+  Outcome finish();
+
+ private:
+  const Scene& scene_;
+  Pose previous_, settled_;
+  Outcome out_;
+};
+
+// Largest |coordinate| a scene can reach (its lines, and the body's start plus its travel), in
+// units at `unitsPerMetre`: how far it must stay from the end of the coordinate range.
+int64_t extentUnits(const Scene& scene, double unitsPerMetre);
+
 // The scenes of the stability suite. `offset` moves everything by (offset, offset) metres.
 std::vector<Scene> stabilityScenes(double offset = 0);
 
