@@ -173,7 +173,7 @@ void World::rebase(Entity& e, size_t k, Vec2w* motion) {
   anchor.idealQ30 = {int64_t{anchor.position.x} << 30, int64_t{anchor.position.y} << 30};
   e.angle = static_cast<Angle>(e.angle + theta);
   const Rotation r = rotationOf(theta);
-  e.velocityQ16 = rotateWide(r, e.velocityQ16);
+  e.velocityQ16 = clampVelocityQ16(rotateWide(r, e.velocityQ16));
   e.subunitQ17 = rotateWide(r, e.subunitQ17);
   // Keep the carried remainder below one unit after rounding.
   e.subunitQ17.x = std::clamp<int64_t>(e.subunitQ17.x, 0, (1 << 17) - 1);

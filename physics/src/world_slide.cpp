@@ -101,9 +101,7 @@ void World::stepEntity(EntityId id, Entity& e) {
   const Vec2w before = e.velocityQ16;
   if (e.gravity) {
     const Vec2w g = mapPart(e.instances[0].part).gravity();
-    const int64_t limit = int64_t{kMaxMove} * kQ16;
-    e.velocityQ16.x = std::clamp(e.velocityQ16.x + g.x, -limit, limit);
-    e.velocityQ16.y = std::clamp(e.velocityQ16.y + g.y, -limit, limit);
+    e.velocityQ16 = clampVelocityQ16(e.velocityQ16 + g);
   }
   // The frame moves by the average of the velocities at its start and end: for constant gravity
   // that is the exact parabola at every frame, not the first-order step most engines take. The
@@ -348,7 +346,7 @@ void World::slide(EntityId id, Entity& e, Vec2w motion) {
     ContactResponse response;
     callRules([&](Rules& r) { r.contact(contact, response); });
     const Vec2w normal = shortDirection(rotateWideInverse(inst->rotation, shortDirection(partNormal)));
-    if (response.removeNormalVelocity) e.velocityQ16 = removeInto(e.velocityQ16, normal);
+    if (response.removeNormalVelocity) e.velocityQ16 = clampVelocityQ16(removeInto(e.velocityQ16, normal));
     if (!response.slide) break;
     Vec2w carryQ17;
     motion = removeIntoCarrying(motion, normal, carryQ17);

@@ -1,8 +1,9 @@
 // libFuzzer target: whole worlds built from fuzzer bytes (rooms, random lines, a warp pair, random
 // shapes, inserts, velocities, rotations, rules that pierce, bounce or throw), stepped frame by
 // frame. After every frame: no instance overlaps a solid line, every instance lies in the
-// coordinate range, and no entity that had an instance lost them all. API calls may refuse bad
-// input only with physics::Error; anything else is a bug.
+// coordinate range, velocities stay within setVelocity's limit, and no entity that had an
+// instance lost them all. API calls may refuse bad input only with physics::Error; anything else
+// is a bug.
 //
 // A failure re-runs the input with tracing on, which prints the calls as C++ (also available as
 // PLATON_FUZZ_TRACE=1 world_fuzz <input file>).
@@ -309,10 +310,16 @@ struct Scene {
   void checkInvariants(int frame) {
     if (const size_t overlaps = world.countOverlaps(); overlaps != 0)
       fail("frame " + std::to_string(frame) + ": " + std::to_string(overlaps) + " instance/line overlaps");
-    for (const EntityId id : world.entities())
-      for (const Instance& inst : world.entity(id).instances)
+    // Every velocity the world holds is one setVelocity would accept (at most 2^30 units a frame).
+    const int64_t limitQ16 = int64_t{kMaxMove} << 16;
+    for (const EntityId id : world.entities()) {
+      const Entity& e = world.entity(id);
+      if (std::max(std::abs(e.velocityQ16.x), std::abs(e.velocityQ16.y)) > limitQ16)
+        fail("frame " + std::to_string(frame) + ": " + name(id) + " moves faster than setVelocity allows");
+      for (const Instance& inst : e.instances)
         for (const Vec2 v : worldVertices(inst))
           if (!inRange(v)) fail("frame " + std::to_string(frame) + ": " + name(id) + " has a vertex out of range");
+    }
   }
 
   void step(int frame, FuzzRules& rules) {

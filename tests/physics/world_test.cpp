@@ -251,3 +251,17 @@ TEST(World, SlidesDownASlopeAsFarAsTheAnalyticAnswer) {
   const double exact = 0.5 * g * std::sin(10.0 * 3.14159265358979 / 180.0) * 120 * 120;
   EXPECT_NEAR(travelled, exact, 2.0);
 }
+
+// Sliding along a sloped line turns a velocity so one component could exceed the largest move;
+// the world keeps every velocity one that setVelocity accepts.
+TEST(World, VelocitiesStayWithinTheLargestMoveAfterSlides) {
+  Scene s;
+  s.part->line({-1066800000, -616000000}, {1066800000, 616000000});  // 30 degrees
+  const int64_t limit = int64_t{kMaxMove} << 16;
+  const EntityId box = s.drop(Convex::box(100, 100), {1000000000, 577428000}, {-limit, -limit});
+  s.world.setGravityEnabled(box, false);
+  s.run(1);
+  const Vec2w v = s.world.entity(box).velocityQ16;
+  EXPECT_LE(std::max(std::abs(v.x), std::abs(v.y)), limit);
+  EXPECT_NO_THROW(s.world.setVelocity(box, v));
+}

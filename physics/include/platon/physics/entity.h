@@ -34,6 +34,14 @@ struct WarpLink {
   uint8_t toState = 0;
 };
 
+// A velocity held within the largest move per frame (2^30 units, in Q16), component by component.
+// Projections along sloped lines and turns into another frame can push one component up to sqrt(2)
+// times past it; the world clamps there so every velocity it holds is one setVelocity accepts.
+inline Vec2w clampVelocityQ16(Vec2w v) {
+  const int64_t limit = int64_t{kMaxMove} << 16;
+  return {v.x < -limit ? -limit : (v.x > limit ? limit : v.x), v.y < -limit ? -limit : (v.y > limit ? limit : v.y)};
+}
+
 // The instance's vertices in its part's coordinates.
 inline void worldVertices(const Instance& inst, std::vector<Vec2>& out) {
   out.resize(inst.shape.size());
