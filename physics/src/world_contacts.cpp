@@ -115,7 +115,7 @@ bool World::placeNear(EntityId id, Instance& inst, Vec2w targetQ30, const Segmen
     }
   }
   inst.position = best;
-  return placed && (probe == Vec2w{} || bestFree > Fraction::zero() || mustTouch);
+  return placed;
 }
 
 void World::createOverlappedWarps(EntityId id, Entity& e) {
