@@ -25,7 +25,6 @@ Convex::Convex(std::vector<Vec2> vertices) : vertices_(std::move(vertices)) {
         throw Error("convex shape vertex " + std::to_string(j) + " repeats vertex " +
                     std::to_string(i) + " " + toString(vertices_[i]));
   // Every turn must be strictly left, and the polygon must wind exactly once.
-  int64_t area2 = 0;
   for (int i = 0; i < n; ++i) {
     const Vec2 a = vertices_[(i + n - 1) % n];
     const Vec2 b = vertices_[i];
@@ -37,7 +36,6 @@ Convex::Convex(std::vector<Vec2> vertices) : vertices_(std::move(vertices)) {
     if (turn < 0)
       throw Error("convex shape vertex " + std::to_string(i) + " " + toString(b) +
                   " turns clockwise: vertices must be counter-clockwise and convex");
-    area2 += cross(wide(b), wide(c));
   }
   // All left turns but winding more than once (a star) shows up as an angle sum above 360 degrees;
   // detect it by checking that every vertex is on the inner side of every edge.
@@ -51,7 +49,6 @@ Convex::Convex(std::vector<Vec2> vertices) : vertices_(std::move(vertices)) {
                     " lies outside edge " + std::to_string(i) + ": the polygon is not convex");
     }
   }
-  (void)area2;
 }
 
 std::vector<Vec2> convexHull(std::vector<Vec2> points) {
