@@ -163,14 +163,14 @@ class PlatonMap {
     world_.insert(e, 1, units(kStartX, kStartY), 0);
     Patrol patrol;
     Motion m;
-    Vec2 last = world_.entity(e).instances[0].position;
+    Vec2 last = world_.entity(e).instance(0).position;
     long overlaps = 0;
     const auto t0 = Clock::now();
     for (int f = 0; f < frames; ++f) {
-      const int64_t vy = Patrol::jumps(f) ? q16PerFrame(kJumpSpeed) : world_.entity(e).velocityQ16.y;
+      const int64_t vy = Patrol::jumps(f) ? q16PerFrame(kJumpSpeed) : world_.entity(e).velocity().y;
       world_.setVelocity(e, {q16PerFrame(patrol.vx(static_cast<double>(last.x) / kUnitsPerMetre)), vy});
       world_.solve();
-      const Vec2 p = world_.entity(e).instances[0].position;
+      const Vec2 p = world_.entity(e).instance(0).position;
       m.travelled += std::abs(p.x - last.x) / static_cast<double>(kUnitsPerMetre);
       m.stuckFrames += p == last;
       last = p;

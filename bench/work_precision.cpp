@@ -163,9 +163,9 @@ class PlatonWorld final : public PeerWorld {
     world_.solve();
   }
   Pose pose(int body) const override {
-    const Entity& e = world_.entity(bodies_.at(body));
-    const Vec2 p = e.instances.at(0).position;
-    return {metres(p.x), metres(p.y), e.angle * (2 * kPi) * 0x1p-32};
+    const EntityView e = world_.entity(bodies_.at(body));
+    const Vec2 p = e.instance(0).position;
+    return {metres(p.x), metres(p.y), e.angle() * (2 * kPi) * 0x1p-32};
   }
   int sensorBeginEvents() const override { return 0; }
 
@@ -175,7 +175,7 @@ class PlatonWorld final : public PeerWorld {
   const Segments& segments() const { return segments_; }
   Polygon shape(int body) const {
     Polygon out;
-    for (const Vec2 v : world_.entity(bodies_.at(body)).shape.vertices()) out.push_back({metres(v.x), metres(v.y)});
+    for (const Vec2 v : world_.entity(bodies_.at(body)).shape().vertices()) out.push_back({metres(v.x), metres(v.y)});
     return out;
   }
 
@@ -351,10 +351,10 @@ class WarpRun {
   long frames() const { return std::lround(kSeconds * hz_); }
   void step() { world_.solve(); }
   const World& world() const { return world_; }
-  const Entity& entity() const { return world_.entity(id_); }
+  EntityView entity() const { return world_.entity(id_); }
 
   // The instance's position against the analytic path mapped into its part, metres.
-  double error(const Instance& inst, double t) const {
+  double error(const InstanceView& inst, double t) const {
     const long double x = kStartX + vx() * t, y = y0() + vy() * t;
     const long double ex = inst.part == 1 ? x : c_ * x - s_ * y, ey = inst.part == 1 ? y : s_ * x + c_ * y;
     return static_cast<double>(std::hypot(inst.position.x / static_cast<long double>(upm_) - ex,
@@ -362,7 +362,7 @@ class WarpRun {
   }
   // The anchor's x in the unfolded plane, metres.
   double unfoldedX() const {
-    const Instance& anchor = entity().instances.at(0);
+    const InstanceView anchor = entity().instance(0);
     const long double x = anchor.position.x, y = anchor.position.y;
     return static_cast<double>((anchor.part == 1 ? x : c_ * x + s_ * y) / upm_);
   }
@@ -370,8 +370,8 @@ class WarpRun {
   double vy() const { return scene_.walk ? 0 : 0.5; }
 
   // The instance's pose, shape and its part's solid lines in metres, for the common measurements.
-  Pose pose(const Instance& inst) const { return {metres(inst.position.x), metres(inst.position.y), 0}; }
-  Polygon shape(const Instance& inst) const {
+  Pose pose(const InstanceView& inst) const { return {metres(inst.position.x), metres(inst.position.y), 0}; }
+  Polygon shape(const InstanceView& inst) const {
     Polygon out;
     for (const Vec2 v : inst.shape) out.push_back({metres(v.x), metres(v.y)});
     return out;
@@ -411,7 +411,7 @@ Row runWarp(const WarpScene& scene, int upm, double hz) {
   for (long f = 1; f <= run.frames(); ++f) {
     run.step();
     r.overlaps += run.world().countOverlaps();
-    for (const Instance& inst : run.entity().instances) {
+    for (const InstanceView inst : run.entity().instances()) {
       r.error = std::max(r.error, run.error(inst, static_cast<double>(f) / hz));
       r.penetration = std::max(r.penetration, platon::bench::penetrationDepth(run.shape(inst), run.pose(inst),
                                                                               run.solidSegments(inst.part)));
@@ -419,7 +419,7 @@ Row runWarp(const WarpScene& scene, int upm, double hz) {
     x.push_back(run.unfoldedX());
   }
   r.stuck = stuckFrames(x, run.vx() / hz, std::sqrt(2.0) / upm);
-  const Instance& anchor = run.entity().instances.at(0);
+  const InstanceView anchor = run.entity().instance(0);
   const Segments floor = run.solidSegments(anchor.part);
   r.gap = floor.empty() ? kNaN : platon::bench::gapToNearest(run.shape(anchor), run.pose(anchor), floor);
   // Timed runs: the frame loop alone.

@@ -40,25 +40,25 @@ int main(int argc, char** argv) {
   int crossings = 0;
   for (int f = 1; f <= frames; ++f) {
     world.solve();
-    const physics::Entity& e = world.entity(ball);
+    const physics::EntityView e = world.entity(ball);
     if (world.countOverlaps() != 0) {
       std::printf("frame %d: INVARIANT BROKEN: an instance overlaps a solid line\n", f);
       return 1;
     }
     // Keep it rolling: push along the face's x axis when it is slow.
-    if (e.velocityQ16.x > -8 * 65536 && e.velocityQ16.x < 8 * 65536)
-      world.setVelocity(ball, {(f / 500) % 2 ? -24 * 65536 : 24 * 65536, e.velocityQ16.y});
-    if (e.instances[0].part != face) {
-      face = e.instances[0].part;
+    if (e.velocity().x > -8 * 65536 && e.velocity().x < 8 * 65536)
+      world.setVelocity(ball, {(f / 500) % 2 ? -24 * 65536 : 24 * 65536, e.velocity().y});
+    if (e.instance(0).part != face) {
+      face = e.instance(0).part;
       ++crossings;
-      const Vec2 p = e.instances[0].position;
+      const Vec2 p = e.instance(0).position;
       std::printf("frame %5d: crossed onto face %u at (%d, %d), velocity (%.2f, %.2f) units/frame\n", f, face, p.x, p.y,
-                  static_cast<double>(e.velocityQ16.x) / 65536.0, static_cast<double>(e.velocityQ16.y) / 65536.0);
+                  static_cast<double>(e.velocity().x) / 65536.0, static_cast<double>(e.velocity().y) / 65536.0);
     }
   }
-  const physics::Entity& e = world.entity(ball);
+  const physics::EntityView e = world.entity(ball);
   std::printf("after %d frames: face %u, position (%d, %d), %d edge crossings, no overlap on any frame\n", frames,
-              e.instances[0].part, e.instances[0].position.x, e.instances[0].position.y, crossings);
+              e.instance(0).part, e.instance(0).position.x, e.instance(0).position.y, crossings);
   std::printf("state hash %016llx\n", static_cast<unsigned long long>(world.stateHash()));
   return 0;
 }

@@ -1,7 +1,8 @@
-#include "platon/physics/grid.h"
+#include "grid.h"
+
+#include "fixed_point.h"
 
 #include <algorithm>
-#include <cmath>
 #include <utility>
 
 namespace platon::physics {
@@ -123,10 +124,17 @@ void Grid::build(std::span<const Segment> segments) {
     minY = std::min<int64_t>({minY, s.a.y, s.b.y}), maxY = std::max<int64_t>({maxY, s.a.y, s.b.y});
   }
   // About n cells, shaped after the map's extent so long levels get more columns than rows.
-  const double width = n ? static_cast<double>(maxX - minX + 1) : 1.0;
-  const double height = n ? static_cast<double>(maxY - minY + 1) : 1.0;
-  const double cells = std::max<double>(1.0, static_cast<double>(n));
-  const double aspect = std::clamp(width / height, 1.0 / cells, cells);
+  // Columns are ceil(sqrt(n * width / height)) and rows ceil(sqrt(n * height / width)), each
+  // between 1 and n, in exact integers.
+  const uint64_t width = n ? static_cast<uint64_t>(maxX - minX + 1) : 1;
+  const uint64_t height = n ? static_cast<uint64_t>(maxY - minY + 1) : 1;
+  const uint64_t cells = std::max<uint64_t>(1, n);
+  auto sideFor = [&](uint64_t along, uint64_t across) {
+    const u128 want = static_cast<u128>(cells) * along;  // side^2 * across >= want
+    uint64_t side = std::clamp<uint64_t>(isqrt(want / across), 1, cells);
+    while (side < cells && static_cast<u128>(side) * side * across < want) ++side;
+    return static_cast<size_t>(side);
+  };
   // Cuts at endpoint projections. Only quantiles are needed, so a systematic sample of about 16
   // projections per cut serves as well as all of them and keeps the sort small.
   auto cutsFor = [&](bool x, size_t count) {
@@ -141,8 +149,8 @@ void Grid::build(std::span<const Segment> segments) {
     }
     return pickCuts(std::move(sample), count);
   };
-  xAxis_.cuts = cutsFor(true, static_cast<size_t>(std::ceil(std::sqrt(cells * aspect))));
-  yAxis_.cuts = cutsFor(false, static_cast<size_t>(std::ceil(std::sqrt(cells / aspect))));
+  xAxis_.cuts = cutsFor(true, sideFor(width, height));
+  yAxis_.cuts = cutsFor(false, sideFor(height, width));
   xAxis_.index();
   yAxis_.index();
 

@@ -1,13 +1,17 @@
 #include "platon/physics/map_part.h"
 
-#include <cmath>
-
-#include "platon/physics/world.h"
+#include "fixed_point.h"
+#include "grid.h"
 
 namespace platon::physics {
 namespace {
 std::string partName(MapPartId id) { return "map part " + std::to_string(id); }
 }  // namespace
+
+MapPart::MapPart(MapPartId id) : id_(id), grid_(std::make_unique<Grid>()) {}
+MapPart::MapPart(MapPart&&) noexcept = default;
+MapPart& MapPart::operator=(MapPart&&) noexcept = default;
+MapPart::~MapPart() = default;
 
 void MapPart::checkOpen(const char* what) const {
   if (initialized_)
@@ -35,10 +39,10 @@ LineIndex MapPart::warp(Vec2 p0, Vec2 p1, MapPartId target, Vec2 t0, Vec2 t1, ui
   checkSegment(p0, p1, "warp");
   checkSegment(t0, t1, "warp target of");
   const Vec2w d = p1 - p0, e = t1 - t0;
-  // Lengths compared in floating point: this is a plausibility check, not geometry.
-  const double ld = std::sqrt(static_cast<double>(dot(d, d)));
-  const double le = std::sqrt(static_cast<double>(dot(e, e)));
-  if (std::fabs(ld - le) > 2.0 + 0.01 * std::max(ld, le))
+  // A plausibility check on the lengths (whole units, rounded down), not geometry.
+  const int64_t ld = static_cast<int64_t>(isqrt(static_cast<u128>(dot(d, d))));
+  const int64_t le = static_cast<int64_t>(isqrt(static_cast<u128>(dot(e, e))));
+  if (100 * std::abs(ld - le) > 200 + std::max(ld, le))
     throw Error(partName(id_) + " warp " + std::to_string(lines_.size()) + ": edge lengths differ (" +
                 std::to_string(ld) + " here, " + std::to_string(le) + " in part " +
                 std::to_string(target) + ")");
@@ -75,20 +79,17 @@ void MapPart::initialize() {
   for (size_t i = 0; i < lines_.size(); ++i) {
     if (lines_[i].kind != LineKind::Warp) continue;
     const MapPartId target = warps_[lines_[i].warp].target;
-    if (!world_->findMapPart(target))
-      throw Error(partName(id_) + " warp " + std::to_string(i) + ": target map part " +
-                  std::to_string(target) + " does not exist");
     if (target == id_)
       throw Error(partName(id_) + " warp " + std::to_string(i) + ": a warp cannot target its own part");
   }
   if (lines_.size() >= UINT32_MAX - 1) throw Error(partName(id_) + ": too many lines");
-  grid_.build(segments_);
+  grid_->build(segments_);
   initialized_ = true;
 }
 
 size_t MapPart::memoryBytes() const {
   return lines_.capacity() * sizeof(Line) + segments_.capacity() * sizeof(Segment) +
-         warps_.capacity() * sizeof(Warp) + grid_.memoryBytes();
+         warps_.capacity() * sizeof(Warp) + grid_->memoryBytes();
 }
 
 }  // namespace platon::physics

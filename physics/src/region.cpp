@@ -1,4 +1,4 @@
-#include "platon/physics/region.h"
+#include "region.h"
 
 namespace platon::physics {
 namespace {

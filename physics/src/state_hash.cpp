@@ -1,6 +1,6 @@
 // A 64-bit FNV-1a hash of everything that determines the future: equal hashes across runs and
 // machines show determinism.
-#include "platon/physics/world.h"
+#include "world_impl.h"
 
 namespace platon::physics {
 namespace {
@@ -16,13 +16,14 @@ struct Hasher {
 }  // namespace
 
 uint64_t World::stateHash() const {
+  const WorldImpl& w = *impl_;
   Hasher h;
-  h.add(frame_);
-  for (uint32_t s = 0; s < slots_.size(); ++s) {
-    const Entity* e = slots_[s].entity.get();
+  h.add(w.frame);
+  for (uint32_t s = 0; s < w.slots.size(); ++s) {
+    const Entity* e = w.slots[s].entity.get();
     if (!e) continue;
     h.add(s);
-    h.add(slots_[s].generation);
+    h.add(w.slots[s].generation);
     h.add(e->angle);
     h.add(static_cast<uint64_t>(e->velocityQ16.x));
     h.add(static_cast<uint64_t>(e->velocityQ16.y));

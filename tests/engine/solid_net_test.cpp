@@ -48,8 +48,8 @@ TEST(SolidNet, BallTravelsAroundTheCube) {
   for (int f = 0; f < 3000; ++f) {
     world.solve();
     ASSERT_EQ(world.countOverlaps(), 0u);
-    ASSERT_FALSE(world.entity(ball).instances.empty());
-    visited.insert(world.entity(ball).instances[0].part);
+    ASSERT_TRUE(world.entity(ball).inserted());
+    visited.insert(world.entity(ball).instance(0).part);
   }
   EXPECT_GE(visited.size(), 3u);
 }

@@ -125,7 +125,7 @@ class FuzzRules : public Rules {
     response.slide = !noSlide;
     response.removeNormalVelocity = !keepNormalVelocity;
     if (bounce) {  // callbacks may set velocities
-      const Vec2w v = world->entity(c.entity).velocityQ16;
+      const Vec2w v = world->entity(c.entity).velocity();
       world->setVelocity(c.entity, {-v.x, -v.y});
     }
     if (throwOnContact) {  // a script error: solve() finishes the frame, then rethrows it
@@ -253,7 +253,7 @@ struct Scene {
   // seconds. This caps a turn at about `work` vertex-steps.
   int64_t affordableTurn(EntityId id, int64_t turn, double work) const {
     if (!world.valid(id)) return turn;
-    const Convex& shape = world.entity(id).shape;
+    const Convex& shape = world.entity(id).shape();
     int64_t radius2 = 1;
     for (const Vec2 v : shape.vertices()) radius2 = std::max(radius2, dot(wide(v), wide(v)));
     const double steps = work / shape.size(), radians = steps * 2.0 / std::sqrt(std::sqrt(static_cast<double>(radius2)));
@@ -266,7 +266,7 @@ struct Scene {
     attempt("setAngularVelocity", [&] { world.setAngularVelocity(id, w); });
   }
   void rotate(EntityId id) {
-    const Angle a = world.valid(id) ? static_cast<Angle>(world.entity(id).angle + affordableTurn(id, in.any<int32_t>(), 2048))
+    const Angle a = world.valid(id) ? static_cast<Angle>(world.entity(id).angle() + affordableTurn(id, in.any<int32_t>(), 2048))
                                     : in.any<Angle>();
     trace("world.rotate(", name(id), ", ", a, ");");
     attempt("rotate", [&] { world.rotate(id, a); });
@@ -313,19 +313,19 @@ struct Scene {
     // Every velocity the world holds is one setVelocity would accept (at most 2^30 units a frame).
     const int64_t limitQ16 = int64_t{kMaxMove} << 16;
     for (const EntityId id : world.entities()) {
-      const Entity& e = world.entity(id);
-      if (std::max(std::abs(e.velocityQ16.x), std::abs(e.velocityQ16.y)) > limitQ16)
+      const EntityView e = world.entity(id);
+      if (std::max(std::abs(e.velocity().x), std::abs(e.velocity().y)) > limitQ16)
         fail("frame " + std::to_string(frame) + ": " + name(id) + " moves faster than setVelocity allows");
-      for (const Instance& inst : e.instances)
-        for (const Vec2 v : worldVertices(inst))
-          if (!inRange(v)) fail("frame " + std::to_string(frame) + ": " + name(id) + " has a vertex out of range");
+      for (const InstanceView inst : e.instances())
+        for (const Vec2 v : inst.shape)
+          if (std::max(std::abs(int64_t{inst.position.x} + v.x), std::abs(int64_t{inst.position.y} + v.y)) > kCoordLimit) fail("frame " + std::to_string(frame) + ": " + name(id) + " has a vertex out of range");
     }
   }
 
   void step(int frame, FuzzRules& rules) {
     std::vector<EntityId> placed;  // entities with an instance must keep one
     for (const EntityId id : world.entities())
-      if (!world.entity(id).instances.empty()) placed.push_back(id);
+      if (world.entity(id).inserted()) placed.push_back(id);
     rules.threw = false;
     trace("world.solve();  // frame ", frame);
     try {
@@ -336,7 +336,7 @@ struct Scene {
     }
     checkInvariants(frame);
     for (const EntityId id : placed)
-      if (world.entity(id).instances.empty()) fail("frame " + std::to_string(frame) + ": " + name(id) + " lost all its instances");
+      if (!world.entity(id).inserted()) fail("frame " + std::to_string(frame) + ": " + name(id) + " lost all its instances");
   }
 };
 

@@ -42,7 +42,15 @@ TEST(Errors, MapPartsCheckTheirLines) {
   expectError([&] { part.line({0, 0}, {kCoordLimit + 1, 0}); }, "outside the coordinate range");
   expectError([&] { part.warp({0, 0}, {100, 0}, 9, {0, 0}, {50, 0}); }, "edge lengths differ");
   part.warp({0, 0}, {100, 0}, 9, {0, 0}, {100, 0});
-  expectError([&] { part.initialize(); }, "target map part 9 does not exist");
+  // Targets may be created after the part; the world checks them when it is next used.
+  part.initialize();
+  expectError([&] { world.solve(); }, "map part 3 warp 0: target map part 9 does not exist");
+  const EntityId box = world.createEntity(Convex::box(5, 5));
+  expectError([&] { world.insert(box, 3, {50, 50}, 0); }, "target map part 9 does not exist");
+  MapPart& late = world.createMapPart(9);
+  late.initialize();
+  world.solve();  // the target exists now
+  world.insert(box, 3, {50, 50}, 0);
   World other;
   MapPart& self = other.createMapPart(1);
   self.warp({0, 0}, {100, 0}, 1, {0, 0}, {100, 0});
@@ -65,7 +73,7 @@ TEST(Errors, InsertChecksPlacement) {
   const EntityId box = world.createEntity(Convex::box(10, 10));
   expectError([&] { world.insert(box, 2, {0, 0}, 0); }, "not initialized");
   expectError([&] { world.insert(box, 1, {0, 5}, 0); }, "would overlap solid line 0");
-  EXPECT_TRUE(world.entity(box).instances.empty());
+  EXPECT_FALSE(world.entity(box).inserted());
   expectError([&] { world.insert(box, 1, {kCoordLimit - 3, 50}, 0); }, "outside the coordinate range");
   world.insert(box, 1, {0, 10}, 0);
   expectError([&] { world.insert(box, 1, {0, 50}, 0); }, "already has an instance in map part 1");
@@ -96,5 +104,5 @@ TEST(Errors, ShapesTooSmallToRotateAreRefused) {
   const EntityId sliver = world.createEntity(Convex({{0, 0}, {1, 1}, {0, 1}}));
   world.insert(sliver, 1, {0, 0}, 0);
   expectError([&] { world.rotate(sliver, angleFromDegrees(25)); }, "too small to rotate");
-  EXPECT_EQ(world.entity(sliver).angle, 0u);
+  EXPECT_EQ(world.entity(sliver).angle(), 0u);
 }

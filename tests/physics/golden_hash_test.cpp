@@ -210,7 +210,7 @@ uint64_t runCube(uint64_t seed) {
   Fold fold;
   for (int f = 1; f <= 1500; ++f) {
     for (size_t k = 0; k < ids.size(); ++k) {  // keep them moving along their face's x axis
-      const int64_t vy = world.entity(ids[k]).velocityQ16.y;
+      const int64_t vy = world.entity(ids[k]).velocity().y;
       if (f % 60 == static_cast<int>(k)) world.setVelocity(ids[k], {(f / 300 + static_cast<int>(k)) % 2 ? 20 * kUnit : -20 * kUnit, vy + 10 * kUnit});
     }
     activity.add(world.solve());

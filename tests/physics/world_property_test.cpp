@@ -156,7 +156,7 @@ TEST(WorldProperty, RandomWarpingNeverOverlaps) {
       const SolveReport r = world.solve();
       crossings += static_cast<int>(r.warpsCreated);
       ASSERT_EQ(world.countOverlaps(), 0u) << "seed " << seed + map << " frame " << f;
-      for (const EntityId id : ids) ASSERT_FALSE(world.entity(id).instances.empty());
+      for (const EntityId id : ids) ASSERT_TRUE(world.entity(id).inserted());
     }
   }
   EXPECT_GT(crossings, 100);

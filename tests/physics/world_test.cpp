@@ -22,7 +22,7 @@ struct Scene {
     world.setVelocity(id, velocity);
     return id;
   }
-  Vec2 pos(EntityId id) const { return world.entity(id).instances.at(0).position; }
+  Vec2 pos(EntityId id) const { return world.entity(id).instance(0).position; }
   void run(int frames) {
     for (int i = 0; i < frames; ++i) {
       world.solve();
@@ -40,7 +40,7 @@ TEST(World, FallsAndLandsExactlyOnFloor) {
   const EntityId box = s.drop(Convex::box(10, 10), {0, 500});
   s.run(200);
   EXPECT_EQ(s.pos(box), (Vec2{0, 10}));  // bottom edge exactly on the floor: no gap, no skin
-  EXPECT_EQ(s.world.entity(box).velocityQ16.y, 0);
+  EXPECT_EQ(s.world.entity(box).velocity().y, 0);
 }
 
 TEST(World, RestsWithoutDriftForAMillionFrames) {
@@ -261,7 +261,7 @@ TEST(World, VelocitiesStayWithinTheLargestMoveAfterSlides) {
   const EntityId box = s.drop(Convex::box(100, 100), {1000000000, 577428000}, {-limit, -limit});
   s.world.setGravityEnabled(box, false);
   s.run(1);
-  const Vec2w v = s.world.entity(box).velocityQ16;
+  const Vec2w v = s.world.entity(box).velocity();
   EXPECT_LE(std::max(std::abs(v.x), std::abs(v.y)), limit);
   EXPECT_NO_THROW(s.world.setVelocity(box, v));
 }

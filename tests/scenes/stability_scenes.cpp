@@ -205,18 +205,18 @@ Outcome runWarpCorner(double upm) {
   Outcome out;
   Vec2 settled{};
   for (int f = 1; f <= 10000; ++f) {
-    world.setVelocity(body, {vx, world.entity(body).velocityQ16.y});
+    world.setVelocity(body, {vx, world.entity(body).velocity().y});
     world.solve();
     out.overlapFrames += world.countOverlaps() > 0;
-    const Entity& e = world.entity(body);
-    const Instance* onA = e.instanceIn(1);
+    const EntityView e = world.entity(body);
+    const std::optional<InstanceView> onA = e.instanceIn(1);
     if (!onA || onA->position.x > L + wall - half || onA->position.y < half) ++out.tunnelFrames;
     if (f == 2000 && onA) settled = onA->position;
     if (f > 2000 && onA)
       out.drift = std::max(out.drift, std::hypot(onA->position.x - settled.x, onA->position.y - settled.y) / upm);
-    if (f > 2000 && e.instances.size() != 2) ++out.stuckFrames;  // the straddle must hold steadily
+    if (f > 2000 && e.instanceCount() != 2) ++out.stuckFrames;  // the straddle must hold steadily
   }
-  const Instance* onA = world.entity(body).instanceIn(1);
+  const std::optional<InstanceView> onA = world.entity(body).instanceIn(1);
   if (onA) out.final = {onA->position.x / upm, onA->position.y / upm, 0};
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
@@ -273,14 +273,14 @@ Outcome runPlaton(const Scene& scene, double upm, int64_t offsetUnits) {
   world.setAngularVelocity(body, static_cast<int32_t>(std::llround(scene.spin / scene.hz * 4294967296.0 / (2 * kPi))));
   const bool checkEveryFrame = scene.frames <= 100000;
   auto pose = [&] {
-    const Instance& inst = world.entity(body).instances.at(0);
+    const InstanceView inst = world.entity(body).instance(0);
     return Pose{static_cast<double>(inst.position.x - offsetUnits) / upm,
                 static_cast<double>(inst.position.y - offsetUnits) / upm,
-                world.entity(body).angle * 2 * kPi / 4294967296.0};
+                world.entity(body).angle() * 2 * kPi / 4294967296.0};
   };
   OutcomeTracker track(scene, pose());
   for (int f = 1; f <= scene.frames; ++f) {
-    if (scene.drive) world.setVelocity(body, {vx, world.entity(body).velocityQ16.y});
+    if (scene.drive) world.setVelocity(body, {vx, world.entity(body).velocity().y});
     world.solve();
     if (checkEveryFrame || f == scene.frames) track.outcome().overlapFrames += world.countOverlaps() > 0;
     track.frame(f, pose());

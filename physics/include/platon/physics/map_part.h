@@ -1,15 +1,17 @@
 // A map part: the lines of one face of the solid, in that face's own 2D coordinates.
 #pragma once
+#include <memory>
 #include <span>
 #include <vector>
 
 #include "platon/physics/angle.h"
-#include "platon/physics/grid.h"
 #include "platon/physics/ids.h"
+#include "platon/physics/sweep.h"
 
 namespace platon::physics {
 
-class World;
+class Grid;  // internal: which lines pass through which cell
+struct WorldImpl;
 
 enum class LineKind : uint8_t { Solid, Warp };
 
@@ -47,30 +49,35 @@ class MapPart {
   // Room for `count` lines in all: a loader that knows the count saves the vectors' regrowth.
   void reserve(size_t count);
 
-  // Checks warp targets and builds the grid. Lines cannot be added afterwards.
+  // Builds the grid; lines cannot be added afterwards. The world checks that every warp's target
+  // part exists when it next inserts or solves (targets may be created after this part).
   void initialize();
   bool initialized() const { return initialized_; }
 
   std::span<const Line> lines() const { return lines_; }
   std::span<const Segment> segments() const { return segments_; }
   std::span<const Warp> warps() const { return warps_; }
-  const Grid& grid() const { return grid_; }
   size_t memoryBytes() const;
+
+  MapPart(MapPart&&) noexcept;
+  MapPart& operator=(MapPart&&) noexcept;
+  ~MapPart();
 
  private:
   friend class World;
-  MapPart(const World& world, MapPartId id) : world_(&world), id_(id) {}
+  friend struct WorldImpl;
+  explicit MapPart(MapPartId id);
   void checkOpen(const char* what) const;
   void checkSegment(Vec2 p0, Vec2 p1, const char* what) const;
+  const Grid& grid() const { return *grid_; }
 
-  const World* world_;
   MapPartId id_;
   bool initialized_ = false;
   Vec2w gravity_;
   std::vector<Line> lines_;
   std::vector<Segment> segments_;  // parallel to lines_, packed for the sweep loops
   std::vector<Warp> warps_;
-  Grid grid_;
+  std::unique_ptr<Grid> grid_;
 };
 
 }  // namespace platon::physics

@@ -7,6 +7,7 @@
 namespace platon::physics {
 
 __extension__ typedef __int128 i128;
+__extension__ typedef unsigned __int128 u128;
 
 // Every world point (line endpoints, entity vertices) satisfies |x|,|y| <= kCoordLimit.
 // Differences of two such points then have |component| <= 2^31 - 2, so a cross or dot product of

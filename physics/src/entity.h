@@ -1,10 +1,12 @@
-// Entities and their instances: plain data, read through World::entity(), changed through World.
+// Entities and their instances as the solver keeps them. Callers see them through EntityView and
+// InstanceView (platon/physics/entity_view.h); everything here is the solver's bookkeeping.
 #pragma once
 #include <vector>
 
 #include "platon/physics/convex.h"
 #include "platon/physics/ids.h"
-#include "platon/physics/region.h"
+#include "platon/physics/rules.h"
+#include "region.h"
 
 namespace platon::physics {
 
@@ -34,14 +36,6 @@ struct WarpLink {
   uint8_t toState = 0;
 };
 
-// A velocity held within the largest move per frame (2^30 units, in Q16), component by component.
-// Projections along sloped lines and turns into another frame can push one component up to sqrt(2)
-// times past it; the world clamps there so every velocity it holds is one setVelocity accepts.
-inline Vec2w clampVelocityQ16(Vec2w v) {
-  const int64_t limit = int64_t{kMaxMove} << 16;
-  return {v.x < -limit ? -limit : (v.x > limit ? limit : v.x), v.y < -limit ? -limit : (v.y > limit ? limit : v.y)};
-}
-
 // The instance's vertices in its part's coordinates.
 inline void worldVertices(const Instance& inst, std::vector<Vec2>& out) {
   out.resize(inst.shape.size());
@@ -55,8 +49,9 @@ inline std::vector<Vec2> worldVertices(const Instance& inst) {
 }
 
 struct Entity {
-  explicit Entity(Convex s) : shape(std::move(s)) {}
+  Entity(EntityId handle, Convex s) : id(handle), shape(std::move(s)) {}
 
+  EntityId id;
   Convex shape;               // as created, unrotated
   Angle angle = 0;            // rotation of the shape in the entity (anchor) frame
   Vec2w velocityQ16;          // 1/65536 units per frame, entity frame
@@ -66,12 +61,14 @@ struct Entity {
   uint64_t userData = 0;
   std::vector<Instance> instances;
   std::vector<WarpLink> links;
+  std::vector<Contact> contacts;  // solid contacts of the latest solve(), in the order they happened
 
-  const Instance* instanceIn(MapPartId part) const {
-    for (const Instance& i : instances)
+  Instance* instanceIn(MapPartId part) {
+    for (Instance& i : instances)
       if (i.part == part) return &i;
     return nullptr;
   }
+  const Instance* instanceIn(MapPartId part) const { return const_cast<Entity*>(this)->instanceIn(part); }
 };
 
 }  // namespace platon::physics

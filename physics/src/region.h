@@ -4,7 +4,7 @@
 #include <span>
 #include <vector>
 
-#include "platon/physics/grid.h"
+#include "grid.h"
 
 namespace platon::physics {
 

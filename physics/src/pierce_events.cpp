@@ -1,0 +1,100 @@
+// Begin, over and end events of pierceable lines, found along each instance's path in time order,
+// and the Contact records every callback receives.
+#include <algorithm>
+
+#include "world_impl.h"
+
+namespace platon::physics {
+
+Contact WorldImpl::makeContact(const Entity& e, const Instance& inst, LineIndex line, Fraction t, Vec2w normal,
+                               ContactPoints points) const {
+  Contact c;
+  c.entity = e.id;
+  c.part = inst.part;
+  c.line.part = inst.part;
+  c.line.index = line;
+  if (line != kWorldBoundLine) {
+    const Line& l = part(inst.part).lines()[line];
+    c.line.tag = l.tag;
+    c.line.kind = l.kind;
+  }
+  c.fraction = t;
+  c.normal = normal;
+  c.points = points;
+  return c;
+}
+
+void WorldImpl::updatePierceState(Entity& e, const Path& path) {
+  struct Event {
+    Fraction t;
+    size_t instance;
+    LineIndex line;
+    bool begin;
+    Vec2w normal;
+    ContactPoints points;
+  };
+  std::vector<Event> events;
+  for (size_t i = 0; i < e.instances.size(); ++i) {
+    Instance& inst = e.instances[i];
+    // Nothing pierceable near the path and nothing overlapped: no event is possible.
+    if (i < path.pierceNear.size() && !path.pierceNear[i] && inst.overlapping.empty()) continue;
+    const MapPart& p = part(inst.part);
+    std::vector<Vec2>& now = scratch.now;
+    worldVertices(inst, now);
+    const bool moved = i < path.start.size() && path.steps[i] != Vec2w{};
+    if (!moved) coverMotion(inst, {});  // after a move the region still covers the whole path
+    std::vector<LineIndex> overlapping;
+    const auto lines = inst.region.lines();
+    for (size_t k = 0; k < lines.size(); ++k) {
+      if (!isPierceable(e, inst, k) && inst.region.flags()[k] != 2) continue;
+      const LineIndex line = lines[k];
+      const Segment seg = p.segments()[line];
+      const bool was = std::binary_search(inst.overlapping.begin(), inst.overlapping.end(), line);
+      const bool is = overlapsInterior(now, seg);
+      if (is) overlapping.push_back(line);
+      if (was && is) continue;
+      Sweep s;
+      if (moved) s = sweep(path.start[i], path.steps[i], seg);
+      if (!was && !is && !(moved && s.hitsWithinFrame())) continue;  // never met
+      const Fraction enter = moved && s.hasEnter && s.enter > Fraction::zero() ? s.enter : Fraction::zero();
+      const Fraction exit = moved && s.hasExit && s.exit < Fraction::one() ? s.exit : Fraction::one();
+      if (!was) {
+        ContactPoints pts;
+        if (moved && s.hitsWithinFrame()) pts = contactPoints(path.start[i], path.steps[i], seg, s);
+        events.push_back({enter, i, line, true, moved ? s.normal() : Vec2w{}, pts});
+      }
+      if (!is) events.push_back({exit, i, line, false, {}, {}});
+    }
+    std::sort(overlapping.begin(), overlapping.end());
+    inst.overlapping = std::move(overlapping);
+  }
+  // Time order; ties in a fixed order (instance, line, begin before end), never region order.
+  std::sort(events.begin(), events.end(), [](const Event& a, const Event& b) {
+    if (a.t != b.t) return a.t < b.t;
+    if (a.instance != b.instance) return a.instance < b.instance;
+    if (a.line != b.line) return a.line < b.line;
+    return a.begin > b.begin;
+  });
+  for (const Event& ev : events) {
+    const Contact c = makeContact(e, e.instances[ev.instance], ev.line, ev.t, ev.normal, ev.points);
+    ++report.pierceEvents;
+    if (ev.begin)
+      callRules([&](Rules& r) { r.beginContact(c); });
+    else
+      callRules([&](Rules& r) { r.endContact(c); });
+  }
+}
+
+void WorldImpl::fireOverContacts() {
+  for (const Slot& slot : slots) {
+    const Entity* e = slot.entity.get();
+    if (!e) continue;
+    for (const Instance& inst : e->instances)
+      for (const LineIndex line : inst.overlapping) {
+        const Contact c = makeContact(*e, inst, line, Fraction::one(), {}, {});
+        callRules([&](Rules& r) { r.overContact(c); });
+      }
+  }
+}
+
+}  // namespace platon::physics

@@ -1,0 +1,92 @@
+// Where an instance may be: its region of nearby lines, which of them pierce, whether a place is
+// free, and how far a step can go before a solid line stops it.
+#include <algorithm>
+
+#include "bounds.h"
+#include "fixed_point.h"
+#include "world_impl.h"
+
+namespace platon::physics {
+
+Instance WorldImpl::makeInstance(const Entity& e, MapPartId partId, Vec2 position, Angle turn) const {
+  Instance inst;
+  inst.part = partId;
+  inst.position = position;
+  inst.frame = turn;
+  inst.rotation = rotationOf(turn);
+  inst.idealQ30 = q30FromPoint(position);
+  const Convex turned = e.shape.rotated(static_cast<Angle>(e.angle + turn));
+  inst.shape.assign(turned.vertices().begin(), turned.vertices().end());
+  for (const Vec2 v : inst.shape)
+    if (std::abs(int64_t{position.x} + v.x) > kCoordLimit || std::abs(int64_t{position.y} + v.y) > kCoordLimit)
+      throw Error("instance at " + toString(position) + " would reach outside the coordinate range (vertex " +
+                  toString(v) + ")");
+  return inst;
+}
+
+bool WorldImpl::isPierceable(const Entity& e, Instance& inst, size_t k) {
+  uint8_t& flag = inst.region.flags()[k];
+  if (flag == 0) {
+    const MapPart& p = part(inst.part);
+    const LineIndex index = inst.region.lines()[k];
+    const Line& line = p.lines()[index];
+    const LineRef ref{p.id(), index, line.tag, line.kind};
+    bool pierce = line.kind == LineKind::Warp;
+    callRules([&](Rules& r) { pierce = r.pierce(e.id, ref); });
+    flag = pierce ? 2 : 1;
+  }
+  if (flag == 2 && !inst.blockedWarps.empty()) {
+    const LineIndex index = inst.region.lines()[k];
+    if (std::find(inst.blockedWarps.begin(), inst.blockedWarps.end(), index) != inst.blockedWarps.end()) return false;
+  }
+  return flag == 2;
+}
+
+void WorldImpl::coverMotion(Instance& inst, Vec2w motion, int64_t slack) {
+  Box b{INT64_MAX, INT64_MAX, INT64_MIN, INT64_MIN};
+  for (const Vec2 v : inst.shape) {
+    const int64_t x = int64_t{inst.position.x} + v.x, y = int64_t{inst.position.y} + v.y;
+    b.x0 = std::min({b.x0, x, x + motion.x});
+    b.x1 = std::max({b.x1, x, x + motion.x});
+    b.y0 = std::min({b.y0, y, y + motion.y});
+    b.y1 = std::max({b.y1, y, y + motion.y});
+  }
+  // One unit of margin: points on the box edge round into the next cell's range.
+  b.x0 -= 1 + slack, b.y0 -= 1 + slack, b.x1 += 1 + slack, b.y1 += 1 + slack;
+  const Grid& grid = part(inst.part).grid();
+  inst.region.update(grid, grid.cellsCovering(b, inst.region.rect()));
+}
+
+std::optional<LineIndex> WorldImpl::solidOverlap(const Entity& e, Instance& inst, std::span<const Vec2> verts) {
+  const MapPart& p = part(inst.part);
+  const auto lines = inst.region.lines();
+  for (size_t k = 0; k < lines.size(); ++k)
+    if (!isPierceable(e, inst, k) && overlapsInterior(verts, p.segments()[lines[k]])) return lines[k];
+  return std::nullopt;
+}
+
+bool WorldImpl::isFree(const Entity& e, Instance& inst, std::span<const Vec2> verts) {
+  return std::all_of(verts.begin(), verts.end(), inRange) && !solidOverlap(e, inst, verts);
+}
+
+Fraction WorldImpl::firstBlock(const Entity& e, Instance& inst, std::span<const Vec2> verts, Vec2w step) {
+  const MapPart& p = part(inst.part);
+  const auto lines = inst.region.lines();
+  const Box box = sweptBox(verts, step);
+  Fraction first = Fraction::one();
+  for (size_t k = 0; k < lines.size(); ++k) {
+    const Segment& seg = p.segments()[lines[k]];
+    if (outside(seg, box) || isPierceable(e, inst, k)) continue;
+    const Sweep s = sweep(verts, step, seg);
+    if (s.hitsWithinFrame() && s.enter < first) first = s.enter;
+  }
+  Constraint bounds[4];
+  boundConstraints(verts, bounds);
+  for (const Constraint& c : bounds) {
+    const int64_t rate = dot(c.c, step);
+    if (rate > 0 && Fraction{c.slack, rate} < first) first = Fraction{c.slack, rate};
+  }
+  return first;
+}
+
+}  // namespace platon::physics

@@ -1,0 +1,81 @@
+// Turning an entity about its origin, in sub-steps small enough that the hull of the shapes before
+// and after each one covers the area it sweeps.
+#include <algorithm>
+
+#include "fixed_point.h"
+#include "world_impl.h"
+
+namespace platon::physics {
+namespace {
+
+// Sub-steps for turning a shape of squared radius `radius2` by `delta` binary-angle units: small
+// enough that a vertex's arc leaves its chord by under half a unit. The arc of radius r through
+// angle a leaves its chord by r (1 - cos(a / 2)) ~ r a^2 / 8, so a <= 2 / sqrt(r): the count is
+// ceil(|delta| * pi * r^(1/2) / 2^32), in exact integers (r^(1/2) and pi in Q32 and Q40).
+int64_t rotationSubSteps(int64_t radius2, int64_t delta) {
+
+  const uint64_t rootQ32 = isqrt(static_cast<u128>(radius2) << 64);            // r in Q32
+  const uint64_t fourthRootQ32 = isqrt(static_cast<u128>(rootQ32) << 32);     // r^(1/2) in Q32
+  constexpr uint64_t kPiQ40 = 3454217652358ull;                               // pi * 2^40, rounded
+  const u128 scaled = static_cast<u128>(delta < 0 ? -delta : delta) * fourthRootQ32 * kPiQ40;  // < 2^120
+  const u128 unit = static_cast<u128>(1) << (32 + 32 + 40);
+  const int64_t steps = static_cast<int64_t>((scaled + unit - 1) / unit);
+  return std::clamp<int64_t>(steps, 1, 4096);
+}
+
+}  // namespace
+
+bool WorldImpl::rotateBy(Entity& e, int64_t delta) {
+  if (delta == 0 || e.instances.empty()) return true;
+  int64_t radius2 = 1;
+  for (const Vec2 v : e.shape.vertices()) radius2 = std::max(radius2, dot(wide(v), wide(v)));
+  const int64_t steps = rotationSubSteps(radius2, delta);
+  bool blocked = false;
+  for (int64_t j = 1; j <= steps && !blocked; ++j) {
+    const Angle angle = static_cast<Angle>(e.angle + static_cast<Angle>(delta * j / steps - delta * (j - 1) / steps));
+    std::vector<std::vector<Vec2>> shapes;
+    for (size_t i = 0; i < e.instances.size() && !blocked; ++i) {
+      Instance& inst = e.instances[i];
+      std::vector<Vec2> next;
+      try {
+        const Convex c = e.shape.rotated(static_cast<Angle>(angle + inst.frame));
+        next.assign(c.vertices().begin(), c.vertices().end());
+      } catch (const Error&) {
+        blocked = true;
+        break;
+      }
+      std::vector<Vec2> both = inst.shape;
+      both.insert(both.end(), next.begin(), next.end());
+      std::vector<Vec2> hull = convexHull(both);
+      for (Vec2& v : hull) v = {inst.position.x + v.x, inst.position.y + v.y};
+      for (const Vec2 v : hull)
+        if (!inRange(v)) blocked = true;
+      if (blocked) break;
+      const std::vector<Vec2> saved = inst.shape;
+      inst.shape = hull;  // cover the swept hull (relative to an origin at 0)
+      for (Vec2& v : inst.shape) v = {v.x - inst.position.x, v.y - inst.position.y};
+      coverMotion(inst, {});
+      inst.shape = saved;
+      const MapPart& p = part(inst.part);
+      const auto lines = inst.region.lines();
+      for (size_t k = 0; k < lines.size() && !blocked; ++k) {
+        if (isPierceable(e, inst, k)) continue;
+        if (!overlapsInterior(hull, p.segments()[lines[k]])) continue;
+        blocked = true;
+        const Contact c = makeContact(e, inst, lines[k], Fraction::zero(), {}, {});
+        callRules([&](Rules& r) { r.touchContact(c); });
+      }
+      shapes.push_back(std::move(next));
+    }
+    if (blocked) break;
+    for (size_t i = 0; i < e.instances.size(); ++i) e.instances[i].shape = std::move(shapes[i]);
+    e.angle = angle;
+  }
+  updatePierceState(e, {});
+  std::vector<Vec2w> noNormals;
+  Move none{e, {}, noNormals};
+  updateLinks(none);
+  return !blocked;
+}
+
+}  // namespace platon::physics

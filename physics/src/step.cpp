@@ -1,0 +1,312 @@
+// The frame step of one entity: rotation, gravity, then the slide. Each sub-move of the slide
+// sweeps every instance, moves all of them to the earliest contact, fires the events along the
+// way, and projects the rest of the motion along the line it met.
+#include <algorithm>
+
+#include "bounds.h"
+#include "fixed_point.h"
+#include "projection.h"
+#include "world_impl.h"
+
+namespace platon::physics {
+namespace {
+
+enum class HitKind { None, Solid, Bound, Warp };
+
+// The earliest event of a sub-move.
+struct Hit {
+  HitKind kind = HitKind::None;
+  Fraction t = Fraction::one();
+  size_t instance = 0;
+  LineIndex line = 0;
+  Sweep sweep;
+  Constraint axis;
+
+  // Earlier wins. At equal times: a solid contact before a warp (so walls at edges hold), then the
+  // lower instance, then the lower line index. The order never depends on the grid or on the
+  // order lines entered a region, so the same map gives the same motion however it is indexed.
+  bool improvedBy(Fraction when, HitKind kind2, size_t instance2, LineIndex line2) const {
+    if (kind == HitKind::None) return when < Fraction::one();
+    if (when != t) return when < t;
+    const bool warp = kind == HitKind::Warp, warp2 = kind2 == HitKind::Warp;
+    if (warp != warp2) return warp;
+    if (instance2 != instance) return instance2 < instance;
+    return line2 < line;
+  }
+};
+
+// Whether t * m is whole: then the rounded step lies on the swept path itself.
+bool exactMove(Vec2w m, Fraction t) {
+  return t == Fraction::one() || ((i128{t.num} * m.x) % t.den == 0 && (i128{t.num} * m.y) % t.den == 0);
+}
+
+// Whether every copy sits where its ideal position says (a copy may still owe a correction when
+// the motion is spent).
+bool copiesAtIdeal(const Entity& e) {
+  for (size_t i = 1; i < e.instances.size(); ++i)
+    if (pointFromQ30(e.instances[i].idealQ30) != e.instances[i].position) return false;
+  return true;
+}
+
+// One sub-move of the slide, in the order of its steps. The per-instance arrays are the world's
+// scratch buffers.
+class SubMove {
+ public:
+  SubMove(WorldImpl& world, Move& move)
+      : w_(world), move_(move), e_(move.entity), n_(e_.instances.size()), verts_(world.scratch.verts),
+        moves_(world.scratch.moves), steps_(world.scratch.steps), pierceNear_(world.scratch.pierceNear) {}
+
+  // 1. Each instance's motion: the anchor's own; the others move as their ideal position does (the
+  //    anchor's motion turned into their frame). Closing the gap to the ideal is a separate step
+  //    after the move (commit), so a copy that rounding left a unit off never holds the entity back.
+  void planMotions() {
+    verts_.resize(n_);
+    moves_.resize(n_);
+    pierceNear_.assign(n_, 0);
+    for (size_t i = 0; i < n_; ++i) {
+      Instance& inst = e_.instances[i];
+      worldVertices(inst, verts_[i]);
+      if (i == 0) {
+        moves_[i] = move_.motion;
+      } else {
+        const Vec2w aim = inst.idealQ30 + rotateQ30(inst.rotation, move_.motion);
+        moves_[i] = {unitsFromQ30(aim.x) - unitsFromQ30(inst.idealQ30.x),
+                     unitsFromQ30(aim.y) - unitsFromQ30(inst.idealQ30.y)};
+      }
+      w_.coverMotion(inst, moves_[i]);
+    }
+  }
+
+  // 2. The earliest event over all instances: a solid line, the world's edge, or a warp whose target
+  //    has no instance yet (the move stops there so the new instance starts touching).
+  void findFirstEvent() {
+    for (size_t i = 0; i < n_; ++i) {
+      Instance& inst = e_.instances[i];
+      const MapPart& part = w_.part(inst.part);
+      const auto lines = inst.region.lines();
+      const Box box = sweptBox(verts_[i], moves_[i]);
+      for (size_t k = 0; k < lines.size(); ++k) {
+        const Segment& seg = part.segments()[lines[k]];
+        if (outside(seg, box)) continue;
+        const bool pierce = w_.isPierceable(e_, inst, k);
+        pierceNear_[i] |= pierce;
+        if (moves_[i] == Vec2w{}) continue;
+        const Line& line = part.lines()[lines[k]];
+        if (pierce && (line.kind != LineKind::Warp || e_.instanceIn(part.warps()[line.warp].target) != nullptr))
+          continue;
+        const Sweep s = sweep(verts_[i], moves_[i], seg);
+        if (!s.hitsWithinFrame()) continue;
+        const HitKind kind = pierce ? HitKind::Warp : HitKind::Solid;
+        if (hit_.improvedBy(s.enter, kind, i, lines[k])) hit_ = {kind, s.enter, i, lines[k], s, s.enterAxis};
+      }
+      Constraint bounds[4];
+      boundConstraints(verts_[i], bounds);
+      for (const Constraint& c : bounds) {
+        const int64_t rate = dot(c.c, moves_[i]);
+        if (rate <= 0) continue;
+        const Fraction when{c.slack, rate};
+        if (hit_.improvedBy(when, HitKind::Bound, i, kWorldBoundLine))
+          hit_ = {HitKind::Bound, when, i, kWorldBoundLine, {}, c};
+      }
+    }
+  }
+
+  // A copy that rounding left a hair low snags on the first point of a line that continues the
+  // original's floor across the edge: it is stopped at once while the original slides freely. The
+  // copy is then lifted off that floor, along the normal of the original's latest contact turned
+  // into the copy's frame, by one to three units, if that frees it; the sub-move is then redone. A
+  // real wall is not helped by a lift along the floor's normal, so it still holds.
+  bool liftSnaggedCopy() {
+    if (hit_.kind != HitKind::Solid || hit_.instance == 0 || hit_.t != Fraction::zero() || move_.normals.empty())
+      return false;
+    if (!w_.liftCopy(e_, e_.instances[hit_.instance], move_.normals.back(), moves_[hit_.instance])) return false;
+    ++w_.report.copiesReplaced;
+    return true;
+  }
+
+  // 3. Every instance's step to the event's time, rounded to the safe side. A step that is exactly on
+  //    the swept path is free by the search above; a rounded one is proved free by an exact sweep of
+  //    its own, and if rounding left the safe path, t is pulled back and retried. The last resort,
+  //    t = 0, always succeeds.
+  void roundSteps() {
+    t_ = hit_.t;
+    for (int attempt = 0;; ++attempt) {
+      if (attempt == 3) t_ = Fraction::zero();
+      if (tryStepsAt(attempt)) return;
+    }
+  }
+
+  // 4. Commit; then each copy closes its gap to its ideal position where that path is free.
+  void commit() {
+    for (size_t i = 0; i < n_; ++i) {
+      Instance& inst = e_.instances[i];
+      inst.position.x += static_cast<int32_t>(steps_[i].x);
+      inst.position.y += static_cast<int32_t>(steps_[i].y);
+      if (i > 0) closeGap(i);
+    }
+    move_.motion = move_.motion - steps_[0];
+  }
+
+  // 5. Pierce events along the way; a warp reached creates the instance on the other side; the warp
+  //    links then erase instances the entity has left (which may change the anchor).
+  void afterMove() {
+    w_.updatePierceState(e_, {verts_, steps_, pierceNear_});
+    hitPart_ = e_.instances[hit_.instance].part;
+    hitMove_ = moves_[hit_.instance];
+    if (hit_.kind == HitKind::Warp && !pulledBack()) crossWarp();
+    if (!e_.links.empty()) w_.updateLinks(move_);
+  }
+
+  // What the slide does next, once the instances have moved.
+  enum class Next { Stop, Again, Respond };
+  Next next() const {
+    if (pulledBack()) return Next::Again;
+    if (hit_.kind == HitKind::None) return Next::Stop;
+    if (hit_.kind == HitKind::Warp) return Next::Again;
+    return Next::Respond;
+  }
+
+  // 6. A solid contact: tell the rules, then slide along the line. Returns whether to go on.
+  bool respondToContact() {
+    ++w_.report.hits;
+    const Instance* inst = e_.instanceIn(hitPart_);
+    if (!inst) return false;
+    const Vec2w partNormal = -hit_.axis.c;
+    ContactPoints points;
+    if (hit_.kind == HitKind::Solid)
+      points = contactPoints(verts_[hit_.instance], hitMove_, w_.part(hitPart_).segments()[hit_.line], hit_.sweep);
+    const Contact contact = w_.makeContact(e_, *inst, hit_.line, hit_.t, partNormal, points);
+    e_.contacts.push_back(contact);
+    ContactResponse response;
+    w_.callRules([&](Rules& r) { r.contact(contact, response); });
+    const Vec2w normal = shortDirection(rotateWideInverse(inst->rotation, shortDirection(partNormal)));
+    if (response.removeNormalVelocity) e_.velocityQ16 = clampVelocityQ16(removeInto(e_.velocityQ16, normal));
+    if (!response.slide) return false;
+    slideAlong(normal);
+    return true;
+  }
+
+ private:
+  bool pulledBack() const { return t_ < hit_.t; }
+
+  bool tryStepsAt(int attempt) {
+    steps_.assign(n_, Vec2w{});
+    for (size_t i = 0; i < n_; ++i) {
+      const bool keepAxis = attempt == 0 && hit_.kind != HitKind::None && i == hit_.instance;
+      steps_[i] = roundedStep(moves_[i], t_, keepAxis ? &hit_.axis : nullptr);
+      if (steps_[i] == Vec2w{} || (attempt == 0 && exactMove(moves_[i], t_))) continue;
+      const Fraction first = w_.firstBlock(e_, e_.instances[i], verts_[i], steps_[i]);
+      if (first < Fraction::one()) {
+        ++w_.report.roundingRetries;
+        // Scale t by the free fraction, kept in 24 fractional bits (rounded down).
+        const i128 tq = floorDiv(i128{t_.num} << 24, t_.den);
+        t_ = {static_cast<int64_t>(floorDiv(tq * first.num, first.den)), int64_t{1} << 24};
+        return false;
+      }
+    }
+    return true;
+  }
+
+  // A copy follows the anchor's step exactly in Q30; its whole-unit position may lag. It keeps a
+  // lift of up to three units (see liftSnaggedCopy); a larger gap, left by a blocked step, is closed
+  // where the way is free.
+  void closeGap(size_t i) {
+    Instance& inst = e_.instances[i];
+    inst.idealQ30 = inst.idealQ30 + rotateQ30(inst.rotation, steps_[0]);
+    const Vec2 ideal = pointFromQ30(inst.idealQ30);
+    const Vec2w gap{int64_t{ideal.x} - inst.position.x, int64_t{ideal.y} - inst.position.y};
+    if (std::max(std::abs(gap.x), std::abs(gap.y)) <= 3) return;
+    std::vector<Vec2>& at = w_.scratch.probe;
+    worldVertices(inst, at);
+    w_.coverMotion(inst, gap);
+    if (w_.firstBlock(e_, inst, at, gap) < Fraction::one()) return;
+    inst.position.x += static_cast<int32_t>(gap.x);
+    inst.position.y += static_cast<int32_t>(gap.y);
+    steps_[i] = steps_[i] + gap;  // pierce events see the whole way it went
+  }
+
+  // The warp the sub-move stopped at: the exact touching position, in Q30, maps to where the new
+  // instance starts. If the far side has no room, the warp holds like a wall this frame.
+  void crossWarp() {
+    const Vec2 start = e_.instances[hit_.instance].position;
+    const Vec2w before{start.x - steps_[hit_.instance].x, start.y - steps_[hit_.instance].y};
+    const Vec2w exact{
+        (before.x << kQ30Bits) + static_cast<int64_t>(floorDiv((i128{hit_.t.num} * hitMove_.x) << kQ30Bits, hit_.t.den)),
+        (before.y << kQ30Bits) + static_cast<int64_t>(floorDiv((i128{hit_.t.num} * hitMove_.y) << kQ30Bits, hit_.t.den))};
+    if (!w_.createWarpInstance(e_, hit_.instance, hit_.line, exact, move_.motion))
+      e_.instances[hit_.instance].blockedWarps.push_back(hit_.line);
+  }
+
+  // The rest of the motion goes along the line. If that runs into a line met earlier in the same
+  // frame, the entity is in a crease (a wedge or a corner) and stops for this frame.
+  void slideAlong(Vec2w normal) {
+    Vec2w carryQ17;
+    move_.motion = removeIntoCarrying(move_.motion, normal, carryQ17);
+    bool crease = false;
+    for (const Vec2w& previous : move_.normals) crease = crease || dot128(move_.motion, previous) < 0;
+    if (crease) {
+      move_.motion = {};  // the two lines hold it in place
+      e_.subunitQ17 = {};
+    } else {
+      // Touching the line, the entity has no fraction of a unit left to move across it, nor away
+      // from it; along it, it keeps what rounding left out.
+      e_.subunitQ17 = withoutComponent(e_.subunitQ17 + carryQ17, normal);
+    }
+    move_.normals.push_back(normal);
+  }
+
+  WorldImpl& w_;
+  Move& move_;
+  Entity& e_;
+  const size_t n_;
+  std::vector<std::vector<Vec2>>& verts_;
+  std::vector<Vec2w>& moves_;
+  std::vector<Vec2w>& steps_;
+  std::vector<uint8_t>& pierceNear_;
+  Hit hit_;
+  Fraction t_;
+  MapPartId hitPart_ = 0;
+  Vec2w hitMove_;
+};
+
+}  // namespace
+
+void WorldImpl::stepEntity(Entity& e) {
+  for (Instance& inst : e.instances) inst.blockedWarps.clear();
+  if (e.angularVelocity != 0) rotateBy(e, e.angularVelocity);
+  if (e.instances.empty()) return;
+  const Vec2w before = e.velocityQ16;
+  if (e.gravity) e.velocityQ16 = clampVelocityQ16(e.velocityQ16 + part(e.instances[0].part).gravity());
+  // The frame moves by the average of the velocities at its start and end: for constant gravity
+  // that is the exact parabola at every frame, not the first-order step most engines take. The
+  // sum of the two Q16 velocities is the average in Q17; whole units move now, the remainder
+  // below one unit waits for the next frame.
+  const Vec2w acc = e.subunitQ17 + before + e.velocityQ16;
+  const Vec2w whole{acc.x >> 17, acc.y >> 17};
+  e.subunitQ17 = {acc.x - whole.x * kQ17, acc.y - whole.y * kQ17};
+  scratch.normals.clear();
+  Move move{e, whole, scratch.normals};
+  slide(move);
+}
+
+void WorldImpl::slide(Move& move) {
+  Entity& e = move.entity;
+  for (int iteration = 0; iteration < kMaxSubMoves && !e.instances.empty(); ++iteration) {
+    createOverlappedWarps(e);
+    if (move.motion == Vec2w{} && copiesAtIdeal(e)) break;
+    ++report.subMoves;
+    SubMove sub(*this, move);
+    sub.planMotions();
+    sub.findFirstEvent();
+    if (sub.liftSnaggedCopy()) continue;
+    sub.roundSteps();
+    sub.commit();
+    sub.afterMove();
+    const SubMove::Next next = sub.next();
+    if (next == SubMove::Next::Stop) break;
+    if (next == SubMove::Next::Again) continue;
+    if (!sub.respondToContact()) break;
+  }
+}
+
+}  // namespace platon::physics

@@ -1,0 +1,210 @@
+// Instances across warp edges: creating the copy on the far side, placing it where rounding left
+// room, lifting it off a floor that continues across the edge, and erasing the copy the entity
+// has left.
+#include <algorithm>
+#include <array>
+
+#include "fixed_point.h"
+#include "projection.h"
+#include "world_impl.h"
+
+namespace platon::physics {
+namespace {
+
+Vec2w mapThroughWarp(const Warp& w, Segment from, Vec2w pointQ30) {
+  const Vec2w rel = pointQ30 - q30FromPoint(from.a);
+  return q30FromPoint(w.targetSegment.a) + rotateWide(w.rotation, rel);
+}
+
+uint8_t edgeState(const std::vector<Vec2>& verts, Segment s) {
+  return overlapsInterior(verts, s) ? 2 : (touchesOrOverlaps(verts, s) ? 1 : 0);
+}
+
+// Which side of the directed line a (non-overlapping) polygon lies on: > 0 left, <= 0 right.
+int64_t sideOf(const std::vector<Vec2>& verts, Segment s) {
+  i128 sum = 0;
+  for (const Vec2 v : verts) sum += cross(s.b - s.a, v - s.a);
+  return sum > 0 ? 1 : (sum < 0 ? -1 : 0);
+}
+
+}  // namespace
+
+bool WorldImpl::createWarpInstance(Entity& e, size_t from, LineIndex warpLine, Vec2w fromQ30, Vec2w probe) {
+  const Instance& source = e.instances[from];
+  const MapPart& sourcePart = part(source.part);
+  const Warp& warp = sourcePart.warps()[sourcePart.lines()[warpLine].warp];
+  const Segment seg = sourcePart.segments()[warpLine];
+  if (e.instanceIn(warp.target)) return true;
+  if (!part(warp.target).initialized()) return false;
+  // The copy goes where the touching position maps. Rotated shapes and positions are rounded, so
+  // that spot can be a unit off: the copy may miss its edge, or graze a line that the original
+  // only touched. placeNear picks a free whole-unit position within two units of it.
+  const Vec2w at = mapThroughWarp(warp, seg, fromQ30);
+  const Angle turn = static_cast<Angle>(source.frame + warp.turn);
+  Instance inst;
+  try {
+    inst = makeInstance(e, warp.target, pointFromQ30(at), turn);
+  } catch (const Error&) {
+    return false;  // out of range, or the shape cannot take that rotation: the edge holds
+  }
+  if (!placeNear(e, inst, at, &warp.targetSegment, rotateWide(rotationOf(turn), probe))) return false;
+  // Follow the anchor through the same mapping.
+  const Vec2w sourceIdeal = from == 0 ? q30FromPoint(source.position) : source.idealQ30;
+  inst.idealQ30 = mapThroughWarp(warp, seg, sourceIdeal);
+  const uint8_t toState = edgeState(worldVertices(inst), warp.targetSegment);
+  const uint8_t fromState = edgeState(worldVertices(source), seg);
+  const MapPartId fromPart = source.part;
+  e.instances.push_back(std::move(inst));
+  e.links.push_back({fromPart, warpLine, warp.target, fromState, toState});
+  ++report.warpsCreated;
+  return true;
+}
+
+bool WorldImpl::placeNear(const Entity& e, Instance& inst, Vec2w targetQ30, const Segment* mustTouch, Vec2w probe) {
+  const Vec2 base = pointFromQ30(targetQ30);
+  std::array<Vec2, 25> offsets;
+  for (int k = 0; k < 25; ++k) offsets[k] = {k % 5 - 2, k / 5 - 2};
+  auto distance = [&](Vec2 o) {  // from the target, in Q30 squared; ties keep a fixed order
+    const i128 dx = (i128{base.x + o.x} << kQ30Bits) - targetQ30.x, dy = (i128{base.y + o.y} << kQ30Bits) - targetQ30.y;
+    return dx * dx + dy * dy;
+  };
+  std::stable_sort(offsets.begin(), offsets.end(), [&](Vec2 a, Vec2 b) { return distance(a) < distance(b); });
+  probe = {std::clamp<int64_t>(probe.x, -kMaxMove, kMaxMove), std::clamp<int64_t>(probe.y, -kMaxMove, kMaxMove)};
+  inst.position = base;
+  coverMotion(inst, probe, 2);  // every candidate, and where the probe takes it
+  std::vector<Vec2>& verts = scratch.probe;
+  bool placed = false;
+  Vec2 best = base;
+  Fraction bestFree = Fraction::zero();
+  for (const Vec2 o : offsets) {
+    inst.position = {base.x + o.x, base.y + o.y};
+    worldVertices(inst, verts);
+    if (mustTouch && !touchesOrOverlaps(verts, *mustTouch)) continue;
+    if (!isFree(e, inst, verts)) continue;
+    const Fraction go = probe == Vec2w{} ? Fraction::one() : firstBlock(e, inst, verts, probe);
+    if (!placed || go > bestFree) {
+      placed = true;
+      best = inst.position;
+      bestFree = go;
+      if (go == Fraction::one()) break;
+    }
+  }
+  inst.position = best;
+  return placed;
+}
+
+bool WorldImpl::liftCopy(const Entity& e, Instance& copy, Vec2w floorNormal, Vec2w move) {
+  const Vec2w n = shortDirection(rotateWide(copy.rotation, floorNormal));
+  const int64_t length = static_cast<int64_t>(isqrt(static_cast<u128>(n.x * n.x + n.y * n.y)));
+  if (length == 0) return false;
+  const Vec2 was = copy.position;
+  std::vector<Vec2>& verts = scratch.probe;
+  for (int64_t lift = 1; lift <= 3; ++lift) {
+    copy.position = {was.x + static_cast<int32_t>(roundDiv(i128{n.x} * lift, length)),
+                     was.y + static_cast<int32_t>(roundDiv(i128{n.y} * lift, length))};
+    if (copy.position == was) continue;
+    worldVertices(copy, verts);
+    coverMotion(copy, move, 3);
+    if (isFree(e, copy, verts) && firstBlock(e, copy, verts, move) > Fraction::zero()) return true;
+  }
+  copy.position = was;
+  return false;
+}
+
+void WorldImpl::createOverlappedWarps(Entity& e) {
+  for (size_t i = 0; i < e.instances.size(); ++i) {
+    const MapPart& p = part(e.instances[i].part);
+    for (const LineIndex line : e.instances[i].overlapping) {
+      if (p.lines()[line].kind != LineKind::Warp) continue;
+      if (e.instanceIn(p.warps()[p.lines()[line].warp].target)) continue;
+      const Instance& inst = e.instances[i];
+      const Vec2w q = i == 0 ? q30FromPoint(inst.position) : inst.idealQ30;
+      const Vec2w perFrame{e.velocityQ16.x >> 16, e.velocityQ16.y >> 16};
+      if (!createWarpInstance(e, i, line, q, perFrame)) e.instances[i].blockedWarps.push_back(line);
+    }
+  }
+}
+
+void WorldImpl::rebase(Move& move, size_t k) {
+  Entity& e = move.entity;
+  const Angle theta = e.instances[k].frame;
+  std::rotate(e.instances.begin(), e.instances.begin() + static_cast<long>(k),
+              e.instances.begin() + static_cast<long>(k) + 1);
+  for (Instance& inst : e.instances) {
+    inst.frame = static_cast<Angle>(inst.frame - theta);
+    inst.rotation = rotationOf(inst.frame);
+  }
+  Instance& anchor = e.instances[0];
+  anchor.idealQ30 = q30FromPoint(anchor.position);
+  e.angle = static_cast<Angle>(e.angle + theta);
+  const Rotation r = rotationOf(theta);
+  e.velocityQ16 = clampVelocityQ16(rotateWide(r, e.velocityQ16));
+  e.subunitQ17 = rotateWide(r, e.subunitQ17);
+  // Keep the carried remainder below one unit after rounding.
+  e.subunitQ17.x = std::clamp<int64_t>(e.subunitQ17.x, 0, kQ17 - 1);
+  e.subunitQ17.y = std::clamp<int64_t>(e.subunitQ17.y, 0, kQ17 - 1);
+  move.motion = rotateWide(r, move.motion);
+  // The frame's earlier contact normals were in the old frame, and belong to the part it left.
+  move.normals.clear();
+}
+
+void WorldImpl::eraseInstance(Move& move, size_t index) {
+  Entity& e = move.entity;
+  // The instance leaves its part: its pierceable overlaps end.
+  const Instance& gone = e.instances[index];
+  for (const LineIndex line : gone.overlapping) {
+    const Contact c = makeContact(e, gone, line, Fraction::one(), {}, {});
+    ++report.pierceEvents;
+    callRules([&](Rules& r) { r.endContact(c); });
+  }
+  const MapPartId goneFrom = gone.part;
+  if (index == 0 && e.instances.size() > 1) {
+    rebase(move, 1);
+    index = 1;  // the old anchor moved to slot 1
+  }
+  e.instances.erase(e.instances.begin() + static_cast<long>(index));
+  std::erase_if(e.links, [&](const WarpLink& l) { return l.fromPart == goneFrom || l.toPart == goneFrom; });
+  ++report.instancesErased;
+}
+
+void WorldImpl::updateLinks(Move& move) {
+  Entity& e = move.entity;
+  for (size_t l = 0; l < e.links.size();) {
+    WarpLink& link = e.links[l];
+    const Instance* a = e.instanceIn(link.fromPart);
+    const Instance* b = e.instanceIn(link.toPart);
+    if (!a || !b) {
+      e.links.erase(e.links.begin() + static_cast<long>(l));
+      continue;
+    }
+    const MapPart& p = part(link.fromPart);
+    const Segment warpSeg = p.segments()[link.warpLine];
+    const Segment targetSeg = p.warps()[p.lines()[link.warpLine].warp].targetSegment;
+    const std::vector<Vec2> va = worldVertices(*a), vb = worldVertices(*b);
+    const uint8_t aNow = edgeState(va, warpSeg);
+    const uint8_t bNow = edgeState(vb, targetSeg);
+    // The pair ends when a side comes off its edge (or both are off): the side the source is on
+    // says which copy stays. The source's face is left of p0 -> p1; the target's is right of t0 -> t1.
+    MapPartId eraseAt = 0;
+    if (link.fromState > 0 && aNow == 0) {
+      eraseAt = sideOf(va, warpSeg) > 0 ? link.toPart : link.fromPart;
+    } else if (link.toState > 0 && bNow == 0) {
+      eraseAt = sideOf(vb, targetSeg) > 0 ? link.toPart : link.fromPart;
+    } else if (aNow == 0 && bNow == 0) {
+      eraseAt = sideOf(va, warpSeg) > 0 ? link.toPart : link.fromPart;
+    } else {
+      link.fromState = aNow;
+      link.toState = bNow;
+      ++l;
+      continue;
+    }
+    for (size_t i = 0; i < e.instances.size(); ++i)
+      if (e.instances[i].part == eraseAt) {
+        eraseInstance(move, i);
+        break;
+      }
+    l = 0;  // erasing removed links: start over
+  }
+}
+
+}  // namespace platon::physics

@@ -1,0 +1,144 @@
+// The solver's state and its steps. World (platon/physics/world.h) is the checked public face;
+// this is what it owns. Files: world.cpp (ownership, handles, the public API), placement.cpp
+// (regions, free places, first blocking line), step.cpp (one entity's frame: the slide),
+// rotation.cpp, warps.cpp (instances across warp edges), pierce_events.cpp, state_hash.cpp.
+#pragma once
+#include <deque>
+#include <exception>
+#include <memory>
+#include <optional>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "entity.h"
+#include "grid.h"
+#include "platon/physics/world.h"
+
+namespace platon::physics {
+
+// One entity's motion through one frame: the motion still to go and the contacts met so far,
+// shared by the sub-moves of the slide and by the warp bookkeeping that may turn the frame.
+struct Move {
+  Entity& entity;
+  Vec2w motion;                 // whole units still to move, in the entity's frame
+  std::vector<Vec2w>& normals;  // this frame's contact normals, in the entity's frame
+};
+
+// Where each instance went during one sub-move, for the pierce events along the way. Empty: the
+// instances did not move (an insert, a rotation), and only their present overlap counts.
+struct Path {
+  std::span<const std::vector<Vec2>> start;  // world vertices before the sub-move
+  std::span<const Vec2w> steps;              // the whole-unit step each took
+  std::span<const uint8_t> pierceNear;       // whether any pierceable line was near its path
+};
+
+struct WorldImpl {
+  struct Slot {
+    std::unique_ptr<Entity> entity;
+    uint32_t generation = 0;
+  };
+
+  std::deque<MapPart> parts;             // stable addresses
+  std::vector<MapPart*> partIndex;       // sorted by id
+  std::vector<MapPart*> uncheckedWarps;  // parts whose warp targets have not been checked yet
+  std::vector<Slot> slots;
+  std::vector<uint32_t> freeSlots;
+  size_t liveEntities = 0;
+  Rules defaultRules;
+  Rules* rules = &defaultRules;
+  uint64_t frame = 0;
+  bool locked = false;  // inside solve() or another call that runs rules callbacks
+  std::exception_ptr pendingError;
+  SolveReport report;
+  // Per-frame buffers, kept to avoid allocating on every step (solve is not reentrant).
+  struct Scratch {
+    std::vector<std::vector<Vec2>> verts;
+    std::vector<Vec2w> moves, steps, normals;
+    std::vector<uint8_t> pierceNear;
+    std::vector<Vec2> now, probe;
+  } scratch;
+
+  // world.cpp
+  const MapPart* findPart(MapPartId id) const;
+  const MapPart& part(MapPartId id) const;
+  Entity& entity(EntityId id);
+  const Entity& entity(EntityId id) const;
+  void checkUnlocked(const char* what) const;
+  void checkWarpTargets();
+
+  // placement.cpp
+  Instance makeInstance(const Entity& e, MapPartId part, Vec2 position, Angle turn) const;
+  bool isPierceable(const Entity& e, Instance& inst, size_t regionIndex);
+  // Makes the instance's region hold every line near its shape moved by anything from 0 to
+  // `motion`, and within `slack` more units around that.
+  void coverMotion(Instance& inst, Vec2w motion, int64_t slack = 0);
+  // The first solid line (in region order) whose interior the vertices overlap, if any. The
+  // region must already cover them.
+  std::optional<LineIndex> solidOverlap(const Entity& e, Instance& inst, std::span<const Vec2> verts);
+  // Whether the vertices are inside the coordinate range and overlap no solid line.
+  bool isFree(const Entity& e, Instance& inst, std::span<const Vec2> verts);
+  // The earliest time in [0, 1) at which `verts` moved by `step` meets a solid line or the range's
+  // edge; 1 when none.
+  Fraction firstBlock(const Entity& e, Instance& inst, std::span<const Vec2> verts, Vec2w step);
+
+  // step.cpp
+  void stepEntity(Entity& e);
+  void slide(Move& move);
+
+  // rotation.cpp
+  bool rotateBy(Entity& e, int64_t delta);
+
+  // warps.cpp
+  // A new instance across the warp `warpLine` of instance `from`, where the point `fromQ30` maps;
+  // placed so it can travel furthest along `probe`. False when the far side has no room.
+  bool createWarpInstance(Entity& e, size_t from, LineIndex warpLine, Vec2w fromQ30, Vec2w probe);
+  void createOverlappedWarps(Entity& e);
+  // Moves `inst` to the free whole-unit position within two units of `targetQ30` (touching
+  // `mustTouch` if given) that lets it travel furthest along `probe`, nearest first among equals.
+  bool placeNear(const Entity& e, Instance& inst, Vec2w targetQ30, const Segment* mustTouch, Vec2w probe);
+  bool liftCopy(const Entity& e, Instance& copy, Vec2w floorNormal, Vec2w move);
+  // Makes instance k the anchor: the frame, velocity, remainder and motion turn with it.
+  void rebase(Move& move, size_t k);
+  void updateLinks(Move& move);
+  void eraseInstance(Move& move, size_t index);
+
+  // pierce_events.cpp
+  void updatePierceState(Entity& e, const Path& path);
+  void fireOverContacts();
+  Contact makeContact(const Entity& e, const Instance& inst, LineIndex line, Fraction t, Vec2w normal,
+                      ContactPoints points) const;
+  // Runs a rules callback; an exception is kept for the CallbackScope to rethrow once the world
+  // is whole again.
+  template <class F>
+  void callRules(F&& f) {
+    try {
+      f(*rules);
+    } catch (...) {
+      if (!pendingError) pendingError = std::current_exception();
+    }
+  }
+};
+
+// Rules callbacks may run while a scope lives: structural changes are refused (checkUnlocked), and
+// the first error a callback throws waits in pendingError. finish() rethrows it once the caller's
+// work is whole. Leaving without finish() (the solver itself threw) drops it: that error wins.
+class CallbackScope {
+ public:
+  explicit CallbackScope(WorldImpl& world) : world_(world) { world_.locked = true; }
+  ~CallbackScope() {
+    world_.locked = false;
+    world_.pendingError = nullptr;
+  }
+  CallbackScope(const CallbackScope&) = delete;
+  CallbackScope& operator=(const CallbackScope&) = delete;
+  void finish() {
+    world_.locked = false;
+    if (world_.pendingError) std::rethrow_exception(std::exchange(world_.pendingError, nullptr));
+  }
+
+ private:
+  WorldImpl& world_;
+};
+
+}  // namespace platon::physics
