@@ -22,7 +22,7 @@
 #include <memory>
 #include <vector>
 
-#include "rng.h"
+#include "platon/testing/rng.h"
 #include "platon/physics/world.h"
 
 namespace {
@@ -58,7 +58,7 @@ double rssBytes() {
   return static_cast<double>(resident) * static_cast<double>(sysconf(_SC_PAGESIZE));
 }
 
-using platon::bench::Rng;
+using platon::testing::Rng;
 
 Vec2 units(double xMetres, double yMetres) {
   return {static_cast<int32_t>(std::lround(xMetres * kUnitsPerMetre)),

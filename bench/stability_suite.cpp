@@ -12,9 +12,10 @@
 
 #include "peers/peer.h"
 #include "platon/physics/vec2.h"
-#include "stability_scenes.h"
+#include "platon/testing/stability_scenes.h"
 
 using namespace platon;
+namespace scenes = platon::testing::scenes;
 using scenes::Outcome;
 using scenes::Scene;
 

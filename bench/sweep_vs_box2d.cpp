@@ -23,7 +23,7 @@
 #include <optional>
 #include <vector>
 
-#include "rng.h"
+#include "platon/testing/rng.h"
 #include "platon/physics/convex.h"
 #include "platon/physics/sweep.h"
 
@@ -41,7 +41,7 @@ constexpr ld kPenetrationMetres = 1e-9L;
 // radii minus one b2_polygonRadius); a start already closer counts as initial overlap, no hit.
 constexpr float kCastTargetMetres = b2_polygonRadius;
 
-using platon::bench::Rng;
+using platon::testing::Rng;
 
 struct Query {
   Vec2 origin;                    // polygon position, world units

@@ -27,6 +27,7 @@
 
 #include "peers/peer.h"
 #include "platon/physics/world.h"
+#include "platon/testing/si_units.h"
 
 namespace {
 
@@ -58,9 +59,7 @@ struct Scene {
 };
 
 // A point in metres to whole units; `upm`: units per metre.
-Vec2 unitsAt(long double x, long double y, int upm) {
-  return {static_cast<int32_t>(std::llround(x * upm)), static_cast<int32_t>(std::llround(y * upm))};
-}
+Vec2 unitsAt(long double x, long double y, int upm) { return platon::testing::pointFromMetres(x, y, upm); }
 
 Polygon box() { return {{-kHalf, -kHalf}, {kHalf, -kHalf}, {kHalf, kHalf}, {-kHalf, kHalf}}; }
 
@@ -183,7 +182,7 @@ class PlatonWorld final : public PeerWorld {
   Vec2 units(double x, double y) const { return unitsAt(x, y, upm_); }
   double metres(int64_t u) const { return static_cast<double>(u) / upm_; }
   // metres per second (or per second per frame) to Q16 units per frame (per frame).
-  int64_t q16(double v) const { return std::llround(v * upm_ / hz_ * 65536); }
+  int64_t q16(double v) const { return platon::testing::q16FromSpeed(v, upm_, hz_); }
 
   int upm_;
   double hz_;
@@ -345,7 +344,7 @@ class WarpRun {
     const int32_t half = static_cast<int32_t>(std::lround(kHalf * upm));
     id_ = world_.createEntity(Convex::box(half, half));
     world_.insert(id_, 1, units(kStartX, y0()), 0);
-    world_.setVelocity(id_, {std::llround(vx() * upm / hz * 65536), std::llround(vy() * upm / hz * 65536)});
+    world_.setVelocity(id_, {platon::testing::q16FromSpeed(vx(), upm, hz), platon::testing::q16FromSpeed(vy(), upm, hz)});
   }
 
   long frames() const { return std::lround(kSeconds * hz_); }

@@ -5,9 +5,9 @@
 #include <cmath>
 
 #include "platon/physics/vec2.h"
-#include "stability_scenes.h"
+#include "platon/testing/stability_scenes.h"
 
-using namespace platon::scenes;
+using namespace platon::testing::scenes;
 
 namespace {
 constexpr double kUnitsPerMetre = 1024;

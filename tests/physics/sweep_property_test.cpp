@@ -14,10 +14,10 @@
 
 #include "platon/physics/convex.h"
 #include "platon/physics/sweep.h"
-#include "reference_geometry.h"
+#include "platon/testing/reference_geometry.h"
 
 using namespace platon::physics;
-namespace ref = platon::test;
+namespace ref = platon::testing::reference;
 using ref::Rat;
 
 namespace {

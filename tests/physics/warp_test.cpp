@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "platon/physics/world.h"
+#include "platon/testing/si_units.h"
 
 using namespace platon::physics;
 
@@ -237,9 +238,7 @@ TEST(Warp, WalkingAcrossTurnedEdgesOntoAContinuingFloor) {
     for (const int upm : {64, 256, 1024, 4096})
       for (const double hz : {30.0, 60.0, 120.0, 240.0}) {
         const long double a = degrees * 3.14159265358979323846L / 180, c = std::cos(a), s = std::sin(a);
-        auto units = [&](long double x, long double y) {
-          return Vec2{static_cast<int32_t>(std::lround(x * upm)), static_cast<int32_t>(std::lround(y * upm))};
-        };
+        auto units = [&](long double x, long double y) { return platon::testing::pointFromMetres(x, y, upm); };
         auto turned = [&](long double x, long double y) { return units(c * x - s * y, s * x + c * y); };
         World world;
         MapPart& faceA = world.createMapPart(1);
@@ -257,7 +256,7 @@ TEST(Warp, WalkingAcrossTurnedEdgesOntoAContinuingFloor) {
         const int32_t half = upm / 4;
         const EntityId box = world.createEntity(Convex::box(half, half));
         world.insert(box, 1, units(5, 0.25), 0);
-        world.setVelocity(box, {std::llround(4.0 * upm / hz * 65536), 0});  // no friction: it keeps going
+        world.setVelocity(box, {platon::testing::q16FromSpeed(4.0, upm, hz), 0});  // no friction: it keeps going
         const int frames = static_cast<int>(2.5 * hz);
         for (int f = 0; f < frames; ++f) {
           world.solve();

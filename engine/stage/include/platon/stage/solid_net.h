@@ -5,7 +5,7 @@
 
 #include "platon/physics/world.h"
 
-namespace platon::level {
+namespace platon::stage {
 
 enum class SolidType { Tetrahedron, Hexahedron, Octahedron, Icosahedron, Dodecahedron };
 
@@ -21,4 +21,4 @@ struct SolidNet {
 // the 3D shape matters to the renderer, not to the physics.
 SolidNet buildSolidNet(physics::World& world, SolidType type, int32_t edgeLength, physics::MapPartId firstId);
 
-}  // namespace platon::level
+}  // namespace platon::stage

@@ -1,11 +1,12 @@
-#include "stability_scenes.h"
+#include "platon/testing/stability_scenes.h"
 
 #include <chrono>
 #include <cmath>
 
 #include "platon/physics/world.h"
+#include "platon/testing/si_units.h"
 
-namespace platon::scenes {
+namespace platon::testing::scenes {
 namespace {
 
 using namespace platon::physics;
@@ -178,14 +179,13 @@ struct TriggerCounter : Rules {
   void endContact(const Contact& c) override { ends += c.line.tag == 1; }
 };
 
-int32_t toUnits(double metres, double upm) { return static_cast<int32_t>(std::llround(metres * upm)); }
 
 // Two faces of a cube (edge L = 10 m): face A's right edge is face B's bottom edge, turned a quarter.
 // A has a floor; B has the floor's continuation and a wall 0.1 m past the edge. Driven right, the
 // box crosses 0.1 m onto B and is held in the corner the floor (on A) and the wall (on B) make.
 Outcome runWarpCorner(double upm) {
   const auto t0 = std::chrono::steady_clock::now();
-  const int32_t L = toUnits(10, upm), wall = toUnits(0.1, upm), half = toUnits(0.25, upm);
+  const int32_t L = unitsFromMetres(10, upm), wall = unitsFromMetres(0.1, upm), half = unitsFromMetres(0.25, upm);
   World world;
   MapPart& a = world.createMapPart(1);
   MapPart& b = world.createMapPart(2);
@@ -194,14 +194,13 @@ Outcome runWarpCorner(double upm) {
   b.warp({0, 0}, {L, 0}, 1, {L, L}, {L, 0});
   b.line({L, 0}, {L, L});           // A's floor continued onto B
   b.line({0, wall}, {L, wall});     // the wall on B
-  const double q16 = 65536.0 * upm;
-  a.setGravity({0, std::llround(-9.81 * q16 / 3600)});
-  b.setGravity({0, std::llround(-9.81 * q16 / 3600)});
+  a.setGravity({0, q16FromAcceleration(-9.81, upm, 60)});
+  b.setGravity({0, q16FromAcceleration(-9.81, upm, 60)});
   a.initialize();
   b.initialize();
   const EntityId body = world.createEntity(Convex::box(half, half));
-  world.insert(body, 1, {L - toUnits(1, upm), half}, 0);
-  const int64_t vx = std::llround(2 * q16 / 60);
+  world.insert(body, 1, {L - unitsFromMetres(1, upm), half}, 0);
+  const int64_t vx = q16FromSpeed(2, upm, 60);
   Outcome out;
   Vec2 settled{};
   for (int f = 1; f <= 10000; ++f) {
@@ -252,24 +251,22 @@ Outcome runPlaton(const Scene& scene, double upm, int64_t offsetUnits) {
   if (scene.platonOnly) return scene.platonOnly(upm);
   const auto t0 = std::chrono::steady_clock::now();
   auto at = [&](double x, double y) {
-    return Vec2{static_cast<int32_t>(toUnits(x, upm) + offsetUnits), static_cast<int32_t>(toUnits(y, upm) + offsetUnits)};
+    return Vec2{static_cast<int32_t>(unitsFromMetres(x, upm) + offsetUnits), static_cast<int32_t>(unitsFromMetres(y, upm) + offsetUnits)};
   };
   World world;
   MapPart& part = world.createMapPart(1);
   for (const Seg& g : scene.solids) part.line(at(g[0], g[1]), at(g[2], g[3]));
   for (const Seg& g : scene.triggers) part.line(at(g[0], g[1]), at(g[2], g[3]), 1);
-  const double q16 = 65536.0 * upm;
-  part.setGravity({std::llround(scene.gravityX * q16 / (scene.hz * scene.hz)),
-                   std::llround(scene.gravityY * q16 / (scene.hz * scene.hz))});
+  part.setGravity({q16FromAcceleration(scene.gravityX, upm, scene.hz), q16FromAcceleration(scene.gravityY, upm, scene.hz)});
   part.initialize();
   TriggerCounter counter;
   world.setRules(&counter);
   std::vector<Vec2> shape;
-  for (const Point& p : scene.shape) shape.push_back({toUnits(p[0], upm), toUnits(p[1], upm)});
+  for (const Point& p : scene.shape) shape.push_back({unitsFromMetres(p[0], upm), unitsFromMetres(p[1], upm)});
   const EntityId body = world.createEntity(Convex(convexHull(shape)));
   world.insert(body, 1, at(scene.start.x, scene.start.y), 0);
-  const int64_t vx = std::llround(scene.vx * q16 / scene.hz);
-  world.setVelocity(body, {vx, std::llround(scene.vy * q16 / scene.hz)});
+  const int64_t vx = q16FromSpeed(scene.vx, upm, scene.hz);
+  world.setVelocity(body, {vx, q16FromSpeed(scene.vy, upm, scene.hz)});
   world.setAngularVelocity(body, static_cast<int32_t>(std::llround(scene.spin / scene.hz * 4294967296.0 / (2 * kPi))));
   const bool checkEveryFrame = scene.frames <= 100000;
   auto pose = [&] {
@@ -293,4 +290,4 @@ Outcome runPlaton(const Scene& scene, double upm, int64_t offsetUnits) {
   return out;
 }
 
-}  // namespace platon::scenes
+}  // namespace platon::testing::scenes

@@ -2,7 +2,7 @@
 #pragma once
 #include <cstdint>
 
-namespace platon::bench {
+namespace platon::testing {
 
 struct Rng {
   uint64_t state;
@@ -16,4 +16,4 @@ struct Rng {
   int between(int lo, int hi) { return lo + static_cast<int>(next() % static_cast<uint64_t>(hi - lo + 1)); }
 };
 
-}  // namespace platon::bench
+}  // namespace platon::testing

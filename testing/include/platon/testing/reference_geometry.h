@@ -30,7 +30,7 @@
 
 #include "platon/physics/vec2.h"
 
-namespace platon::test {
+namespace platon::testing::reference {
 
 using physics::i128;
 using physics::Vec2;
@@ -283,4 +283,4 @@ inline RefContact referenceContact(std::span<const Vec2> poly, Vec2w motion, Vec
   return r;
 }
 
-}  // namespace platon::test
+}  // namespace platon::testing::reference

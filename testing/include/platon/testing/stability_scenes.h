@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace platon::scenes {
+namespace platon::testing::scenes {
 
 using Point = std::array<double, 2>;
 using Seg = std::array<double, 4>;  // x0 y0 x1 y1, metres
@@ -85,4 +85,4 @@ std::vector<Scene> stabilityScenes(double offset = 0);
 // runs put it near 2^30).
 Outcome runPlaton(const Scene& scene, double unitsPerMetre, int64_t offsetUnits = 0);
 
-}  // namespace platon::scenes
+}  // namespace platon::testing::scenes

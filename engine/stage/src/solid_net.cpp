@@ -1,9 +1,9 @@
-#include "level/solid_net.h"
+#include "platon/stage/solid_net.h"
 
 #include <array>
 #include <stdexcept>
 
-namespace platon::level {
+namespace platon::stage {
 namespace {
 
 using physics::Vec2;
@@ -63,4 +63,4 @@ SolidNet buildSolidNet(physics::World& world, SolidType type, int32_t edgeLength
   return net;
 }
 
-}  // namespace platon::level
+}  // namespace platon::stage

@@ -2,16 +2,16 @@
 
 #include <set>
 
-#include "level/solid_net.h"
+#include "platon/stage/solid_net.h"
 
 using namespace platon;
 using physics::Vec2;
 
 // Every edge warps to a neighbour whose matching edge warps straight back.
 TEST(SolidNet, EveryEdgeWarpsToItsNeighbourAndBack) {
-  for (const auto type : {level::SolidType::Tetrahedron, level::SolidType::Hexahedron}) {
+  for (const auto type : {stage::SolidType::Tetrahedron, stage::SolidType::Hexahedron}) {
     physics::World world;
-    const level::SolidNet net = level::buildSolidNet(world, type, 1000, 10);
+    const stage::SolidNet net = stage::buildSolidNet(world, type, 1000, 10);
     for (const physics::MapPartId id : net.parts) {
       const physics::MapPart& part = world.mapPart(id);
       ASSERT_EQ(part.warps().size(), net.corners[id - 10].size());
@@ -35,7 +35,7 @@ TEST(SolidNet, EveryEdgeWarpsToItsNeighbourAndBack) {
 // always has an instance somewhere.
 TEST(SolidNet, BallTravelsAroundTheCube) {
   physics::World world;
-  const level::SolidNet net = level::buildSolidNet(world, level::SolidType::Hexahedron, 4096, 0);
+  const stage::SolidNet net = stage::buildSolidNet(world, stage::SolidType::Hexahedron, 4096, 0);
   for (const physics::MapPartId id : net.parts) {
     world.mapPart(id).line({256, 512}, {2600, 512});
     world.mapPart(id).setGravity({0, -6000});

@@ -1,0 +1,69 @@
+// What scripts and systems ask to draw on one frame. Shapes live in a face's own 2D coordinates
+// (the renderer maps them onto the solid); text may also be placed on the screen. The renderer
+// reads the list after each frame. Without a renderer the list is disabled and every call returns
+// at once, recording nothing: a headless run pays one branch per call.
+#pragma once
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "platon/physics/ids.h"
+
+namespace platon::core {
+
+struct Color {
+  uint8_t r = 255, g = 255, b = 255, a = 255;
+  friend bool operator==(Color, Color) = default;
+};
+
+struct Point2 {
+  float x = 0, y = 0;
+};
+
+// Where a shape is drawn: on a face (in its coordinates, units) or on the screen (pixels from the
+// top left).
+struct Place {
+  bool screen = false;
+  physics::MapPartId face = 0;
+  static Place onFace(physics::MapPartId face) { return {false, face}; }
+  static Place onScreen() { return {true, 0}; }
+};
+
+enum class ShapeKind : uint8_t { Circle, Polygon, Line, Text };
+
+struct DrawShape {
+  ShapeKind kind = ShapeKind::Circle;
+  Place place;
+  Color color;
+  float size = 0;      // circle radius, line width, text height
+  Point2 at;           // circle centre, text anchor (its top left)
+  uint32_t first = 0;  // polygon and line: points()[first, first + count); text: its characters
+  uint32_t count = 0;
+};
+
+class DrawList {
+ public:
+  explicit DrawList(bool enabled = false) : enabled_(enabled) {}
+  bool enabled() const { return enabled_; }
+
+  void circle(Place place, Point2 centre, float radius, Color color);
+  // A convex polygon, counter-clockwise.
+  void polygon(Place place, std::span<const Point2> points, Color color);
+  void line(Place place, Point2 a, Point2 b, float width, Color color);
+  void text(Place place, Point2 at, std::string_view text, float height, Color color);
+  void clear();
+
+  std::span<const DrawShape> shapes() const { return shapes_; }
+  std::span<const Point2> points() const { return points_; }
+  std::string_view text(const DrawShape& shape) const { return std::string_view(text_).substr(shape.first, shape.count); }
+
+ private:
+  bool enabled_;
+  std::vector<DrawShape> shapes_;
+  std::vector<Point2> points_;
+  std::string text_;
+};
+
+}  // namespace platon::core

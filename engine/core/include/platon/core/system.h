@@ -1,0 +1,49 @@
+// Engine systems and the registry that creates them. A scene names the systems it needs
+// (scripting, rendering, meshes, ...); only those are created, so a scene that does not need a
+// system neither loads nor pays for it. Physics is not a system: every scene has a world, and an
+// empty world costs nothing to step.
+#pragma once
+#include <functional>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "platon/core/draw_list.h"
+#include "platon/core/input.h"
+
+namespace platon::core {
+
+class Scene;
+
+class System {
+ public:
+  virtual ~System() = default;
+  // Before the physics step: turn input into velocities, run level logic.
+  virtual void beforeStep(Scene& scene, const InputFrame& input) { (void)scene, (void)input; }
+  // After the physics step: react to where things ended up.
+  virtual void afterStep(Scene& scene) { (void)scene; }
+  // Say what to draw; called only when the scene has a renderer.
+  virtual void draw(const Scene& scene, DrawList& out) const { (void)scene, (void)out; }
+};
+
+using SystemFactory = std::function<std::unique_ptr<System>(Scene&)>;
+
+class SystemRegistry {
+ public:
+  // Registers a factory under `name`; a repeated name throws.
+  void add(std::string name, SystemFactory factory);
+  bool has(std::string_view name) const;
+  // Creates the named system for `scene`. An unknown name throws, listing the known ones.
+  std::unique_ptr<System> create(std::string_view name, Scene& scene) const;
+  std::vector<std::string> names() const;
+
+ private:
+  struct Entry {
+    std::string name;
+    SystemFactory factory;
+  };
+  std::vector<Entry> entries_;
+};
+
+}  // namespace platon::core

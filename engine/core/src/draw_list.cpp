@@ -1,0 +1,37 @@
+#include "platon/core/draw_list.h"
+
+namespace platon::core {
+
+void DrawList::circle(Place place, Point2 centre, float radius, Color color) {
+  if (!enabled_) return;
+  shapes_.push_back({ShapeKind::Circle, place, color, radius, centre, 0, 0});
+}
+
+void DrawList::polygon(Place place, std::span<const Point2> points, Color color) {
+  if (!enabled_ || points.size() < 3) return;
+  shapes_.push_back({ShapeKind::Polygon, place, color, 0, points[0], static_cast<uint32_t>(points_.size()),
+                     static_cast<uint32_t>(points.size())});
+  points_.insert(points_.end(), points.begin(), points.end());
+}
+
+void DrawList::line(Place place, Point2 a, Point2 b, float width, Color color) {
+  if (!enabled_) return;
+  shapes_.push_back({ShapeKind::Line, place, color, width, a, static_cast<uint32_t>(points_.size()), 2});
+  points_.push_back(a);
+  points_.push_back(b);
+}
+
+void DrawList::text(Place place, Point2 at, std::string_view s, float height, Color color) {
+  if (!enabled_) return;
+  shapes_.push_back({ShapeKind::Text, place, color, height, at, static_cast<uint32_t>(text_.size()),
+                     static_cast<uint32_t>(s.size())});
+  text_.append(s);
+}
+
+void DrawList::clear() {
+  shapes_.clear();
+  points_.clear();
+  text_.clear();
+}
+
+}  // namespace platon::core
