@@ -9,21 +9,20 @@
 // and closed, so the motion is the same whatever the map's size.
 //
 // Usage: map_scaling [--quick] [--frames=N]
-#include <box2d/box2d.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
+#include <box2d/box2d.h>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <memory>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <vector>
 
-#include "platon/testing/rng.h"
 #include "platon/physics/world.h"
+#include "platon/testing/rng.h"
 
 namespace {
 
@@ -44,9 +43,7 @@ constexpr double kRadius = 0.3, kSpeed = 6, kJumpSpeed = 9, kGravity = 25;
 constexpr double kLeft = 3, kRight = 21, kStartX = 3, kStartY = 1.0;
 constexpr int kJumpEvery = 60;
 
-double elapsedMs(Clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
+double elapsedMs(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
 // Resident set size from /proc/self/statm (second field, in pages).
 double rssBytes() {
@@ -128,17 +125,11 @@ struct Motion {
   long overlaps = -1;    // Platon: World::countOverlaps() after the last frame (or summed over frames)
 };
 
-Convex entityShape() {
-  return Convex::regular(8, static_cast<int32_t>(std::lround(kRadius * kUnitsPerMetre)));
-}
+Convex entityShape() { return Convex::regular(8, static_cast<int32_t>(std::lround(kRadius * kUnitsPerMetre))); }
 
-int64_t q16PerFrame(double metresPerSecond) {
-  return std::llround(metresPerSecond * kUnitsPerMetre / kHz * 65536);
-}
+int64_t q16PerFrame(double metresPerSecond) { return std::llround(metresPerSecond * kUnitsPerMetre / kHz * 65536); }
 
-b2Vec2 metres(Vec2 p) {
-  return {static_cast<float>(p.x) / kUnitsPerMetre, static_cast<float>(p.y) / kUnitsPerMetre};
-}
+b2Vec2 metres(Vec2 p) { return {static_cast<float>(p.x) / kUnitsPerMetre, static_cast<float>(p.y) / kUnitsPerMetre}; }
 
 class PlatonMap {
  public:
@@ -174,8 +165,7 @@ class PlatonMap {
       m.travelled += std::abs(p.x - last.x) / static_cast<double>(kUnitsPerMetre);
       m.stuckFrames += p == last;
       last = p;
-      if (checkEveryFrame)
-        overlaps += static_cast<long>(world_.countOverlaps());  // O(lines): small maps only
+      if (checkEveryFrame) overlaps += static_cast<long>(world_.countOverlaps());  // O(lines): small maps only
     }
     m.nsPerFrame = elapsedMs(t0) * 1e6 / frames;
     m.overlaps = checkEveryFrame ? overlaps : static_cast<long>(world_.countOverlaps());
@@ -366,8 +356,7 @@ int main(int argc, char** argv) {
       "Map scaling: rooms of %gx%g m with %d segments each (rolling floor, walls, ceiling, %d box "
       "platforms),\n%d units per metre; one octagon (circumradius %g m) patrols room 0 at %g m/s, "
       "jumping every %d frames, gravity %g m/s^2, %d frames at %g Hz\n",
-      kRoomW, kRoomH, kSegmentsPerRoom, kPlatforms, kUnitsPerMetre, kRadius, kSpeed, kJumpEvery, kGravity,
-      frames, kHz);
+      kRoomW, kRoomH, kSegmentsPerRoom, kPlatforms, kUnitsPerMetre, kRadius, kSpeed, kJumpEvery, kGravity, frames, kHz);
   std::printf(
       "Platon add = MapPart::line() calls, build = initialize(), own = memoryBytes(); Box2D add = "
       "CreateFixture(b2EdgeShape) calls, build = first Step's pair search; Step(1/60, 8, 3) per frame.\n"
@@ -383,9 +372,8 @@ int main(int argc, char** argv) {
     box2d.push_back({segments, "Box2D", measureBuild<Box2DMap>(rooms), {}});
   }
   measurePatrols(platon, box2d, frames);
-  std::printf("%9s %-7s %9s %9s %9s %9s %9s %9s %9s %13s %6s %8s\n", "segments", "engine", "add ms",
-              "build ms", "total ms", "own MB", "RSS MB", "ns/frame", "moved m", "final x,y m", "stuck",
-              "overlaps");
+  std::printf("%9s %-7s %9s %9s %9s %9s %9s %9s %9s %13s %6s %8s\n", "segments", "engine", "add ms", "build ms",
+              "total ms", "own MB", "RSS MB", "ns/frame", "moved m", "final x,y m", "stuck", "overlaps");
   for (size_t i = 0; i < sizes.size(); ++i) printRow(platon[i]), printRow(box2d[i]);
 
   PlatonMap small;
@@ -403,13 +391,10 @@ int main(int argc, char** argv) {
   for (size_t i = 0; i < sizes.size(); ++i)
     std::printf("  Platon frame / Box2D step, %7d segments:    %6.3f  (goal <= 0.5)\n", sizes[i],
                 platon[i].motion.nsPerFrame / box2d[i].motion.nsPerFrame);
-  const double platonBuild = pN.build.addMs + pN.build.buildMs,
-               box2dBuild = bN.build.addMs + bN.build.buildMs;
-  std::printf("  Box2D build / Platon build (add + build):        %6.1f  (goal >= 10)\n",
-              box2dBuild / platonBuild);
+  const double platonBuild = pN.build.addMs + pN.build.buildMs, box2dBuild = bN.build.addMs + bN.build.buildMs;
+  std::printf("  Box2D build / Platon build (add + build):        %6.1f  (goal >= 10)\n", box2dBuild / platonBuild);
   std::printf("  Box2D build (add + build) / Platon initialize(): %6.1f\n", box2dBuild / pN.build.buildMs);
   std::printf("  Platon memory / Box2D memory (RSS deltas):       %6.3f  (goal <= 0.5)\n",
               pN.build.rssBytes / bN.build.rssBytes);
-  std::printf("  Platon memoryBytes() / Box2D RSS delta:          %6.3f\n",
-              pN.build.ownBytes / bN.build.rssBytes);
+  std::printf("  Platon memoryBytes() / Box2D RSS delta:          %6.3f\n", pN.build.ownBytes / bN.build.rssBytes);
 }

@@ -66,7 +66,8 @@ std::string summary(const Scene& s, const Outcome& o) {
     add(buf);
   }
   if (o.tunnelFrames > 0) add("tunnel " + std::to_string(o.tunnelFrames) + " fr");
-  if (o.missedEvents > 0) add("missed " + std::to_string(o.missedEvents) + " of " + std::to_string(s.expectedCrossings) + " triggers");
+  if (o.missedEvents > 0)
+    add("missed " + std::to_string(o.missedEvents) + " of " + std::to_string(s.expectedCrossings) + " triggers");
   if (o.drift > 1e-9) {
     std::snprintf(buf, sizeof buf, "drift %.3g mm", o.drift * 1e3);
     add(buf);
@@ -96,7 +97,8 @@ int main(int argc, char** argv) {
   }
   const std::vector<double> offsets = {0, 1e3, 1e5, 1e6};
   std::ostringstream table;
-  table << "| scene | what | Platon | Platon at 2^30 | Box2D 0 m | 10^3 m | 10^5 m | 10^6 m | Chipmunk 0 m | 10^3 m | 10^5 m | 10^6 m |\n";
+  table << "| scene | what | Platon | Platon at 2^30 | Box2D 0 m | 10^3 m | 10^5 m | 10^6 m | Chipmunk 0 m | 10^3 m | "
+           "10^5 m | 10^6 m |\n";
   table << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   const std::vector<Scene> base = scenes::stabilityScenes();
   for (size_t k = 0; k < base.size(); ++k) {
@@ -108,7 +110,9 @@ int main(int argc, char** argv) {
       table << "n/a (one part) | n/a | n/a | n/a | n/a | n/a | n/a | n/a | n/a |\n";
       continue;
     }
-    table << summary(s, scenes::runPlaton(s, kUnitsPerMetre, physics::kCoordLimit - scenes::extentUnits(s, kUnitsPerMetre))) << " | ";
+    table << summary(
+                 s, scenes::runPlaton(s, kUnitsPerMetre, physics::kCoordLimit - scenes::extentUnits(s, kUnitsPerMetre)))
+          << " | ";
     for (const bool box2d : {true, false})
       for (const double offset : offsets) {
         const Scene moved = scenes::stabilityScenes(offset)[k];

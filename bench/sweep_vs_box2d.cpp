@@ -10,11 +10,10 @@
 // converted to float metres, with the radius it gives every polygon and edge (b2_polygonRadius).
 //
 // Usage: sweep_vs_box2d [--quick]
+#include <algorithm>
 #include <box2d/b2_common.h>
 #include <box2d/b2_distance.h>
 #include <box2d/b2_time_of_impact.h>
-
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -23,9 +22,9 @@
 #include <optional>
 #include <vector>
 
-#include "platon/testing/rng.h"
 #include "platon/physics/convex.h"
 #include "platon/physics/sweep.h"
+#include "platon/testing/rng.h"
 
 namespace {
 
@@ -73,8 +72,7 @@ std::vector<Vec2> randomShape(Rng& rng) {
       const double a = 2 * kPi * (k + rng.uniform(-0.2, 0.2)) / n;  // gaps stay below half a turn
       const double r = radius * rng.uniform(0.7, 1.0);
       const double x = r * std::cos(a), y = r * std::sin(a) * squash;
-      points.push_back(
-          unitsAt(x * std::cos(turn) - y * std::sin(turn), x * std::sin(turn) + y * std::cos(turn)));
+      points.push_back(unitsAt(x * std::cos(turn) - y * std::sin(turn), x * std::sin(turn) + y * std::cos(turn)));
     }
     std::vector<Vec2> hull = convexHull(std::move(points));
     if (hull.size() < 3) continue;
@@ -89,8 +87,7 @@ std::vector<Vec2> randomShape(Rng& rng) {
 void addQuery(QuerySet& set, Rng& rng, double centre) {
   const std::vector<Vec2> shape = randomShape(rng);
   const double len = rng.uniform(0.5, 5.0) * kUnitsPerMetre, dir = rng.uniform(0, 2 * kPi);
-  const double cx = centre + rng.uniform(-5, 5) * kUnitsPerMetre,
-               cy = centre + rng.uniform(-5, 5) * kUnitsPerMetre;
+  const double cx = centre + rng.uniform(-5, 5) * kUnitsPerMetre, cy = centre + rng.uniform(-5, 5) * kUnitsPerMetre;
   const Segment seg{unitsAt(cx - 0.5 * len * std::cos(dir), cy - 0.5 * len * std::sin(dir)),
                     unitsAt(cx + 0.5 * len * std::cos(dir), cy + 0.5 * len * std::sin(dir))};
   const double u = rng.uniform(0.05, 0.95);
@@ -120,9 +117,7 @@ QuerySet makeQueries(size_t count, double offsetMetres) {
 
 // ---- Box2D inputs: the same geometry in float metres --------------------------------------------
 
-b2Vec2 metres(Vec2 p) {
-  return {static_cast<float>(p.x) / kUnitsPerMetre, static_cast<float>(p.y) / kUnitsPerMetre};
-}
+b2Vec2 metres(Vec2 p) { return {static_cast<float>(p.x) / kUnitsPerMetre, static_cast<float>(p.y) / kUnitsPerMetre}; }
 b2Vec2 metres(Vec2w v) {
   return {static_cast<float>(static_cast<double>(v.x) / kUnitsPerMetre),
           static_cast<float>(static_cast<double>(v.y) / kUnitsPerMetre)};
@@ -170,8 +165,7 @@ uint64_t runPlaton(const QuerySet& set) {
   uint64_t sum = 0;
   for (const Query& q : set.queries) {
     const Sweep s = sweep(set.polygon(q), q.motion, q.seg);
-    if (s.hitsWithinFrame())
-      sum += static_cast<uint64_t>(s.enter.num) * 31 + static_cast<uint64_t>(s.enter.den);
+    if (s.hitsWithinFrame()) sum += static_cast<uint64_t>(s.enter.num) * 31 + static_cast<uint64_t>(s.enter.den);
   }
   return sum;
 }
@@ -281,8 +275,8 @@ ld distance(const std::vector<P>& poly, P a, P b) {
   ld best = std::numeric_limits<ld>::infinity();
   for (size_t i = 0; i < poly.size(); ++i) {
     const P v = poly[i], w = poly[(i + 1) % poly.size()];
-    best = std::min(
-        {best, pointSegmentDistance(v, a, b), pointSegmentDistance(a, v, w), pointSegmentDistance(b, v, w)});
+    best =
+        std::min({best, pointSegmentDistance(v, a, b), pointSegmentDistance(a, v, w), pointSegmentDistance(b, v, w)});
   }
   return best;
 }
@@ -309,8 +303,7 @@ struct Stats {
      depthMax = 0;
 
   // gap: how far short of the exact contact the polygon stopped, along the motion (negative: past it).
-  void add(bool exactHit, ld exactT, const Query& q, std::span<const Vec2> shape, const Outcome& o,
-           bool near) {
+  void add(bool exactHit, ld exactT, const Query& q, std::span<const Vec2> shape, const Outcome& o, bool near) {
     misses += exactHit && !o.hit;
     nearMisses += exactHit && !o.hit && near;
     falseHits += !exactHit && o.hit;
@@ -368,8 +361,7 @@ Accuracy measureAccuracy(const QuerySet& set, const Box2DQueries& b) {
     const bool castHit = b2ShapeCast(&cast, &in);
     acc.castUnconverged += castHit && cast.iterations >= 20;
     const float lambda = castHit ? cast.lambda : 1.0f;
-    acc.shapeCast.add(hit, t, q, set.shape(q),
-                      {castHit, fromFloat(in.transformB.p + lambda * in.translationB)}, near);
+    acc.shapeCast.add(hit, t, q, set.shape(q), {castHit, fromFloat(in.transformB.p + lambda * in.translationB)}, near);
 
     b2TOIOutput toi;
     b2TimeOfImpact(&toi, &b.tois[i]);
@@ -383,9 +375,9 @@ Accuracy measureAccuracy(const QuerySet& set, const Box2DQueries& b) {
 }
 
 void printRow(const char* name, double ns, const Stats& s) {
-  std::printf("  %-22s %9.1f %8zu %8zu %8zu %8zu %10.3Lf %10.3Lf %10.3Lf %10.3Lf\n", name, ns, s.misses,
-              s.falseHits, s.penetrations, s.throughs, s.gaps ? s.gapSum / s.gaps : 0.0L,
-              s.gaps ? s.gapMax : 0.0L, s.gaps ? s.gapMin : 0.0L, s.depthMax * 1000);
+  std::printf("  %-22s %9.1f %8zu %8zu %8zu %8zu %10.3Lf %10.3Lf %10.3Lf %10.3Lf\n", name, ns, s.misses, s.falseHits,
+              s.penetrations, s.throughs, s.gaps ? s.gapSum / s.gaps : 0.0L, s.gaps ? s.gapMax : 0.0L,
+              s.gaps ? s.gapMin : 0.0L, s.depthMax * 1000);
 }
 
 }  // namespace
@@ -431,8 +423,8 @@ int main(int argc, char** argv) {
         "\noffset %.0e m = %.3e units (x and y); exact hits %zu of %zu; Platon vs long-double ray "
         "TOI disagreements: %zu\n",
         offset, offset * kUnitsPerMetre, acc.exactHits, count, acc.refDisagreements);
-    std::printf("  %-22s %9s %8s %8s %8s %8s %10s %10s %10s %10s\n", "engine", "ns/query", "misses", "false",
-                "penetr.", "through", "gap mean", "gap max", "gap min", "depth max");
+    std::printf("  %-22s %9s %8s %8s %8s %8s %10s %10s %10s %10s\n", "engine", "ns/query", "misses", "false", "penetr.",
+                "through", "gap mean", "gap max", "gap min", "depth max");
     printRow("Platon sweep", nsPlaton, acc.platon);
     printRow("Box2D b2ShapeCast", nsCast, acc.shapeCast);
     printRow("Box2D b2TimeOfImpact", nsToi, acc.toi);

@@ -48,11 +48,11 @@ constexpr double kPi = std::numbers::pi;
 struct Scene {
   std::string name;
   Segments segments{};
-  double x0 = 0, y0 = 0, vx0 = 0, vy0 = 0;  // body start, metres and m/s
-  double seconds = 0;                       // simulated time, unless
-  long frames = 0;                          // a fixed frame count is given
-  double runSpeed = kNaN;                   // horizontal velocity set every frame (a runner)
-  double landingTime = kNaN;                // analytic, for the landing scene
+  double x0 = 0, y0 = 0, vx0 = 0, vy0 = 0;      // body start, metres and m/s
+  double seconds = 0;                           // simulated time, unless
+  long frames = 0;                              // a fixed frame count is given
+  double runSpeed = kNaN;                       // horizontal velocity set every frame (a runner)
+  double landingTime = kNaN;                    // analytic, for the landing scene
   std::function<double(Pose, double)> error{};  // distance to the analytic answer at time t, metres
 
   long frameCount(double hz) const { return frames > 0 ? frames : std::lround(seconds * hz); }
@@ -76,9 +76,7 @@ Scene landing() {
   const double drop = 2;
   Scene s{.name = "landing", .segments = {{-5, 0, 5, 0}}, .y0 = kHalf + drop, .seconds = 1.5};
   s.landingTime = std::sqrt(2 * drop / kGravity);
-  s.error = [s](Pose p, double t) {
-    return std::hypot(p.x, p.y - std::max(kHalf, s.y0 - 0.5 * kGravity * t * t));
-  };
+  s.error = [s](Pose p, double t) { return std::hypot(p.x, p.y - std::max(kHalf, s.y0 - 0.5 * kGravity * t * t)); };
   return s;
 }
 
@@ -90,7 +88,9 @@ Scene slope(int degrees) {
   const double a = degrees * kPi / 180, dx = std::cos(a), dy = -std::sin(a), reach = 16;
   Scene s{.name = "slope" + std::to_string(degrees),
           .segments = {{-reach * dx, -reach * dy, 2 * reach * dx, 2 * reach * dy}},
-          .x0 = kHalf, .y0 = kHalf, .seconds = 2};
+          .x0 = kHalf,
+          .y0 = kHalf,
+          .seconds = 2};
   s.error = [s, dx, dy, a](Pose p, double t) {
     const double along = (p.x - s.x0) * dx + (p.y - s.y0) * dy;
     return std::fabs(along - 0.5 * kGravity * std::sin(a) * t * t);
@@ -298,8 +298,8 @@ Row runPlaton(const Scene& s, int upm, double hz) {
   return r;
 }
 
-Row runPeer(const std::string& engine, const std::string& setting, const std::function<std::unique_ptr<PeerWorld>()>& make,
-            const Scene& s, double hz) {
+Row runPeer(const std::string& engine, const std::string& setting,
+            const std::function<std::unique_ptr<PeerWorld>()>& make, const Scene& s, double hz) {
   Row r{.engine = engine, .setting = setting, .scene = s.name, .dt = 1 / hz};
   measure(r, s, timed(make, s, hz), box(), s.segments, 0);
   return r;
@@ -344,7 +344,8 @@ class WarpRun {
     const int32_t half = static_cast<int32_t>(std::lround(kHalf * upm));
     id_ = world_.createEntity(Convex::box(half, half));
     world_.insert(id_, 1, units(kStartX, y0()), 0);
-    world_.setVelocity(id_, {platon::testing::q16FromSpeed(vx(), upm, hz), platon::testing::q16FromSpeed(vy(), upm, hz)});
+    world_.setVelocity(id_,
+                       {platon::testing::q16FromSpeed(vx(), upm, hz), platon::testing::q16FromSpeed(vy(), upm, hz)});
   }
 
   long frames() const { return std::lround(kSeconds * hz_); }
@@ -463,7 +464,8 @@ void compare(const std::vector<Row>& rows, const std::string& peer) {
     if (r.engine == peer) other[r.scene].push_back(&r);
   }
   std::printf("\nAt equal run time, Platon vs %s (goal: Platon's error <= 1/10 of the peer's):\n", peer.c_str());
-  std::printf("  %-8s %14s %16s %14s   %s\n", "scene", "goal met", "Platon too slow", "worst ratio", "at v8p3/it10 60 Hz");
+  std::printf("  %-8s %14s %16s %14s   %s\n", "scene", "goal met", "Platon too slow", "worst ratio",
+              "at v8p3/it10 60 Hz");
   for (const auto& [scene, peerRows] : other) {
     int met = 0, tooSlow = 0;
     double worst = 0, atDefault = kNaN;
@@ -480,7 +482,8 @@ void compare(const std::vector<Row>& rows, const std::string& peer) {
       worst = std::max(worst, ratio);
       if ((p->setting == "v8p3" || p->setting == "it10") && std::lround(1 / p->dt) == 60) atDefault = ratio;
     }
-    std::printf("  %-8s %8d of %2zu %16d %14.3g   %.3g\n", scene.c_str(), met, peerRows.size(), tooSlow, worst, atDefault);
+    std::printf("  %-8s %8d of %2zu %16d %14.3g   %.3g\n", scene.c_str(), met, peerRows.size(), tooSlow, worst,
+                atDefault);
   }
 }
 
@@ -495,10 +498,13 @@ void summarizeWarps(const std::vector<Row>& rows) {
     int stuckSettings = 0;
     double worst = 0;
     for (const Row* r : list) {
-      if (r->stuck > 0) ++stuckSettings;
-      else worst = std::max(worst, r->error);
+      if (r->stuck > 0)
+        ++stuckSettings;
+      else
+        worst = std::max(worst, r->error);
     }
-    std::printf("  %-14s stuck in %2d of %2zu settings; others within %.3g m\n", scene.c_str(), stuckSettings, list.size(), worst);
+    std::printf("  %-14s stuck in %2d of %2zu settings; others within %.3g m\n", scene.c_str(), stuckSettings,
+                list.size(), worst);
   }
 }
 
@@ -514,8 +520,10 @@ void summarize(const std::vector<Row>& rows) {
   for (const Row& r : rows) deepest[r.engine] = std::max(deepest[r.engine], r.penetration);
   std::printf("\nDeepest penetration over all scenes and settings:");
   for (const auto& [engine, d] : deepest) std::printf("  %s %.3g m;", engine.c_str(), d);
-  std::printf("\nPlaton: World::countOverlaps() summed over every frame of every run = %zu (goal 0); "
-              "penetration %s\n", overlaps, platonPenetration == 0 && overlaps == 0 ? "zero: goal met" : "NONZERO: goal missed");
+  std::printf(
+      "\nPlaton: World::countOverlaps() summed over every frame of every run = %zu (goal 0); "
+      "penetration %s\n",
+      overlaps, platonPenetration == 0 && overlaps == 0 ? "zero: goal met" : "NONZERO: goal missed");
 }
 
 }  // namespace
@@ -524,8 +532,10 @@ int main(int argc, char** argv) {
   const char* csv = "docs/work_precision.csv";
   bool quick = false;
   for (int i = 1; i < argc; ++i) {
-    if (std::strncmp(argv[i], "--csv=", 6) == 0) csv = argv[i] + 6;
-    else if (std::strcmp(argv[i], "--quick") == 0) quick = true;
+    if (std::strncmp(argv[i], "--csv=", 6) == 0)
+      csv = argv[i] + 6;
+    else if (std::strcmp(argv[i], "--quick") == 0)
+      quick = true;
     else {
       std::fprintf(stderr, "usage: %s [--csv=FILE] [--quick]\n", argv[0]);
       return 2;
@@ -535,26 +545,32 @@ int main(int argc, char** argv) {
   const std::vector<int> resolutions{64, 256, 1024, 4096};
   const std::vector<std::pair<int, int>> box2dIterations{{1, 1}, {3, 1}, {8, 3}, {20, 8}};
   const std::vector<int> chipmunkIterations{1, 5, 10, 30};
-  const std::vector<Scene> scenes{freeFlight(), landing(), slope(10), slope(30), slope(45), slope(60), chain(),
-                                  rest(quick ? 10000 : 1000000)};
+  const std::vector<Scene> scenes{freeFlight(), landing(), slope(10), slope(30),
+                                  slope(45),    slope(60), chain(),   rest(quick ? 10000 : 1000000)};
 
-  std::printf("Work-precision: g = %.2f m/s^2, a %.1f m box; error = largest distance from the analytic answer "
-              "over all frames; run time = frame loop, best of several runs\n", kGravity, 2 * kHalf);
+  std::printf(
+      "Work-precision: g = %.2f m/s^2, a %.1f m box; error = largest distance from the analytic answer "
+      "over all frames; run time = frame loop, best of several runs\n",
+      kGravity, 2 * kHalf);
   std::vector<Row> rows;
   auto add = [&](Row r) {
     printRow(r);
     rows.push_back(std::move(r));
   };
   for (const Scene& s : scenes) {
-    if (s.frames > 0) std::printf("\n%s (%ld frames)\n", s.name.c_str(), s.frames);
-    else std::printf("\n%s (%g s)\n", s.name.c_str(), s.seconds);
+    if (s.frames > 0)
+      std::printf("\n%s (%ld frames)\n", s.name.c_str(), s.frames);
+    else
+      std::printf("\n%s (%g s)\n", s.name.c_str(), s.seconds);
     for (const double hz : rates) {
       for (const int upm : resolutions) add(runPlaton(s, upm, hz));
       for (const auto& [v, p] : box2dIterations)
-        add(runPeer("Box2D 2.4.1", "v" + std::to_string(v) + "p" + std::to_string(p),
-                    [=] { return platon::bench::makeBox2D(v, p); }, s, hz));
+        add(runPeer(
+            "Box2D 2.4.1", "v" + std::to_string(v) + "p" + std::to_string(p),
+            [=] { return platon::bench::makeBox2D(v, p); }, s, hz));
       for (const int it : chipmunkIterations)
-        add(runPeer("Chipmunk 7.0.3", "it" + std::to_string(it), [=] { return platon::bench::makeChipmunk(it); }, s, hz));
+        add(runPeer(
+            "Chipmunk 7.0.3", "it" + std::to_string(it), [=] { return platon::bench::makeChipmunk(it); }, s, hz));
     }
   }
   for (const bool walk : {true, false})

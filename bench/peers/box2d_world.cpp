@@ -1,6 +1,5 @@
 // Box2D 2.4.1 behind PeerWorld (see peer.h for the configuration).
 #include <box2d/box2d.h>
-
 #include <cmath>
 #include <stdexcept>
 
@@ -70,9 +69,7 @@ class Box2DWorld final : public PeerWorld {
   }
 
   void setVelocity(int body, double vx, double vy) override { bodies_.at(body)->SetLinearVelocity(vec(vx, vy)); }
-  void setAngularVelocity(int body, double w) override {
-    bodies_.at(body)->SetAngularVelocity(static_cast<float>(w));
-  }
+  void setAngularVelocity(int body, double w) override { bodies_.at(body)->SetAngularVelocity(static_cast<float>(w)); }
 
   void step(double dt) override {
     lastDt_ = dt;

@@ -1,6 +1,5 @@
 // Chipmunk 7.0.3 behind PeerWorld (see peer.h for the configuration).
 #include <chipmunk/chipmunk.h>
-
 #include <cmath>
 
 #include "peer.h"

@@ -73,7 +73,8 @@ ld distance(const std::vector<P>& poly, P a, P b) {
   ld best = kInf;
   for (size_t i = 0; i < poly.size(); ++i) {
     const P v = poly[i], w = poly[(i + 1) % poly.size()];
-    best = std::min({best, pointSegmentDistance(v, a, b), pointSegmentDistance(a, v, w), pointSegmentDistance(b, v, w)});
+    best =
+        std::min({best, pointSegmentDistance(v, a, b), pointSegmentDistance(a, v, w), pointSegmentDistance(b, v, w)});
   }
   return best;
 }

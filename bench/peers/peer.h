@@ -26,8 +26,8 @@
 
 namespace platon::bench {
 
-using Polygon = std::vector<std::array<double, 2>>;    // convex, counter-clockwise, body frame
-using Segments = std::vector<std::array<double, 4>>;   // x0, y0, x1, y1 in world metres
+using Polygon = std::vector<std::array<double, 2>>;   // convex, counter-clockwise, body frame
+using Segments = std::vector<std::array<double, 4>>;  // x0, y0, x1, y1 in world metres
 
 struct Pose {
   double x, y, angle;  // body origin (metres) and rotation (radians)
@@ -44,9 +44,9 @@ class PeerWorld {
   virtual void addSegment(double x0, double y0, double x1, double y1, bool sensor = false) = 0;
   // A dynamic body; returns its index for the calls below.
   virtual int addBody(const Polygon& convexCCW, double x, double y, bool fixedRotation = true) = 0;
-  virtual void setVelocity(int body, double vx, double vy) = 0;      // m/s
-  virtual void setAngularVelocity(int body, double w) = 0;           // rad/s
-  virtual void step(double dt) = 0;                                  // seconds
+  virtual void setVelocity(int body, double vx, double vy) = 0;  // m/s
+  virtual void setAngularVelocity(int body, double w) = 0;       // rad/s
+  virtual void step(double dt) = 0;                              // seconds
   virtual Pose pose(int body) const = 0;
   virtual int sensorBeginEvents() const = 0;  // sensor begin events so far, all bodies
 };

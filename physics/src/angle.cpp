@@ -8,14 +8,13 @@ namespace {
 // atan(2^-i), i = 0..30, in units of 2^-64 turn: 32 bits finer than an Angle, so the table's own
 // rounding never adds up to a visible error.
 constexpr std::array<int64_t, 31> kAtan = {
-    2305843009213693952, 1361218612134873190, 719230530580881038, 365092647525521947,
-    183254791493294829,  91716730292036216,   45869556482713130,  22936177926750895,
-    11468263948075831,   5734153847876408,    2867079658191483,   1433540170878135,
-    716770128161890,     358385069421298,     179192535378193,    89596267772540,
-    44798133896700,      22399066949654,      11199533474990,     5599766737515,
-    2799883368760,       1399941684380,       699970842190,       349985421095,
-    174992710548,        87496355274,         43748177637,        21874088818,
-    10937044409,         5468522205,          2734261102};
+    2305843009213693952, 1361218612134873190, 719230530580881038, 365092647525521947, 183254791493294829,
+    91716730292036216,   45869556482713130,   22936177926750895,  11468263948075831,  5734153847876408,
+    2867079658191483,    1433540170878135,    716770128161890,    358385069421298,    179192535378193,
+    89596267772540,      44798133896700,      22399066949654,     11199533474990,     5599766737515,
+    2799883368760,       1399941684380,       699970842190,       349985421095,       174992710548,
+    87496355274,         43748177637,         21874088818,        10937044409,        5468522205,
+    2734261102};
 // Product of the 31 CORDIC gains, in Q60: starting the rotation from it gives unit length. The
 // iterations run in Q60 so their truncations stay far below the Q30 result.
 constexpr int64_t kGainQ60 = 700114967507363239;
@@ -61,10 +60,14 @@ Rotation rotationOf(Angle angle) {
   if (angle % kQuarterTurn == 0) {
     const int64_t one = int64_t{1} << 30;
     switch (angle / kQuarterTurn) {
-      case 0: return {one, 0};
-      case 1: return {0, one};
-      case 2: return {-one, 0};
-      default: return {0, -one};
+      case 0:
+        return {one, 0};
+      case 1:
+        return {0, one};
+      case 2:
+        return {-one, 0};
+      default:
+        return {0, -one};
     }
   }
   return flip ? Rotation{-x, -y} : Rotation{x, y};
@@ -86,7 +89,7 @@ Angle angleOf(Vec2w v) {
     y *= 2;
   }
   uint64_t angle = 0;  // in 2^-64 turn, wrapping
-  if (x < 0) {  // rotate by a half turn into the right half-plane
+  if (x < 0) {         // rotate by a half turn into the right half-plane
     x = -x;
     y = -y;
     angle = uint64_t{1} << 63;
@@ -113,8 +116,7 @@ Vec2w rotateWide(Rotation r, Vec2w v) {
   if (r.s == 0 && r.c == int64_t{1} << 30) return v;  // the anchor's frame: nothing to turn
   const i128 x = i128{r.c} * v.x - i128{r.s} * v.y;
   const i128 y = i128{r.s} * v.x + i128{r.c} * v.y;
-  return {static_cast<int64_t>(roundDiv(x, i128{1} << 30)),
-          static_cast<int64_t>(roundDiv(y, i128{1} << 30))};
+  return {static_cast<int64_t>(roundDiv(x, i128{1} << 30)), static_cast<int64_t>(roundDiv(y, i128{1} << 30))};
 }
 
 Vec2w rotateWideInverse(Rotation r, Vec2w v) { return rotateWide({r.c, -r.s}, v); }

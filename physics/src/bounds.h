@@ -15,8 +15,14 @@ inline Box sweptBox(std::span<const Vec2> verts, Vec2w m) {
     b.x0 = std::min<int64_t>(b.x0, v.x), b.x1 = std::max<int64_t>(b.x1, v.x);
     b.y0 = std::min<int64_t>(b.y0, v.y), b.y1 = std::max<int64_t>(b.y1, v.y);
   }
-  if (m.x < 0) b.x0 += m.x; else b.x1 += m.x;
-  if (m.y < 0) b.y0 += m.y; else b.y1 += m.y;
+  if (m.x < 0)
+    b.x0 += m.x;
+  else
+    b.x1 += m.x;
+  if (m.y < 0)
+    b.y0 += m.y;
+  else
+    b.y1 += m.y;
   return b;
 }
 

@@ -22,8 +22,8 @@ Convex::Convex(std::vector<Vec2> vertices) : vertices_(std::move(vertices)) {
   for (int i = 0; i < n; ++i)
     for (int j = i + 1; j < n; ++j)
       if (vertices_[i] == vertices_[j])
-        throw Error("convex shape vertex " + std::to_string(j) + " repeats vertex " +
-                    std::to_string(i) + " " + toString(vertices_[i]));
+        throw Error("convex shape vertex " + std::to_string(j) + " repeats vertex " + std::to_string(i) + " " +
+                    toString(vertices_[i]));
   // Every turn must be strictly left, and the polygon must wind exactly once.
   for (int i = 0; i < n; ++i) {
     const Vec2 a = vertices_[(i + n - 1) % n];
@@ -31,8 +31,7 @@ Convex::Convex(std::vector<Vec2> vertices) : vertices_(std::move(vertices)) {
     const Vec2 c = vertices_[(i + 1) % n];
     const int64_t turn = cross(b - a, c - b);
     if (turn == 0)
-      throw Error("convex shape vertex " + std::to_string(i) + " " + toString(b) +
-                  " is collinear with its neighbours");
+      throw Error("convex shape vertex " + std::to_string(i) + " " + toString(b) + " is collinear with its neighbours");
     if (turn < 0)
       throw Error("convex shape vertex " + std::to_string(i) + " " + toString(b) +
                   " turns clockwise: vertices must be counter-clockwise and convex");
@@ -45,15 +44,14 @@ Convex::Convex(std::vector<Vec2> vertices) : vertices_(std::move(vertices)) {
     for (int j = 0; j < n; ++j) {
       if (j == i || j == (i + 1) % n) continue;
       if (cross(b - a, vertices_[j] - a) <= 0)
-        throw Error("convex shape vertex " + std::to_string(j) + " " + toString(vertices_[j]) +
-                    " lies outside edge " + std::to_string(i) + ": the polygon is not convex");
+        throw Error("convex shape vertex " + std::to_string(j) + " " + toString(vertices_[j]) + " lies outside edge " +
+                    std::to_string(i) + ": the polygon is not convex");
     }
   }
 }
 
 std::vector<Vec2> convexHull(std::vector<Vec2> points) {
-  std::sort(points.begin(), points.end(),
-            [](Vec2 a, Vec2 b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });
+  std::sort(points.begin(), points.end(), [](Vec2 a, Vec2 b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });
   points.erase(std::unique(points.begin(), points.end()), points.end());
   if (points.size() < 3) return points;
   std::vector<Vec2> hull(2 * points.size());
@@ -82,8 +80,7 @@ Convex Convex::rotated(Angle angle) const {
     points.push_back({static_cast<int32_t>(w.x), static_cast<int32_t>(w.y)});
   }
   std::vector<Vec2> hull = convexHull(std::move(points));
-  if (hull.size() < 3)
-    throw Error("shape is too small to rotate: its rounded rotation collapses to a segment");
+  if (hull.size() < 3) throw Error("shape is too small to rotate: its rounded rotation collapses to a segment");
   return Convex(std::move(hull), Trusted{});
 }
 
@@ -99,10 +96,8 @@ Convex Convex::regular(int n, int32_t radius) {
 }
 
 Convex Convex::box(int32_t halfWidth, int32_t halfHeight) {
-  return Convex({{-halfWidth, -halfHeight},
-                 {halfWidth, -halfHeight},
-                 {halfWidth, halfHeight},
-                 {-halfWidth, halfHeight}});
+  return Convex(
+      {{-halfWidth, -halfHeight}, {halfWidth, -halfHeight}, {halfWidth, halfHeight}, {-halfWidth, halfHeight}});
 }
 
 }  // namespace platon::physics

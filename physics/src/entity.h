@@ -14,15 +14,15 @@ namespace platon::physics {
 // on each side; instance 0 (the anchor) defines the entity's frame.
 struct Instance {
   MapPartId part = 0;
-  Vec2 position;           // the entity origin in the part's coordinates
-  Angle frame = 0;         // rotation from the entity frame into this part (0 for the anchor)
-  Rotation rotation;       // rotationOf(frame)
+  Vec2 position;      // the entity origin in the part's coordinates
+  Angle frame = 0;    // rotation from the entity frame into this part (0 for the anchor)
+  Rotation rotation;  // rotationOf(frame)
   // Where a non-anchor instance should be, in Q30 (2^30 per unit): the anchor's position mapped
   // through the warps. Each sub-move aims at it, so rounding never accumulates into drift.
   Vec2w idealQ30;
-  std::vector<Vec2> shape; // vertices relative to position: the entity shape turned by angle + frame
-  std::vector<LineIndex> overlapping;  // pierceable lines whose interior this instance overlaps
-  std::vector<LineIndex> blockedWarps; // warps that could not be crossed this frame (act solid)
+  std::vector<Vec2> shape;              // vertices relative to position: the entity shape turned by angle + frame
+  std::vector<LineIndex> overlapping;   // pierceable lines whose interior this instance overlaps
+  std::vector<LineIndex> blockedWarps;  // warps that could not be crossed this frame (act solid)
   Region region;
 };
 
@@ -52,12 +52,12 @@ struct Entity {
   Entity(EntityId handle, Convex s) : id(handle), shape(std::move(s)) {}
 
   EntityId id;
-  Convex shape;               // as created, unrotated
-  Angle angle = 0;            // rotation of the shape in the entity (anchor) frame
-  Vec2w velocityQ16;          // 1/65536 units per frame, entity frame
-  Vec2w subunitQ17;           // motion below one unit (1/131072 units), carried to the next frame
+  Convex shape;                 // as created, unrotated
+  Angle angle = 0;              // rotation of the shape in the entity (anchor) frame
+  Vec2w velocityQ16;            // 1/65536 units per frame, entity frame
+  Vec2w subunitQ17;             // motion below one unit (1/131072 units), carried to the next frame
   int32_t angularVelocity = 0;  // binary-angle units per frame
-  bool gravity = true;        // the anchor part's gravity applies
+  bool gravity = true;          // the anchor part's gravity applies
   uint64_t userData = 0;
   std::vector<Instance> instances;
   std::vector<WarpLink> links;

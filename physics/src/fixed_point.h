@@ -9,7 +9,7 @@ namespace platon::physics {
 
 inline constexpr int64_t kQ16 = int64_t{1} << 16;  // velocities: 1/65536 unit per frame
 inline constexpr int64_t kQ17 = int64_t{1} << 17;  // carried remainders: 1/131072 unit
-inline constexpr int kQ30Bits = 30;                 // ideal positions and rotations
+inline constexpr int kQ30Bits = 30;                // ideal positions and rotations
 
 // A Q30 value rounded to the nearest whole unit (halves up).
 inline int64_t unitsFromQ30(int64_t q30) { return static_cast<int64_t>(roundDiv(q30, i128{1} << kQ30Bits)); }

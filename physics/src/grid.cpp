@@ -1,9 +1,9 @@
 #include "grid.h"
 
-#include "fixed_point.h"
-
 #include <algorithm>
 #include <utility>
+
+#include "fixed_point.h"
 
 namespace platon::physics {
 namespace {
@@ -178,8 +178,7 @@ void Grid::build(std::span<const Segment> segments) {
 }
 
 size_t Grid::memoryBytes() const {
-  return xAxis_.bytes() + yAxis_.bytes() +
-         (cellStart_.capacity() + cellLines_.capacity()) * sizeof(uint32_t);
+  return xAxis_.bytes() + yAxis_.bytes() + (cellStart_.capacity() + cellLines_.capacity()) * sizeof(uint32_t);
 }
 
 }  // namespace platon::physics

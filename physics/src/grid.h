@@ -53,8 +53,8 @@ class Grid {
   // Cuts along one axis, with a uniform bucket table over their range so that finding the cell of
   // a coordinate is a table read and a search among the few cuts in one bucket.
   struct Axis {
-    std::vector<int32_t> cuts;   // cell i covers [cuts[i], cuts[i+1]); the ends extend to infinity
-    std::vector<uint32_t> first; // per bucket: index of the first cut at or after the bucket's start
+    std::vector<int32_t> cuts;    // cell i covers [cuts[i], cuts[i+1]); the ends extend to infinity
+    std::vector<uint32_t> first;  // per bucket: index of the first cut at or after the bucket's start
     int64_t origin = 0;
     int shift = 0;
     void index();

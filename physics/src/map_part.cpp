@@ -14,8 +14,7 @@ MapPart& MapPart::operator=(MapPart&&) noexcept = default;
 MapPart::~MapPart() = default;
 
 void MapPart::checkOpen(const char* what) const {
-  if (initialized_)
-    throw Error(partName(id_) + ": cannot add a " + what + " after initialize()");
+  if (initialized_) throw Error(partName(id_) + ": cannot add a " + what + " after initialize()");
 }
 
 void MapPart::checkSegment(Vec2 p0, Vec2 p1, const char* what) const {
@@ -44,8 +43,7 @@ LineIndex MapPart::warp(Vec2 p0, Vec2 p1, MapPartId target, Vec2 t0, Vec2 t1, ui
   const int64_t le = static_cast<int64_t>(isqrt(static_cast<u128>(dot(e, e))));
   if (100 * std::abs(ld - le) > 200 + std::max(ld, le))
     throw Error(partName(id_) + " warp " + std::to_string(lines_.size()) + ": edge lengths differ (" +
-                std::to_string(ld) + " here, " + std::to_string(le) + " in part " +
-                std::to_string(target) + ")");
+                std::to_string(ld) + " here, " + std::to_string(le) + " in part " + std::to_string(target) + ")");
   Warp w;
   w.target = target;
   w.targetSegment = {t0, t1};
@@ -88,8 +86,8 @@ void MapPart::initialize() {
 }
 
 size_t MapPart::memoryBytes() const {
-  return lines_.capacity() * sizeof(Line) + segments_.capacity() * sizeof(Segment) +
-         warps_.capacity() * sizeof(Warp) + grid_->memoryBytes();
+  return lines_.capacity() * sizeof(Line) + segments_.capacity() * sizeof(Segment) + warps_.capacity() * sizeof(Warp) +
+         grid_->memoryBytes();
 }
 
 }  // namespace platon::physics

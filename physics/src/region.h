@@ -1,5 +1,6 @@
 // The lines near one entity instance: the union of a rectangle of grid cells, kept up to date
-// incrementally. When the rectangle moves, only the cells that enter or leave it are read; a per-line count of covering cells says when a line enters or leaves the region.
+// incrementally. When the rectangle moves, only the cells that enter or leave it are read; a per-line count of covering
+// cells says when a line enters or leaves the region.
 #pragma once
 #include <span>
 #include <vector>

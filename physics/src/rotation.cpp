@@ -13,10 +13,9 @@ namespace {
 // angle a leaves its chord by r (1 - cos(a / 2)) ~ r a^2 / 8, so a <= 2 / sqrt(r): the count is
 // ceil(|delta| * pi * r^(1/2) / 2^32), in exact integers (r^(1/2) and pi in Q32 and Q40).
 int64_t rotationSubSteps(int64_t radius2, int64_t delta) {
-
-  const uint64_t rootQ32 = isqrt(static_cast<u128>(radius2) << 64);            // r in Q32
-  const uint64_t fourthRootQ32 = isqrt(static_cast<u128>(rootQ32) << 32);     // r^(1/2) in Q32
-  constexpr uint64_t kPiQ40 = 3454217652358ull;                               // pi * 2^40, rounded
+  const uint64_t rootQ32 = isqrt(static_cast<u128>(radius2) << 64);                            // r in Q32
+  const uint64_t fourthRootQ32 = isqrt(static_cast<u128>(rootQ32) << 32);                      // r^(1/2) in Q32
+  constexpr uint64_t kPiQ40 = 3454217652358ull;                                                // pi * 2^40, rounded
   const u128 scaled = static_cast<u128>(delta < 0 ? -delta : delta) * fourthRootQ32 * kPiQ40;  // < 2^120
   const u128 unit = static_cast<u128>(1) << (32 + 32 + 40);
   const int64_t steps = static_cast<int64_t>((scaled + unit - 1) / unit);

@@ -53,8 +53,14 @@ bool copiesAtIdeal(const Entity& e) {
 class SubMove {
  public:
   SubMove(WorldImpl& world, Move& move)
-      : w_(world), move_(move), e_(move.entity), n_(e_.instances.size()), verts_(world.scratch.verts),
-        moves_(world.scratch.moves), steps_(world.scratch.steps), pierceNear_(world.scratch.pierceNear) {}
+      : w_(world),
+        move_(move),
+        e_(move.entity),
+        n_(e_.instances.size()),
+        verts_(world.scratch.verts),
+        moves_(world.scratch.moves),
+        steps_(world.scratch.steps),
+        pierceNear_(world.scratch.pierceNear) {}
 
   // 1. Each instance's motion: the anchor's own; the others move as their ideal position does (the
   //    anchor's motion turned into their frame). Closing the gap to the ideal is a separate step
@@ -230,9 +236,10 @@ class SubMove {
   void crossWarp() {
     const Vec2 start = e_.instances[hit_.instance].position;
     const Vec2w before{start.x - steps_[hit_.instance].x, start.y - steps_[hit_.instance].y};
-    const Vec2w exact{
-        (before.x << kQ30Bits) + static_cast<int64_t>(floorDiv((i128{hit_.t.num} * hitMove_.x) << kQ30Bits, hit_.t.den)),
-        (before.y << kQ30Bits) + static_cast<int64_t>(floorDiv((i128{hit_.t.num} * hitMove_.y) << kQ30Bits, hit_.t.den))};
+    const Vec2w exact{(before.x << kQ30Bits) +
+                          static_cast<int64_t>(floorDiv((i128{hit_.t.num} * hitMove_.x) << kQ30Bits, hit_.t.den)),
+                      (before.y << kQ30Bits) +
+                          static_cast<int64_t>(floorDiv((i128{hit_.t.num} * hitMove_.y) << kQ30Bits, hit_.t.den))};
     if (!w_.createWarpInstance(e_, hit_.instance, hit_.line, exact, move_.motion))
       e_.instances[hit_.instance].blockedWarps.push_back(hit_.line);
   }

@@ -45,9 +45,7 @@ inline SegmentSpan segmentSpan(std::span<const Vec2> poly, Segment seg) {
   return s;
 }
 
-inline int64_t edgeSlack(Vec2 w, Vec2w e, Segment seg) {
-  return std::min(cross(seg.a - w, e), cross(seg.b - w, e));
-}
+inline int64_t edgeSlack(Vec2 w, Vec2w e, Segment seg) { return std::min(cross(seg.a - w, e), cross(seg.b - w, e)); }
 
 }  // namespace
 

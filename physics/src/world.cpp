@@ -141,8 +141,7 @@ void World::insert(EntityId id, MapPartId partId, Vec2 origin, Angle angle) {
   const MapPart& part = w.part(partId);
   if (!part.initialized()) throw Error("insert: map part " + std::to_string(partId) + " is not initialized");
   w.checkWarpTargets();
-  if (e.instanceIn(partId))
-    throw Error("insert: entity already has an instance in map part " + std::to_string(partId));
+  if (e.instanceIn(partId)) throw Error("insert: entity already has an instance in map part " + std::to_string(partId));
   if (!inRange(origin)) throw Error("insert: origin " + toString(origin) + " is outside the coordinate range");
   const bool first = e.instances.empty();
   const Angle frame = first ? 0 : static_cast<Angle>(angle - e.angle);

@@ -19,8 +19,7 @@ std::vector<Point> box(double halfWidth, double halfHeight) {
 
 std::vector<Point> regular(int n, double radius) {
   std::vector<Point> out;
-  for (int i = 0; i < n; ++i)
-    out.push_back({radius * std::cos(2 * kPi * i / n), radius * std::sin(2 * kPi * i / n)});
+  for (int i = 0; i < n; ++i) out.push_back({radius * std::cos(2 * kPi * i / n), radius * std::sin(2 * kPi * i / n)});
   return out;
 }
 
@@ -45,8 +44,8 @@ Outcome runWarpCorner(double upm);
 
 std::vector<Scene> stabilityScenes(double offset) {
   std::vector<Scene> scenes;
-  scenes.push_back(restOnFloor("high-gravity", "100 g: a 0.5 m box dropped from 10 m onto a floor", 981, box(0.25, 0.25),
-                               10, 600));
+  scenes.push_back(
+      restOnFloor("high-gravity", "100 g: a 0.5 m box dropped from 10 m onto a floor", 981, box(0.25, 0.25), 10, 600));
   {
     Scene s;
     s.name = "max-speed";
@@ -60,7 +59,8 @@ std::vector<Scene> stabilityScenes(double offset) {
     s.allowed = [](const Pose& p) { return p.x < 1000; };
     scenes.push_back(s);
   }
-  scenes.push_back(restOnFloor("thin-stick", "a 20 m x 2 cm stick falling flat onto a floor", 9.81, box(10, 0.01), 3, 600));
+  scenes.push_back(
+      restOnFloor("thin-stick", "a 20 m x 2 cm stick falling flat onto a floor", 9.81, box(10, 0.01), 3, 600));
   scenes.push_back(restOnFloor("tiny-body", "a 3 mm triangle falling onto a floor", 9.81,
                                {{-0.0015, -0.001}, {0.0015, -0.001}, {0, 0.002}}, 1, 600));
   {
@@ -155,8 +155,8 @@ std::vector<Scene> stabilityScenes(double offset) {
     s.platonOnly = [](double upm) { return runWarpCorner(upm); };
     scenes.push_back(s);
   }
-  scenes.push_back(restOnFloor("rest-1e6", "a 0.5 m box resting on a floor for 10^6 frames", 9.81, box(0.25, 0.25), 0.25,
-                               1000000));
+  scenes.push_back(
+      restOnFloor("rest-1e6", "a 0.5 m box resting on a floor for 10^6 frames", 9.81, box(0.25, 0.25), 0.25, 1000000));
   scenes.back().settleFrames = 10;
   for (Scene& s : scenes) {
     if (offset == 0) continue;
@@ -179,7 +179,6 @@ struct TriggerCounter : Rules {
   void endContact(const Contact& c) override { ends += c.line.tag == 1; }
 };
 
-
 // Two faces of a cube (edge L = 10 m): face A's right edge is face B's bottom edge, turned a quarter.
 // A has a floor; B has the floor's continuation and a wall 0.1 m past the edge. Driven right, the
 // box crosses 0.1 m onto B and is held in the corner the floor (on A) and the wall (on B) make.
@@ -192,8 +191,8 @@ Outcome runWarpCorner(double upm) {
   a.line({0, 0}, {L, 0});
   a.warp({L, 0}, {L, L}, 2, {L, 0}, {0, 0});
   b.warp({0, 0}, {L, 0}, 1, {L, L}, {L, 0});
-  b.line({L, 0}, {L, L});           // A's floor continued onto B
-  b.line({0, wall}, {L, wall});     // the wall on B
+  b.line({L, 0}, {L, L});        // A's floor continued onto B
+  b.line({0, wall}, {L, wall});  // the wall on B
   a.setGravity({0, q16FromAcceleration(-9.81, upm, 60)});
   b.setGravity({0, q16FromAcceleration(-9.81, upm, 60)});
   a.initialize();
@@ -251,13 +250,15 @@ Outcome runPlaton(const Scene& scene, double upm, int64_t offsetUnits) {
   if (scene.platonOnly) return scene.platonOnly(upm);
   const auto t0 = std::chrono::steady_clock::now();
   auto at = [&](double x, double y) {
-    return Vec2{static_cast<int32_t>(unitsFromMetres(x, upm) + offsetUnits), static_cast<int32_t>(unitsFromMetres(y, upm) + offsetUnits)};
+    return Vec2{static_cast<int32_t>(unitsFromMetres(x, upm) + offsetUnits),
+                static_cast<int32_t>(unitsFromMetres(y, upm) + offsetUnits)};
   };
   World world;
   MapPart& part = world.createMapPart(1);
   for (const Seg& g : scene.solids) part.line(at(g[0], g[1]), at(g[2], g[3]));
   for (const Seg& g : scene.triggers) part.line(at(g[0], g[1]), at(g[2], g[3]), 1);
-  part.setGravity({q16FromAcceleration(scene.gravityX, upm, scene.hz), q16FromAcceleration(scene.gravityY, upm, scene.hz)});
+  part.setGravity(
+      {q16FromAcceleration(scene.gravityX, upm, scene.hz), q16FromAcceleration(scene.gravityY, upm, scene.hz)});
   part.initialize();
   TriggerCounter counter;
   world.setRules(&counter);
@@ -285,7 +286,8 @@ Outcome runPlaton(const Scene& scene, double upm, int64_t offsetUnits) {
   Outcome out = track.finish();
   out.triggerBegins = counter.begins;
   out.triggerEnds = counter.ends;
-  out.missedEvents = std::max(0, scene.expectedCrossings - counter.begins) + std::max(0, scene.expectedCrossings - counter.ends);
+  out.missedEvents =
+      std::max(0, scene.expectedCrossings - counter.begins) + std::max(0, scene.expectedCrossings - counter.ends);
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }

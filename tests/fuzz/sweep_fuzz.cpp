@@ -1,10 +1,9 @@
 // libFuzzer target: sweep(), overlapsInterior(), touchesOrOverlaps(), contactPoints() and the stop
 // rounding of roundedStep() against the independent exact reference (reference_geometry.h), over
 // the whole legal coordinate range. Any disagreement prints the case as C++ and traps.
-#include <fuzzer/FuzzedDataProvider.h>
-
 #include <algorithm>
 #include <cstdio>
+#include <fuzzer/FuzzedDataProvider.h>
 #include <numeric>
 #include <sstream>
 #include <string>
@@ -37,8 +36,8 @@ std::string str(const Rat<i128>& r) { return ref::toString(r.num) + "/" + ref::t
   std::ostringstream o;
   o << "sweep_fuzz MISMATCH: " << what << "\n  const std::vector<Vec2> polygon{";
   for (const Vec2 v : c.poly) o << str(wide(v)) << ", ";
-  o << "};\n  const Vec2w motion" << str(c.motion) << ";\n  const Segment segment{"
-    << str(wide(c.seg.a)) << ", " << str(wide(c.seg.b)) << "};\n";
+  o << "};\n  const Vec2w motion" << str(c.motion) << ";\n  const Segment segment{" << str(wide(c.seg.a)) << ", "
+    << str(wide(c.seg.b)) << "};\n";
   std::fputs(o.str().c_str(), stderr);
   __builtin_trap();
 }
@@ -135,16 +134,26 @@ bool decode(Decoder& in, Case& c) {
   // The motion: zero, a unit, along the segment or an edge, anything, or aimed at the segment.
   Vec2w m;
   switch (in.range(0, 6)) {
-    case 0: m = {0, 0}; break;
-    case 1: m = {in.range(-1, 1), in.range(-1, 1)}; break;
-    case 2: m = ds * in.range(-3, 3); break;
-    case 3: m = ds * in.range(1, 3) + Vec2w{in.range(-1, 1), in.range(-1, 1)}; break;
+    case 0:
+      m = {0, 0};
+      break;
+    case 1:
+      m = {in.range(-1, 1), in.range(-1, 1)};
+      break;
+    case 2:
+      m = ds * in.range(-3, 3);
+      break;
+    case 3:
+      m = ds * in.range(1, 3) + Vec2w{in.range(-1, 1), in.range(-1, 1)};
+      break;
     case 4: {
       const size_t i = in.range(0, static_cast<int64_t>(poly.size()) - 1);
       m = (poly[(i + 1) % poly.size()] - poly[i]) * in.range(-2, 2);
       break;
     }
-    case 5: m = in.vec(in.shift()); break;
+    case 5:
+      m = in.vec(in.shift());
+      break;
     default: {  // often arriving exactly at t = 1 or 1/2
       const int64_t j = in.range(0, 8);
       const Vec2w target{a.x + d.x * j / 8, a.y + d.y * j / 8};
@@ -170,8 +179,10 @@ bool decode(Decoder& in, Case& c) {
 void checkStatic(const Case& c) {
   const bool open = ref::clipSegment(c.poly, {0, 0}, c.seg.a, c.seg.b, kZero, true).hit;
   const bool closed = ref::clipSegment(c.poly, {0, 0}, c.seg.a, c.seg.b, kZero, false).hit;
-  expect(c, overlapsInterior(c.poly, c.seg) == open, "overlapsInterior disagrees with the reference (" + std::to_string(open) + ")");
-  expect(c, touchesOrOverlaps(c.poly, c.seg) == closed, "touchesOrOverlaps disagrees with the reference (" + std::to_string(closed) + ")");
+  expect(c, overlapsInterior(c.poly, c.seg) == open,
+         "overlapsInterior disagrees with the reference (" + std::to_string(open) + ")");
+  expect(c, touchesOrOverlaps(c.poly, c.seg) == closed,
+         "touchesOrOverlaps disagrees with the reference (" + std::to_string(closed) + ")");
 }
 
 void checkSweep(const Case& c) {
@@ -179,7 +190,8 @@ void checkSweep(const Case& c) {
   const Sweep s = sweep(c.poly, c.motion, c.seg);
   const bool nonEmpty = r.overlaps && (!r.bounded || r.exit > kZero);
   const bool hits = nonEmpty && r.bounded && r.enter >= kZero && r.enter < kOne;
-  const std::string interval = r.bounded ? " reference (" + str(r.enter) + ", " + str(r.exit) + ")" : " reference unbounded";
+  const std::string interval =
+      r.bounded ? " reference (" + str(r.enter) + ", " + str(r.exit) + ")" : " reference unbounded";
   expect(c, s.empty == !nonEmpty, "empty = " + std::to_string(s.empty) + interval);
   expect(c, s.hitsWithinFrame() == hits, "hitsWithinFrame = " + std::to_string(s.hitsWithinFrame()) + interval);
   expect(c, s.startsInside() == (nonEmpty && (!r.bounded || r.enter < kZero)), "startsInside wrong," + interval);
@@ -199,17 +211,24 @@ void checkSweep(const Case& c) {
     bool match = got.count == want.count;
     if (match && want.count == 1) match = at(0) == want.points[0];
     if (match && want.count == 2)
-      match = (at(0) == want.points[0] && at(1) == want.points[1]) || (at(0) == want.points[1] && at(1) == want.points[0]);
-    expect(c, match, "contactPoints (" + std::to_string(got.count) + ") differ from the reference (" + std::to_string(want.count) + ")");
+      match =
+          (at(0) == want.points[0] && at(1) == want.points[1]) || (at(0) == want.points[1] && at(1) == want.points[0]);
+    expect(c, match,
+           "contactPoints (" + std::to_string(got.count) + ") differ from the reference (" +
+               std::to_string(want.count) + ")");
   }
   if (s.hitsWithinFrame()) {
     // The world stops a move at roundedStep(): on the path's box, and never across the segment.
     const Vec2w step = roundedStep(c.motion, s.enter, &s.enterAxis);
-    const auto within = [](int64_t v, int64_t m) { return std::min<int64_t>(0, m) <= v && v <= std::max<int64_t>(0, m); };
-    expect(c, within(step.x, c.motion.x) && within(step.y, c.motion.y), "roundedStep " + str(step) + " leaves the motion's box");
+    const auto within = [](int64_t v, int64_t m) {
+      return std::min<int64_t>(0, m) <= v && v <= std::max<int64_t>(0, m);
+    };
+    expect(c, within(step.x, c.motion.x) && within(step.y, c.motion.y),
+           "roundedStep " + str(step) + " leaves the motion's box");
     std::vector<Vec2> moved;
     for (const Vec2 v : c.poly) moved.push_back(narrow(wide(v) + step));
-    expect(c, !overlapsInterior(moved, c.seg), "the polygon moved by roundedStep " + str(step) + " overlaps the segment");
+    expect(c, !overlapsInterior(moved, c.seg),
+           "the polygon moved by roundedStep " + str(step) + " overlaps the segment");
     expect(c, !ref::clipSegment(moved, {0, 0}, c.seg.a, c.seg.b, kZero, true).hit,
            "reference: the polygon moved by roundedStep " + str(step) + " overlaps the segment");
   }

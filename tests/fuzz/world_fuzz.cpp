@@ -7,12 +7,11 @@
 //
 // A failure re-runs the input with tracing on, which prints the calls as C++ (also available as
 // PLATON_FUZZ_TRACE=1 world_fuzz <input file>).
-#include <fuzzer/FuzzedDataProvider.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fuzzer/FuzzedDataProvider.h>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -66,7 +65,8 @@ bool attempt(const char* what, F&& call) {
 }
 
 Vec2 clampToRange(Vec2w p) {
-  return {static_cast<int32_t>(std::clamp(p.x, -kLimit, kLimit)), static_cast<int32_t>(std::clamp(p.y, -kLimit, kLimit))};
+  return {static_cast<int32_t>(std::clamp(p.x, -kLimit, kLimit)),
+          static_cast<int32_t>(std::clamp(p.y, -kLimit, kLimit))};
 }
 
 // Turns fuzzer bytes into values. Most are relative to the room's half-size, so that entities fit
@@ -79,7 +79,9 @@ class Decoder {
   bool flag() { return in_.ConsumeBool(); }
   bool oneIn(int n) { return range(1, n) == 1; }
   template <class T>
-  T any() { return in_.ConsumeIntegral<T>(); }
+  T any() {
+    return in_.ConsumeIntegral<T>();
+  }
   int shift(int max) { return static_cast<int>(range(0, max)); }
   // A signed value at scale 2^shift plus fine noise: small and huge magnitudes are equally easy.
   int64_t scaled(int shift) { return (int64_t{any<int16_t>()} << shift) + any<int8_t>(); }
@@ -177,10 +179,17 @@ void buildMap(Decoder& in, World& world, FuzzRules& rules) {
       const Vec2 a = in.point();
       Vec2 b = in.point();
       switch (in.range(0, 3)) {  // the hard cases: axis-aligned, short, sharing an endpoint
-        case 0: b.y = a.y; break;
-        case 1: b = clampToRange(Vec2w{a.x + in.range(-8, 8), a.y + in.range(-8, 8)}); break;
-        case 2: if (!part.segments().empty()) b = part.segments().back().b; break;
-        default: break;
+        case 0:
+          b.y = a.y;
+          break;
+        case 1:
+          b = clampToRange(Vec2w{a.x + in.range(-8, 8), a.y + in.range(-8, 8)});
+          break;
+        case 2:
+          if (!part.segments().empty()) b = part.segments().back().b;
+          break;
+        default:
+          break;
       }
       line(a, b, static_cast<uint32_t>(in.range(0, 7)));
     }
@@ -200,8 +209,9 @@ void buildMap(Decoder& in, World& world, FuzzRules& rules) {
   rules.throwOnContact = in.oneIn(8);
   // Before any insert: pierce() must not change while an instance overlaps the line.
   world.setRules(&rules);
-  trace("world.setRules(&rules);  // pierceTags ", int{rules.pierceTags}, " solidWarps ", rules.solidWarps, " noSlide ", rules.noSlide,
-        " keepNormalVelocity ", rules.keepNormalVelocity, " bounce ", rules.bounce, " throwOnContact ", rules.throwOnContact);
+  trace("world.setRules(&rules);  // pierceTags ", int{rules.pierceTags}, " solidWarps ", rules.solidWarps, " noSlide ",
+        rules.noSlide, " keepNormalVelocity ", rules.keepNormalVelocity, " bounce ", rules.bounce, " throwOnContact ",
+        rules.throwOnContact);
 }
 
 std::vector<Vec2> decodeShape(Decoder& in) {
@@ -256,7 +266,8 @@ struct Scene {
     const Convex& shape = world.entity(id).shape();
     int64_t radius2 = 1;
     for (const Vec2 v : shape.vertices()) radius2 = std::max(radius2, dot(wide(v), wide(v)));
-    const double steps = work / shape.size(), radians = steps * 2.0 / std::sqrt(std::sqrt(static_cast<double>(radius2)));
+    const double steps = work / shape.size(),
+                 radians = steps * 2.0 / std::sqrt(std::sqrt(static_cast<double>(radius2)));
     const auto most = static_cast<int64_t>(std::min(radians / (2 * 3.141592653589793) * 4294967296.0, 2147483647.0));
     return std::clamp(turn, -most, most);
   }
@@ -266,8 +277,9 @@ struct Scene {
     attempt("setAngularVelocity", [&] { world.setAngularVelocity(id, w); });
   }
   void rotate(EntityId id) {
-    const Angle a = world.valid(id) ? static_cast<Angle>(world.entity(id).angle() + affordableTurn(id, in.any<int32_t>(), 2048))
-                                    : in.any<Angle>();
+    const Angle a = world.valid(id)
+                        ? static_cast<Angle>(world.entity(id).angle() + affordableTurn(id, in.any<int32_t>(), 2048))
+                        : in.any<Angle>();
     trace("world.rotate(", name(id), ", ", a, ");");
     attempt("rotate", [&] { world.rotate(id, a); });
   }
@@ -318,7 +330,9 @@ struct Scene {
         fail("frame " + std::to_string(frame) + ": " + name(id) + " moves faster than setVelocity allows");
       for (const InstanceView inst : e.instances())
         for (const Vec2 v : inst.shape)
-          if (std::max(std::abs(int64_t{inst.position.x} + v.x), std::abs(int64_t{inst.position.y} + v.y)) > kCoordLimit) fail("frame " + std::to_string(frame) + ": " + name(id) + " has a vertex out of range");
+          if (std::max(std::abs(int64_t{inst.position.x} + v.x), std::abs(int64_t{inst.position.y} + v.y)) >
+              kCoordLimit)
+            fail("frame " + std::to_string(frame) + ": " + name(id) + " has a vertex out of range");
     }
   }
 
@@ -336,7 +350,8 @@ struct Scene {
     }
     checkInvariants(frame);
     for (const EntityId id : placed)
-      if (!world.entity(id).inserted()) fail("frame " + std::to_string(frame) + ": " + name(id) + " lost all its instances");
+      if (!world.entity(id).inserted())
+        fail("frame " + std::to_string(frame) + ": " + name(id) + " lost all its instances");
   }
 };
 
@@ -356,11 +371,24 @@ void run(const uint8_t* data, size_t size) {
       for (int64_t n = in.range(0, 3); n > 0; --n) {  // a few calls between frames
         const EntityId id = scene.pick();
         switch (in.range(0, 7)) {
-          case 0: case 1: scene.setVelocity(id); break;
-          case 2: scene.setAngularVelocity(id); break;
-          case 3: case 4: scene.rotate(id); break;
-          case 5: case 6: scene.eraseOrInsert(id); break;
-          default: scene.destroy(id); break;
+          case 0:
+          case 1:
+            scene.setVelocity(id);
+            break;
+          case 2:
+            scene.setAngularVelocity(id);
+            break;
+          case 3:
+          case 4:
+            scene.rotate(id);
+            break;
+          case 5:
+          case 6:
+            scene.eraseOrInsert(id);
+            break;
+          default:
+            scene.destroy(id);
+            break;
         }
       }
       scene.step(frame, rules);

@@ -1,8 +1,8 @@
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+
+#include <gtest/gtest.h>
 
 #include "platon/physics/convex.h"
 #include "platon/physics/fraction.h"

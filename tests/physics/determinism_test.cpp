@@ -1,7 +1,7 @@
 // Same inputs, same bits: two worlds stepped side by side hash alike; a one-unit change shows.
-#include <gtest/gtest.h>
-
 #include <random>
+
+#include <gtest/gtest.h>
 
 #include "platon/physics/world.h"
 

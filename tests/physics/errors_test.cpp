@@ -1,7 +1,7 @@
 // Every misuse gets a clear error that names the bad value, and leaves the world unchanged.
-#include <gtest/gtest.h>
-
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "platon/physics/world.h"
 

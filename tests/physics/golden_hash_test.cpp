@@ -6,11 +6,11 @@
 // every build (Release, Debug, ASan+UBSan, gcc or clang) show that no result depends on the build.
 // A change that is meant to change motion updates the table: run with PLATON_PRINT_GOLDEN=1 and
 // say in the commit why the motion changed.
-#include <gtest/gtest.h>
-
 #include <cstdio>
 #include <cstdlib>
 #include <random>
+
+#include <gtest/gtest.h>
 
 #include "platon/physics/world.h"
 
@@ -93,8 +93,7 @@ uint64_t runRandomMap(uint64_t seed, bool withRules) {
         if (i % 3 == 0) world.setAngularVelocity(id, in(rng, -30000000, 30000000));
         ids.push_back(id);
         break;
-      } catch (const Error&) {
-      }
+      } catch (const Error&) {}
     }
   }
   Fold fold;
@@ -153,8 +152,7 @@ uint64_t runWarpAngle(int64_t degrees, uint64_t seed) {
         world.setVelocity(id, {in(rng, -20, 60) * kUnit, in(rng, -30, 30) * kUnit});
         if (i == 2) world.setAngularVelocity(id, 5000000);
         break;
-      } catch (const Error&) {
-      }
+      } catch (const Error&) {}
     }
   }
   Fold fold;
@@ -182,8 +180,8 @@ uint64_t runCube(uint64_t seed) {
       for (int g = 0; g < 6; ++g)
         for (int j = 0; j < 4; ++j)
           if (faces[g][j] == v && faces[g][(j + 1) % 4] == u)
-            world.mapPart(static_cast<MapPartId>(f)).warp(c[i], c[(i + 1) % 4], static_cast<MapPartId>(g),
-                                                           c[(j + 1) % 4], c[j]);
+            world.mapPart(static_cast<MapPartId>(f))
+                .warp(c[i], c[(i + 1) % 4], static_cast<MapPartId>(g), c[(j + 1) % 4], c[j]);
     }
   for (int f = 0; f < 6; ++f) {
     MapPart& part = world.mapPart(static_cast<MapPartId>(f));
@@ -203,15 +201,15 @@ uint64_t runCube(uint64_t seed) {
         world.insert(id, static_cast<MapPartId>(i), {in(rng, 100, s - 100), in(rng, 100, s - 100)}, 0);
         ids.push_back(id);
         break;
-      } catch (const Error&) {
-      }
+      } catch (const Error&) {}
     }
   }
   Fold fold;
   for (int f = 1; f <= 1500; ++f) {
     for (size_t k = 0; k < ids.size(); ++k) {  // keep them moving along their face's x axis
       const int64_t vy = world.entity(ids[k]).velocity().y;
-      if (f % 60 == static_cast<int>(k)) world.setVelocity(ids[k], {(f / 300 + static_cast<int>(k)) % 2 ? 20 * kUnit : -20 * kUnit, vy + 10 * kUnit});
+      if (f % 60 == static_cast<int>(k))
+        world.setVelocity(ids[k], {(f / 300 + static_cast<int>(k)) % 2 ? 20 * kUnit : -20 * kUnit, vy + 10 * kUnit});
     }
     activity.add(world.solve());
     if (f % 25 == 0) fold.add(world.stateHash());

@@ -1,10 +1,10 @@
 // The grid never misses a line, and the incremental region always equals a fresh scan.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <random>
 #include <set>
+
+#include <gtest/gtest.h>
 
 #include "region.h"  // internal: linked through platon_physics_internals
 

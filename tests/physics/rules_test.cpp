@@ -1,9 +1,9 @@
 // Rules: pierceable lines and their events, solid contacts and their responses, errors thrown from
 // callbacks, structural changes refused during solve.
-#include <gtest/gtest.h>
-
 #include <string>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "platon/physics/world.h"
 
@@ -15,9 +15,7 @@ constexpr uint32_t kTriggerTag = 7;
 
 struct Recorder : Rules {
   std::vector<std::string> log;
-  bool pierce(EntityId, const LineRef& line) override {
-    return line.kind == LineKind::Warp || line.tag == kTriggerTag;
-  }
+  bool pierce(EntityId, const LineRef& line) override { return line.kind == LineKind::Warp || line.tag == kTriggerTag; }
   void beginContact(const Contact& c) override { log.push_back("begin " + std::to_string(c.line.index)); }
   void overContact(const Contact& c) override { log.push_back("over " + std::to_string(c.line.index)); }
   void endContact(const Contact& c) override { log.push_back("end " + std::to_string(c.line.index)); }
@@ -55,8 +53,7 @@ TEST(Rules, OverContactEveryFrameWhileInside) {
   world.setVelocity(box, {2 * kUnit, 0});
   for (int i = 0; i < 12; ++i) world.solve();
   // The right edge passes x = 10 on frame 3, the left edge on frame 8: overlapping after frames 3-7.
-  const std::vector<std::string> expected = {"begin 0", "over 0", "over 0", "over 0",
-                                             "over 0",  "over 0", "end 0"};
+  const std::vector<std::string> expected = {"begin 0", "over 0", "over 0", "over 0", "over 0", "over 0", "end 0"};
   EXPECT_EQ(rules.log, expected);
 }
 
@@ -128,7 +125,9 @@ TEST(Rules, AnErrorInACallbackLeavesTheWorldWholeAndIsRethrown) {
   part.line({-1000, 0}, {1000, 0});
   part.initialize();
   struct Throwing : Rules {
-    void contact(const Contact&, ContactResponse&) override { throw std::runtime_error("script error at level.lua:12"); }
+    void contact(const Contact&, ContactResponse&) override {
+      throw std::runtime_error("script error at level.lua:12");
+    }
   } throwing;
   world.setRules(&throwing);
   const EntityId box = world.createEntity(Convex::box(10, 10));

@@ -1,8 +1,8 @@
 // The stiff and extreme scenes (tests/scenes): Platon's outcome must be perfect on each, at the
 // origin and pressed against both ends of the coordinate range.
-#include <gtest/gtest.h>
-
 #include <cmath>
+
+#include <gtest/gtest.h>
 
 #include "platon/physics/vec2.h"
 #include "platon/testing/stability_scenes.h"
@@ -54,6 +54,4 @@ INSTANTIATE_TEST_SUITE_P(Scenes, Stability,
                            return n;
                          });
 
-TEST(StabilityScenes, EverySceneIsCovered) {
-  EXPECT_EQ(stabilityScenes().size(), 14u);
-}
+TEST(StabilityScenes, EverySceneIsCovered) { EXPECT_EQ(stabilityScenes().size(), 14u); }

@@ -3,14 +3,14 @@
 //
 // Every case is drawn from std::mt19937_64 with a fixed, printed seed (override with the
 // environment variable PLATON_SWEEP_SEED); a failing case is printed in full.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <bit>
 #include <cstdlib>
 #include <iostream>
 #include <random>
 #include <sstream>
+
+#include <gtest/gtest.h>
 
 #include "platon/physics/convex.h"
 #include "platon/physics/sweep.h"
@@ -32,8 +32,8 @@ std::string describe(const Case& c) {
   std::ostringstream o;
   o << "\n  polygon {";
   for (const Vec2 v : c.poly) o << "{" << v.x << ", " << v.y << "}, ";
-  o << "}\n  motion {" << c.motion.x << ", " << c.motion.y << "}\n  segment {{" << c.seg.a.x << ", "
-    << c.seg.a.y << "}, {" << c.seg.b.x << ", " << c.seg.b.y << "}}";
+  o << "}\n  motion {" << c.motion.x << ", " << c.motion.y << "}\n  segment {{" << c.seg.a.x << ", " << c.seg.a.y
+    << "}, {" << c.seg.b.x << ", " << c.seg.b.y << "}}";
   return o.str();
 }
 
@@ -60,9 +60,7 @@ class CaseGen {
       std::vector<Vec2w> poly;
       Vec2w a, b, m;
       build(poly, a, b, m);
-      const auto in = [&](Vec2w p) {
-        return std::max(std::abs(p.x), std::abs(p.y)) <= coordLimit_;
-      };
+      const auto in = [&](Vec2w p) { return std::max(std::abs(p.x), std::abs(p.y)) <= coordLimit_; };
       if (!std::all_of(poly.begin(), poly.end(), in) || !in(a) || !in(b) || a == b) continue;
       if (std::max(std::abs(m.x), std::abs(m.y)) > moveLimit_) continue;
       Case c{{}, m, {narrow(a), narrow(b)}};
@@ -73,17 +71,15 @@ class CaseGen {
 
  private:
   static Vec2 narrow(Vec2w p) { return {static_cast<int32_t>(p.x), static_cast<int32_t>(p.y)}; }
-  int64_t uni(int64_t lo, int64_t hi) {
-    return std::uniform_int_distribution<int64_t>(lo, hi)(rng_);
-  }
+  int64_t uni(int64_t lo, int64_t hi) { return std::uniform_int_distribution<int64_t>(lo, hi)(rng_); }
   bool oneIn(int64_t n) { return uni(1, n) == 1; }
   Vec2w randVec(int64_t r) { return {uni(-r, r), uni(-r, r)}; }
   // Log-uniform magnitude in [1, limit]: tiny shapes (rich in lattice coincidences) are as common
   // as huge ones. At the full range, half the draws come from the top 3 bits to stress overflow.
   int64_t size(int64_t limit) {
     const int64_t width = std::bit_width(static_cast<uint64_t>(limit));
-    const int bits = static_cast<int>(
-        uni(coordLimit_ > (1 << 20) && oneIn(2) ? std::max<int64_t>(0, width - 3) : 0, width - 1));
+    const int bits =
+        static_cast<int>(uni(coordLimit_ > (1 << 20) && oneIn(2) ? std::max<int64_t>(0, width - 3) : 0, width - 1));
     return std::min(limit, uni(int64_t{1} << bits, (int64_t{2} << bits) - 1));
   }
   Vec2w clamp(Vec2w p) const {
@@ -97,8 +93,7 @@ class CaseGen {
     for (;;) {
       std::vector<Vec2> pts;
       if (oneIn(8) && radius >= 64 && radius <= kShapeLimit) {
-        const Convex regular =
-            Convex::regular(static_cast<int>(uni(3, 64)), static_cast<int32_t>(radius));
+        const Convex regular = Convex::regular(static_cast<int>(uni(3, 64)), static_cast<int32_t>(radius));
         pts.assign(regular.vertices().begin(), regular.vertices().end());
       } else {
         for (int64_t k = uni(3, 12); k > 0; --k) pts.push_back(narrow(randVec(radius)));
@@ -109,16 +104,14 @@ class CaseGen {
       std::vector<Vec2w> out;
       for (const Vec2 v : pts) out.push_back(center + wide(v));
       // Any vertex may come first: hulls always start at the lowest x, callers need not.
-      std::rotate(out.begin(), out.begin() + uni(0, static_cast<int64_t>(out.size()) - 1),
-                  out.end());
+      std::rotate(out.begin(), out.begin() + uni(0, static_cast<int64_t>(out.size()) - 1), out.end());
       return out;
     }
   }
 
   void build(std::vector<Vec2w>& poly, Vec2w& a, Vec2w& b, Vec2w& m) {
     const bool fullRange = coordLimit_ > kShapeLimit && oneIn(8);  // edges up to 2^31 - 2
-    const int64_t r =
-        fullRange ? coordLimit_ : size(std::min<int64_t>(coordLimit_ / 2, kShapeLimit));
+    const int64_t r = fullRange ? coordLimit_ : size(std::min<int64_t>(coordLimit_ / 2, kShapeLimit));
     const Vec2w center = fullRange  ? Vec2w{0, 0}
                          : oneIn(8) ? Vec2w{coordLimit_ - r, -(coordLimit_ - r)}
                                     : randVec(coordLimit_ - r);
@@ -197,8 +190,8 @@ class CaseGen {
 uint64_t seedFor(uint64_t fallback) {
   const char* env = std::getenv("PLATON_SWEEP_SEED");
   const uint64_t seed = env ? std::strtoull(env, nullptr, 0) : fallback;
-  std::cout << "[   SEED   ] " << ::testing::UnitTest::GetInstance()->current_test_info()->name()
-            << " seed = " << seed << " (set PLATON_SWEEP_SEED to change)\n";
+  std::cout << "[   SEED   ] " << ::testing::UnitTest::GetInstance()->current_test_info()->name() << " seed = " << seed
+            << " (set PLATON_SWEEP_SEED to change)\n";
   return seed;
 }
 
@@ -220,15 +213,13 @@ void checkStatic(const Case& c, Checker& k) {
   k.expect(r.overlapsAtZero == openClip, "REFERENCE self-check: interior overlap at t=0 differs");
   k.expect(r.touchesAtZero == closedClip, "REFERENCE self-check: touching at t=0 differs");
   const bool over = overlapsInterior(c.poly, c.seg), touch = touchesOrOverlaps(c.poly, c.seg);
-  k.expect(over == openClip, "overlapsInterior = " + std::to_string(over) + ", reference " +
-                                 std::to_string(openClip));
-  k.expect(touch == closedClip, "touchesOrOverlaps = " + std::to_string(touch) + ", reference " +
-                                    std::to_string(closedClip));
+  k.expect(over == openClip, "overlapsInterior = " + std::to_string(over) + ", reference " + std::to_string(openClip));
+  k.expect(touch == closedClip,
+           "touchesOrOverlaps = " + std::to_string(touch) + ", reference " + std::to_string(closedClip));
 }
 
 struct Stats {
-  int cases = 0, nonEmpty = 0, hits = 0, startsInside = 0, touchingAtStart = 0, vertexEntries = 0,
-      stretches = 0;
+  int cases = 0, nonEmpty = 0, hits = 0, startsInside = 0, touchingAtStart = 0, vertexEntries = 0, stretches = 0;
 };
 
 void checkSweep(const Case& c, Checker& k, Stats& stats) {
@@ -237,10 +228,9 @@ void checkSweep(const Case& c, Checker& k, Stats& stats) {
   const bool nonEmpty = r.overlaps && (!r.bounded || r.exit > kZero);
   const bool hits = nonEmpty && r.bounded && r.enter >= kZero && r.enter < kOne;
   const bool inside = nonEmpty && (!r.bounded || r.enter < kZero);
-  k.expect(s.empty == !nonEmpty,
-           "empty = " + std::to_string(s.empty) + ", reference interval " +
-               (r.bounded ? "(" + str(r.enter) + ", " + str(r.exit) + ")" : "unbounded") +
-               " overlaps=" + std::to_string(r.overlaps));
+  k.expect(s.empty == !nonEmpty, "empty = " + std::to_string(s.empty) + ", reference interval " +
+                                     (r.bounded ? "(" + str(r.enter) + ", " + str(r.exit) + ")" : "unbounded") +
+                                     " overlaps=" + std::to_string(r.overlaps));
   k.expect(s.hitsWithinFrame() == hits, "hitsWithinFrame = " + std::to_string(s.hitsWithinFrame()));
   k.expect(s.startsInside() == inside, "startsInside = " + std::to_string(s.startsInside()));
   stats.cases++, stats.nonEmpty += nonEmpty, stats.hits += hits, stats.startsInside += inside;
@@ -262,10 +252,8 @@ void checkSweep(const Case& c, Checker& k, Stats& stats) {
       stats.vertexEntries += r.enterNormals.size() > 1;
 
       // Contacts at the exact entry time: the closed sets touch, the interiors do not yet.
-      const ref::RefContact want =
-          ref::referenceContact(c.poly, c.motion, c.seg.a, c.seg.b, r.enter);
-      k.expect(want.count > 0 &&
-                   !ref::clipSegment(c.poly, c.motion, c.seg.a, c.seg.b, r.enter, true).hit,
+      const ref::RefContact want = ref::referenceContact(c.poly, c.motion, c.seg.a, c.seg.b, r.enter);
+      k.expect(want.count > 0 && !ref::clipSegment(c.poly, c.motion, c.seg.a, c.seg.b, r.enter, true).hit,
                "REFERENCE self-check: no clean touch at the entry time");
       const ContactPoints got = contactPoints(c.poly, c.motion, c.seg, s);
       const auto at = [&](int i) { return wide(got.points[i]); };
@@ -277,8 +265,7 @@ void checkSweep(const Case& c, Checker& k, Stats& stats) {
       std::string gotS, wantS;
       for (int i = 0; i < got.count; ++i) gotS += " " + str(at(i));
       for (int i = 0; i < want.count; ++i) wantS += " " + str(want.points[i]);
-      k.expect(match,
-               "contactPoints =" + gotS + ", reference" + wantS + " (enter " + str(r.enter) + ")");
+      k.expect(match, "contactPoints =" + gotS + ", reference" + wantS + " (enter " + str(r.enter) + ")");
       stats.stretches += want.count == 2;
     }
   }
@@ -314,10 +301,9 @@ void runCases(uint64_t seed, int count, int64_t coordLimit, int64_t moveLimit, C
 }
 
 void printStats(const Stats& s) {
-  std::cout << "[  STATS   ] cases " << s.cases << ", non-empty " << s.nonEmpty
-            << ", hits in frame " << s.hits << ", starting inside " << s.startsInside
-            << ", touching at t=0 " << s.touchingAtStart << ", vertex entries " << s.vertexEntries
-            << ", shared stretches " << s.stretches << "\n";
+  std::cout << "[  STATS   ] cases " << s.cases << ", non-empty " << s.nonEmpty << ", hits in frame " << s.hits
+            << ", starting inside " << s.startsInside << ", touching at t=0 " << s.touchingAtStart
+            << ", vertex entries " << s.vertexEntries << ", shared stretches " << s.stretches << "\n";
 }
 
 }  // namespace
@@ -387,8 +373,7 @@ TEST(SweepPropertyReference, HandCheckedCases) {
 // Main run: |coordinate| <= 2^20, |motion component| <= 2^22.
 TEST(SweepProperty, MatchesReference) {
   Stats stats;
-  runCases(seedFor(0x5eed'0001), 20000, 1 << 20, 1 << 22,
-           [&](const Case& c, Checker& k) { checkSweep(c, k, stats); });
+  runCases(seedFor(0x5eed'0001), 20000, 1 << 20, 1 << 22, [&](const Case& c, Checker& k) { checkSweep(c, k, stats); });
   printStats(stats);
 }
 
@@ -401,10 +386,9 @@ TEST(SweepProperty, StaticPredicatesMatchReference) {
 // reference_geometry.h; its products are overflow-checked).
 TEST(SweepProperty, LargeCoordinates) {
   Stats stats;
-  runCases(seedFor(0x5eed'0003), 5000, kCoordLimit, (int64_t{1} << 31) - 2,
-           [&](const Case& c, Checker& k) {
-             checkStatic(c, k);
-             checkSweep(c, k, stats);
-           });
+  runCases(seedFor(0x5eed'0003), 5000, kCoordLimit, (int64_t{1} << 31) - 2, [&](const Case& c, Checker& k) {
+    checkStatic(c, k);
+    checkSweep(c, k, stats);
+  });
   printStats(stats);
 }

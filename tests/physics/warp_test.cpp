@@ -1,9 +1,9 @@
 // Crossing warp edges: instances on both sides, exact quarter turns, rotated frames, blocked edges.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <random>
 #include <thread>
+
+#include <gtest/gtest.h>
 
 #include "platon/physics/world.h"
 #include "platon/testing/si_units.h"
@@ -166,12 +166,13 @@ TEST(Warp, EdgesAtAnyAngleKeepTheInvariant) {
         const EntityId id = world.createEntity(Convex::regular(3 + i, 40 + 20 * i));
         for (int tries = 0; tries < 50; ++tries) {
           try {
-            world.insert(id, 1, {300 + static_cast<int32_t>(rng() % 5400), 300 + static_cast<int32_t>(rng() % 5400)}, static_cast<Angle>(rng()));
-            world.setVelocity(id, {static_cast<int64_t>(rng() % (80 * 65536)) - 20 * 65536, static_cast<int64_t>(rng() % (60 * 65536)) - 30 * 65536});
+            world.insert(id, 1, {300 + static_cast<int32_t>(rng() % 5400), 300 + static_cast<int32_t>(rng() % 5400)},
+                         static_cast<Angle>(rng()));
+            world.setVelocity(id, {static_cast<int64_t>(rng() % (80 * 65536)) - 20 * 65536,
+                                   static_cast<int64_t>(rng() % (60 * 65536)) - 30 * 65536});
             ids.push_back(id);
             break;
-          } catch (const Error&) {
-          }
+          } catch (const Error&) {}
         }
       }
       for (int f = 0; f < 400; ++f) {
@@ -185,8 +186,8 @@ TEST(Warp, EdgesAtAnyAngleKeepTheInvariant) {
             // (B's frame is A's turned by `degrees` about the origin). Rounding the edge's
             // endpoints allows about a unit; a copy held back by a wall on its side may lag more.
             const InstanceView anchor = e.instance(0), copy = e.instance(i);
-            const Vec2w exact = anchor.part == 1 ? rotateWide(r, wide(anchor.position))
-                                                 : rotateWideInverse(r, wide(anchor.position));
+            const Vec2w exact =
+                anchor.part == 1 ? rotateWide(r, wide(anchor.position)) : rotateWideInverse(r, wide(anchor.position));
             const int64_t dx = copy.position.x - exact.x, dy = copy.position.y - exact.y;
             ++copyFrames;
             if (std::abs(dx) > 3 || std::abs(dy) > 3) ++lagging;
@@ -260,10 +261,12 @@ TEST(Warp, WalkingAcrossTurnedEdgesOntoAContinuingFloor) {
         const int frames = static_cast<int>(2.5 * hz);
         for (int f = 0; f < frames; ++f) {
           world.solve();
-          ASSERT_EQ(world.countOverlaps(), 0u) << degrees << " degrees, " << upm << " u/m, " << hz << " Hz, frame " << f;
+          ASSERT_EQ(world.countOverlaps(), 0u)
+              << degrees << " degrees, " << upm << " u/m, " << hz << " Hz, frame " << f;
         }
         const EntityView e = world.entity(box);
         EXPECT_EQ(e.instanceCount(), 1u) << degrees << " degrees, " << upm << " u/m, " << hz << " Hz";
-        EXPECT_EQ(e.instance(0).part, 2u) << degrees << " degrees, " << upm << " u/m, " << hz << " Hz: stopped at the edge";
+        EXPECT_EQ(e.instance(0).part, 2u)
+            << degrees << " degrees, " << upm << " u/m, " << hz << " Hz: stopped at the edge";
       }
 }

@@ -1,8 +1,8 @@
 // The invariant, by random trial: no instance ever overlaps the interior of a solid line, whatever
 // the map, shapes, speeds, rotations and warps. Seeded, so any failure replays.
-#include <gtest/gtest.h>
-
 #include <random>
+
+#include <gtest/gtest.h>
 
 #include "platon/physics/world.h"
 
@@ -17,8 +17,8 @@ Convex randomConvex(std::mt19937_64& rng, int32_t size) {
     std::vector<Vec2> points;
     const int n = 3 + static_cast<int>(rng() % 8);
     for (int i = 0; i < n; ++i)
-      points.push_back({static_cast<int32_t>(rng() % (2 * size + 1)) - size,
-                        static_cast<int32_t>(rng() % (2 * size + 1)) - size});
+      points.push_back(
+          {static_cast<int32_t>(rng() % (2 * size + 1)) - size, static_cast<int32_t>(rng() % (2 * size + 1)) - size});
     std::vector<Vec2> hull = convexHull(points);
     if (hull.size() >= 3) return Convex(hull);
   }
@@ -33,10 +33,17 @@ void addRandomLines(std::mt19937_64& rng, MapPart& part, int count, int32_t half
     const Vec2 a = randomPoint(rng, half);
     Vec2 b = randomPoint(rng, half);
     switch (rng() % 4) {  // bias towards the hard cases: axis lines, short lines, shared endpoints
-      case 0: b.y = a.y; break;
-      case 1: b = {a.x + static_cast<int32_t>(rng() % 21) - 10, a.y + static_cast<int32_t>(rng() % 21) - 10}; break;
-      case 2: if (!part.segments().empty()) b = part.segments().back().b; break;
-      default: break;
+      case 0:
+        b.y = a.y;
+        break;
+      case 1:
+        b = {a.x + static_cast<int32_t>(rng() % 21) - 10, a.y + static_cast<int32_t>(rng() % 21) - 10};
+        break;
+      case 2:
+        if (!part.segments().empty()) b = part.segments().back().b;
+        break;
+      default:
+        break;
     }
     if (a == b) continue;
     part.line(a, b);
@@ -56,8 +63,7 @@ bool insertSomewhere(std::mt19937_64& rng, World& world, EntityId id, MapPartId 
     try {
       world.insert(id, part, randomPoint(rng, half), static_cast<Angle>(rng()));
       return true;
-    } catch (const Error&) {
-    }
+    } catch (const Error&) {}
   }
   return false;
 }
@@ -143,11 +149,11 @@ TEST(WorldProperty, RandomWarpingNeverOverlaps) {
       const EntityId id = world.createEntity(randomConvex(rng, 10 + static_cast<int32_t>(rng() % 60)));
       for (int tries = 0; tries < 60; ++tries) {
         try {
-          world.insert(id, 1, {static_cast<int32_t>(rng() % (s - 200)) + 100, static_cast<int32_t>(rng() % (s - 200)) + 100}, 0);
+          world.insert(
+              id, 1, {static_cast<int32_t>(rng() % (s - 200)) + 100, static_cast<int32_t>(rng() % (s - 200)) + 100}, 0);
           ids.push_back(id);
           break;
-        } catch (const Error&) {
-        }
+        } catch (const Error&) {}
       }
     }
     for (int f = 0; f < 300; ++f) {

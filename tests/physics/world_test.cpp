@@ -1,9 +1,9 @@
 // Behaviour of the world step: landing, resting, sliding, corners, wedges, limits.
-#include <gtest/gtest.h>
+#include "platon/physics/world.h"
 
 #include <cmath>
 
-#include "platon/physics/world.h"
+#include <gtest/gtest.h>
 
 using namespace platon::physics;
 

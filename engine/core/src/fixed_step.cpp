@@ -14,7 +14,7 @@ FixedStep::FixedStep(int hz, int maxSteps) : hz_(hz), maxSteps_(maxSteps) {
 }
 
 int FixedStep::advance(int64_t nanoseconds) {
-  if (nanoseconds < 0) nanoseconds = 0;                 // a clock that went back: no time passed
+  if (nanoseconds < 0) nanoseconds = 0;                        // a clock that went back: no time passed
   if (nanoseconds > 10 * kSecond) nanoseconds = 10 * kSecond;  // a suspended process: cap the catch-up
   owed_ += nanoseconds * hz_;
   int64_t steps = owed_ / kSecond;

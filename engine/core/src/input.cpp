@@ -4,7 +4,7 @@
 
 namespace platon::core {
 namespace {
-constexpr std::array<std::string_view, kButtonCount> kNames{"left", "right", "up", "down",
+constexpr std::array<std::string_view, kButtonCount> kNames{"left", "right",   "up",    "down",
                                                             "jump", "restart", "pause", "reload"};
 }  // namespace
 

@@ -16,7 +16,8 @@ std::vector<std::vector<int>> faceCycles(SolidType type) {
     case SolidType::Hexahedron:
       return {{5, 4, 6, 7}, {2, 0, 1, 3}, {6, 2, 3, 7}, {1, 0, 4, 5}, {3, 1, 5, 7}, {4, 0, 2, 6}};
     default:
-      throw std::invalid_argument("solid nets for the octahedron, icosahedron and dodecahedron come with the level loader");
+      throw std::invalid_argument(
+          "solid nets for the octahedron, icosahedron and dodecahedron come with the level loader");
   }
 }
 
@@ -53,9 +54,9 @@ SolidNet buildSolidNet(physics::World& world, SolidType type, int32_t edgeLength
         const auto& other = faces[g];
         for (size_t j = 0; j < other.size(); ++j) {
           if (other[j] != v || other[(j + 1) % other.size()] != u) continue;
-          world.mapPart(net.parts[f]).warp(net.corners[f][i], net.corners[f][(i + 1) % cycle.size()],
-                                           net.parts[g], net.corners[g][(j + 1) % other.size()],
-                                           net.corners[g][j]);
+          world.mapPart(net.parts[f])
+              .warp(net.corners[f][i], net.corners[f][(i + 1) % cycle.size()], net.parts[g],
+                    net.corners[g][(j + 1) % other.size()], net.corners[g][j]);
         }
       }
     }

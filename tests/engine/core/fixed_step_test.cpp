@@ -1,9 +1,9 @@
 // The fixed-step clock: whole steps at any display rate, no drift over hours, bounded catch-up.
-#include <gtest/gtest.h>
+#include "platon/core/fixed_step.h"
 
 #include <random>
 
-#include "platon/core/fixed_step.h"
+#include <gtest/gtest.h>
 
 using platon::core::FixedStep;
 

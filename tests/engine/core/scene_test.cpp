@@ -1,8 +1,8 @@
 // Scenes run their systems around the physics step; the registry creates only what is named;
 // draw lists record nothing without a renderer; input edges.
-#include <gtest/gtest.h>
-
 #include "platon/core/scene.h"
+
+#include <gtest/gtest.h>
 
 using namespace platon;
 
@@ -13,7 +13,8 @@ class Probe : public core::System {
  public:
   Probe(std::vector<std::string>& log, std::string name) : log_(log), name_(std::move(name)) {}
   void beforeStep(core::Scene& scene, const core::InputFrame& input) override {
-    log_.push_back(name_ + " before " + std::to_string(scene.frame()) + (input.wasPressed(core::Button::Jump) ? " jump" : ""));
+    log_.push_back(name_ + " before " + std::to_string(scene.frame()) +
+                   (input.wasPressed(core::Button::Jump) ? " jump" : ""));
   }
   void afterStep(core::Scene& scene) override { log_.push_back(name_ + " after " + std::to_string(scene.frame())); }
   void draw(const core::Scene&, core::DrawList& out) const override {
@@ -36,8 +37,8 @@ TEST(Scene, SystemsRunInOrderAroundThePhysicsStep) {
   core::InputEdges edges;
   scene.step(edges.next(core::InputFrame::bit(core::Button::Jump)));
   scene.step(edges.next(core::InputFrame::bit(core::Button::Jump)));  // held, not pressed again
-  EXPECT_EQ(log, (std::vector<std::string>{"a before 0 jump", "b before 0 jump", "a after 1", "b after 1",
-                                           "a before 1", "b before 1", "a after 2", "b after 2"}));
+  EXPECT_EQ(log, (std::vector<std::string>{"a before 0 jump", "b before 0 jump", "a after 1", "b after 1", "a before 1",
+                                           "b before 1", "a after 2", "b after 2"}));
 }
 
 TEST(Scene, DrawListsRecordOnlyWhenARendererAsks) {
@@ -67,7 +68,8 @@ TEST(SystemRegistry, CreatesOnlyWhatIsNamedAndNamesWhatIsKnown) {
     ++created;
     return std::make_unique<Probe>(log, "p");
   });
-  registry.add("other", [&](core::Scene&) -> std::unique_ptr<core::System> { throw std::logic_error("never created"); });
+  registry.add("other",
+               [&](core::Scene&) -> std::unique_ptr<core::System> { throw std::logic_error("never created"); });
   EXPECT_THROW(registry.add("probe", {}), std::invalid_argument);
   core::Scene scene;
   scene.addSystem(registry.create("probe", scene));

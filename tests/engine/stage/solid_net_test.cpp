@@ -1,8 +1,8 @@
-#include <gtest/gtest.h>
+#include "platon/stage/solid_net.h"
 
 #include <set>
 
-#include "platon/stage/solid_net.h"
+#include <gtest/gtest.h>
 
 using namespace platon;
 using physics::Vec2;

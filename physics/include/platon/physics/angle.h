@@ -30,9 +30,7 @@ Rotation rotationOf(Angle angle);
 Angle angleOf(Vec2w v);
 
 // v rotated, in Q30 (the result is 2^30 times the real rotated vector).
-constexpr Vec2w rotateQ30(Rotation r, Vec2w v) {
-  return {r.c * v.x - r.s * v.y, r.s * v.x + r.c * v.y};
-}
+constexpr Vec2w rotateQ30(Rotation r, Vec2w v) { return {r.c * v.x - r.s * v.y, r.s * v.x + r.c * v.y}; }
 // v rotated, wide input (up to 2^62 per component); result in the same scale as v, rounded to nearest.
 Vec2w rotateWide(Rotation r, Vec2w v);
 // Inverse rotation of v, same scale, rounded to nearest.

@@ -29,9 +29,9 @@ struct InstanceView {
 class EntityView {
  public:
   EntityId id() const;
-  const Convex& shape() const;    // as created, unturned
-  Angle angle() const;            // the shape's rotation in the entity's (the anchor's) frame
-  Vec2w velocity() const;         // 1/65536 units per frame, in the entity's frame
+  const Convex& shape() const;      // as created, unturned
+  Angle angle() const;              // the shape's rotation in the entity's (the anchor's) frame
+  Vec2w velocity() const;           // 1/65536 units per frame, in the entity's frame
   int32_t angularVelocity() const;  // binary-angle units per frame
   bool gravityEnabled() const;
   uint64_t userData() const;
@@ -67,7 +67,11 @@ class EntityView::Instances {
     iterator(const Entity* entity, size_t index) : entity_(entity), index_(index) {}
     InstanceView operator*() const { return EntityView(*entity_).instance(index_); }
     iterator& operator++() { return ++index_, *this; }
-    iterator operator++(int) { iterator was = *this; ++index_; return was; }
+    iterator operator++(int) {
+      iterator was = *this;
+      ++index_;
+      return was;
+    }
     friend bool operator==(const iterator& a, const iterator& b) { return a.index_ == b.index_; }
 
    private:

@@ -20,9 +20,7 @@ struct Fraction {
   friend constexpr bool operator==(Fraction a, Fraction b) { return (a <=> b) == 0; }
 
   // The value scaled by 2^bits and rounded down; for reports and hashing, never for geometry.
-  constexpr int64_t scaledFloor(int bits) const {
-    return static_cast<int64_t>(floorDiv(i128{num} << bits, den));
-  }
+  constexpr int64_t scaledFloor(int bits) const { return static_cast<int64_t>(floorDiv(i128{num} << bits, den)); }
 };
 
 }  // namespace platon::physics

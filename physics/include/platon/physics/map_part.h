@@ -28,8 +28,8 @@ struct Line {
 struct Warp {
   MapPartId target = 0;
   Segment targetSegment;
-  Angle turn = 0;        // rotation from this part's frame into the target's
-  Rotation rotation;     // rotationOf(turn), cached
+  Angle turn = 0;     // rotation from this part's frame into the target's
+  Rotation rotation;  // rotationOf(turn), cached
 };
 
 class MapPart {

@@ -24,18 +24,18 @@ struct LineRef {
 
 struct Contact {
   EntityId entity;
-  MapPartId part = 0;     // the map part of the instance that touched
+  MapPartId part = 0;  // the map part of the instance that touched
   LineRef line;
-  Fraction fraction;      // of the sub-move (for solid lines) when the contact began or ended
-  Vec2w normal;           // from the line towards the entity, in the part's frame, not normalized
-  ContactPoints points;   // in the part's coordinates
+  Fraction fraction;     // of the sub-move (for solid lines) when the contact began or ended
+  Vec2w normal;          // from the line towards the entity, in the part's frame, not normalized
+  ContactPoints points;  // in the part's coordinates
 };
 
 // What a solid contact does to the motion. Defaults: slide along the line and lose the velocity
 // component that points into it.
 struct ContactResponse {
-  bool slide = true;                  // false: the rest of this frame's motion is dropped
-  bool removeNormalVelocity = true;   // false: keep the velocity as the callback left it
+  bool slide = true;                 // false: the rest of this frame's motion is dropped
+  bool removeNormalVelocity = true;  // false: keep the velocity as the callback left it
 };
 
 class Rules {
@@ -43,7 +43,10 @@ class Rules {
   virtual ~Rules() = default;
   // Whether `entity` passes through `line`. Asked once when the line comes near an instance, and
   // again after setRules(); the answer must not change while they overlap. Default: warps pierce.
-  virtual bool pierce(EntityId entity, const LineRef& line) { (void)entity; return line.kind == LineKind::Warp; }
+  virtual bool pierce(EntityId entity, const LineRef& line) {
+    (void)entity;
+    return line.kind == LineKind::Warp;
+  }
   // Pierceable lines: the interior of an instance starts, keeps (once per frame), stops overlapping.
   virtual void beginContact(const Contact&) {}
   virtual void overContact(const Contact&) {}

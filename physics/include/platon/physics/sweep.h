@@ -26,9 +26,9 @@ struct Constraint {
 };
 
 struct Sweep {
-  bool empty = true;     // no interior overlap for any t >= 0
-  bool hasEnter = false; // otherwise enter = -infinity
-  bool hasExit = false;  // otherwise exit = +infinity
+  bool empty = true;      // no interior overlap for any t >= 0
+  bool hasEnter = false;  // otherwise enter = -infinity
+  bool hasExit = false;   // otherwise exit = +infinity
   Fraction enter;
   Fraction exit;
   Constraint enterAxis;  // the axis that opens last: its normal is the contact normal
@@ -39,8 +39,7 @@ struct Sweep {
   }
   // The interior first meets the segment at t = enter, with 0 <= enter < limit.
   bool hitsBefore(Fraction limit) const {
-    return !empty && hasEnter && enter >= Fraction::zero() && enter < limit &&
-           (!hasExit || enter < exit);
+    return !empty && hasEnter && enter >= Fraction::zero() && enter < limit && (!hasExit || enter < exit);
   }
   bool hitsWithinFrame() const { return hitsBefore(Fraction::one()); }
   Vec2w normal() const { return -enterAxis.c; }
@@ -57,7 +56,7 @@ Sweep sweep(std::span<const Vec2> polygon, Vec2w motion, Segment segment);
 Vec2w roundedStep(Vec2w motion, Fraction t, const Constraint* keep = nullptr);
 
 // Static tests at the current position.
-bool overlapsInterior(std::span<const Vec2> polygon, Segment segment);  // interiors meet
+bool overlapsInterior(std::span<const Vec2> polygon, Segment segment);   // interiors meet
 bool touchesOrOverlaps(std::span<const Vec2> polygon, Segment segment);  // closed sets meet
 
 // Where the polygon, moved by `enter * motion`, touches the segment: one point, or the two ends of
@@ -67,7 +66,6 @@ struct ContactPoints {
   Vec2 points[2];
   int count = 0;
 };
-ContactPoints contactPoints(std::span<const Vec2> polygon, Vec2w motion, Segment segment,
-                            const Sweep& hit);
+ContactPoints contactPoints(std::span<const Vec2> polygon, Vec2w motion, Segment segment, const Sweep& hit);
 
 }  // namespace platon::physics

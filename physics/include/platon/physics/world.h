@@ -20,7 +20,7 @@ struct SolveReport {
   uint64_t frame = 0;
   uint32_t subMoves = 0;
   uint32_t hits = 0;
-  uint32_t pierceEvents = 0;   // begin + end
+  uint32_t pierceEvents = 0;     // begin + end
   uint32_t roundingRetries = 0;  // a rounded position failed its exact check and was pulled back
   uint32_t warpsCreated = 0;
   uint32_t instancesErased = 0;
@@ -38,7 +38,11 @@ class EntityRange {
     iterator(const WorldImpl* world, uint32_t slot) : world_(world), slot_(slot) {}
     EntityId operator*() const;
     iterator& operator++();
-    iterator operator++(int) { iterator was = *this; ++*this; return was; }
+    iterator operator++(int) {
+      iterator was = *this;
+      ++*this;
+      return was;
+    }
     friend bool operator==(const iterator& a, const iterator& b) { return a.slot_ == b.slot_; }
 
    private:

@@ -53,8 +53,7 @@ class Int256 {
   Int256() = default;
   Int256(i128 v) {  // implicit on purpose: mixes freely with int64 and i128 values
     const u128 u = static_cast<u128>(v);
-    w_ = {static_cast<uint64_t>(u), static_cast<uint64_t>(u >> 64), v < 0 ? ~uint64_t{0} : 0,
-          v < 0 ? ~uint64_t{0} : 0};
+    w_ = {static_cast<uint64_t>(u), static_cast<uint64_t>(u >> 64), v < 0 ? ~uint64_t{0} : 0, v < 0 ? ~uint64_t{0} : 0};
   }
 
   bool negative() const { return static_cast<int64_t>(w_[3]) < 0; }
@@ -78,8 +77,7 @@ class Int256 {
   // Schoolbook product modulo 2^256, which is the true signed product whenever it fits; the
   // bit-length test makes "fits" a checked precondition (|result| < 2^254).
   friend Int256 operator*(const Int256& a, const Int256& b) {
-    if (a.magnitudeBits() + b.magnitudeBits() > 254)
-      throw std::overflow_error("reference: Int256 overflow");
+    if (a.magnitudeBits() + b.magnitudeBits() > 254) throw std::overflow_error("reference: Int256 overflow");
     Int256 r;
     for (int i = 0; i < 4; ++i) {
       u128 carry = 0;
@@ -147,17 +145,14 @@ inline i128 dotExact(Vec2w a, Vec2w b) { return i128{a.x} * b.x + i128{a.y} * b.
 
 // Counter-clockwise convex hull without collinear points (Andrew's monotone chain).
 inline std::vector<Vec2w> hull(std::vector<Vec2w> pts) {
-  std::sort(pts.begin(), pts.end(),
-            [](Vec2w a, Vec2w b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });
+  std::sort(pts.begin(), pts.end(), [](Vec2w a, Vec2w b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });
   pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
   if (pts.size() < 3) return pts;
   std::vector<Vec2w> h;
   for (int pass = 0; pass < 2; ++pass) {  // lower chain left to right, then upper right to left
     const size_t start = h.size();
     for (const Vec2w p : pts) {
-      while (h.size() >= start + 2 &&
-             crossExact(h.back() - h[h.size() - 2], p - h[h.size() - 2]) <= 0)
-        h.pop_back();
+      while (h.size() >= start + 2 && crossExact(h.back() - h[h.size() - 2], p - h[h.size() - 2]) <= 0) h.pop_back();
       h.push_back(p);
     }
     h.pop_back();  // the last point starts the other chain
@@ -231,8 +226,7 @@ struct Clip {
   Rat<Int256> lo, hi;
 };
 
-inline Clip clipSegment(std::span<const Vec2> poly, Vec2w motion, Vec2 a, Vec2 b, Rat<i128> t,
-                        bool strict) {
+inline Clip clipSegment(std::span<const Vec2> poly, Vec2w motion, Vec2 a, Vec2 b, Rat<i128> t, bool strict) {
   const Int256 p = t.num, q = t.den;
   const Vec2w d = b - a;
   Rat<Int256> lo{0, 1}, hi{1, 1};
@@ -273,8 +267,7 @@ struct RefContact {
   Vec2w points[2];
 };
 
-inline RefContact referenceContact(std::span<const Vec2> poly, Vec2w motion, Vec2 a, Vec2 b,
-                                   Rat<i128> t) {
+inline RefContact referenceContact(std::span<const Vec2> poly, Vec2w motion, Vec2 a, Vec2 b, Rat<i128> t) {
   const Clip c = clipSegment(poly, motion, a, b, t, false);
   RefContact r;
   if (!c.hit) return r;

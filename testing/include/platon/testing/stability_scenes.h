@@ -19,19 +19,19 @@ struct Pose {
 
 struct Scene {
   std::string name;
-  std::string what;                  // one line for the table
-  double gravityX = 0, gravityY = 0; // m/s^2
+  std::string what;                   // one line for the table
+  double gravityX = 0, gravityY = 0;  // m/s^2
   std::vector<Seg> solids;
-  std::vector<Seg> triggers;         // pierceable lines whose crossings are counted
-  std::vector<Point> shape;          // the body, counter-clockwise, relative to its origin
+  std::vector<Seg> triggers;  // pierceable lines whose crossings are counted
+  std::vector<Point> shape;   // the body, counter-clockwise, relative to its origin
   Pose start;
-  double vx = 0, vy = 0;             // m/s, set once (or every frame when `drive`)
-  bool drive = false;                // keep setting (vx, vy-component-if-free) every frame
-  double spin = 0;                   // rad/s
-  bool rotates = false;              // false: fixed rotation (the peers' bodies too)
+  double vx = 0, vy = 0;  // m/s, set once (or every frame when `drive`)
+  bool drive = false;     // keep setting (vx, vy-component-if-free) every frame
+  double spin = 0;        // rad/s
+  bool rotates = false;   // false: fixed rotation (the peers' bodies too)
   double hz = 60;
   int frames = 600;
-  int expectedCrossings = 0;         // trigger lines crossed, counted begin + end
+  int expectedCrossings = 0;  // trigger lines crossed, counted begin + end
   // Where the body's origin is allowed to be (false = it went through a line: a tunnel).
   std::function<bool(const Pose&)> allowed;
   // For rest scenes: frames after which the body must not move any more (drift is measured after).
@@ -46,17 +46,17 @@ struct Scene {
 
 // Outcomes of one run, in metres where lengths.
 struct Outcome {
-  int overlapFrames = 0;       // frames with any overlap of a solid line's interior
+  int overlapFrames = 0;  // frames with any overlap of a solid line's interior
   double maxPenetration = 0;
-  int tunnelFrames = 0;        // frames with the origin outside `allowed`
-  int triggerBegins = 0;       // begin events on trigger lines (the peers report these too)
+  int tunnelFrames = 0;   // frames with the origin outside `allowed`
+  int triggerBegins = 0;  // begin events on trigger lines (the peers report these too)
   int triggerEnds = 0;
-  int missedEvents = 0;        // expected crossings without a begin or an end
-  double drift = 0;            // movement after settleFrames
-  int stuckFrames = 0;         // frames moving slower than minSpeedX
-  bool missedTarget = false;   // ended away from targetX
+  int missedEvents = 0;       // expected crossings without a begin or an end
+  double drift = 0;           // movement after settleFrames
+  int stuckFrames = 0;        // frames moving slower than minSpeedX
+  bool missedTarget = false;  // ended away from targetX
   Pose final;
-  double seconds = 0;          // wall time of the run
+  double seconds = 0;  // wall time of the run
 };
 
 // Scores one run frame by frame, the same way for every engine: tunnels, stuck frames, drift after

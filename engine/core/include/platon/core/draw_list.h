@@ -57,7 +57,9 @@ class DrawList {
 
   std::span<const DrawShape> shapes() const { return shapes_; }
   std::span<const Point2> points() const { return points_; }
-  std::string_view text(const DrawShape& shape) const { return std::string_view(text_).substr(shape.first, shape.count); }
+  std::string_view text(const DrawShape& shape) const {
+    return std::string_view(text_).substr(shape.first, shape.count);
+  }
 
  private:
   bool enabled_;
