@@ -5,18 +5,30 @@
 
 namespace platon::physics {
 
-// Removes the part of v that points into the surface with normal n, rounding so that what is left
-// never points into it (dot(result, n) >= 0).
+// Removes the part of v that points into the surface with normal n: the whole vector nearest to the
+// exact v - (v.n / n.n) n that does not point into it (dot(result, n) >= 0). Rounding each
+// component away from the surface would also keep it out, but up to a unit further off than the
+// nearest such vector: a body sliding in a corner would be lifted by it on every contact.
 inline Vec2w removeInto(Vec2w v, Vec2w n) {
   const i128 vn = dot128(v, n);
   if (vn >= 0) return v;
-  const i128 nn = dot128(n, n);
-  auto one = [&](int64_t vk, int64_t nk) -> int64_t {
-    if (nk == 0) return vk;
-    const i128 q = vn * nk;
-    return static_cast<int64_t>(vk - (nk > 0 ? floorDiv(q, nn) : ceilDiv(q, nn)));
-  };
-  return {one(v.x, n.x), one(v.y, n.y)};
+  const i128 nn = dot128(n, n);  // the exact result is (v nn - vn n) / nn, component by component
+  const i128 ex = i128{v.x} * nn - vn * n.x, ey = i128{v.y} * nn - vn * n.y;
+  const i128 fx = floorDiv(ex, nn), fy = floorDiv(ey, nn);
+  // Fractional parts in Q32: enough to rank the four corners of the unit square around it.
+  const i128 px = floorDiv((ex - fx * nn) << 32, nn), py = floorDiv((ey - fy * nn) << 32, nn);
+  const i128 one = i128{1} << 32;
+  Vec2w best = {static_cast<int64_t>(fx + (n.x > 0)), static_cast<int64_t>(fy + (n.y > 0))};  // away: always out
+  i128 bestDistance = -1;
+  for (int k = 0; k < 4; ++k) {
+    const int ax = k & 1, ay = k >> 1;
+    const Vec2w d{static_cast<int64_t>(fx + ax), static_cast<int64_t>(fy + ay)};
+    if (dot128(d, n) < 0) continue;
+    const i128 dx = ax * one - px, dy = ay * one - py;
+    const i128 distance = dx * dx + dy * dy;
+    if (bestDistance < 0 || distance < bestDistance) best = d, bestDistance = distance;
+  }
+  return best;
 }
 
 // Like removeInto for a whole-unit motion, and also returns, in Q17, what the rounding left out:

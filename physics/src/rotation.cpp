@@ -72,7 +72,7 @@ bool WorldImpl::rotateBy(Entity& e, int64_t delta) {
   }
   updatePierceState(e, {});
   std::vector<Vec2w> noNormals;
-  Move none{e, {}, noNormals};
+  Move none{e, {}, noNormals, {}, {}};
   updateLinks(none);
   return !blocked;
 }

@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "bounds.h"
+#include "contact_normal.h"
 #include "fixed_point.h"
 #include "projection.h"
 #include "world_impl.h"
@@ -21,6 +22,7 @@ struct Hit {
   LineIndex line = 0;
   Sweep sweep;
   Constraint axis;
+  bool crease = false;  // no open direction makes progress: the body stops here (see slideAlong)
 
   // Earlier wins. At equal times: a solid contact before a warp (so walls at edges hold), then the
   // lower instance, then the lower line index. The order never depends on the grid or on the
@@ -66,6 +68,7 @@ class SubMove {
   //    anchor's motion turned into their frame). Closing the gap to the ideal is a separate step
   //    after the move (commit), so a copy that rounding left a unit off never holds the entity back.
   void planMotions() {
+    subMotion_ = move_.motion;
     verts_.resize(n_);
     moves_.resize(n_);
     pierceNear_.assign(n_, 0);
@@ -115,6 +118,44 @@ class SubMove {
           hit_ = {HitKind::Bound, when, i, kWorldBoundLine, {}, c};
       }
     }
+  }
+
+  // At the instant of a solid hit, the lines the polygon touches decide where it slides
+  // (contact_normal.h): along the open direction that keeps the most of its motion, whichever line
+  // or edge of its own that runs along. None: a crease, and it stops.
+  void resolveContactNormal() {
+    if (hit_.kind != HitKind::Solid) return;
+    const size_t i = hit_.instance;
+    Instance& inst = e_.instances[i];
+    const MapPart& part = w_.part(inst.part);
+    const auto lines = inst.region.lines();
+    const Box box = sweptBox(verts_[i], moves_[i]);
+    std::vector<LineIndex>& touchingLines = w_.scratch.touchingLines;
+    std::vector<Vec2w>& normals = w_.scratch.lineNormals;
+    touchingLines.clear();
+    for (size_t k = 0; k < lines.size(); ++k) {
+      const Segment& seg = part.segments()[lines[k]];
+      if (outside(seg, box) || w_.isPierceable(e_, inst, k)) continue;
+      normals.clear();
+      if (touchingNormals(verts_[i], moves_[i], hit_.t, seg, normals)) touchingLines.push_back(lines[k]);
+    }
+    // The lines in index order, so the choice never depends on the region's order.
+    std::sort(touchingLines.begin(), touchingLines.end());
+    OpenDirections& open = w_.scratch.open;
+    open.clear();
+    for (const LineIndex line : touchingLines) {
+      normals.clear();
+      touchingNormals(verts_[i], moves_[i], hit_.t, part.segments()[line], normals);
+      open.beginLine();
+      for (const Vec2w n : normals) open.addNormal(n);
+    }
+    if (open.empty() || open.open(moves_[i])) return;
+    const int best = open.slideNormal(moves_[i]);
+    if (best < 0) {
+      hit_.crease = true;
+      return;
+    }
+    hit_.axis = {0, -open.normals()[static_cast<size_t>(best)]};
   }
 
   // A copy that rounding left a hair low snags on the first point of a line that continues the
@@ -186,9 +227,13 @@ class SubMove {
     ContactResponse response;
     w_.callRules([&](Rules& r) { r.contact(contact, response); });
     const Vec2w normal = shortDirection(rotateWideInverse(inst->rotation, shortDirection(partNormal)));
-    if (response.removeNormalVelocity) e_.velocityQ16 = clampVelocityQ16(removeInto(e_.velocityQ16, normal));
+    if (response.removeNormalVelocity) {
+      e_.velocityQ16 = clampVelocityQ16(removeInto(e_.velocityQ16, normal));
+      // In a crease, or turned against the frame's own velocity by its contacts: it is held.
+      if (hit_.crease || dot128(e_.velocityQ16, move_.primalVelocity) < 0) e_.velocityQ16 = {};
+    }
     if (!response.slide) return false;
-    slideAlong(normal);
+    slideAlong(normal, response.removeNormalVelocity);
     return true;
   }
 
@@ -244,22 +289,36 @@ class SubMove {
       e_.instances[hit_.instance].blockedWarps.push_back(hit_.line);
   }
 
-  // The rest of the motion goes along the line. If that runs into a line met earlier in the same
-  // frame, the entity is in a crease (a wedge or a corner) and stops for this frame.
-  void slideAlong(Vec2w normal) {
+  // The rest of the motion goes along the line. The entity is in a crease (a wedge, a corner, a
+  // valley), and stops for this frame, when the slide would run into a line met earlier in the
+  // frame, or when the contacts have turned the motion against the frame's own: in exact terms its
+  // projection along the line points back (dot < 0 with the frame's first motion). Sliding on,
+  // it would only bounce between the lines by the rounding of a unit.
+  void slideAlong(Vec2w normal, bool stopVelocityInCrease) {
     Vec2w carryQ17;
     move_.motion = removeIntoCarrying(move_.motion, normal, carryQ17);
-    bool crease = false;
+    bool crease = hit_.crease || turnsBack(subMotion_, normal);
     for (const Vec2w& previous : move_.normals) crease = crease || dot128(move_.motion, previous) < 0;
     if (crease) {
-      move_.motion = {};  // the two lines hold it in place
+      move_.motion = {};  // the lines hold it in place
       e_.subunitQ17 = {};
+      if (stopVelocityInCrease) e_.velocityQ16 = {};
     } else {
       // Touching the line, the entity has no fraction of a unit left to move across it, nor away
       // from it; along it, it keeps what rounding left out.
       e_.subunitQ17 = withoutComponent(e_.subunitQ17 + carryQ17, normal);
     }
     move_.normals.push_back(normal);
+  }
+
+  // Whether m, this sub-move's motion, with its component into n removed (exactly: the rounding
+  // of the step to the contact must not count) points against the frame's first motion: sign of
+  // dot(m, p) |n|^2 - dot(m, n) dot(n, p), all terms below 2^125.
+  bool turnsBack(Vec2w m, Vec2w n) const {
+    const Vec2w p = move_.primalMotion;
+    const i128 mn = dot128(m, n);
+    if (mn >= 0) return false;  // not into the line: nothing is removed
+    return dot128(m, p) * dot128(n, n) - mn * dot128(n, p) < 0;
   }
 
   WorldImpl& w_;
@@ -271,6 +330,7 @@ class SubMove {
   std::vector<Vec2w>& steps_;
   std::vector<uint8_t>& pierceNear_;
   Hit hit_;
+  Vec2w subMotion_;  // the anchor's motion at the start of this sub-move, entity frame
   Fraction t_;
   MapPartId hitPart_ = 0;
   Vec2w hitMove_;
@@ -278,12 +338,64 @@ class SubMove {
 
 }  // namespace
 
+bool WorldImpl::restsAgainstLines(Entity& e, Vec2w w) {
+  OpenDirections& open = scratch.open;
+  std::vector<Vec2w>& normals = scratch.lineNormals;
+  open.clear();
+  e.contacts.clear();
+  bool touching = false;
+  for (Instance& inst : e.instances) {
+    coverMotion(inst, {}, 2);
+    std::vector<Vec2>& verts = scratch.now;
+    worldVertices(inst, verts);
+    const MapPart& p = part(inst.part);
+    Box box = sweptBox(verts, {});
+    box.x0 -= 2, box.y0 -= 2, box.x1 += 2, box.y1 += 2;
+    const auto lines = inst.region.lines();
+    for (size_t k = 0; k < lines.size(); ++k) {
+      const Segment& seg = p.segments()[lines[k]];
+      normals.clear();
+      if (outside(seg, box) || isPierceable(e, inst, k)) continue;
+      const Nearness nearness = nearNormals(verts, seg, normals);
+      if (nearness == Nearness::Apart) continue;
+      touching = touching || nearness == Nearness::Touching;
+      // The contact reports the line's own normal when it is one of them (a body on a floor, not
+      // the edge of its own shape at the floor's end).
+      Vec2w reported = normals[0];
+      open.beginLine();
+      for (const Vec2w n : normals) {
+        if (dot128(n, seg.b - seg.a) == 0) reported = n;
+        open.addNormal(inst.frame == 0 ? n : shortDirection(rotateWideInverse(inst.rotation, shortDirection(n))));
+      }
+      e.contacts.push_back(makeContact(e, inst, lines[k], Fraction::zero(), reported, {}));
+    }
+  }
+  // Resting on a line, it touches it; wedged into a corner, it may be kept up to 1.5 units from
+  // the lines by the whole-unit grid, and lines near it count only if they form a corner.
+  if (!open.empty() && open.cannotMove(w) && (touching || open.wedges(w))) {
+    // Contacts in line order: the region's order is not part of the result.
+    std::sort(e.contacts.begin(), e.contacts.end(), [](const Contact& a, const Contact& b) {
+      return a.part != b.part ? a.part < b.part : a.line.index < b.line.index;
+    });
+    return true;
+  }
+  e.contacts.clear();
+  return false;
+}
+
 void WorldImpl::stepEntity(Entity& e) {
   for (Instance& inst : e.instances) inst.blockedWarps.clear();
   if (e.angularVelocity != 0) rotateBy(e, e.angularVelocity);
   if (e.instances.empty()) return;
   const Vec2w before = e.velocityQ16;
   if (e.gravity) e.velocityQ16 = clampVelocityQ16(e.velocityQ16 + part(e.instances[0].part).gravity());
+  // At rest: pressed into the lines it is against, it cannot move. It stays exactly where it is,
+  // with no velocity and no fraction of a unit left over, so it stays at rest.
+  if (e.angularVelocity == 0 && copiesAtIdeal(e) && restsAgainstLines(e, e.velocityQ16)) {
+    e.velocityQ16 = {};
+    e.subunitQ17 = {};
+    return;
+  }
   // The frame moves by the average of the velocities at its start and end: for constant gravity
   // that is the exact parabola at every frame, not the first-order step most engines take. The
   // sum of the two Q16 velocities is the average in Q17; whole units move now, the remainder
@@ -292,7 +404,7 @@ void WorldImpl::stepEntity(Entity& e) {
   const Vec2w whole{acc.x >> 17, acc.y >> 17};
   e.subunitQ17 = {acc.x - whole.x * kQ17, acc.y - whole.y * kQ17};
   scratch.normals.clear();
-  Move move{e, whole, scratch.normals};
+  Move move{e, whole, scratch.normals, whole, e.velocityQ16};
   slide(move);
 }
 
@@ -306,6 +418,7 @@ void WorldImpl::slide(Move& move) {
     sub.planMotions();
     sub.findFirstEvent();
     if (sub.liftSnaggedCopy()) continue;
+    sub.resolveContactNormal();
     sub.roundSteps();
     sub.commit();
     sub.afterMove();

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "separating_axes.h"
+
 namespace platon::physics {
 namespace {
 
@@ -29,40 +31,14 @@ inline bool applyAxis(Sweep& r, int64_t slack, Vec2w c, Vec2w motion, int axis) 
   return true;
 }
 
-struct SegmentSpan {
-  int64_t minG, maxG;
-  int minIndex, maxIndex;
-};
-
-inline SegmentSpan segmentSpan(std::span<const Vec2> poly, Segment seg) {
-  const Vec2w d = seg.b - seg.a;
-  SegmentSpan s{INT64_MAX, INT64_MIN, 0, 0};
-  for (int j = 0; j < static_cast<int>(poly.size()); ++j) {
-    const int64_t g = cross(d, poly[j] - seg.a);
-    if (g < s.minG) s.minG = g, s.minIndex = j;
-    if (g > s.maxG) s.maxG = g, s.maxIndex = j;
-  }
-  return s;
-}
-
-inline int64_t edgeSlack(Vec2 w, Vec2w e, Segment seg) { return std::min(cross(seg.a - w, e), cross(seg.b - w, e)); }
-
 }  // namespace
 
 Sweep sweep(std::span<const Vec2> poly, Vec2w motion, Segment seg) {
   Sweep r;
   r.empty = false;
-  const int n = static_cast<int>(poly.size());
-  for (int i = 0; i < n; ++i) {
-    const Vec2 w = poly[i];
-    const Vec2w e = poly[i + 1 == n ? 0 : i + 1] - w;
-    if (!applyAxis(r, edgeSlack(w, e, seg), {e.y, -e.x}, motion, i)) return Sweep{};
-  }
-  const Vec2w d = seg.b - seg.a;
-  const SegmentSpan s = segmentSpan(poly, seg);
-  const Vec2w left{-d.y, d.x};
-  if (!applyAxis(r, -s.maxG, left, motion, n)) return Sweep{};
-  if (!applyAxis(r, s.minG, -left, motion, n + 1)) return Sweep{};
+  const bool open =
+      forEachAxis(poly, seg, [&](int64_t slack, Vec2w c, int axis) { return applyAxis(r, slack, c, motion, axis); });
+  if (!open) return Sweep{};
   if (r.hasEnter && r.hasExit && r.enter >= r.exit) return Sweep{};
   if (r.hasExit && r.exit <= Fraction::zero()) return Sweep{};
   return r;

@@ -144,6 +144,8 @@ void WorldImpl::rebase(Move& move, size_t k) {
   e.subunitQ17.x = std::clamp<int64_t>(e.subunitQ17.x, 0, kQ17 - 1);
   e.subunitQ17.y = std::clamp<int64_t>(e.subunitQ17.y, 0, kQ17 - 1);
   move.motion = rotateWide(r, move.motion);
+  move.primalMotion = rotateWide(r, move.primalMotion);
+  move.primalVelocity = rotateWide(r, move.primalVelocity);
   // The frame's earlier contact normals were in the old frame, and belong to the part it left.
   move.normals.clear();
 }

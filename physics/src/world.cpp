@@ -176,7 +176,7 @@ void World::erase(EntityId id, MapPartId partId) {
     if (e.instances[i].part == partId) {
       CallbackScope scope(w);
       std::vector<Vec2w> noNormals;
-      Move move{e, {}, noNormals};
+      Move move{e, {}, noNormals, {}, {}};
       w.eraseInstance(move, i);
       scope.finish();
       return;

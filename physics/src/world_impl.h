@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "contact_normal.h"
 #include "entity.h"
 #include "grid.h"
 #include "platon/physics/world.h"
@@ -23,6 +24,10 @@ struct Move {
   Entity& entity;
   Vec2w motion;                 // whole units still to move, in the entity's frame
   std::vector<Vec2w>& normals;  // this frame's contact normals, in the entity's frame
+  // The frame's motion and velocity before any contact: contacts that turn either against them
+  // mean a crease (see SubMove::slideAlong).
+  Vec2w primalMotion;
+  Vec2w primalVelocity;
 };
 
 // Where each instance went during one sub-move, for the pierce events along the way. Empty: the
@@ -57,6 +62,9 @@ struct WorldImpl {
     std::vector<Vec2w> moves, steps, normals;
     std::vector<uint8_t> pierceNear;
     std::vector<Vec2> now, probe;
+    std::vector<LineIndex> touchingLines;
+    std::vector<Vec2w> lineNormals;
+    OpenDirections open;
   } scratch;
 
   // world.cpp
@@ -85,6 +93,10 @@ struct WorldImpl {
   // step.cpp
   void stepEntity(Entity& e);
   void slide(Move& move);
+  // Whether the entity, wanting to move along w (its velocity after gravity), presses into the
+  // solid lines it is against (touching or within one unit) so that it cannot move at all. If so,
+  // they become its contacts for this frame.
+  bool restsAgainstLines(Entity& e, Vec2w w);
 
   // rotation.cpp
   bool rotateBy(Entity& e, int64_t delta);
