@@ -42,12 +42,35 @@ bool exactMove(Vec2w m, Fraction t) {
   return t == Fraction::one() || ((i128{t.num} * m.x) % t.den == 0 && (i128{t.num} * m.y) % t.den == 0);
 }
 
-// Whether every copy sits where its ideal position says (a copy may still owe a correction when
-// the motion is spent).
-bool copiesAtIdeal(const Entity& e) {
-  for (size_t i = 1; i < e.instances.size(); ++i)
-    if (pointFromQ30(e.instances[i].idealQ30) != e.instances[i].position) return false;
+// A copy keeps a lift of up to this many units off its ideal position (see liftAtSeam); a larger
+// gap is closed as soon as the way is free.
+constexpr int64_t kCopyLift = 3;
+
+// Whether every copy is where it may stay: within kCopyLift units of its ideal position. Otherwise
+// it still owes a correction when the motion is spent.
+bool copiesSettled(const Entity& e) {
+  for (size_t i = 1; i < e.instances.size(); ++i) {
+    const Vec2 ideal = pointFromQ30(e.instances[i].idealQ30), at = e.instances[i].position;
+    if (std::max(std::abs(int64_t{ideal.x} - at.x), std::abs(int64_t{ideal.y} - at.y)) > kCopyLift) return false;
+  }
   return true;
+}
+
+// Whether `point` is within three units of a warp line near the instance: a line ending there is
+// cut by a face edge and continues on the next face (a seam).
+bool nearWarpLine(WorldImpl& w, const Entity& e, Instance& inst, Vec2 point) {
+  const MapPart& part = w.part(inst.part);
+  const auto lines = inst.region.lines();
+  for (size_t k = 0; k < lines.size(); ++k) {
+    if (part.lines()[lines[k]].kind != LineKind::Warp) continue;
+    const Segment s = part.segments()[lines[k]];
+    const Vec2w d = s.b - s.a, pa = point - s.a, pb = point - s.b;
+    if (dot128(pa, pa) <= 9 || dot128(pb, pb) <= 9) return true;
+    const i128 along = dot128(pa, d), across = cross128(d, pa);
+    if (along >= 0 && along <= dot128(d, d) && across * across <= 9 * dot128(d, d)) return true;
+  }
+  (void)e;
+  return false;
 }
 
 // One sub-move of the slide, in the order of its steps. The per-instance arrays are the world's
@@ -149,8 +172,11 @@ class SubMove {
       open.beginLine();
       for (const Vec2w n : normals) open.addNormal(n);
     }
-    if (open.empty() || open.open(moves_[i])) return;
-    const int best = open.slideNormal(moves_[i]);
+    // Which way it wants to go: its exact motion (a copy's integer step is the anchor's turned and
+    // rounded, and may point straight into a floor the exact motion slides along).
+    const Vec2w wanted = i == 0 ? moves_[0] : shortDirection(rotateQ30(inst.rotation, move_.motion));
+    if (open.empty() || open.open(wanted)) return;
+    const int best = open.slideNormal(wanted);
     if (best < 0) {
       hit_.crease = true;
       return;
@@ -158,17 +184,43 @@ class SubMove {
     hit_.axis = {0, -open.normals()[static_cast<size_t>(best)]};
   }
 
-  // A copy that rounding left a hair low snags on the first point of a line that continues the
-  // original's floor across the edge: it is stopped at once while the original slides freely. The
-  // copy is then lifted off that floor, along the normal of the original's latest contact turned
-  // into the copy's frame, by one to three units, if that frees it; the sub-move is then redone. A
-  // real wall is not helped by a lift along the floor's normal, so it still holds.
-  bool liftSnaggedCopy() {
-    if (hit_.kind != HitKind::Solid || hit_.instance == 0 || hit_.t != Fraction::zero() || move_.normals.empty())
-      return false;
-    if (!w_.liftCopy(e_, e_.instances[hit_.instance], move_.normals.back(), moves_[hit_.instance])) return false;
-    ++w_.report.copiesReplaced;
-    return true;
+  // A copy sits where rounding put it (its shape and position are rounded in its own turned
+  // frame), up to about a unit and a half from where the original maps; its integer steps zigzag
+  // about the exact direction. So it can meet a line the original glides along: the floor that
+  // continues across the edge, met face-on by a zigzag step or edge-on at its first point. Such a
+  // hit is known by the copy's exact motion (the anchor's, turned into its frame) not moving into
+  // the line; or, as before, by the copy being stopped at once after the original's own contact in
+  // this frame. The same rounding puts either side of an edge up to two units off the line it
+  // continues: an instance that meets, edge-on, the end of a line that lies on a face edge (a
+  // seam) without moving into the line is in that case too. The instance is lifted off the line by
+  // one to three units, if that frees it (a copy alone; the anchor, with the whole entity), and the
+  // sub-move is redone. A wall the body moves into still holds.
+  bool liftAtSeam() {
+    if (hit_.kind != HitKind::Solid) return false;
+    const size_t i = hit_.instance;
+    Instance& inst = e_.instances[i];
+    Vec2w liftAlong;  // the instance's frame
+    if (i > 0 && hit_.t == Fraction::zero() && !move_.normals.empty()) {
+      liftAlong = rotateWide(inst.rotation, move_.normals.back());
+    } else {
+      const Segment seg = w_.part(inst.part).segments()[hit_.line];
+      const bool edgeOn = hit_.sweep.axis < static_cast<int>(verts_[i].size());  // a polygon edge met the end
+      if (i == 0 && !(edgeOn && (nearWarpLine(w_, e_, inst, seg.a) || nearWarpLine(w_, e_, inst, seg.b)))) return false;
+      const Vec2w d = seg.b - seg.a;
+      i128 side = 0;  // which side of the line the instance is on (the sum over its vertices)
+      for (const Vec2 v : verts_[i]) side += cross(d, v - seg.a);
+      liftAlong = side >= 0 ? Vec2w{-d.y, d.x} : Vec2w{d.y, -d.x};
+      // Not into the line by more than about a degree (the turn between two faces comes from their
+      // rounded edges, so a floor continued across them is off by a fraction of one): -dot / |a||b|
+      // <= 1/64, compared squared on directions shortened to 20 bits.
+      const Vec2w a = shortTo20(i == 0 ? move_.motion : rotateQ30(inst.rotation, move_.motion)),
+                  b = shortTo20(liftAlong);
+      const i128 along = dot128(a, b);
+      if (along < 0 && along * along * 4096 > dot128(a, a) * dot128(b, b)) return false;
+    }
+    const bool lifted = i > 0 ? w_.liftCopy(e_, inst, liftAlong, moves_[i]) : liftEntity(liftAlong);
+    if (lifted) ++w_.report.copiesReplaced;
+    return lifted;
   }
 
   // 3. Every instance's step to the event's time, rounded to the safe side. A step that is exactly on
@@ -240,6 +292,36 @@ class SubMove {
  private:
   bool pulledBack() const { return t_ < hit_.t; }
 
+  // Moves the whole entity one to three units along `direction` (entity frame) where that move is
+  // free of every line for every instance: a sub-move of its own, with its pierce events.
+  bool liftEntity(Vec2w direction) {
+    const Vec2w n = shortDirection(direction);
+    const int64_t length = static_cast<int64_t>(isqrt(static_cast<u128>(n.x * n.x + n.y * n.y)));
+    if (length == 0) return false;
+    for (int64_t units = 1; units <= 3; ++units) {
+      const Vec2w step{static_cast<int64_t>(roundDiv(i128{n.x} * units, length)),
+                       static_cast<int64_t>(roundDiv(i128{n.y} * units, length))};
+      if (step == Vec2w{}) continue;
+      std::vector<Vec2w> none;
+      Move lift{e_, step, none, step, e_.velocityQ16};
+      SubMove sub(w_, lift);  // reuses the scratch buffers: this sub-move is abandoned afterwards
+      sub.planMotions();
+      sub.findFirstEvent();
+      if (!sub.free()) continue;
+      sub.roundSteps();
+      sub.commit();
+      sub.afterMove();
+      return true;
+    }
+    return false;
+  }
+  bool free() const { return hit_.kind == HitKind::None; }
+
+  static Vec2w shortTo20(Vec2w v) {
+    while (std::max(std::abs(v.x), std::abs(v.y)) > (int64_t{1} << 20)) v = {v.x / 2, v.y / 2};
+    return v;
+  }
+
   bool tryStepsAt(int attempt) {
     steps_.assign(n_, Vec2w{});
     for (size_t i = 0; i < n_; ++i) {
@@ -259,14 +341,14 @@ class SubMove {
   }
 
   // A copy follows the anchor's step exactly in Q30; its whole-unit position may lag. It keeps a
-  // lift of up to three units (see liftSnaggedCopy); a larger gap, left by a blocked step, is closed
+  // lift of up to three units (see liftAtSeam); a larger gap, left by a blocked step, is closed
   // where the way is free.
   void closeGap(size_t i) {
     Instance& inst = e_.instances[i];
     inst.idealQ30 = inst.idealQ30 + rotateQ30(inst.rotation, steps_[0]);
     const Vec2 ideal = pointFromQ30(inst.idealQ30);
     const Vec2w gap{int64_t{ideal.x} - inst.position.x, int64_t{ideal.y} - inst.position.y};
-    if (std::max(std::abs(gap.x), std::abs(gap.y)) <= 3) return;
+    if (std::max(std::abs(gap.x), std::abs(gap.y)) <= kCopyLift) return;
     std::vector<Vec2>& at = w_.scratch.probe;
     worldVertices(inst, at);
     w_.coverMotion(inst, gap);
@@ -358,6 +440,18 @@ bool WorldImpl::restsAgainstLines(Entity& e, Vec2w w) {
       if (outside(seg, box) || isPierceable(e, inst, k)) continue;
       const Nearness nearness = nearNormals(verts, seg, normals);
       if (nearness == Nearness::Apart) continue;
+      // A copy sits where rounding put it, and may meet a line's end edge-on where the original
+      // glides along it; so may any instance at a seam, the end of a line cut by a face edge. The
+      // slide lifts them off (liftAtSeam); for rest, such a line counts by its own side only.
+      bool ownSide = false;
+      for (const Vec2w n : normals) ownSide = ownSide || dot128(n, seg.b - seg.a) == 0;
+      if (&inst != &e.instances[0] ||
+          (!ownSide && (nearWarpLine(*this, e, inst, seg.a) || nearWarpLine(*this, e, inst, seg.b)))) {
+        const Vec2w d = seg.b - seg.a;
+        i128 side = 0;
+        for (const Vec2 v : verts) side += cross(d, v - seg.a);
+        normals.assign(1, side >= 0 ? Vec2w{-d.y, d.x} : Vec2w{d.y, -d.x});
+      }
       touching = touching || nearness == Nearness::Touching;
       // The contact reports the line's own normal when it is one of them (a body on a floor, not
       // the edge of its own shape at the floor's end).
@@ -391,7 +485,7 @@ void WorldImpl::stepEntity(Entity& e) {
   if (e.gravity) e.velocityQ16 = clampVelocityQ16(e.velocityQ16 + part(e.instances[0].part).gravity());
   // At rest: pressed into the lines it is against, it cannot move. It stays exactly where it is,
   // with no velocity and no fraction of a unit left over, so it stays at rest.
-  if (e.angularVelocity == 0 && copiesAtIdeal(e) && restsAgainstLines(e, e.velocityQ16)) {
+  if (e.angularVelocity == 0 && copiesSettled(e) && restsAgainstLines(e, e.velocityQ16)) {
     e.velocityQ16 = {};
     e.subunitQ17 = {};
     return;
@@ -412,12 +506,12 @@ void WorldImpl::slide(Move& move) {
   Entity& e = move.entity;
   for (int iteration = 0; iteration < kMaxSubMoves && !e.instances.empty(); ++iteration) {
     createOverlappedWarps(e);
-    if (move.motion == Vec2w{} && copiesAtIdeal(e)) break;
+    if (move.motion == Vec2w{} && copiesSettled(e)) break;
     ++report.subMoves;
     SubMove sub(*this, move);
     sub.planMotions();
     sub.findFirstEvent();
-    if (sub.liftSnaggedCopy()) continue;
+    if (sub.liftAtSeam()) continue;
     sub.resolveContactNormal();
     sub.roundSteps();
     sub.commit();

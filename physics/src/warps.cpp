@@ -93,8 +93,8 @@ bool WorldImpl::placeNear(const Entity& e, Instance& inst, Vec2w targetQ30, cons
   return placed;
 }
 
-bool WorldImpl::liftCopy(const Entity& e, Instance& copy, Vec2w floorNormal, Vec2w move) {
-  const Vec2w n = shortDirection(rotateWide(copy.rotation, floorNormal));
+bool WorldImpl::liftCopy(const Entity& e, Instance& copy, Vec2w direction, Vec2w move) {
+  const Vec2w n = shortDirection(direction);
   const int64_t length = static_cast<int64_t>(isqrt(static_cast<u128>(n.x * n.x + n.y * n.y)));
   if (length == 0) return false;
   const Vec2 was = copy.position;

@@ -109,7 +109,9 @@ struct WorldImpl {
   // Moves `inst` to the free whole-unit position within two units of `targetQ30` (touching
   // `mustTouch` if given) that lets it travel furthest along `probe`, nearest first among equals.
   bool placeNear(const Entity& e, Instance& inst, Vec2w targetQ30, const Segment* mustTouch, Vec2w probe);
-  bool liftCopy(const Entity& e, Instance& copy, Vec2w floorNormal, Vec2w move);
+  // Moves the copy one to three units along `direction` (its own frame) to the first place that is
+  // free and lets it start along `move`; false (and unmoved) if there is none.
+  bool liftCopy(const Entity& e, Instance& copy, Vec2w direction, Vec2w move);
   // Makes instance k the anchor: the frame, velocity, remainder and motion turn with it.
   void rebase(Move& move, size_t k);
   void updateLinks(Move& move);
