@@ -485,9 +485,14 @@ void WorldImpl::stepEntity(Entity& e) {
   if (e.gravity) e.velocityQ16 = clampVelocityQ16(e.velocityQ16 + part(e.instances[0].part).gravity());
   // At rest: pressed into the lines it is against, it cannot move. It stays exactly where it is,
   // with no velocity and no fraction of a unit left over, so it stays at rest.
-  if (e.angularVelocity == 0 && copiesSettled(e) && restsAgainstLines(e, e.velocityQ16)) {
+  if (e.angularVelocity == 0 && restsAgainstLines(e, e.velocityQ16)) {
     e.velocityQ16 = {};
     e.subunitQ17 = {};
+    if (!copiesSettled(e)) {  // a copy lagging more than a lift closes its gap where it is free
+      scratch.normals.clear();
+      Move still{e, {}, scratch.normals, {}, {}};
+      slide(still);
+    }
     return;
   }
   // The frame moves by the average of the velocities at its start and end: for constant gravity
@@ -506,7 +511,7 @@ void WorldImpl::slide(Move& move) {
   Entity& e = move.entity;
   for (int iteration = 0; iteration < kMaxSubMoves && !e.instances.empty(); ++iteration) {
     createOverlappedWarps(e);
-    if (move.motion == Vec2w{} && copiesSettled(e)) break;
+    if (move.motion == Vec2w{} && (copiesSettled(e) || iteration > 0)) break;  // gaps get one try a frame
     ++report.subMoves;
     SubMove sub(*this, move);
     sub.planMotions();
