@@ -127,6 +127,15 @@ class SubMove {
         if (pierce && (line.kind != LineKind::Warp || e_.instanceIn(part.warps()[line.warp].target) != nullptr))
           continue;
         const Sweep s = sweep(verts_[i], moves_[i], seg);
+        if (line.kind == LineKind::Warp && !pierce && s.startsInside()) {
+          // A warp that cannot be crossed this frame (no room on the far side) already overlapped:
+          // it still holds, so the instance may not go any further across it. Its face lies to the
+          // left of the warp line.
+          const Vec2w into{-(seg.b.y - seg.a.y), seg.b.x - seg.a.x};
+          if (dot(moves_[i], into) < 0 && hit_.improvedBy(Fraction::zero(), HitKind::Solid, i, lines[k]))
+            hit_ = {HitKind::Solid, Fraction::zero(), i, lines[k], s, {0, -into}};
+          continue;
+        }
         if (!s.hitsWithinFrame()) continue;
         const HitKind kind = pierce ? HitKind::Warp : HitKind::Solid;
         if (hit_.improvedBy(s.enter, kind, i, lines[k])) hit_ = {kind, s.enter, i, lines[k], s, s.enterAxis};

@@ -236,3 +236,35 @@ TEST(WarpCorners, EveryFoldHoldsABodyStillAndLetsItWalkOut) {
   EXPECT_GT(cases, 140);
   std::printf("warp corners: %d cases, the last move at most %d frames after being let go\n", cases, worst);
 }
+
+// A wall right behind an edge (0 to 3 units past it, closer than a copy can be placed): the edge
+// holds like a wall. Driven into it at every fold and slope, the body never gets past the wall and
+// never leaves its face through the edge (it used to, once it overlapped an edge it could not
+// cross: it drifted on across and fell out of the world).
+TEST(WarpCorners, AnEdgeWithNoRoomBeyondHoldsLikeAWall) {
+  std::mt19937_64 rng(47);
+  int cases = 0;
+  for (const int64_t fold : kFolds)
+    for (int trial = 0; trial < 12; ++trial) {
+      Fold f;
+      const int32_t slope = trial % 2 == 0 ? 0 : in(rng, -2000, 2000);
+      const int32_t wall = in(rng, 1, 3);
+      f.build(fold, slope, wall, in(rng, 4000, kUnit), in(rng, 0, 20));
+      const int32_t size = in(rng, 4, 60);
+      if (!f.drop(randomShape(rng, size), f.edge - 300)) continue;
+      ++cases;
+      const int64_t speed = in(rng, kUnit, 12 * kUnit);
+      for (int frame = 0; frame < 1500; ++frame) {
+        f.drive(frame % 300 < 250 ? speed : -speed / 2);
+        f.world.solve();
+        ASSERT_EQ(f.world.countOverlaps(), 0u) << fold << " degrees, trial " << trial << ", frame " << frame;
+        const Vec2w at = f.unfolded();
+        // The wall is at most 3 + |slope| units past x = edge near the floor; the body's origin is
+        // within 2 * size of its shape's edge.
+        ASSERT_LT(at.x, f.edge + std::abs(slope) + 3 + 2 * size)
+            << fold << " degrees, trial " << trial << ", frame " << frame;
+        ASSERT_GT(at.y, -2 * size) << fold << " degrees, trial " << trial << ": fell through, frame " << frame;
+      }
+    }
+  EXPECT_GT(cases, 100);
+}
