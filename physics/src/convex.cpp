@@ -85,7 +85,9 @@ Convex Convex::rotated(Angle angle) const {
 }
 
 Convex Convex::regular(int n, int32_t radius) {
-  if (n < 3 || n > kMaxConvexVertices) throw Error("regular polygon needs 3..64 vertices");
+  if (n < 3 || n > kMaxConvexVertices) throw Error("regular polygon needs 3..64 vertices, got " + std::to_string(n));
+  if (radius < 1 || radius > kShapeLimit)
+    throw Error("regular polygon radius " + std::to_string(radius) + " is outside 1..2^29");
   std::vector<Vec2> points;
   for (int i = 0; i < n; ++i) {
     const Angle a = static_cast<Angle>((i128{1} << 32) * i / n);
@@ -96,6 +98,10 @@ Convex Convex::regular(int n, int32_t radius) {
 }
 
 Convex Convex::box(int32_t halfWidth, int32_t halfHeight) {
+  // Checked before they are negated: -INT32_MIN does not exist.
+  if (halfWidth < 1 || halfWidth > kShapeLimit || halfHeight < 1 || halfHeight > kShapeLimit)
+    throw Error("box half-size (" + std::to_string(halfWidth) + ", " + std::to_string(halfHeight) +
+                ") is outside 1..2^29");
   return Convex(
       {{-halfWidth, -halfHeight}, {halfWidth, -halfHeight}, {halfWidth, halfHeight}, {-halfWidth, halfHeight}});
 }

@@ -11,7 +11,9 @@ namespace {
 // Sub-steps for turning a shape of squared radius `radius2` by `delta` binary-angle units: small
 // enough that a vertex's arc leaves its chord by under half a unit. The arc of radius r through
 // angle a leaves its chord by r (1 - cos(a / 2)) ~ r a^2 / 8, so a <= 2 / sqrt(r): the count is
-// ceil(|delta| * pi * r^(1/2) / 2^32), in exact integers (r^(1/2) and pi in Q32 and Q40).
+// ceil(|delta| * pi * r^(1/2) / 2^32), in exact integers (r^(1/2) and pi in Q32 and Q40). No cap:
+// the largest legal shape (radius 2^29.5) needs about 43,000 sub-steps for a half turn, and a cap
+// would let its far end swing through a short line between two of them.
 int64_t rotationSubSteps(int64_t radius2, int64_t delta) {
   const uint64_t rootQ32 = isqrt(static_cast<u128>(radius2) << 64);                            // r in Q32
   const uint64_t fourthRootQ32 = isqrt(static_cast<u128>(rootQ32) << 32);                      // r^(1/2) in Q32
@@ -19,7 +21,7 @@ int64_t rotationSubSteps(int64_t radius2, int64_t delta) {
   const u128 scaled = static_cast<u128>(delta < 0 ? -delta : delta) * fourthRootQ32 * kPiQ40;  // < 2^120
   const u128 unit = static_cast<u128>(1) << (32 + 32 + 40);
   const int64_t steps = static_cast<int64_t>((scaled + unit - 1) / unit);
-  return std::clamp<int64_t>(steps, 1, 4096);
+  return std::max<int64_t>(steps, 1);
 }
 
 }  // namespace

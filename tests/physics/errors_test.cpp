@@ -106,3 +106,18 @@ TEST(Errors, ShapesTooSmallToRotateAreRefused) {
   expectError([&] { world.rotate(sliver, angleFromDegrees(25)); }, "too small to rotate");
   EXPECT_EQ(world.entity(sliver).angle(), 0u);
 }
+
+// The shape constructors check their arguments before any arithmetic on them (negating INT32_MIN
+// or rotating a radius past the shape range was undefined behaviour).
+TEST(Errors, ShapeConstructorsCheckBeforeArithmetic) {
+  expectError([] { Convex::box(INT32_MIN, 5); }, "box half-size (-2147483648, 5) is outside 1..2^29");
+  expectError([] { Convex::box(5, INT32_MIN); }, "outside 1..2^29");
+  expectError([] { Convex::box(0, 5); }, "outside 1..2^29");
+  expectError([] { Convex::box(kShapeLimit + 1, 5); }, "outside 1..2^29");
+  expectError([] { Convex::regular(8, INT32_MIN); }, "radius -2147483648 is outside 1..2^29");
+  expectError([] { Convex::regular(8, INT32_MAX); }, "outside 1..2^29");
+  expectError([] { Convex::regular(2, 10); }, "3..64 vertices, got 2");
+  expectError([] { Convex::regular(65, 10); }, "3..64 vertices, got 65");
+  EXPECT_EQ(Convex::box(kShapeLimit, kShapeLimit).size(), 4);
+  EXPECT_EQ(Convex::regular(64, kShapeLimit).size(), 64);
+}

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "platon/physics/world.h"
 
 using namespace platon::physics;
@@ -227,5 +229,39 @@ TEST(Rotation, AngularVelocityInsideACorridorNeverOverlaps) {
   for (int i = 0; i < 300; ++i) {
     world.solve();
     ASSERT_EQ(world.countOverlaps(), 0u);
+  }
+}
+
+// A body far larger than any level's (its far end 4 * 10^8 units from its origin) turning a quarter
+// turn: a short line between the chord and the arc of two sub-steps that a cap of 4,096 sub-steps
+// would have left 7 units apart still stops the turn, with a touchContact, for lines placed all
+// along the arc.
+TEST(Rotation, LargeBodiesMeetShortLinesAnywhereAlongTheirArc) {
+  const int32_t reach = 400'000'000;
+  const double kPi = 3.14159265358979323846;
+  for (int k = 0; k < 12; ++k) {
+    World world;
+    MapPart& part = world.createMapPart(1);
+    // A two-unit line across the arc at radius reach - 3 .. reach - 1, at an angle half-way between
+    // two of the 4,096 sub-steps (where the old chords passed 7 units inside the arc).
+    const double at = (97.5 + 330.0 * k) * (kPi / 2) / 4096;
+    const auto point = [&](double r) {
+      return Vec2{static_cast<int32_t>(std::lround(r * std::cos(at))), static_cast<int32_t>(std::lround(r * std::sin(at)))};
+    };
+    part.line(point(reach - 3.0), point(reach - 1.0), 9);
+    part.initialize();
+    struct Touches : Rules {
+      int count = 0;
+      uint32_t tag = 0;
+      void touchContact(const Contact& c) override { ++count, tag = c.line.tag; }
+    } rules;
+    world.setRules(&rules);
+    const EntityId rod = world.createEntity(Convex::box(reach, 4));
+    world.insert(rod, 1, {0, 0}, 0);
+    EXPECT_FALSE(world.rotate(rod, kQuarterTurn)) << "line " << k << " at " << at << " rad";
+    EXPECT_EQ(rules.count, 1);
+    EXPECT_EQ(rules.tag, 9u);
+    EXPECT_LT(world.entity(rod).angle() * (2 * kPi / 4294967296.0), at);
+    EXPECT_EQ(world.countOverlaps(), 0u);
   }
 }
