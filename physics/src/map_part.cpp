@@ -33,6 +33,14 @@ LineIndex MapPart::line(Vec2 p0, Vec2 p1, uint32_t tag) {
   return static_cast<LineIndex>(lines_.size() - 1);
 }
 
+LineIndex MapPart::oneWay(Vec2 p0, Vec2 p1, uint32_t tag) {
+  checkOpen("one-way line");
+  checkSegment(p0, p1, "one-way line");
+  lines_.push_back({tag, LineKind::OneWay, UINT32_MAX});
+  segments_.push_back({p0, p1});
+  return static_cast<LineIndex>(lines_.size() - 1);
+}
+
 LineIndex MapPart::warp(Vec2 p0, Vec2 p1, MapPartId target, Vec2 t0, Vec2 t1, uint32_t tag) {
   checkOpen("warp");
   checkSegment(p0, p1, "warp");

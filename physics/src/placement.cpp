@@ -33,6 +33,9 @@ bool WorldImpl::isPierceable(const Entity& e, Instance& inst, size_t k) {
     const LineRef ref{p.id(), index, line.tag, line.kind};
     bool pierce = line.kind == LineKind::Warp;
     callRules([&](Rules& r) { pierce = r.pierce(e.id, ref); });
+    // Turned solid while the instance overlaps it (refreshPierce): it stays passable for this
+    // instance until it is clear, so the answer is not kept and the question comes back.
+    if (!pierce && std::binary_search(inst.overlapping.begin(), inst.overlapping.end(), index)) return true;
     flag = pierce ? 2 : 1;
   }
   if (flag == 2 && !inst.blockedWarps.empty()) {
@@ -40,6 +43,23 @@ bool WorldImpl::isPierceable(const Entity& e, Instance& inst, size_t k) {
     if (std::find(inst.blockedWarps.begin(), inst.blockedWarps.end(), index) != inst.blockedWarps.end()) return false;
   }
   return flag == 2;
+}
+
+namespace {
+// Every vertex on or left of the directed segment's line.
+bool wholyInFront(std::span<const Vec2> verts, Segment seg) {
+  const Vec2w d = seg.b - seg.a;
+  for (const Vec2 v : verts)
+    if (cross(d, v - seg.a) < 0) return false;
+  return true;
+}
+}  // namespace
+
+bool WorldImpl::blocks(const Entity& e, Instance& inst, size_t k, std::span<const Vec2> verts) {
+  if (isPierceable(e, inst, k)) return false;
+  const MapPart& p = part(inst.part);
+  const LineIndex index = inst.region.lines()[k];
+  return p.lines()[index].kind != LineKind::OneWay || wholyInFront(verts, p.segments()[index]);
 }
 
 void WorldImpl::coverMotion(Instance& inst, Vec2w motion, int64_t slack) {
@@ -61,7 +81,7 @@ std::optional<LineIndex> WorldImpl::solidOverlap(const Entity& e, Instance& inst
   const MapPart& p = part(inst.part);
   const auto lines = inst.region.lines();
   for (size_t k = 0; k < lines.size(); ++k)
-    if (!isPierceable(e, inst, k) && overlapsInterior(verts, p.segments()[lines[k]])) return lines[k];
+    if (blocks(e, inst, k, verts) && overlapsInterior(verts, p.segments()[lines[k]])) return lines[k];
   return std::nullopt;
 }
 
@@ -76,7 +96,7 @@ Fraction WorldImpl::firstBlock(const Entity& e, Instance& inst, std::span<const 
   Fraction first = Fraction::one();
   for (size_t k = 0; k < lines.size(); ++k) {
     const Segment& seg = p.segments()[lines[k]];
-    if (outside(seg, box) || isPierceable(e, inst, k)) continue;
+    if (outside(seg, box) || !blocks(e, inst, k, verts)) continue;
     const Sweep s = sweep(verts, step, seg);
     if (s.hitsWithinFrame() && s.enter < first) first = s.enter;
   }

@@ -60,7 +60,7 @@ bool WorldImpl::rotateBy(Entity& e, int64_t delta) {
       const MapPart& p = part(inst.part);
       const auto lines = inst.region.lines();
       for (size_t k = 0; k < lines.size() && !blocked; ++k) {
-        if (isPierceable(e, inst, k)) continue;
+        if (!blocks(e, inst, k, worldVertices(inst))) continue;
         if (!overlapsInterior(hull, p.segments()[lines[k]])) continue;
         blocked = true;
         const Contact c = makeContact(e, inst, lines[k], Fraction::zero(), {}, {});

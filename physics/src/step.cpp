@@ -124,6 +124,7 @@ class SubMove {
         pierceNear_[i] |= pierce;
         if (moves_[i] == Vec2w{}) continue;
         const Line& line = part.lines()[lines[k]];
+        if (!pierce && !w_.blocks(e_, inst, k, verts_[i])) continue;  // a one-way line, from behind
         if (pierce && (line.kind != LineKind::Warp || e_.instanceIn(part.warps()[line.warp].target) != nullptr))
           continue;
         const Sweep s = sweep(verts_[i], moves_[i], seg);
@@ -167,7 +168,7 @@ class SubMove {
     touchingLines.clear();
     for (size_t k = 0; k < lines.size(); ++k) {
       const Segment& seg = part.segments()[lines[k]];
-      if (outside(seg, box) || w_.isPierceable(e_, inst, k)) continue;
+      if (outside(seg, box) || !w_.blocks(e_, inst, k, verts_[i])) continue;
       normals.clear();
       if (touchingNormals(verts_[i], moves_[i], hit_.t, seg, normals)) touchingLines.push_back(lines[k]);
     }
@@ -446,7 +447,7 @@ bool WorldImpl::restsAgainstLines(Entity& e, Vec2w w) {
     for (size_t k = 0; k < lines.size(); ++k) {
       const Segment& seg = p.segments()[lines[k]];
       normals.clear();
-      if (outside(seg, box) || isPierceable(e, inst, k)) continue;
+      if (outside(seg, box) || !blocks(e, inst, k, verts)) continue;
       const Nearness nearness = nearNormals(verts, seg, normals);
       if (nearness == Nearness::Apart) continue;
       // A copy sits where rounding put it, and may meet a line's end edge-on where the original

@@ -134,6 +134,19 @@ void World::setRules(Rules* rules) {
         std::fill(inst.region.flags().begin(), inst.region.flags().end(), uint8_t{0});
 }
 
+void World::refreshPierce(uint32_t tag) {
+  impl_->checkUnlocked("refreshPierce");
+  for (WorldImpl::Slot& slot : impl_->slots) {
+    if (!slot.entity) continue;
+    for (Instance& inst : slot.entity->instances) {
+      const MapPart& part = impl_->part(inst.part);
+      const auto lines = inst.region.lines();
+      for (size_t k = 0; k < lines.size(); ++k)
+        if (part.lines()[lines[k]].tag == tag) inst.region.flags()[k] = 0;
+    }
+  }
+}
+
 void World::insert(EntityId id, MapPartId partId, Vec2 origin, Angle angle) {
   WorldImpl& w = *impl_;
   w.checkUnlocked("insert");
@@ -207,6 +220,8 @@ size_t World::countOverlaps() const {
       const std::vector<Vec2> verts = worldVertices(inst);
       for (LineIndex l = 0; l < part.lines().size(); ++l) {
         const Line& line = part.lines()[l];
+        if (line.kind == LineKind::OneWay) continue;
+        if (std::binary_search(inst.overlapping.begin(), inst.overlapping.end(), l)) continue;  // kept passable
         if (impl_->rules->pierce(e->id, {part.id(), l, line.tag, line.kind})) continue;
         if (overlapsInterior(verts, part.segments()[l])) ++count;
       }

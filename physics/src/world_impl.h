@@ -78,6 +78,9 @@ struct WorldImpl {
   // placement.cpp
   Instance makeInstance(const Entity& e, MapPartId part, Vec2 position, Angle turn) const;
   bool isPierceable(const Entity& e, Instance& inst, size_t regionIndex);
+  // Whether region line k stops the instance whose vertices are `verts`: it is not pierceable, and
+  // if it is one-way, the instance is wholly on its front.
+  bool blocks(const Entity& e, Instance& inst, size_t regionIndex, std::span<const Vec2> verts);
   // Makes the instance's region hold every line near its shape moved by anything from 0 to
   // `motion`, and within `slack` more units around that.
   void coverMotion(Instance& inst, Vec2w motion, int64_t slack = 0);

@@ -1,11 +1,10 @@
 // Rules: pierceable lines and their events, solid contacts and their responses, errors thrown from
 // callbacks, structural changes refused during solve.
+#include <cmath>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
-
-#include <cmath>
 
 #include "platon/physics/world.h"
 
@@ -246,7 +245,8 @@ TEST(Rotation, LargeBodiesMeetShortLinesAnywhereAlongTheirArc) {
     // two of the 4,096 sub-steps (where the old chords passed 7 units inside the arc).
     const double at = (97.5 + 330.0 * k) * (kPi / 2) / 4096;
     const auto point = [&](double r) {
-      return Vec2{static_cast<int32_t>(std::lround(r * std::cos(at))), static_cast<int32_t>(std::lround(r * std::sin(at)))};
+      return Vec2{static_cast<int32_t>(std::lround(r * std::cos(at))),
+                  static_cast<int32_t>(std::lround(r * std::sin(at)))};
     };
     part.line(point(reach - 3.0), point(reach - 1.0), 9);
     part.initialize();

@@ -13,7 +13,11 @@ namespace platon::physics {
 class Grid;  // internal: which lines pass through which cell
 struct WorldImpl;
 
-enum class LineKind : uint8_t { Solid, Warp };
+// Solid: stops every entity (unless Rules::pierce lets it through). Warp: an edge shared with
+// another part. OneWay: a platform you can jump up through and stand on: solid only to an instance
+// wholly on its front (left of p0 -> p1, "up" for a line drawn left to right) when it comes near;
+// from behind, or while overlapping it, it lets the instance through.
+enum class LineKind : uint8_t { Solid, Warp, OneWay };
 
 // A line's geometry is segments()[index]; this is the rest of it.
 struct Line {
@@ -38,6 +42,8 @@ class MapPart {
 
   // Adds a solid line; returns its index. Throws on zero length, range, or after initialize().
   LineIndex line(Vec2 p0, Vec2 p1, uint32_t tag = 0);
+  // Adds a one-way line, solid from its left side only (see LineKind::OneWay).
+  LineIndex oneWay(Vec2 p0, Vec2 p1, uint32_t tag = 0);
   // Adds a warp line to part `target`, where the same edge runs t0 -> t1. The two edges should be
   // equally long (a solid's edges are); they may differ by rounding, up to 1% or 2 units.
   LineIndex warp(Vec2 p0, Vec2 p1, MapPartId target, Vec2 t0, Vec2 t1, uint32_t tag = 0);

@@ -94,13 +94,21 @@ class World {
 
   // nullptr restores the default rules. The rules object must outlive its use by solve().
   void setRules(Rules* rules);
+  // Asks Rules::pierce again, for every entity, about the lines tagged `tag` in every part: call it
+  // when a switch changes what pierce answers (a door opens, a bridge appears). The answers are
+  // otherwise kept while a line stays near an instance. A line that becomes solid while an
+  // instance overlaps it stays passable for that instance until it is clear of it (its begin/end
+  // pair completes, and nothing is ever inside a solid line); then it holds.
+  void refreshPierce(uint32_t tag);
 
   // Advances one frame. Deterministic: the same calls give bit-identical states.
   SolveReport solve();
   uint64_t frame() const;
   uint64_t stateHash() const;
 
-  // Number of (instance, solid line) pairs that overlap; the invariant says always 0. For tests.
+  // Number of (instance, line) pairs where the instance overlaps the interior of a line that is
+  // solid for it; the invariant says always 0. One-way lines, and lines kept passable until an
+  // instance is clear of them (refreshPierce), do not count. For tests.
   size_t countOverlaps() const;
 
  private:
