@@ -46,4 +46,28 @@ inline bool forEachAxis(std::span<const Vec2> poly, Segment seg, Visit&& visit) 
   return visit(s.minG, -left, n + 1);
 }
 
+// The same for two convex polygons: the first one's edges (axis 0..n-1), then the second's (n..),
+// with c pointing from the first towards the second. For the second's edge j from w along f (outward
+// normal m = (f.y, -f.x)), the axis is c = -m and the slack is min over the first's vertices p of
+// cross(p - w, f).
+template <class Visit>
+inline bool forEachAxis(std::span<const Vec2> poly, std::span<const Vec2> other, Visit&& visit) {
+  const int n = static_cast<int>(poly.size()), m = static_cast<int>(other.size());
+  for (int i = 0; i < n; ++i) {
+    const Vec2 w = poly[i];
+    const Vec2w e = poly[i + 1 == n ? 0 : i + 1] - w;
+    int64_t slack = INT64_MAX;
+    for (const Vec2 q : other) slack = std::min(slack, cross(q - w, e));
+    if (!visit(slack, Vec2w{e.y, -e.x}, i)) return false;
+  }
+  for (int j = 0; j < m; ++j) {
+    const Vec2 w = other[j];
+    const Vec2w f = other[j + 1 == m ? 0 : j + 1] - w;
+    int64_t slack = INT64_MAX;
+    for (const Vec2 p : poly) slack = std::min(slack, cross(p - w, f));
+    if (!visit(slack, Vec2w{-f.y, f.x}, n + j)) return false;
+  }
+  return true;
+}
+
 }  // namespace platon::physics

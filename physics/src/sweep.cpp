@@ -44,6 +44,21 @@ Sweep sweep(std::span<const Vec2> poly, Vec2w motion, Segment seg) {
   return r;
 }
 
+Sweep sweep(std::span<const Vec2> poly, Vec2w motion, std::span<const Vec2> obstacle) {
+  Sweep r;
+  r.empty = false;
+  const bool open = forEachAxis(poly, obstacle,
+                                [&](int64_t slack, Vec2w c, int axis) { return applyAxis(r, slack, c, motion, axis); });
+  if (!open) return Sweep{};
+  if (r.hasEnter && r.hasExit && r.enter >= r.exit) return Sweep{};
+  if (r.hasExit && r.exit <= Fraction::zero()) return Sweep{};
+  return r;
+}
+
+bool overlapsInterior(std::span<const Vec2> poly, std::span<const Vec2> other) {
+  return forEachAxis(poly, other, [](int64_t slack, Vec2w, int) { return slack < 0; });
+}
+
 Vec2w roundedStep(Vec2w m, Fraction t, const Constraint* keep) {
   if (t == Fraction::one()) return m;
   auto one = [&](int64_t mk, int64_t ck) {

@@ -55,9 +55,15 @@ Sweep sweep(std::span<const Vec2> polygon, Vec2w motion, Segment segment);
 // side of that axis, so it ends touching or short, never across; without, towards the start.
 Vec2w roundedStep(Vec2w motion, Fraction t, const Constraint* keep = nullptr);
 
+// The same against another convex polygon (counter-clockwise, at least 3 vertices) that stays
+// still: the axes are both polygons' edge normals (Minkowski: polygon (+) (-obstacle)); axis n + j
+// is the obstacle's edge j.
+Sweep sweep(std::span<const Vec2> polygon, Vec2w motion, std::span<const Vec2> obstacle);
+
 // Static tests at the current position.
 bool overlapsInterior(std::span<const Vec2> polygon, Segment segment);   // interiors meet
 bool touchesOrOverlaps(std::span<const Vec2> polygon, Segment segment);  // closed sets meet
+bool overlapsInterior(std::span<const Vec2> polygon, std::span<const Vec2> other);
 
 // Where the polygon, moved by `enter * motion`, touches the segment: one point, or the two ends of
 // a shared stretch when an edge lies along the segment. Points of the moving polygon are rounded

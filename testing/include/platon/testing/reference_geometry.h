@@ -172,13 +172,13 @@ struct RefSweep {
   std::vector<Vec2w> enterNormals;  // outward normals of O's edges through the entry point
 };
 
-inline RefSweep referenceSweep(std::span<const Vec2> poly, Vec2w motion, Vec2 a, Vec2 b) {
+// Against any convex set given by its points (a segment's two ends, a polygon's vertices): the
+// obstacle is hull{q - w} over its points q and the polygon's vertices w.
+inline RefSweep referenceSweep(std::span<const Vec2> poly, Vec2w motion, std::span<const Vec2> points) {
   RefSweep r;
   std::vector<Vec2w> pts;
-  for (const Vec2 w : poly) {
-    pts.push_back(a - w);
-    pts.push_back(b - w);
-  }
+  for (const Vec2 w : poly)
+    for (const Vec2 q : points) pts.push_back(q - w);
   r.obstacle = hull(std::move(pts));
   if (r.obstacle.size() < 3) throw std::logic_error("reference: obstacle has no interior");
   r.overlapsAtZero = r.touchesAtZero = true;
@@ -217,6 +217,11 @@ inline RefSweep referenceSweep(std::span<const Vec2> poly, Vec2w motion, Vec2 a,
   for (const Entering& en : entering)
     if (en.t == r.enter) r.enterNormals.push_back(en.n);
   return r;
+}
+
+inline RefSweep referenceSweep(std::span<const Vec2> poly, Vec2w motion, Vec2 a, Vec2 b) {
+  const Vec2 ends[2] = {a, b};
+  return referenceSweep(poly, motion, ends);
 }
 
 // The set of s in [0, 1] for which A + s(B - A) lies in the polygon moved by t * motion: the
