@@ -54,6 +54,46 @@ Nearness nearNormals(std::span<const Vec2> polygon, Segment segment, std::vector
   return touching ? Nearness::Touching : Nearness::Near;
 }
 
+bool touchingNormals(std::span<const Vec2> polygon, Vec2w motion, Fraction t, std::span<const Vec2> other,
+                     std::vector<Vec2w>& normals) {
+  const size_t before = normals.size();
+  const bool touching = forEachAxis(polygon, other, [&](int64_t slack, Vec2w c, int) {
+    const int sign = signAt(slack, dot(c, motion), t);
+    if (sign == 0) normals.push_back(-c);
+    return sign <= 0;
+  });
+  if (!touching) normals.resize(before);
+  return touching;
+}
+
+Nearness nearNormals(std::span<const Vec2> polygon, std::span<const Vec2> other, std::vector<Vec2w>& normals) {
+  const size_t before = normals.size();
+  const int n = static_cast<int>(polygon.size());
+  bool touching = true;
+  std::vector<uint8_t> own;  // whether each kept normal is one of the other polygon's edges
+  const bool near = forEachAxis(polygon, other, [&](int64_t slack, Vec2w c, int axis) {
+    if (slack > 0) touching = false;
+    if (slack < 0) return true;
+    if (slack >= (int64_t{1} << 32) ||
+        4 * static_cast<u128>(slack) * static_cast<u128>(slack) >= 9 * static_cast<u128>(dot128(c, c)))
+      return false;
+    normals.push_back(-c);
+    own.push_back(axis >= n);
+    return true;
+  });
+  if (near && !touching) {
+    size_t kept = before;
+    for (size_t k = before; k < normals.size(); ++k)
+      if (own[k - before]) normals[kept++] = normals[k];
+    normals.resize(kept);
+  }
+  if (!near || normals.size() == before) {
+    normals.resize(before);
+    return Nearness::Apart;
+  }
+  return touching ? Nearness::Touching : Nearness::Near;
+}
+
 bool OpenDirections::open(Vec2w d) const {
   uint32_t first = 0;
   for (const uint32_t end : groupEnds_) {

@@ -37,6 +37,12 @@ bool touchingNormals(std::span<const Vec2> polygon, Vec2w motion, Fraction t, Se
 enum class Nearness { Apart, Near, Touching };
 Nearness nearNormals(std::span<const Vec2> polygon, Segment segment, std::vector<Vec2w>& normals);
 
+// The same two against another entity's convex polygon. Short of touching, only the other
+// polygon's own edges count (its sides, as a line's own side does).
+bool touchingNormals(std::span<const Vec2> polygon, Vec2w motion, Fraction t, std::span<const Vec2> other,
+                     std::vector<Vec2w>& normals);
+Nearness nearNormals(std::span<const Vec2> polygon, std::span<const Vec2> other, std::vector<Vec2w>& normals);
+
 // The directions open past a set of lines, each given by the contact normals of its active axes.
 class OpenDirections {
  public:

@@ -59,6 +59,7 @@ struct Entity {
   int32_t angularVelocity = 0;  // binary-angle units per frame
   bool gravity = true;          // the anchor part's gravity applies
   uint64_t userData = 0;
+  EntityFilter filter;
   std::vector<Instance> instances;
   std::vector<WarpLink> links;
   std::vector<Contact> contacts;  // solid contacts of the latest solve(), in the order they happened

@@ -12,6 +12,7 @@ Vec2w EntityView::velocity() const { return entity_->velocityQ16; }
 int32_t EntityView::angularVelocity() const { return entity_->angularVelocity; }
 bool EntityView::gravityEnabled() const { return entity_->gravity; }
 uint64_t EntityView::userData() const { return entity_->userData; }
+const EntityFilter& EntityView::filter() const { return entity_->filter; }
 size_t EntityView::instanceCount() const { return entity_->instances.size(); }
 std::span<const Contact> EntityView::contacts() const { return entity_->contacts; }
 

@@ -13,7 +13,7 @@ Contact WorldImpl::makeContact(const Entity& e, const Instance& inst, LineIndex 
   c.part = inst.part;
   c.line.part = inst.part;
   c.line.index = line;
-  if (line != kWorldBoundLine) {
+  if (line < part(inst.part).lines().size()) {
     const Line& l = part(inst.part).lines()[line];
     c.line.tag = l.tag;
     c.line.kind = l.kind;
@@ -25,15 +25,7 @@ Contact WorldImpl::makeContact(const Entity& e, const Instance& inst, LineIndex 
 }
 
 void WorldImpl::updatePierceState(Entity& e, const Path& path) {
-  struct Event {
-    Fraction t;
-    size_t instance;
-    LineIndex line;
-    bool begin;
-    Vec2w normal;
-    ContactPoints points;
-  };
-  std::vector<Event> events;
+  std::vector<PathEvent> events;
   for (size_t i = 0; i < e.instances.size(); ++i) {
     Instance& inst = e.instances[i];
     // Nothing pierceable near the path and nothing overlapped: no event is possible.
@@ -61,22 +53,26 @@ void WorldImpl::updatePierceState(Entity& e, const Path& path) {
       if (!was) {
         ContactPoints pts;
         if (moved && s.hitsWithinFrame()) pts = contactPoints(path.start[i], path.steps[i], seg, s);
-        events.push_back({enter, i, line, true, moved ? s.normal() : Vec2w{}, pts});
+        events.push_back({enter, i, line, true, moved ? s.normal() : Vec2w{}, pts, {}});
       }
-      if (!is) events.push_back({exit, i, line, false, {}, {}});
+      if (!is) events.push_back({exit, i, line, false, {}, {}, {}});
     }
     std::sort(overlapping.begin(), overlapping.end());
     inst.overlapping = std::move(overlapping);
   }
-  // Time order; ties in a fixed order (instance, line, begin before end), never region order.
-  std::sort(events.begin(), events.end(), [](const Event& a, const Event& b) {
+  entityOverlapEvents(e, path, events);
+  // Time order; ties in a fixed order (instance, line before entity, begin before end), never
+  // region order.
+  std::sort(events.begin(), events.end(), [](const PathEvent& a, const PathEvent& b) {
     if (a.t != b.t) return a.t < b.t;
     if (a.instance != b.instance) return a.instance < b.instance;
-    if (a.line != b.line) return a.line < b.line;
+    if (a.key != b.key) return a.key < b.key;
     return a.begin > b.begin;
   });
-  for (const Event& ev : events) {
-    const Contact c = makeContact(e, e.instances[ev.instance], ev.line, ev.t, ev.normal, ev.points);
+  for (const PathEvent& ev : events) {
+    const LineIndex line = ev.other.isSet() ? kNoLine : static_cast<LineIndex>(ev.key);
+    Contact c = makeContact(e, e.instances[ev.instance], line, ev.t, ev.normal, ev.points);
+    c.other = ev.other;
     ++report.pierceEvents;
     if (ev.begin)
       callRules([&](Rules& r) { r.beginContact(c); });
@@ -86,6 +82,15 @@ void WorldImpl::updatePierceState(Entity& e, const Path& path) {
 }
 
 void WorldImpl::fireOverContacts() {
+  for (const OverlapPair& p : entityOverlaps) {
+    const Entity* a = slots[p.a].entity.get();
+    const Entity* b = slots[p.b].entity.get();
+    const Instance* inst = a ? a->instanceIn(p.part) : nullptr;
+    if (!inst || !b) continue;
+    Contact c = makeContact(*a, *inst, kNoLine, Fraction::one(), {}, {});
+    c.other = b->id;
+    callRules([&](Rules& r) { r.overContact(c); });
+  }
   for (const Slot& slot : slots) {
     const Entity* e = slot.entity.get();
     if (!e) continue;

@@ -86,7 +86,8 @@ std::optional<LineIndex> WorldImpl::solidOverlap(const Entity& e, Instance& inst
 }
 
 bool WorldImpl::isFree(const Entity& e, Instance& inst, std::span<const Vec2> verts) {
-  return std::all_of(verts.begin(), verts.end(), inRange) && !solidOverlap(e, inst, verts);
+  return std::all_of(verts.begin(), verts.end(), inRange) && !solidOverlap(e, inst, verts) &&
+         !entityOverlap(e, inst, verts);
 }
 
 Fraction WorldImpl::firstBlock(const Entity& e, Instance& inst, std::span<const Vec2> verts, Vec2w step) {
@@ -106,6 +107,12 @@ Fraction WorldImpl::firstBlock(const Entity& e, Instance& inst, std::span<const 
     const int64_t rate = dot(c.c, step);
     if (rate > 0 && Fraction{c.slack, rate} < first) first = Fraction{c.slack, rate};
   }
+  std::vector<Vec2> other;
+  forEachSolidNear(e, inst.part, box, [&](const Entity&, const Instance& oi) {
+    worldVertices(oi, other);
+    const Sweep s = sweep(verts, step, other);
+    if (s.hitsWithinFrame() && s.enter < first) first = s.enter;
+  });
   return first;
 }
 

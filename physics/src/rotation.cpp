@@ -2,6 +2,7 @@
 // and after each one covers the area it sweeps.
 #include <algorithm>
 
+#include "bounds.h"
 #include "fixed_point.h"
 #include "world_impl.h"
 
@@ -59,12 +60,28 @@ bool WorldImpl::rotateBy(Entity& e, int64_t delta) {
       inst.shape = saved;
       const MapPart& p = part(inst.part);
       const auto lines = inst.region.lines();
+      const std::vector<Vec2> before = worldVertices(inst);
       for (size_t k = 0; k < lines.size() && !blocked; ++k) {
-        if (!blocks(e, inst, k, worldVertices(inst))) continue;
+        if (!blocks(e, inst, k, before)) continue;
         if (!overlapsInterior(hull, p.segments()[lines[k]])) continue;
         blocked = true;
         const Contact c = makeContact(e, inst, lines[k], Fraction::zero(), {}, {});
         callRules([&](Rules& r) { r.touchContact(c); });
+      }
+      if (!blocked) {
+        std::vector<Vec2> other;
+        std::optional<EntityId> met;
+        forEachSolidNear(e, inst.part, sweptBox(hull, {}), [&](const Entity& o, const Instance& oi) {
+          if (met) return;
+          worldVertices(oi, other);
+          if (overlapsInterior(hull, other)) met = o.id;
+        });
+        if (met) {
+          blocked = true;
+          Contact c = makeContact(e, inst, kNoLine, Fraction::zero(), {}, {});
+          c.other = *met;
+          callRules([&](Rules& r) { r.touchContact(c); });
+        }
       }
       shapes.push_back(std::move(next));
     }
@@ -76,6 +93,7 @@ bool WorldImpl::rotateBy(Entity& e, int64_t delta) {
   std::vector<Vec2w> noNormals;
   Move none{e, {}, noNormals, {}, {}};
   updateLinks(none);
+  reindex(e);
   return !blocked;
 }
 

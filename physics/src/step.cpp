@@ -12,7 +12,7 @@
 namespace platon::physics {
 namespace {
 
-enum class HitKind { None, Solid, Bound, Warp };
+enum class HitKind { None, Solid, Bound, Warp, Entity };
 
 // The earliest event of a sub-move.
 struct Hit {
@@ -22,7 +22,8 @@ struct Hit {
   LineIndex line = 0;
   Sweep sweep;
   Constraint axis;
-  bool crease = false;  // no open direction makes progress: the body stops here (see slideAlong)
+  uint32_t otherSlot = 0;  // HitKind::Entity: the entity met (its `line` is kEntityKey | slot)
+  bool crease = false;     // no open direction makes progress: the body stops here (see slideAlong)
 
   // Earlier wins. At equal times: a solid contact before a warp (so walls at edges hold), then the
   // lower instance, then the lower line index. The order never depends on the grid or on the
@@ -36,6 +37,9 @@ struct Hit {
     return line2 < line;
   }
 };
+
+// Entities met in a sub-move are ordered after lines at equal times, by slot.
+constexpr LineIndex kEntityKey = 0x80000000u;
 
 // Whether t * m is whole: then the rounded step lies on the swept path itself.
 bool exactMove(Vec2w m, Fraction t) {
@@ -150,6 +154,16 @@ class SubMove {
         if (hit_.improvedBy(when, HitKind::Bound, i, kWorldBoundLine))
           hit_ = {HitKind::Bound, when, i, kWorldBoundLine, {}, c};
       }
+      if (moves_[i] == Vec2w{}) continue;
+      std::vector<Vec2>& other = w_.scratch.probe;
+      w_.forEachSolidNear(e_, inst.part, box, [&](const Entity& o, const Instance& oi) {
+        worldVertices(oi, other);
+        const Sweep s = sweep(verts_[i], moves_[i], other);
+        if (!s.hitsWithinFrame()) return;
+        const LineIndex key = kEntityKey | o.id.index;
+        if (hit_.improvedBy(s.enter, HitKind::Entity, i, key))
+          hit_ = {HitKind::Entity, s.enter, i, key, s, s.enterAxis, o.id.index};
+      });
     }
   }
 
@@ -157,7 +171,7 @@ class SubMove {
   // (contact_normal.h): along the open direction that keeps the most of its motion, whichever line
   // or edge of its own that runs along. None: a crease, and it stops.
   void resolveContactNormal() {
-    if (hit_.kind != HitKind::Solid) return;
+    if (hit_.kind != HitKind::Solid && hit_.kind != HitKind::Entity) return;
     const size_t i = hit_.instance;
     Instance& inst = e_.instances[i];
     const MapPart& part = w_.part(inst.part);
@@ -179,6 +193,25 @@ class SubMove {
     for (const LineIndex line : touchingLines) {
       normals.clear();
       touchingNormals(verts_[i], moves_[i], hit_.t, part.segments()[line], normals);
+      open.beginLine();
+      for (const Vec2w n : normals) open.addNormal(n);
+    }
+    // Entities touched at that instant are obstacles too (in slot order: the index's order is not
+    // part of the result).
+    std::vector<uint32_t> touchingEntities;
+    std::vector<Vec2>& other = w_.scratch.probe;
+    // One that can be pushed closes nothing unless it is the one met: sliding into it pushes it.
+    w_.forEachSolidNear(e_, inst.part, box, [&](const Entity& o, const Instance& oi) {
+      if (o.filter.pushable && !(hit_.kind == HitKind::Entity && hit_.otherSlot == o.id.index)) return;
+      worldVertices(oi, other);
+      normals.clear();
+      if (touchingNormals(verts_[i], moves_[i], hit_.t, other, normals)) touchingEntities.push_back(o.id.index);
+    });
+    std::sort(touchingEntities.begin(), touchingEntities.end());
+    for (const uint32_t slot : touchingEntities) {
+      worldVertices(*w_.slots[slot].entity->instanceIn(inst.part), other);
+      normals.clear();
+      touchingNormals(verts_[i], moves_[i], hit_.t, other, normals);
       open.beginLine();
       for (const Vec2w n : normals) open.addNormal(n);
     }
@@ -276,31 +309,69 @@ class SubMove {
   }
 
   // 6. A solid contact: tell the rules, then slide along the line. Returns whether to go on.
-  bool respondToContact() {
+  // What follows a solid contact.
+  enum class After { Stop, Slide, Again };
+
+  // 6. A solid contact: tell the rules; push the entity met if it can be pushed (then the sub-move
+  //    goes again, into the room it made); else slide along the line or the entity.
+  After respondToContact(int& pushes) {
     ++w_.report.hits;
     const Instance* inst = e_.instanceIn(hitPart_);
-    if (!inst) return false;
+    if (!inst) return After::Stop;
     const Vec2w partNormal = -hit_.axis.c;
     ContactPoints points;
     if (hit_.kind == HitKind::Solid)
       points = contactPoints(verts_[hit_.instance], hitMove_, w_.part(hitPart_).segments()[hit_.line], hit_.sweep);
-    const Contact contact = w_.makeContact(e_, *inst, hit_.line, hit_.t, partNormal, points);
+    const bool withEntity = hit_.kind == HitKind::Entity;
+    Contact contact = w_.makeContact(e_, *inst, withEntity ? kNoLine : hit_.line, hit_.t, partNormal, points);
+    if (withEntity) contact.other = w_.slots[hit_.otherSlot].entity->id;
     e_.contacts.push_back(contact);
     ContactResponse response;
     w_.callRules([&](Rules& r) { r.contact(contact, response); });
     const Vec2w normal = shortDirection(rotateWideInverse(inst->rotation, shortDirection(partNormal)));
+    if (withEntity && pushes < 4 && tryPush(*inst, normal)) {
+      ++pushes;
+      return After::Again;
+    }
     if (response.removeNormalVelocity) {
       e_.velocityQ16 = clampVelocityQ16(removeInto(e_.velocityQ16, normal));
       // In a crease, or turned against the frame's own velocity by its contacts: it is held.
       if (hit_.crease || dot128(e_.velocityQ16, move_.primalVelocity) < 0) e_.velocityQ16 = {};
     }
-    if (!response.slide) return false;
+    if (!response.slide) return After::Stop;
     slideAlong(normal, response.removeNormalVelocity);
-    return true;
+    return After::Slide;
   }
 
  private:
   bool pulledBack() const { return t_ < hit_.t; }
+
+  // Pushes the entity met, if it can be pushed, by the part of the remaining motion that goes
+  // into it (rounded away from zero, so it clears the way), as a slide of its own. Returns whether
+  // it moved. `normal` is the contact's, in this entity's frame.
+  bool tryPush(const Instance& inst, Vec2w normal) {
+    Entity& other = *w_.slots[hit_.otherSlot].entity;
+    if (!other.filter.pushable || other.instances.empty()) return false;
+    const i128 into = dot128(move_.motion, normal);
+    if (into >= 0) return false;
+    const i128 nn = dot128(normal, normal);
+    // -(m.n / n.n) n, each component rounded away from zero: at least as far as the motion goes in.
+    auto away = [&](int64_t nk) {
+      const i128 q = -into * nk;
+      return static_cast<int64_t>(q >= 0 ? ceilDiv(q, nn) : floorDiv(q, nn));
+    };
+    const Vec2w pushHere{away(-normal.x), away(-normal.y)};  // this entity's frame
+    // Into the other's frame: through the part both instances are in.
+    const Instance* theirs = other.instanceIn(inst.part);
+    if (!theirs) return false;
+    const Vec2w inPart = rotateWide(inst.rotation, pushHere);
+    const Vec2w inTheirs = theirs->frame == 0 ? inPart : rotateWideInverse(theirs->rotation, inPart);
+    w_.reindex(e_);  // where this one is now, for the other's slide to see
+    return w_.push(other, clampMove(inTheirs));
+  }
+  static Vec2w clampMove(Vec2w v) {
+    return {std::clamp<int64_t>(v.x, -kMaxMove, kMaxMove), std::clamp<int64_t>(v.y, -kMaxMove, kMaxMove)};
+  }
 
   // Moves the whole entity one to three units along `direction` (entity frame) where that move is
   // free of every line for every instance: a sub-move of its own, with its pierce events.
@@ -473,13 +544,36 @@ bool WorldImpl::restsAgainstLines(Entity& e, Vec2w w) {
       }
       e.contacts.push_back(makeContact(e, inst, lines[k], Fraction::zero(), reported, {}));
     }
+    // Entities it is against, solid to it: the other polygon's sides count as lines do. One that
+    // can be pushed holds it only as a support (a contact against gravity, as in a stack): from the
+    // side, walking into it pushes it.
+    std::vector<Vec2> other;
+    const Vec2w down = part(inst.part).gravity();
+    forEachSolidNear(e, inst.part, box, [&](const Entity& o, const Instance& oi) {
+      worldVertices(oi, other);
+      normals.clear();
+      const Nearness nearness = nearNormals(verts, other, normals);
+      if (nearness == Nearness::Apart) return;
+      if (o.filter.pushable) std::erase_if(normals, [&](Vec2w n) { return dot128(n, down) >= 0; });
+      if (normals.empty()) return;
+      touching = touching || nearness == Nearness::Touching;
+      open.beginLine();
+      for (const Vec2w n : normals)
+        open.addNormal(inst.frame == 0 ? n : shortDirection(rotateWideInverse(inst.rotation, shortDirection(n))));
+      Contact c = makeContact(e, inst, kNoLine, Fraction::zero(), normals[0], {});
+      c.other = o.id;
+      e.contacts.push_back(c);
+    });
   }
   // Resting on a line, it touches it; wedged into a corner, it may be kept up to 1.5 units from
   // the lines by the whole-unit grid, and lines near it count only if they form a corner.
   if (!open.empty() && open.cannotMove(w) && (touching || open.wedges(w))) {
-    // Contacts in line order: the region's order is not part of the result.
+    // Contacts in line order, then entities by slot: neither the region's nor the index's order is
+    // part of the result.
     std::sort(e.contacts.begin(), e.contacts.end(), [](const Contact& a, const Contact& b) {
-      return a.part != b.part ? a.part < b.part : a.line.index < b.line.index;
+      if (a.part != b.part) return a.part < b.part;
+      if (a.line.index != b.line.index) return a.line.index < b.line.index;
+      return a.other.index < b.other.index;
     });
     return true;
   }
@@ -502,6 +596,7 @@ void WorldImpl::stepEntity(Entity& e) {
       scratch.normals.clear();
       Move still{e, {}, scratch.normals, {}, {}};
       slide(still);
+      reindex(e);
     }
     return;
   }
@@ -515,10 +610,12 @@ void WorldImpl::stepEntity(Entity& e) {
   scratch.normals.clear();
   Move move{e, whole, scratch.normals, whole, e.velocityQ16};
   slide(move);
+  reindex(e);
 }
 
 void WorldImpl::slide(Move& move) {
   Entity& e = move.entity;
+  int pushes = 0;
   for (int iteration = 0; iteration < kMaxSubMoves && !e.instances.empty(); ++iteration) {
     createOverlappedWarps(e);
     if (move.motion == Vec2w{} && (copiesSettled(e) || iteration > 0)) break;  // gaps get one try a frame
@@ -534,7 +631,7 @@ void WorldImpl::slide(Move& move) {
     const SubMove::Next next = sub.next();
     if (next == SubMove::Next::Stop) break;
     if (next == SubMove::Next::Again) continue;
-    if (!sub.respondToContact()) break;
+    if (sub.respondToContact(pushes) == SubMove::After::Stop) break;
   }
 }
 

@@ -160,6 +160,7 @@ void WorldImpl::eraseInstance(Move& move, size_t index) {
     callRules([&](Rules& r) { r.endContact(c); });
   }
   const MapPartId goneFrom = gone.part;
+  endEntityOverlaps(e, goneFrom);
   if (index == 0 && e.instances.size() > 1) {
     rebase(move, 1);
     index = 1;  // the old anchor moved to slot 1

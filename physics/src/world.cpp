@@ -102,7 +102,13 @@ EntityView World::entity(EntityId id) const { return EntityView(impl_->entity(id
 
 void World::destroyEntity(EntityId id) {
   impl_->checkUnlocked("destroyEntity");
-  impl_->entity(id);  // validates
+  Entity& e = impl_->entity(id);  // validates
+  {
+    CallbackScope scope(*impl_);
+    for (const Instance& inst : e.instances) impl_->endEntityOverlaps(e, inst.part);
+    scope.finish();
+  }
+  impl_->entityIndex.remove(e);
   WorldImpl::Slot& slot = impl_->slots[id.index];
   slot.entity.reset();
   ++slot.generation;
@@ -123,6 +129,27 @@ void World::setVelocity(EntityId id, Vec2w v) {
 void World::setAngularVelocity(EntityId id, int32_t a) { impl_->entity(id).angularVelocity = a; }
 void World::setGravityEnabled(EntityId id, bool on) { impl_->entity(id).gravity = on; }
 void World::setUserData(EntityId id, uint64_t value) { impl_->entity(id).userData = value; }
+
+void World::setFilter(EntityId id, const EntityFilter& filter) {
+  WorldImpl& w = *impl_;
+  w.checkUnlocked("setFilter");
+  Entity& e = w.entity(id);
+  const EntityFilter was = e.filter;
+  e.filter = filter;
+  for (Instance& inst : e.instances)
+    if (const std::optional<EntityId> other = w.entityOverlap(e, inst, worldVertices(inst))) {
+      e.filter = was;
+      throw Error("setFilter: entity " + std::to_string(id.index) + " would overlap entity " +
+                  std::to_string(other->index) + ", which it would be solid to, in map part " +
+                  std::to_string(inst.part));
+    }
+  CallbackScope scope(w);
+  for (const Instance& inst : e.instances)
+    w.endEntityOverlaps(e, inst.part);  // begin again below if they still overlap
+  w.reindex(e);
+  w.updatePierceState(e, {});
+  scope.finish();
+}
 
 void World::setRules(Rules* rules) {
   impl_->checkUnlocked("setRules");
@@ -170,14 +197,19 @@ void World::insert(EntityId id, MapPartId partId, Vec2 origin, Angle angle) {
       throw Error("insert: the entity at " + toString(origin) + " in map part " + std::to_string(partId) +
                   " would overlap solid line " + std::to_string(*line) + " " + toString(s.a) + "-" + toString(s.b));
     }
+    if (const std::optional<EntityId> other = w.entityOverlap(e, inst, verts))
+      throw Error("insert: the entity at " + toString(origin) + " in map part " + std::to_string(partId) +
+                  " would overlap entity " + std::to_string(other->index) + ", which it is solid to");
   } catch (...) {
     e.angle = angleBefore;
     throw;
   }
   e.instances.push_back(std::move(inst));
+  w.reindex(e);
   CallbackScope scope(w);
   w.updatePierceState(e, {});
   w.createOverlappedWarps(e);
+  w.reindex(e);
   scope.finish();
 }
 
@@ -191,6 +223,7 @@ void World::erase(EntityId id, MapPartId partId) {
       std::vector<Vec2w> noNormals;
       Move move{e, {}, noNormals, {}, {}};
       w.eraseInstance(move, i);
+      w.reindex(e);
       scope.finish();
       return;
     }
@@ -224,6 +257,15 @@ size_t World::countOverlaps() const {
         if (std::binary_search(inst.overlapping.begin(), inst.overlapping.end(), l)) continue;  // kept passable
         if (impl_->rules->pierce(e->id, {part.id(), l, line.tag, line.kind})) continue;
         if (overlapsInterior(verts, part.segments()[l])) ++count;
+      }
+      // Entities solid to each other, each pair counted once (from the lower slot).
+      std::vector<Vec2> other;
+      for (const WorldImpl::Slot& b : impl_->slots) {
+        if (!b.entity || b.entity->id.index <= e->id.index || !solidPair(e->filter, b.entity->filter)) continue;
+        const Instance* theirs = b.entity->instanceIn(inst.part);
+        if (!theirs) continue;
+        worldVertices(*theirs, other);
+        if (overlapsInterior(verts, other)) ++count;
       }
     }
   }

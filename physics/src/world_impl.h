@@ -13,6 +13,7 @@
 
 #include "contact_normal.h"
 #include "entity.h"
+#include "entity_index.h"
 #include "grid.h"
 #include "platon/physics/world.h"
 
@@ -56,6 +57,15 @@ struct WorldImpl {
   bool locked = false;  // inside solve() or another call that runs rules callbacks
   std::exception_ptr pendingError;
   SolveReport report;
+  EntityIndex entityIndex;  // entities that meet other entities, by place
+  // Pairs of entities that report overlaps and overlap now: (lower slot, higher slot, part).
+  struct OverlapPair {
+    uint32_t a, b;
+    MapPartId part;
+    friend auto operator<=>(const OverlapPair&, const OverlapPair&) = default;
+  };
+  std::vector<OverlapPair> entityOverlaps;
+  int pushDepth = 0;  // entities pushing entities pushing entities: bounded
   // Per-frame buffers, kept to avoid allocating on every step (solve is not reentrant).
   struct Scratch {
     std::vector<std::vector<Vec2>> verts;
@@ -74,6 +84,33 @@ struct WorldImpl {
   const Entity& entity(EntityId id) const;
   void checkUnlocked(const char* what) const;
   void checkWarpTargets();
+
+  // entities meeting entities (entity_contacts.cpp)
+  // Files or unfiles the entity in the index after it moved, changed shape or filter.
+  void reindex(const Entity& e);
+  // Calls visit(other, otherInstance) for each entity solid to `e` (or reporting overlaps with it)
+  // with an instance in `part` whose box may meet `box`.
+  template <class Visit>
+  void forEachSolidNear(const Entity& e, MapPartId part, const Box& box, Visit&& visit);
+  template <class Visit>
+  void forEachOverlappingNear(const Entity& e, MapPartId part, const Box& box, Visit&& visit);
+  // The first entity solid to `e` whose instance in inst's part the vertices overlap.
+  std::optional<EntityId> entityOverlap(const Entity& e, const Instance& inst, std::span<const Vec2> verts);
+  // Moves entity `b` by `push` (its own frame) as a slide of its own; returns whether it moved.
+  bool push(Entity& b, Vec2w push);
+  // Begin and end events of entities that report overlaps, along a sub-move's path (or at rest),
+  // added to `events` for updatePierceState to order.
+  struct PathEvent {
+    Fraction t;
+    size_t instance;
+    uint64_t key;  // lines: the line index; entities: (1 << 32) | slot, so lines come first
+    bool begin;
+    Vec2w normal;
+    ContactPoints points;
+    EntityId other;
+  };
+  void entityOverlapEvents(Entity& e, const Path& path, std::vector<PathEvent>& events);
+  void endEntityOverlaps(Entity& e, MapPartId part);
 
   // placement.cpp
   Instance makeInstance(const Entity& e, MapPartId part, Vec2 position, Angle turn) const;
@@ -136,6 +173,25 @@ struct WorldImpl {
     }
   }
 };
+
+template <class Visit>
+void WorldImpl::forEachSolidNear(const Entity& e, MapPartId part, const Box& box, Visit&& visit) {
+  if (e.filter.solidWith == 0) return;
+  entityIndex.forEachNear(part, box, [&](uint32_t slot) {
+    const Entity* other = slots[slot].entity.get();
+    if (!other || other == &e || !solidPair(e.filter, other->filter)) return;
+    if (const Instance* inst = other->instanceIn(part)) visit(*other, *inst);
+  });
+}
+
+template <class Visit>
+void WorldImpl::forEachOverlappingNear(const Entity& e, MapPartId part, const Box& box, Visit&& visit) {
+  entityIndex.forEachNear(part, box, [&](uint32_t slot) {
+    const Entity* other = slots[slot].entity.get();
+    if (!other || other == &e || !overlapPair(e.filter, other->filter)) return;
+    if (const Instance* inst = other->instanceIn(part)) visit(*other, *inst);
+  });
+}
 
 // Rules callbacks may run while a scope lives: structural changes are refused (checkUnlocked), and
 // the first error a callback throws waits in pendingError. finish() rethrows it once the caller's

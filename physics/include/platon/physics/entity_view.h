@@ -35,6 +35,7 @@ class EntityView {
   int32_t angularVelocity() const;  // binary-angle units per frame
   bool gravityEnabled() const;
   uint64_t userData() const;
+  const EntityFilter& filter() const;
 
   // Instances: none before insert(), one on a face, two or more across warp edges.
   size_t instanceCount() const;

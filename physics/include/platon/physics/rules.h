@@ -14,6 +14,7 @@
 namespace platon::physics {
 
 inline constexpr LineIndex kWorldBoundLine = UINT32_MAX;  // the edge of the coordinate range
+inline constexpr LineIndex kNoLine = UINT32_MAX - 1;      // a contact with another entity
 
 struct LineRef {
   MapPartId part = 0;
@@ -24,8 +25,9 @@ struct LineRef {
 
 struct Contact {
   EntityId entity;
-  MapPartId part = 0;  // the map part of the instance that touched
-  LineRef line;
+  MapPartId part = 0;    // the map part of the instance that touched
+  LineRef line;          // line.index == kNoLine for a contact with another entity
+  EntityId other;        // the other entity, for a contact between entities; invalid otherwise
   Fraction fraction;     // of the sub-move (for solid lines) when the contact began or ended
   Vec2w normal;          // from the line towards the entity, in the part's frame, not normalized
   ContactPoints points;  // in the part's coordinates
@@ -47,13 +49,15 @@ class Rules {
     (void)entity;
     return line.kind == LineKind::Warp;
   }
-  // Pierceable lines: the interior of an instance starts, keeps (once per frame), stops overlapping.
+  // Pierceable lines, and entities that report overlaps with each other (EntityFilter): the interior
+  // of an instance starts, keeps (once per frame), stops overlapping. For two entities,
+  // Contact::other is set: the mover is `entity` for begin and end, the lower handle for over.
   virtual void beginContact(const Contact&) {}
   virtual void overContact(const Contact&) {}
   virtual void endContact(const Contact&) {}
-  // Solid lines: a moving instance reached the line.
+  // Solid lines, and entities solid to each other: a moving instance reached the line or the other.
   virtual void contact(const Contact&, ContactResponse&) {}
-  // Solid lines: a rotation was stopped by the line.
+  // Solid lines and entities: a rotation was stopped by one.
   virtual void touchContact(const Contact&) {}
 };
 

@@ -82,6 +82,9 @@ class World {
   void setAngularVelocity(EntityId id, int32_t anglePerFrame);
   void setGravityEnabled(EntityId id, bool enabled);
   void setUserData(EntityId id, uint64_t value);
+  // Which entities it collides with or reports overlaps with (see EntityFilter). Refused (Error) if
+  // the entity would then overlap one it is solid to.
+  void setFilter(EntityId id, const EntityFilter& filter);
 
   // Places an instance of the entity in a part (the seed's MapPart::insert). The first instance
   // sets the entity's position and angle; later ones follow it. Throws if the part is not
