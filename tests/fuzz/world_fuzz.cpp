@@ -296,6 +296,13 @@ struct Scene {
     trace("world.destroyEntity(", name(id), ");");
     attempt("destroyEntity", [&] { world.destroyEntity(id); });
   }
+  // Which entities meet which: two category bits, so solid pairs, overlap pairs and pushes all occur.
+  void setFilter(EntityId id) {
+    const EntityFilter f{1u << in.range(0, 1), static_cast<uint32_t>(in.range(0, 3)),
+                         static_cast<uint32_t>(in.range(0, 3)), in.range(0, 1) == 1};
+    trace("world.setFilter(", name(id), ", {", f.category, ", ", f.solidWith, ", ", f.overlapWith, ", ", f.pushable, "});");
+    attempt("setFilter", [&] { world.setFilter(id, f); });  // refused if it would overlap
+  }
 
   void createEntities() {
     for (int64_t n = in.range(1, 4); n > 0; --n) {
@@ -370,10 +377,13 @@ void run(const uint8_t* data, size_t size) {
     for (int frame = 1; frame <= frames; ++frame) {
       for (int64_t n = in.range(0, 3); n > 0; --n) {  // a few calls between frames
         const EntityId id = scene.pick();
-        switch (in.range(0, 7)) {
+        switch (in.range(0, 8)) {
           case 0:
           case 1:
             scene.setVelocity(id);
+            break;
+          case 8:
+            scene.setFilter(id);
             break;
           case 2:
             scene.setAngularVelocity(id);
