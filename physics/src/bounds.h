@@ -45,4 +45,12 @@ inline void boundConstraints(std::span<const Vec2> verts, Constraint out[4]) {
   out[3] = {y0 + kCoordLimit, {0, -1}};
 }
 
+// Every vertex on or left of the directed segment's line: wholly on a one-way line's front.
+inline bool wholyInFront(std::span<const Vec2> verts, Segment seg) {
+  const Vec2w d = seg.b - seg.a;
+  for (const Vec2 v : verts)
+    if (cross(d, v - seg.a) < 0) return false;
+  return true;
+}
+
 }  // namespace platon::physics

@@ -8,14 +8,14 @@
 namespace platon::physics {
 namespace {
 
-bool meetsAnything(const EntityFilter& f) { return f.category != 0 || f.solidWith != 0 || f.overlapWith != 0; }
-
 Box boxOf(std::span<const Vec2> verts, Vec2w step) { return sweptBox(verts, step); }
 
 }  // namespace
 
+// Every entity in a part is in the index, so that moving platforms find whom to push and carry;
+// the filters decide which entities meet which.
 void WorldImpl::reindex(const Entity& e) {
-  if (meetsAnything(e.filter) && !e.instances.empty())
+  if (!e.instances.empty())
     entityIndex.update(e);
   else
     entityIndex.remove(e);

@@ -13,7 +13,14 @@ Contact WorldImpl::makeContact(const Entity& e, const Instance& inst, LineIndex 
   c.part = inst.part;
   c.line.part = inst.part;
   c.line.index = line;
-  if (line < part(inst.part).lines().size()) {
+  if (isPlatformLine(line)) {
+    const uint32_t slot = (line & ~kPlatformLineBit) >> 16;
+    const PlatformLine& l = platformLine(line);
+    c.line.index = line & 0xffff;
+    c.line.platform = {slot, platforms[slot].generation};
+    c.line.tag = l.tag;
+    c.line.kind = l.kind;
+  } else if (line < part(inst.part).lines().size()) {
     const Line& l = part(inst.part).lines()[line];
     c.line.tag = l.tag;
     c.line.kind = l.kind;

@@ -30,7 +30,7 @@ bool WorldImpl::isPierceable(const Entity& e, Instance& inst, size_t k) {
     const MapPart& p = part(inst.part);
     const LineIndex index = inst.region.lines()[k];
     const Line& line = p.lines()[index];
-    const LineRef ref{p.id(), index, line.tag, line.kind};
+    const LineRef ref{p.id(), index, line.tag, line.kind, {}};
     bool pierce = line.kind == LineKind::Warp;
     callRules([&](Rules& r) { pierce = r.pierce(e.id, ref); });
     // Turned solid while the instance overlaps it (refreshPierce): it stays passable for this
@@ -44,16 +44,6 @@ bool WorldImpl::isPierceable(const Entity& e, Instance& inst, size_t k) {
   }
   return flag == 2;
 }
-
-namespace {
-// Every vertex on or left of the directed segment's line.
-bool wholyInFront(std::span<const Vec2> verts, Segment seg) {
-  const Vec2w d = seg.b - seg.a;
-  for (const Vec2 v : verts)
-    if (cross(d, v - seg.a) < 0) return false;
-  return true;
-}
-}  // namespace
 
 bool WorldImpl::blocks(const Entity& e, Instance& inst, size_t k, std::span<const Vec2> verts) {
   if (isPierceable(e, inst, k)) return false;
@@ -82,7 +72,12 @@ std::optional<LineIndex> WorldImpl::solidOverlap(const Entity& e, Instance& inst
   const auto lines = inst.region.lines();
   for (size_t k = 0; k < lines.size(); ++k)
     if (blocks(e, inst, k, verts) && overlapsInterior(verts, p.segments()[lines[k]])) return lines[k];
-  return std::nullopt;
+  std::optional<LineIndex> found;
+  forEachPlatformLine(inst.part, sweptBox(verts, {}), [&](const PlatformLine& l, LineIndex key) {
+    if (!found && (l.kind != LineKind::OneWay || wholyInFront(verts, l.segment)) && overlapsInterior(verts, l.segment))
+      found = key;
+  });
+  return found;
 }
 
 bool WorldImpl::isFree(const Entity& e, Instance& inst, std::span<const Vec2> verts) {
@@ -107,6 +102,11 @@ Fraction WorldImpl::firstBlock(const Entity& e, Instance& inst, std::span<const 
     const int64_t rate = dot(c.c, step);
     if (rate > 0 && Fraction{c.slack, rate} < first) first = Fraction{c.slack, rate};
   }
+  forEachPlatformLine(inst.part, box, [&](const PlatformLine& l, LineIndex) {
+    if (l.kind == LineKind::OneWay && !wholyInFront(verts, l.segment)) return;
+    const Sweep s = sweep(verts, step, l.segment);
+    if (s.hitsWithinFrame() && s.enter < first) first = s.enter;
+  });
   std::vector<Vec2> other;
   forEachSolidNear(e, inst.part, box, [&](const Entity&, const Instance& oi) {
     worldVertices(oi, other);

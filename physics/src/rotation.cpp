@@ -69,6 +69,17 @@ bool WorldImpl::rotateBy(Entity& e, int64_t delta) {
         callRules([&](Rules& r) { r.touchContact(c); });
       }
       if (!blocked) {
+        LineIndex met = 0;
+        forEachPlatformLine(inst.part, sweptBox(hull, {}), [&](const PlatformLine& l, LineIndex key) {
+          if (blocked || (l.kind == LineKind::OneWay && !wholyInFront(before, l.segment))) return;
+          if (overlapsInterior(hull, l.segment)) blocked = true, met = key;
+        });
+        if (blocked) {
+          const Contact c = makeContact(e, inst, met, Fraction::zero(), {}, {});
+          callRules([&](Rules& r) { r.touchContact(c); });
+        }
+      }
+      if (!blocked) {
         std::vector<Vec2> other;
         std::optional<EntityId> met;
         forEachSolidNear(e, inst.part, sweptBox(hull, {}), [&](const Entity& o, const Instance& oi) {

@@ -155,6 +155,12 @@ class SubMove {
           hit_ = {HitKind::Bound, when, i, kWorldBoundLine, {}, c};
       }
       if (moves_[i] == Vec2w{}) continue;
+      w_.forEachPlatformLine(inst.part, box, [&](const PlatformLine& l, LineIndex key) {
+        if (l.kind == LineKind::OneWay && !wholyInFront(verts_[i], l.segment)) return;
+        const Sweep s = sweep(verts_[i], moves_[i], l.segment);
+        if (s.hitsWithinFrame() && hit_.improvedBy(s.enter, HitKind::Solid, i, key))
+          hit_ = {HitKind::Solid, s.enter, i, key, s, s.enterAxis};
+      });
       std::vector<Vec2>& other = w_.scratch.probe;
       w_.forEachSolidNear(e_, inst.part, box, [&](const Entity& o, const Instance& oi) {
         worldVertices(oi, other);
@@ -186,13 +192,18 @@ class SubMove {
       normals.clear();
       if (touchingNormals(verts_[i], moves_[i], hit_.t, seg, normals)) touchingLines.push_back(lines[k]);
     }
+    w_.forEachPlatformLine(inst.part, box, [&](const PlatformLine& l, LineIndex key) {
+      if (l.kind == LineKind::OneWay && !wholyInFront(verts_[i], l.segment)) return;
+      normals.clear();
+      if (touchingNormals(verts_[i], moves_[i], hit_.t, l.segment, normals)) touchingLines.push_back(key);
+    });
     // The lines in index order, so the choice never depends on the region's order.
     std::sort(touchingLines.begin(), touchingLines.end());
     OpenDirections& open = w_.scratch.open;
     open.clear();
     for (const LineIndex line : touchingLines) {
       normals.clear();
-      touchingNormals(verts_[i], moves_[i], hit_.t, part.segments()[line], normals);
+      touchingNormals(verts_[i], moves_[i], hit_.t, w_.segmentOf(part, line), normals);
       open.beginLine();
       for (const Vec2w n : normals) open.addNormal(n);
     }
@@ -239,7 +250,7 @@ class SubMove {
   // one to three units, if that frees it (a copy alone; the anchor, with the whole entity), and the
   // sub-move is redone. A wall the body moves into still holds.
   bool liftAtSeam() {
-    if (hit_.kind != HitKind::Solid) return false;
+    if (hit_.kind != HitKind::Solid || isPlatformLine(hit_.line)) return false;
     const size_t i = hit_.instance;
     Instance& inst = e_.instances[i];
     Vec2w liftAlong;  // the instance's frame
@@ -321,7 +332,7 @@ class SubMove {
     const Vec2w partNormal = -hit_.axis.c;
     ContactPoints points;
     if (hit_.kind == HitKind::Solid)
-      points = contactPoints(verts_[hit_.instance], hitMove_, w_.part(hitPart_).segments()[hit_.line], hit_.sweep);
+      points = contactPoints(verts_[hit_.instance], hitMove_, w_.segmentOf(w_.part(hitPart_), hit_.line), hit_.sweep);
     const bool withEntity = hit_.kind == HitKind::Entity;
     Contact contact = w_.makeContact(e_, *inst, withEntity ? kNoLine : hit_.line, hit_.t, partNormal, points);
     if (withEntity) contact.other = w_.slots[hit_.otherSlot].entity->id;
@@ -544,6 +555,21 @@ bool WorldImpl::restsAgainstLines(Entity& e, Vec2w w) {
       }
       e.contacts.push_back(makeContact(e, inst, lines[k], Fraction::zero(), reported, {}));
     }
+    // Moving platforms' lines count as the part's own do.
+    forEachPlatformLine(inst.part, box, [&](const PlatformLine& l, LineIndex key) {
+      if (l.kind == LineKind::OneWay && !wholyInFront(verts, l.segment)) return;
+      normals.clear();
+      const Nearness nearness = nearNormals(verts, l.segment, normals);
+      if (nearness == Nearness::Apart) return;
+      touching = touching || nearness == Nearness::Touching;
+      Vec2w reported = normals[0];
+      open.beginLine();
+      for (const Vec2w n : normals) {
+        if (dot128(n, l.segment.b - l.segment.a) == 0) reported = n;
+        open.addNormal(inst.frame == 0 ? n : shortDirection(rotateWideInverse(inst.rotation, shortDirection(n))));
+      }
+      e.contacts.push_back(makeContact(e, inst, key, Fraction::zero(), reported, {}));
+    });
     // Entities it is against, solid to it: the other polygon's sides count as lines do. One that
     // can be pushed holds it only as a support (a contact against gravity, as in a stack): from the
     // side, walking into it pushes it.

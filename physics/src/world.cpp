@@ -193,7 +193,7 @@ void World::insert(EntityId id, MapPartId partId, Vec2 origin, Angle angle) {
     w.coverMotion(inst, {});
     const std::vector<Vec2> verts = worldVertices(inst);
     if (const std::optional<LineIndex> line = w.solidOverlap(e, inst, verts)) {
-      const Segment s = part.segments()[*line];
+      const Segment s = w.segmentOf(part, *line);
       throw Error("insert: the entity at " + toString(origin) + " in map part " + std::to_string(partId) +
                   " would overlap solid line " + std::to_string(*line) + " " + toString(s.a) + "-" + toString(s.b));
     }
@@ -255,9 +255,14 @@ size_t World::countOverlaps() const {
         const Line& line = part.lines()[l];
         if (line.kind == LineKind::OneWay) continue;
         if (std::binary_search(inst.overlapping.begin(), inst.overlapping.end(), l)) continue;  // kept passable
-        if (impl_->rules->pierce(e->id, {part.id(), l, line.tag, line.kind})) continue;
+        if (impl_->rules->pierce(e->id, {part.id(), l, line.tag, line.kind, {}})) continue;
         if (overlapsInterior(verts, part.segments()[l])) ++count;
       }
+      impl_->forEachPlatformLine(inst.part, Box{INT64_MIN, INT64_MIN, INT64_MAX, INT64_MAX},
+                                 [&](const PlatformLine& l, LineIndex) {
+                                   if (l.kind == LineKind::OneWay) return;
+                                   if (overlapsInterior(verts, l.segment)) ++count;
+                                 });
       // Entities solid to each other, each pair counted once (from the lower slot).
       std::vector<Vec2> other;
       for (const WorldImpl::Slot& b : impl_->slots) {
@@ -279,6 +284,7 @@ SolveReport World::solve() {
   CallbackScope scope(w);
   w.report = {};
   w.report.frame = ++w.frame;
+  w.movePlatforms();
   for (WorldImpl::Slot& slot : w.slots) {
     Entity* e = slot.entity.get();
     if (!e) continue;

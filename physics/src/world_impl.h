@@ -39,6 +39,20 @@ struct Path {
   std::span<const uint8_t> pierceNear;       // whether any pierceable line was near its path
 };
 
+// A moving platform (see World::createPlatform). Its lines are kept where they are now.
+struct Platform {
+  MapPartId part = 0;
+  std::vector<PlatformLine> lines;
+  Vec2 offset, motion;
+  Box box{0, 0, -1, -1};  // around its lines, where they are now
+  uint32_t generation = 0;
+  bool alive = false;
+};
+
+// A platform's line as the solver names it: this bit, the platform's slot << 16, the line.
+inline constexpr LineIndex kPlatformLineBit = 0x40000000u;
+constexpr bool isPlatformLine(LineIndex key) { return (key & kPlatformLineBit) != 0 && key < 0x80000000u; }
+
 struct WorldImpl {
   struct Slot {
     std::unique_ptr<Entity> entity;
@@ -66,6 +80,8 @@ struct WorldImpl {
   };
   std::vector<OverlapPair> entityOverlaps;
   int pushDepth = 0;  // entities pushing entities pushing entities: bounded
+  std::vector<Platform> platforms;
+  std::vector<uint32_t> freePlatforms;
   // Per-frame buffers, kept to avoid allocating on every step (solve is not reentrant).
   struct Scratch {
     std::vector<std::vector<Vec2>> verts;
@@ -111,6 +127,20 @@ struct WorldImpl {
   };
   void entityOverlapEvents(Entity& e, const Path& path, std::vector<PathEvent>& events);
   void endEntityOverlaps(Entity& e, MapPartId part);
+
+  // platforms.cpp
+  void movePlatforms();
+  // Calls visit(line, key) for each line of a live platform in `part` whose platform box meets
+  // `box` (the caller tests the line itself).
+  template <class Visit>
+  void forEachPlatformLine(MapPartId part, const Box& box, Visit&& visit) const;
+  const PlatformLine& platformLine(LineIndex key) const {
+    return platforms[(key & ~kPlatformLineBit) >> 16].lines[key & 0xffff];
+  }
+  // A line's segment where it is now: the part's own, or a platform's.
+  const Segment& segmentOf(const MapPart& p, LineIndex line) const {
+    return isPlatformLine(line) ? platformLine(line).segment : p.segments()[line];
+  }
 
   // placement.cpp
   Instance makeInstance(const Entity& e, MapPartId part, Vec2 position, Angle turn) const;
@@ -173,6 +203,17 @@ struct WorldImpl {
     }
   }
 };
+
+template <class Visit>
+void WorldImpl::forEachPlatformLine(MapPartId part, const Box& box, Visit&& visit) const {
+  for (uint32_t slot = 0; slot < platforms.size(); ++slot) {
+    const Platform& pl = platforms[slot];
+    if (!pl.alive || pl.part != part || pl.box.x0 > box.x1 || pl.box.x1 < box.x0 || pl.box.y0 > box.y1 ||
+        pl.box.y1 < box.y0)
+      continue;
+    for (uint32_t k = 0; k < pl.lines.size(); ++k) visit(pl.lines[k], kPlatformLineBit | (slot << 16) | k);
+  }
+}
 
 template <class Visit>
 void WorldImpl::forEachSolidNear(const Entity& e, MapPartId part, const Box& box, Visit&& visit) {

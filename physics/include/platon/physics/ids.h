@@ -15,6 +15,14 @@ struct EntityId {
   friend constexpr bool operator==(EntityId, EntityId) = default;
 };
 
+// A moving platform's handle, checked like an entity's.
+struct PlatformId {
+  uint32_t index = UINT32_MAX;
+  uint32_t generation = 0;
+  constexpr bool isSet() const { return index != UINT32_MAX; }
+  friend constexpr bool operator==(PlatformId, PlatformId) = default;
+};
+
 // Which entities meet which, by category bits (like a collision filter). Two entities are solid to
 // each other (they stop, rest on or push each other) when each one's category is in the other's
 // solidWith; they report overlaps through Rules (begin, over, end, with Contact::other) when they

@@ -18,9 +18,10 @@ inline constexpr LineIndex kNoLine = UINT32_MAX - 1;      // a contact with anot
 
 struct LineRef {
   MapPartId part = 0;
-  LineIndex index = 0;  // kWorldBoundLine for the world's edge
+  LineIndex index = 0;  // kWorldBoundLine for the world's edge; for a platform's line, see below
   uint32_t tag = 0;
   LineKind kind = LineKind::Solid;
+  PlatformId platform;  // set for a moving platform's line: then `index` is its index in the platform
 };
 
 struct Contact {
@@ -45,6 +46,7 @@ class Rules {
   virtual ~Rules() = default;
   // Whether `entity` passes through `line`. Asked once when the line comes near an instance, and
   // again after setRules(); the answer must not change while they overlap. Default: warps pierce.
+  // (Not asked about moving platforms' lines: those are solid, or one-way.)
   virtual bool pierce(EntityId entity, const LineRef& line) {
     (void)entity;
     return line.kind == LineKind::Warp;
@@ -59,6 +61,11 @@ class Rules {
   virtual void contact(const Contact&, ContactResponse&) {}
   // Solid lines and entities: a rotation was stopped by one.
   virtual void touchContact(const Contact&) {}
+  // A moving platform could not push this entity out of its way (it is caught between the platform
+  // and something else) and stopped for this frame. Contact::line is the platform's line. What it
+  // means (a squashed player, a jammed door) is the rules' business: the world keeps everything
+  // where it is, so nothing overlaps.
+  virtual void crushed(const Contact&) {}
 };
 
 }  // namespace platon::physics

@@ -27,6 +27,21 @@ struct SolveReport {
   uint32_t copiesReplaced = 0;  // copies moved within two units to free them from a rounding snag
 };
 
+// A line of a moving platform: solid, or one-way (solid from its left side).
+struct PlatformLine {
+  Segment segment;
+  uint32_t tag = 0;
+  LineKind kind = LineKind::Solid;
+};
+
+// A moving platform as callers see it: its lines where they are now.
+struct PlatformView {
+  MapPartId part = 0;
+  Vec2 offset;  // how far it has moved since it was created
+  Vec2 motion;  // whole units per frame
+  std::span<const PlatformLine> lines;
+};
+
 // The live entities, in handle order: for (EntityId id : world.entities()). No allocation.
 class EntityRange {
  public:
@@ -94,6 +109,17 @@ class World {
   // Turns the entity towards `angle` (the short way round) until a solid line stops it; returns
   // whether it got there. A stop calls Rules::touchContact.
   bool rotate(EntityId id, Angle angle);
+
+  // Moving platforms: lines of one map part that move together by whole units, once a frame before
+  // the entities step. A platform pushes every entity in its way (as a slide of the entity's own,
+  // so walls stop it), carries the entities standing on it, and stops where a push is impossible
+  // (Rules::crushed). It passes through the part's fixed lines and other platforms, and stays in
+  // its part: at a warp edge it goes on beyond the face, where no entity of that part can be.
+  // Up to 65,536 lines a platform and 16,384 platforms; lines must be Solid or OneWay.
+  PlatformId createPlatform(MapPartId part, std::span<const PlatformLine> lines);
+  void destroyPlatform(PlatformId id);
+  void setPlatformMotion(PlatformId id, Vec2 perFrame);
+  PlatformView platform(PlatformId id) const;
 
   // nullptr restores the default rules. The rules object must outlive its use by solve().
   void setRules(Rules* rules);

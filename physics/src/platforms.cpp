@@ -1,0 +1,214 @@
+// Moving platforms: groups of lines of one map part that move by whole units once a frame, before
+// the entities step, pushing what is in their way and carrying what stands on them.
+#include <algorithm>
+
+#include "bounds.h"
+#include "world_impl.h"
+
+namespace platon::physics {
+namespace {
+
+Box boxOf(const std::vector<PlatformLine>& lines) {
+  Box b{INT64_MAX, INT64_MAX, INT64_MIN, INT64_MIN};
+  for (const PlatformLine& l : lines)
+    for (const Vec2 p : {l.segment.a, l.segment.b}) {
+      b.x0 = std::min<int64_t>(b.x0, p.x), b.x1 = std::max<int64_t>(b.x1, p.x);
+      b.y0 = std::min<int64_t>(b.y0, p.y), b.y1 = std::max<int64_t>(b.y1, p.y);
+    }
+  return b;
+}
+
+// Whether the line stops an instance with these vertices (a one-way line only from its front).
+bool stops(const PlatformLine& line, std::span<const Vec2> verts) {
+  return line.kind != LineKind::OneWay || wholyInFront(verts, line.segment);
+}
+
+}  // namespace
+
+PlatformId World::createPlatform(MapPartId partId, std::span<const PlatformLine> lines) {
+  WorldImpl& w = *impl_;
+  w.checkUnlocked("createPlatform");
+  const MapPart& part = w.part(partId);
+  if (lines.empty() || lines.size() > 65536)
+    throw Error("createPlatform: a platform has 1..65536 lines, got " + std::to_string(lines.size()));
+  for (size_t k = 0; k < lines.size(); ++k) {
+    const PlatformLine& l = lines[k];
+    if (l.kind != LineKind::Solid && l.kind != LineKind::OneWay)
+      throw Error("createPlatform: line " + std::to_string(k) + " must be Solid or OneWay");
+    if (l.segment.a == l.segment.b || !inRange(l.segment.a) || !inRange(l.segment.b))
+      throw Error("createPlatform: line " + std::to_string(k) + " " + toString(l.segment.a) + "-" +
+                  toString(l.segment.b) + " is empty or outside the coordinate range");
+  }
+  // Nothing may be inside it from the start.
+  for (const WorldImpl::Slot& slot : w.slots) {
+    const Entity* e = slot.entity.get();
+    const Instance* inst = e ? e->instanceIn(partId) : nullptr;
+    if (!inst) continue;
+    const std::vector<Vec2> verts = worldVertices(*inst);
+    for (size_t k = 0; k < lines.size(); ++k)
+      if (stops(lines[k], verts) && overlapsInterior(verts, lines[k].segment))
+        throw Error("createPlatform: line " + std::to_string(k) + " would overlap entity " +
+                    std::to_string(e->id.index));
+  }
+  uint32_t index;
+  if (!w.freePlatforms.empty()) {
+    index = w.freePlatforms.back();
+    w.freePlatforms.pop_back();
+  } else {
+    if (w.platforms.size() >= (1u << 14)) throw Error("createPlatform: too many platforms (16,384)");
+    index = static_cast<uint32_t>(w.platforms.size());
+    w.platforms.push_back({});
+  }
+  Platform& pl = w.platforms[index];
+  pl.part = part.id();
+  pl.lines.assign(lines.begin(), lines.end());
+  pl.offset = pl.motion = {};
+  pl.box = boxOf(pl.lines);
+  pl.alive = true;
+  return {index, pl.generation};
+}
+
+namespace {
+Platform& live(WorldImpl& w, PlatformId id) {
+  if (id.index >= w.platforms.size() || !w.platforms[id.index].alive ||
+      w.platforms[id.index].generation != id.generation)
+    throw Error("platform " + std::to_string(id.index) + ":" + std::to_string(id.generation) +
+                " does not exist (destroyed or never created)");
+  return w.platforms[id.index];
+}
+}  // namespace
+
+void World::destroyPlatform(PlatformId id) {
+  impl_->checkUnlocked("destroyPlatform");
+  Platform& pl = live(*impl_, id);
+  pl.alive = false;
+  pl.lines.clear();
+  ++pl.generation;
+  impl_->freePlatforms.push_back(id.index);
+}
+
+void World::setPlatformMotion(PlatformId id, Vec2 perFrame) {
+  if (std::max(std::abs(int64_t{perFrame.x}), std::abs(int64_t{perFrame.y})) > kMaxMove)
+    throw Error("setPlatformMotion: " + toString(perFrame) + " exceeds the largest move per frame, 2^30 units");
+  live(*impl_, id).motion = perFrame;
+}
+
+PlatformView World::platform(PlatformId id) const {
+  const Platform& pl = live(*impl_, id);
+  return {pl.part, pl.offset, pl.motion, pl.lines};
+}
+
+// One platform's frame: find who stands on it, move it as far as its motion goes or until a push
+// is impossible, then carry those standing on it by what it moved (less what it pushed them).
+void WorldImpl::movePlatforms() {
+  for (uint32_t slot = 0; slot < platforms.size(); ++slot) {
+    if (!platforms[slot].alive || platforms[slot].motion == Vec2{}) continue;
+    const MapPartId partId = platforms[slot].part;
+    const Vec2w gravity = part(partId).gravity();
+    // Riders: touching one of its lines from the side gravity presses them onto.
+    struct Rider {
+      uint32_t entity;
+      Vec2 start;
+    };
+    std::vector<Rider> riders;
+    std::vector<Vec2> verts;
+    Box near = platforms[slot].box;
+    near.x0 -= 1, near.y0 -= 1, near.x1 += 1, near.y1 += 1;
+    entityIndex.forEachNear(partId, near, [&](uint32_t s) {
+      const Entity& e = *slots[s].entity;
+      const Instance* inst = e.instanceIn(partId);
+      if (!inst) return;
+      worldVertices(*inst, verts);
+      for (const PlatformLine& l : platforms[slot].lines) {
+        if (!stops(l, verts) || !touchesOrOverlaps(verts, l.segment)) continue;
+        const Vec2w d = l.segment.b - l.segment.a;
+        i128 side = 0;
+        for (const Vec2 v : verts) side += cross(d, v - l.segment.a);
+        const Vec2w up = side >= 0 ? Vec2w{-d.y, d.x} : Vec2w{d.y, -d.x};
+        if (dot128(up, gravity) < 0) {
+          riders.push_back({s, inst->position});
+          return;
+        }
+      }
+    });
+    std::sort(riders.begin(), riders.end(), [](const Rider& a, const Rider& b) { return a.entity < b.entity; });
+
+    Vec2w remaining = wide(platforms[slot].motion);
+    Vec2w moved{};
+    for (int attempt = 0; attempt < 8 && remaining != Vec2w{}; ++attempt) {
+      Platform& pl = platforms[slot];
+      // The first entity its lines meet, moving by `remaining`: each entity seen from the lines,
+      // moving by -remaining.
+      Box swept = pl.box;
+      (remaining.x < 0 ? swept.x0 : swept.x1) += remaining.x;
+      (remaining.y < 0 ? swept.y0 : swept.y1) += remaining.y;
+      Fraction first = Fraction::one();
+      uint32_t hitEntity = 0, hitLine = 0;
+      entityIndex.forEachNear(partId, swept, [&](uint32_t s) {
+        const Instance* inst = slots[s].entity->instanceIn(partId);
+        if (!inst) return;
+        worldVertices(*inst, verts);
+        for (uint32_t k = 0; k < pl.lines.size(); ++k) {
+          if (!stops(pl.lines[k], verts)) continue;
+          const Sweep sw = sweep(verts, -remaining, pl.lines[k].segment);
+          if (!sw.hitsWithinFrame()) continue;
+          if (sw.enter < first || (sw.enter == first && (s < hitEntity || (s == hitEntity && k < hitLine))))
+            first = sw.enter, hitEntity = s, hitLine = k;
+        }
+      });
+      // Move to the first contact (all the way if none), rounded towards the start, and proved
+      // free of every entity near it.
+      Vec2w step = roundedStep(remaining, first);
+      for (;;) {
+        bool clear = true;
+        Box at = pl.box;
+        at.x0 += std::min<int64_t>(0, step.x), at.x1 += std::max<int64_t>(0, step.x);
+        at.y0 += std::min<int64_t>(0, step.y), at.y1 += std::max<int64_t>(0, step.y);
+        entityIndex.forEachNear(partId, at, [&](uint32_t s) {
+          const Instance* inst = slots[s].entity->instanceIn(partId);
+          if (!clear || !inst) return;
+          worldVertices(*inst, verts);
+          for (const PlatformLine& l : pl.lines) {
+            if (!stops(l, verts)) continue;
+            const Sweep sw = sweep(verts, -step, l.segment);
+            if (sw.hitsWithinFrame() || (sw.startsInside() && l.kind != LineKind::OneWay)) clear = false;
+          }
+        });
+        if (clear || step == Vec2w{}) break;
+        step = {step.x - (step.x > 0) + (step.x < 0), step.y - (step.y > 0) + (step.y < 0)};  // a unit back
+      }
+      for (PlatformLine& l : pl.lines)
+        l.segment = {{static_cast<int32_t>(l.segment.a.x + step.x), static_cast<int32_t>(l.segment.a.y + step.y)},
+                     {static_cast<int32_t>(l.segment.b.x + step.x), static_cast<int32_t>(l.segment.b.y + step.y)}};
+      pl.offset = {static_cast<int32_t>(pl.offset.x + step.x), static_cast<int32_t>(pl.offset.y + step.y)};
+      pl.box = boxOf(pl.lines);
+      moved = moved + step;
+      remaining = remaining - step;
+      if (remaining == Vec2w{} || first == Fraction::one()) break;
+      // Push the entity met by all the platform still has to go; if it cannot make room, the
+      // platform stops here.
+      Entity& pushed = *slots[hitEntity].entity;
+      const Instance& inst = *pushed.instanceIn(partId);
+      const Vec2w inFrame = inst.frame == 0 ? remaining : rotateWideInverse(inst.rotation, remaining);
+      const bool made = push(pushed, inFrame);
+      if (!made && step == Vec2w{}) {
+        Contact c = makeContact(pushed, *pushed.instanceIn(partId), kPlatformLineBit | (slot << 16) | hitLine,
+                                Fraction::zero(), {}, {});
+        callRules([&](Rules& r) { r.crushed(c); });
+        break;
+      }
+    }
+    // Carry the riders by what it moved, less what it pushed them already.
+    for (const Rider& r : riders) {
+      Entity& e = *slots[r.entity].entity;
+      const Instance* inst = e.instanceIn(partId);
+      if (!inst) continue;
+      const Vec2w already = inst->position - r.start;
+      const Vec2w carry = moved - already;
+      if (carry == Vec2w{}) continue;
+      push(e, inst->frame == 0 ? carry : rotateWideInverse(inst->rotation, carry));
+    }
+  }
+}
+
+}  // namespace platon::physics

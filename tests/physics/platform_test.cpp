@@ -1,0 +1,250 @@
+// Moving platforms: they carry what stands on them, push what is in their way, stop (and report)
+// where a push is impossible, and never overlap anything solid to them.
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "platon/physics/world.h"
+
+using namespace platon::physics;
+
+namespace {
+
+constexpr int64_t kUnit = 65536;
+
+int32_t in(std::mt19937_64& rng, int32_t lo, int32_t hi) {
+  return lo + static_cast<int32_t>(rng() % static_cast<uint64_t>(hi - lo + 1));
+}
+
+struct Crushes : Rules {
+  int count = 0;
+  EntityId last;
+  void crushed(const Contact& c) override {
+    ++count;
+    last = c.entity;
+    EXPECT_TRUE(c.line.platform.isSet());
+  }
+};
+
+// A floor, walls, and a platform: a 200-unit slab (a box of four solid lines) at `at`.
+struct Shaft {
+  World world;
+  MapPart* part;
+  PlatformId lift;
+  Crushes rules;
+  explicit Shaft(Vec2 at, bool oneWay = false) {
+    part = &world.createMapPart(1);
+    part->line({-2000, 0}, {2000, 0});
+    part->line({-2000, 2000}, {-2000, 0});
+    part->line({2000, 0}, {2000, 2000});
+    part->setGravity({0, -kUnit / 2});
+    part->initialize();
+    world.setRules(&rules);
+    std::vector<PlatformLine> lines;
+    const Vec2 a{at.x - 100, at.y - 10}, b{at.x + 100, at.y - 10}, c{at.x + 100, at.y}, d{at.x - 100, at.y};
+    if (oneWay) {
+      lines.push_back({{d, c}, 5, LineKind::OneWay});
+    } else {
+      lines = {{{a, b}, 5, LineKind::Solid},
+               {{b, c}, 5, LineKind::Solid},
+               {{c, d}, 5, LineKind::Solid},
+               {{d, a}, 5, LineKind::Solid}};
+    }
+    lift = world.createPlatform(1, lines);
+  }
+  EntityId box(Vec2 at, int32_t half = 20) {
+    const EntityId id = world.createEntity(Convex::box(half, half));
+    world.insert(id, 1, at, 0);
+    return id;
+  }
+  void run(int frames) {
+    for (int f = 0; f < frames; ++f) {
+      world.solve();
+      ASSERT_EQ(world.countOverlaps(), 0u) << "frame " << world.frame();
+    }
+  }
+};
+
+}  // namespace
+
+// Up, sideways and down: a box standing on the platform goes with it, exactly, and stays on top.
+TEST(Platforms, CarryWhatStandsOnThemEveryWay) {
+  Shaft s({0, 300});
+  const EntityId box = s.box({0, 320});
+  s.run(20);
+  ASSERT_EQ(s.world.entity(box).position(), (Vec2{0, 320}));
+  const struct {
+    Vec2 motion;
+    int frames;
+  } legs[] = {{{0, 3}, 100}, {{2, 0}, 100}, {{0, -4}, 50}, {{-3, 1}, 60}, {{1, -1}, 80}};
+  Vec2 expect{0, 320};
+  for (const auto& leg : legs) {
+    s.world.setPlatformMotion(s.lift, leg.motion);
+    s.run(leg.frames);
+    expect = {expect.x + leg.motion.x * leg.frames, expect.y + leg.motion.y * leg.frames};
+    EXPECT_EQ(s.world.entity(box).position(), expect) << "after moving " << toString(leg.motion);
+  }
+  EXPECT_EQ(s.world.platform(s.lift).offset, (Vec2{expect.x, expect.y - 320}));
+  EXPECT_EQ(s.rules.count, 0);
+}
+
+// Sideways into a box on the floor: it pushes the box along; at the wall the box cannot make room,
+// so the platform stops, reports the crush, and nothing overlaps.
+TEST(Platforms, PushUntilAWallAndReportTheCrush) {
+  Shaft s({-500, 100});
+  const EntityId box = s.box({0, 20});
+  // The slab spans y 90..100; lower it to the box's height first.
+  s.world.setPlatformMotion(s.lift, {0, -70});
+  s.run(1);
+  s.world.setPlatformMotion(s.lift, {6, 0});
+  s.run(600);
+  EXPECT_EQ(s.world.entity(box).position(), (Vec2{1980, 20})) << "pushed to the wall";
+  EXPECT_EQ(s.world.platform(s.lift).offset.x, 1980 - 20 - 100 - (-500));
+  EXPECT_GT(s.rules.count, 0);
+  EXPECT_EQ(s.rules.last, box);
+}
+
+// An elevator pressing a box into the ceiling: crushed, reported every frame, never overlapping;
+// once the rules take the box away, the elevator goes on.
+TEST(Platforms, ACeilingStopsTheElevatorUntilTheRulesAct) {
+  Shaft s({0, 300});
+  s.part = nullptr;
+  World& w = s.world;
+  MapPart& roof = w.createMapPart(2);
+  (void)roof;
+  const EntityId box = s.box({0, 320});
+  // A ceiling: another platform that does not move.
+  const PlatformId ceiling =
+      w.createPlatform(1, std::vector<PlatformLine>{{{{200, 500}, {-200, 500}}, 0, LineKind::Solid}});
+  w.setPlatformMotion(s.lift, {0, 5});
+  s.run(100);
+  EXPECT_EQ(w.entity(box).position(), (Vec2{0, 480}));
+  EXPECT_EQ(w.platform(s.lift).offset.y, 160);
+  EXPECT_GT(s.rules.count, 50);
+  w.destroyEntity(box);
+  s.run(10);
+  EXPECT_EQ(w.platform(s.lift).offset.y, 210);
+  (void)ceiling;
+}
+
+// A one-way platform moving up under a box falling onto it catches it; one moving through a box
+// from below lets it through and lifts it once it is on top.
+TEST(Platforms, OneWayPlatformsCatchFromAboveAndPassFromBelow) {
+  Shaft s({0, 100}, true);
+  const EntityId above = s.box({0, 400}), below = s.box({300, 20});
+  s.world.setPlatformMotion(s.lift, {1, 2});
+  s.run(300);
+  // `above` landed on it and rode it; `below`, passed through by it, stayed on the floor.
+  const Vec2 top = s.world.entity(above).position();
+  EXPECT_EQ(top.y, 100 + 2 * 300 + 20);
+  EXPECT_EQ(s.world.entity(below).position(), (Vec2{300, 20}));
+}
+
+// Random rooms with random platforms moving back and forth at random speeds among random shapes:
+// no overlap with any line, fixed or moving, on any frame; the same run twice gives the same hash.
+TEST(Platforms, RandomPlatformsNeverOverlapAnything) {
+  std::mt19937_64 rng(71);
+  for (int trial = 0; trial < 40; ++trial) {
+    const uint64_t seed = rng();
+    auto run = [&](bool check) {
+      std::mt19937_64 r(seed);
+      World world;
+      Crushes rules;
+      world.setRules(&rules);
+      MapPart& part = world.createMapPart(1);
+      part.line({-3000, 0}, {3000, 0});
+      part.line({-3000, 3000}, {-3000, 0});
+      part.line({3000, 0}, {3000, 3000});
+      part.line({3000, 3000}, {-3000, 3000});
+      for (int i = 0; i < 10; ++i) {
+        const Vec2 a{in(r, -2800, 2800), in(r, 100, 2800)};
+        const Vec2 b{a.x + in(r, -400, 400), a.y + in(r, -100, 100)};
+        if (a != b) part.line(a, b);
+      }
+      part.setGravity({in(r, -2000, 2000), -in(r, 4000, 40000)});
+      part.initialize();
+      std::vector<EntityId> ids;
+      for (int i = 0; i < 25; ++i) {
+        const EntityId id = world.createEntity(Convex::regular(in(r, 3, 8), in(r, 8, 50)));
+        for (int tries = 0; tries < 30; ++tries) {
+          try {
+            world.insert(id, 1, {in(r, -2800, 2800), in(r, 100, 2800)}, static_cast<Angle>(r()));
+            ids.push_back(id);
+            break;
+          } catch (const Error&) {}
+        }
+      }
+      std::vector<PlatformId> platforms;
+      for (int i = 0; i < 5; ++i) {
+        const Vec2 c{in(r, -2500, 2500), in(r, 200, 2500)};
+        const int32_t hw = in(r, 40, 300), hh = in(r, 5, 40);
+        const Vec2 a{c.x - hw, c.y - hh}, b{c.x + hw, c.y - hh}, d{c.x + hw, c.y + hh}, e{c.x - hw, c.y + hh};
+        const bool oneWay = r() % 3 == 0;
+        std::vector<PlatformLine> lines;
+        if (oneWay)
+          lines = {{{e, d}, 0, LineKind::OneWay}};
+        else
+          lines = {{{a, b}, 0, LineKind::Solid},
+                   {{b, d}, 0, LineKind::Solid},
+                   {{d, e}, 0, LineKind::Solid},
+                   {{e, a}, 0, LineKind::Solid}};
+        try {
+          platforms.push_back(world.createPlatform(1, lines));
+          world.setPlatformMotion(platforms.back(), {in(r, -6, 6), in(r, -6, 6)});
+        } catch (const Error&) {}
+      }
+      for (int f = 0; f < 600; ++f) {
+        if (f % 60 == 0)
+          for (const PlatformId p : platforms) world.setPlatformMotion(p, {in(r, -8, 8), in(r, -8, 8)});
+        world.solve();
+        if (check && world.countOverlaps() != 0) {
+          ADD_FAILURE() << "trial " << trial << ", frame " << f << ": overlap";
+          break;
+        }
+      }
+      return world.stateHash();
+    };
+    EXPECT_EQ(run(true), run(false)) << "trial " << trial;
+  }
+}
+
+TEST(Platforms, BadPlatformsAreRefused) {
+  World world;
+  MapPart& part = world.createMapPart(1);
+  part.initialize();
+  const EntityId box = world.createEntity(Convex::box(10, 10));
+  world.insert(box, 1, {0, 0}, 0);
+  auto expectError = [](auto&& f, const std::string& needle) {
+    try {
+      f();
+      ADD_FAILURE() << "no error; expected " << needle;
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+    }
+  };
+  expectError([&] { world.createPlatform(1, {}); }, "1..65536 lines");
+  expectError(
+      [&] {
+        world.createPlatform(1, std::vector<PlatformLine>{{{{0, 0}, {0, 0}}, 0, LineKind::Solid}});
+      },
+      "empty or outside");
+  expectError(
+      [&] {
+        world.createPlatform(1, std::vector<PlatformLine>{{{{0, 0}, {5, 0}}, 0, LineKind::Warp}});
+      },
+      "Solid or OneWay");
+  expectError(
+      [&] {
+        world.createPlatform(1, std::vector<PlatformLine>{{{{-50, 0}, {50, 0}}, 0, LineKind::Solid}});
+      },
+      "would overlap entity");
+  expectError(
+      [&] {
+        world.createPlatform(9, std::vector<PlatformLine>{{{{0, 50}, {5, 50}}, 0, LineKind::Solid}});
+      },
+      "map part 9 does not exist");
+  const PlatformId p = world.createPlatform(1, std::vector<PlatformLine>{{{{0, 50}, {5, 50}}, 0, LineKind::Solid}});
+  world.destroyPlatform(p);
+  expectError([&] { world.platform(p); }, "does not exist");
+  expectError([&] { world.setPlatformMotion(p, {1, 0}); }, "does not exist");
+}
