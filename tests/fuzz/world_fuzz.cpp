@@ -241,6 +241,7 @@ struct Scene {
   World& world;
   Decoder& in;
   std::vector<EntityId> ids;
+  std::vector<PlatformId> platforms;
 
   EntityId pick() { return ids[in.range(0, static_cast<int64_t>(ids.size()) - 1)]; }
   MapPartId part() { return kParts[world.findMapPart(2) ? in.range(0, 1) : 0]; }
@@ -295,6 +296,22 @@ struct Scene {
   void destroy(EntityId id) {
     trace("world.destroyEntity(", name(id), ");");
     attempt("destroyEntity", [&] { world.destroyEntity(id); });
+  }
+  // A platform of one to three lines (solid or one-way) somewhere in a part, or a new motion for one.
+  void platform() {
+    if (!platforms.empty() && in.flag()) {
+      const PlatformId p = platforms[in.range(0, static_cast<int64_t>(platforms.size()) - 1)];
+      const Vec2 v{static_cast<int32_t>(in.range(-64, 64) << in.shift(8)), static_cast<int32_t>(in.range(-64, 64) << in.shift(8))};
+      trace("world.setPlatformMotion(p", p.index, ", ", v, ");");
+      attempt("setPlatformMotion", [&] { world.setPlatformMotion(p, v); });
+      return;
+    }
+    std::vector<PlatformLine> lines;
+    for (int64_t n = in.range(1, 3); n > 0; --n)
+      lines.push_back({{in.point(), in.point()}, 0, in.flag() ? LineKind::OneWay : LineKind::Solid});
+    const MapPartId p = part();
+    trace("// world.createPlatform(", p, ", ", lines.size(), " lines);");
+    attempt("createPlatform", [&] { platforms.push_back(world.createPlatform(p, lines)); });
   }
   // Which entities meet which: two category bits, so solid pairs, overlap pairs and pushes all occur.
   void setFilter(EntityId id) {
@@ -367,7 +384,7 @@ void run(const uint8_t* data, size_t size) {
   World world;
   FuzzRules rules;
   rules.world = &world;
-  Scene scene{world, in, {}};
+  Scene scene{world, in, {}, {}};
   try {
     buildMap(in, world, rules);
     scene.createEntities();
@@ -377,7 +394,10 @@ void run(const uint8_t* data, size_t size) {
     for (int frame = 1; frame <= frames; ++frame) {
       for (int64_t n = in.range(0, 3); n > 0; --n) {  // a few calls between frames
         const EntityId id = scene.pick();
-        switch (in.range(0, 8)) {
+        switch (in.range(0, 9)) {
+          case 9:
+            scene.platform();
+            break;
           case 0:
           case 1:
             scene.setVelocity(id);
