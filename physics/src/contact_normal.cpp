@@ -70,23 +70,20 @@ Nearness nearNormals(std::span<const Vec2> polygon, std::span<const Vec2> other,
   const size_t before = normals.size();
   const int n = static_cast<int>(polygon.size());
   bool touching = true;
-  std::vector<uint8_t> own;  // whether each kept normal is one of the other polygon's edges
+  size_t firstOwn = SIZE_MAX;  // the other polygon's edges come after ours: where they start
   const bool near = forEachAxis(polygon, other, [&](int64_t slack, Vec2w c, int axis) {
     if (slack > 0) touching = false;
     if (slack < 0) return true;
     if (slack >= (int64_t{1} << 32) ||
         4 * static_cast<u128>(slack) * static_cast<u128>(slack) >= 9 * static_cast<u128>(dot128(c, c)))
       return false;
+    if (axis >= n && firstOwn == SIZE_MAX) firstOwn = normals.size();
     normals.push_back(-c);
-    own.push_back(axis >= n);
     return true;
   });
-  if (near && !touching) {
-    size_t kept = before;
-    for (size_t k = before; k < normals.size(); ++k)
-      if (own[k - before]) normals[kept++] = normals[k];
-    normals.resize(kept);
-  }
+  if (near && !touching)
+    normals.erase(normals.begin() + static_cast<long>(before),
+                  normals.begin() + static_cast<long>(std::min(firstOwn, normals.size())));
   if (!near || normals.size() == before) {
     normals.resize(before);
     return Nearness::Apart;

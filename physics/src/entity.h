@@ -1,6 +1,7 @@
 // Entities and their instances as the solver keeps them. Callers see them through EntityView and
 // InstanceView (platon/physics/entity_view.h); everything here is the solver's bookkeeping.
 #pragma once
+#include <algorithm>
 #include <vector>
 
 #include "platon/physics/convex.h"
@@ -21,10 +22,28 @@ struct Instance {
   // through the warps. Each sub-move aims at it, so rounding never accumulates into drift.
   Vec2w idealQ30;
   std::vector<Vec2> shape;              // vertices relative to position: the entity shape turned by angle + frame
+  Vec2 low, high;                       // the shape's bounding box, relative to position (setShape keeps it)
   std::vector<LineIndex> overlapping;   // pierceable lines whose interior this instance overlaps
   std::vector<LineIndex> blockedWarps;  // warps that could not be crossed this frame (act solid)
   Region region;
 };
+
+// Sets an instance's shape and its bounding box.
+inline void setShape(Instance& inst, std::vector<Vec2> shape) {
+  inst.shape = std::move(shape);
+  inst.low = inst.high = inst.shape.front();
+  for (const Vec2 v : inst.shape) {
+    inst.low = {std::min(inst.low.x, v.x), std::min(inst.low.y, v.y)};
+    inst.high = {std::max(inst.high.x, v.x), std::max(inst.high.y, v.y)};
+  }
+}
+
+// Whether the instance's bounding box meets the closed box [x0, x1] x [y0, y1].
+template <class B>
+inline bool boxMeets(const Instance& inst, const B& box) {
+  return int64_t{inst.position.x} + inst.low.x <= box.x1 && int64_t{inst.position.x} + inst.high.x >= box.x0 &&
+         int64_t{inst.position.y} + inst.low.y <= box.y1 && int64_t{inst.position.y} + inst.high.y >= box.y0;
+}
 
 // Two instances joined through a warp edge; the pair lives while the entity straddles the edge.
 struct WarpLink {

@@ -23,7 +23,7 @@ void WorldImpl::reindex(const Entity& e) {
 
 std::optional<EntityId> WorldImpl::entityOverlap(const Entity& e, const Instance& inst, std::span<const Vec2> verts) {
   std::optional<EntityId> found;
-  std::vector<Vec2> other;
+  std::vector<Vec2>& other = scratch.other;
   forEachSolidNear(e, inst.part, boxOf(verts, {}), [&](const Entity& o, const Instance& oi) {
     if (found) return;
     worldVertices(oi, other);

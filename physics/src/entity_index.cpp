@@ -9,11 +9,7 @@ constexpr int64_t kBigCells = 16;  // an instance spanning more cells than this 
 }
 
 EntityIndex::Filed EntityIndex::fileFor(const Instance& inst) {
-  int64_t x0 = INT64_MAX, y0 = INT64_MAX, x1 = INT64_MIN, y1 = INT64_MIN;
-  for (const Vec2 v : inst.shape) {
-    x0 = std::min<int64_t>(x0, v.x), x1 = std::max<int64_t>(x1, v.x);
-    y0 = std::min<int64_t>(y0, v.y), y1 = std::max<int64_t>(y1, v.y);
-  }
+  const int64_t x0 = inst.low.x, y0 = inst.low.y, x1 = inst.high.x, y1 = inst.high.y;  // relative to position
   if (shift_ < 0) {  // cells about twice the first entity's size
     const uint64_t extent = static_cast<uint64_t>(std::max<int64_t>({x1 - x0, y1 - y0, 8}));
     shift_ = static_cast<int>(std::bit_width(extent));
@@ -58,14 +54,13 @@ void EntityIndex::update(const Entity& e) {
   if (slot >= filed_.size()) filed_.resize(slot + 1), stamp_.resize(slot + 1, 0);
   std::vector<Filed>& was = filed_[slot];
   if (was.empty() && !e.instances.empty()) ++entities_;
-  std::vector<Filed> now;
-  now.reserve(e.instances.size());
-  for (const Instance& inst : e.instances) now.push_back(fileFor(inst));
-  if (now == was) return;
+  now_.clear();
+  for (const Instance& inst : e.instances) now_.push_back(fileFor(inst));
+  if (now_ == was) return;
   for (const Filed& f : was) take(slot, f);
-  for (const Filed& f : now) add(slot, f);
-  if (!was.empty() && now.empty()) --entities_;
-  was = std::move(now);
+  for (const Filed& f : now_) add(slot, f);
+  if (!was.empty() && now_.empty()) --entities_;
+  was = now_;
 }
 
 void EntityIndex::remove(const Entity& e) {

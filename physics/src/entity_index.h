@@ -53,6 +53,7 @@ class EntityIndex {
   std::unordered_map<MapPartId, std::vector<uint32_t>> big_;  // instances spanning many cells
   std::vector<std::vector<Filed>> filed_;                     // per entity slot
   std::vector<uint32_t> stamp_;                               // per slot, the last query that saw it
+  std::vector<Filed> now_;                                    // update()'s scratch
   uint32_t query_ = 0;
   int shift_ = -1;  // cells are 2^shift units wide; chosen from the first entity filed
   size_t entities_ = 0;

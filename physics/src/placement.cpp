@@ -16,7 +16,7 @@ Instance WorldImpl::makeInstance(const Entity& e, MapPartId partId, Vec2 positio
   inst.rotation = rotationOf(turn);
   inst.idealQ30 = q30FromPoint(position);
   const Convex turned = e.shape.rotated(static_cast<Angle>(e.angle + turn));
-  inst.shape.assign(turned.vertices().begin(), turned.vertices().end());
+  setShape(inst, {turned.vertices().begin(), turned.vertices().end()});
   for (const Vec2 v : inst.shape)
     if (std::abs(int64_t{position.x} + v.x) > kCoordLimit || std::abs(int64_t{position.y} + v.y) > kCoordLimit)
       throw Error("instance at " + toString(position) + " would reach outside the coordinate range (vertex " +
@@ -107,7 +107,7 @@ Fraction WorldImpl::firstBlock(const Entity& e, Instance& inst, std::span<const 
     const Sweep s = sweep(verts, step, l.segment);
     if (s.hitsWithinFrame() && s.enter < first) first = s.enter;
   });
-  std::vector<Vec2> other;
+  std::vector<Vec2>& other = scratch.other;
   forEachSolidNear(e, inst.part, box, [&](const Entity&, const Instance& oi) {
     worldVertices(oi, other);
     const Sweep s = sweep(verts, step, other);

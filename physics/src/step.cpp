@@ -573,7 +573,7 @@ bool WorldImpl::restsAgainstLines(Entity& e, Vec2w w) {
     // Entities it is against, solid to it: the other polygon's sides count as lines do. One that
     // can be pushed holds it only as a support (a contact against gravity, as in a stack): from the
     // side, walking into it pushes it.
-    std::vector<Vec2> other;
+    std::vector<Vec2>& other = scratch.probe;
     const Vec2w down = part(inst.part).gravity();
     forEachSolidNear(e, inst.part, box, [&](const Entity& o, const Instance& oi) {
       worldVertices(oi, other);

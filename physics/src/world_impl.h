@@ -88,6 +88,7 @@ struct WorldImpl {
     std::vector<Vec2w> moves, steps, normals;
     std::vector<uint8_t> pierceNear;
     std::vector<Vec2> now, probe;
+    std::vector<Vec2> other;  // another entity's vertices, in the innermost loops (never held across calls)
     std::vector<LineIndex> touchingLines;
     std::vector<Vec2w> lineNormals;
     OpenDirections open;
@@ -221,7 +222,8 @@ void WorldImpl::forEachSolidNear(const Entity& e, MapPartId part, const Box& box
   entityIndex.forEachNear(part, box, [&](uint32_t slot) {
     const Entity* other = slots[slot].entity.get();
     if (!other || other == &e || !solidPair(e.filter, other->filter)) return;
-    if (const Instance* inst = other->instanceIn(part)) visit(*other, *inst);
+    const Instance* inst = other->instanceIn(part);
+    if (inst && boxMeets(*inst, box)) visit(*other, *inst);
   });
 }
 
@@ -230,7 +232,8 @@ void WorldImpl::forEachOverlappingNear(const Entity& e, MapPartId part, const Bo
   entityIndex.forEachNear(part, box, [&](uint32_t slot) {
     const Entity* other = slots[slot].entity.get();
     if (!other || other == &e || !overlapPair(e.filter, other->filter)) return;
-    if (const Instance* inst = other->instanceIn(part)) visit(*other, *inst);
+    const Instance* inst = other->instanceIn(part);
+    if (inst && boxMeets(*inst, box)) visit(*other, *inst);
   });
 }
 

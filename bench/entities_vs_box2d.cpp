@@ -1,0 +1,182 @@
+// The cost of a frame with 1, 100 and 1,000 entities, Platon against Box2D 2.4.1 with the same
+// bodies, in three scenes:
+//   resting  boxes standing apart on a floor (the cost of a body at rest);
+//   walking  boxes walking back and forth along the floor, their velocity set every frame as a
+//            player's is (they pass through each other: neither engine makes them collide);
+//   stacks   crates in towers of ten, solid to each other, resting.
+// Box2D is built as its users build it: default iterations (8 velocity, 3 position), friction 0.2,
+// fixed rotation (Platon's bodies do not tumble), and sleeping on, which is its answer to resting
+// bodies; it is also timed with sleeping off, since Platon never puts a body to sleep: a body at
+// rest there costs a check a frame, so that anything that changes under it wakes it at once.
+//
+// Each case runs 7 times, the engines interleaved; the table gives the median ns per frame and the
+// spread (min-max) over the runs, and the ratio of the medians. This machine's timings move by up
+// to 30% between runs: read the spread before the ratio.
+//
+// Usage: entities_vs_box2d [--quick]
+#include <algorithm>
+#include <box2d/box2d.h>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "platon/physics/world.h"
+
+namespace {
+
+using namespace platon::physics;
+using Clock = std::chrono::steady_clock;
+
+constexpr int kUnitsPerMetre = 1024;
+constexpr double kHz = 60, kGravity = 10, kHalf = 0.25;  // boxes half a metre wide
+constexpr int kRuns = 7;
+
+int32_t units(double metres) { return static_cast<int32_t>(metres * kUnitsPerMetre); }
+int64_t q16(double metresPerSecond) { return static_cast<int64_t>(metresPerSecond * kUnitsPerMetre / kHz * 65536); }
+
+enum class Scene { Resting, Walking, Stacks };
+const char* name(Scene s) { return s == Scene::Resting ? "resting" : s == Scene::Walking ? "walking" : "stacks"; }
+
+// Where body i starts, in metres: resting and walking bodies 1 m apart on the floor; stacks in
+// towers of ten, towers 1 m apart.
+void place(Scene s, int i, double& x, double& y) {
+  if (s == Scene::Stacks) {
+    x = (i / 10) * 1.0;
+    y = kHalf + (i % 10) * 2 * kHalf;
+  } else {
+    x = i * 1.0;
+    y = kHalf;
+  }
+}
+double walkSpeed(int frame, int i) { return ((frame / 120 + i) % 2 ? 1.5 : -1.5); }
+
+class PlatonScene {
+ public:
+  PlatonScene(Scene scene, int n) : scene_(scene) {
+    MapPart& part = world_.createMapPart(1);
+    part.line({units(-10), 0}, {units(n * 1.0 + 10), 0});
+    part.setGravity({0, -q16(kGravity / kHz)});
+    part.initialize();
+    const EntityFilter crate{1, 1, 0, true};
+    for (int i = 0; i < n; ++i) {
+      double x, y;
+      place(scene, i, x, y);
+      const EntityId id = world_.createEntity(Convex::box(units(kHalf), units(kHalf)));
+      if (scene == Scene::Stacks) world_.setFilter(id, crate);
+      world_.insert(id, 1, {units(x), units(y)}, 0);
+      ids_.push_back(id);
+    }
+  }
+  void frame(int f) {
+    if (scene_ == Scene::Walking)
+      for (size_t i = 0; i < ids_.size(); ++i)
+        world_.setVelocity(ids_[i], {q16(walkSpeed(f, static_cast<int>(i))), world_.entity(ids_[i]).velocity().y});
+    world_.solve();
+  }
+
+ private:
+  Scene scene_;
+  World world_;
+  std::vector<EntityId> ids_;
+};
+
+class Box2DScene {
+ public:
+  Box2DScene(Scene scene, int n, bool sleep) : scene_(scene), world_(b2Vec2(0, -kGravity)) {
+    world_.SetAllowSleeping(sleep);
+    b2BodyDef groundDef;
+    b2Body* ground = world_.CreateBody(&groundDef);
+    b2EdgeShape floor;
+    floor.SetTwoSided(b2Vec2(-10, 0), b2Vec2(static_cast<float>(n + 10), 0));
+    ground->CreateFixture(&floor, 0);
+    for (int i = 0; i < n; ++i) {
+      double x, y;
+      place(scene, i, x, y);
+      b2BodyDef def;
+      def.type = b2_dynamicBody;
+      def.fixedRotation = true;
+      def.position.Set(static_cast<float>(x), static_cast<float>(y));
+      b2Body* body = world_.CreateBody(&def);
+      b2PolygonShape box;
+      box.SetAsBox(static_cast<float>(kHalf), static_cast<float>(kHalf));
+      b2FixtureDef fixture;
+      fixture.shape = &box;
+      fixture.density = 1;
+      fixture.friction = 0.2f;
+      if (scene != Scene::Stacks) fixture.filter.groupIndex = -1;  // walkers and resters pass through each other
+      body->CreateFixture(&fixture);
+      bodies_.push_back(body);
+    }
+  }
+  void frame(int f) {
+    if (scene_ == Scene::Walking)
+      for (size_t i = 0; i < bodies_.size(); ++i)
+        bodies_[i]->SetLinearVelocity(
+            b2Vec2(static_cast<float>(walkSpeed(f, static_cast<int>(i))), bodies_[i]->GetLinearVelocity().y));
+    world_.Step(static_cast<float>(1 / kHz), 8, 3);
+  }
+
+ private:
+  Scene scene_;
+  b2World world_;
+  std::vector<b2Body*> bodies_;
+};
+
+// ns per frame over `frames` frames after `settle` frames of settling.
+template <class S>
+double timeScene(S& s, int settle, int frames) {
+  for (int f = 0; f < settle; ++f) s.frame(f);
+  const auto t0 = Clock::now();
+  for (int f = settle; f < settle + frames; ++f) s.frame(f);
+  return std::chrono::duration<double, std::nano>(Clock::now() - t0).count() / frames;
+}
+
+struct Stat {
+  double median, lo, hi;
+};
+Stat stat(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return {v[v.size() / 2], v.front(), v.back()};
+}
+std::string show(const Stat& s) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "%.0f (%.0f-%.0f)", s.median, s.lo, s.hi);
+  return buf;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  const int settle = 300, frames = quick ? 100 : 600;
+  std::printf("Frame cost with N entities: median ns per frame over %d runs of %d frames (min-max)\n\n", kRuns, frames);
+  std::printf(
+      "| scene | N | Platon | Box2D, sleeping on | Box2D, sleeping off | Platon / Box2D (sleeping on) | Platon / Box2D "
+      "(off) |\n");
+  std::printf("|---|---|---|---|---|---|---|\n");
+  for (const Scene scene : {Scene::Resting, Scene::Walking, Scene::Stacks})
+    for (const int n : {1, 100, 1000}) {
+      std::vector<double> platon, asleep, awake;
+      for (int run = 0; run < kRuns; ++run) {
+        {
+          PlatonScene s(scene, n);
+          platon.push_back(timeScene(s, settle, frames));
+        }
+        {
+          Box2DScene s(scene, n, true);
+          asleep.push_back(timeScene(s, settle, frames));
+        }
+        {
+          Box2DScene s(scene, n, false);
+          awake.push_back(timeScene(s, settle, frames));
+        }
+      }
+      const Stat p = stat(platon), a = stat(asleep), b = stat(awake);
+      std::printf("| %s | %d | %s | %s | %s | %.2f | %.2f |\n", name(scene), n, show(p).c_str(), show(a).c_str(),
+                  show(b).c_str(), p.median / a.median, p.median / b.median);
+    }
+  return 0;
+}
