@@ -10,37 +10,17 @@
 #include <gtest/gtest.h>
 
 #include "platon/physics/world.h"
+#include "platon/testing/random_shapes.h"
 
 using namespace platon::physics;
 
 namespace {
 
+using platon::testing::between;
+using platon::testing::randomConvex;
+using platon::testing::Turn;
+
 constexpr int64_t kUnit = 65536;
-
-int32_t in(std::mt19937_64& rng, int32_t lo, int32_t hi) {
-  return lo + static_cast<int32_t>(rng() % static_cast<uint64_t>(hi - lo + 1));
-}
-
-// A random convex shape about the origin; half of them are rotated so a vertex points down.
-Convex randomShape(std::mt19937_64& rng, int32_t size) {
-  for (;;) {
-    std::vector<Vec2> points;
-    const int n = 3 + static_cast<int>(rng() % 6);
-    for (int i = 0; i < n; ++i) points.push_back({in(rng, -size, size), in(rng, -size, size)});
-    std::vector<Vec2> hull = convexHull(points);
-    if (hull.size() < 3) continue;
-    Vec2 lo = hull[0], hi = hull[0];  // centred on its box, so it goes where it is inserted
-    for (const Vec2 v : hull)
-      lo = {std::min(lo.x, v.x), std::min(lo.y, v.y)}, hi = {std::max(hi.x, v.x), std::max(hi.y, v.y)};
-    for (Vec2& v : hull) v = {v.x - (lo.x + hi.x) / 2, v.y - (lo.y + hi.y) / 2};
-    const Convex c(hull);
-    if (rng() % 2) return c;
-    try {
-      return c.rotated(static_cast<Angle>(rng()));
-    } catch (const Error&) {  // too small to turn: draw again
-    }
-  }
-}
 
 // The point at `length` units from `from` in direction `angle`, rounded.
 Vec2 along(Vec2 from, Angle angle, int64_t length) {
@@ -71,14 +51,14 @@ TEST(Joints, ACollinearChainIsExactlyOneLine) {
   int cases = 0, vertexFirst = 0;
   for (int trial = 0; trial < 240; ++trial) {
     // Direction (dx, dy) with a slope of at most about 30 degrees either way; the body slides along it.
-    const int32_t dx = in(rng, 3, 40), dy = in(rng, -dx / 2, dx / 2);
-    const int32_t pieces = in(rng, 2, 40), steps = 2000 / dx + 4;
-    const Convex shape = randomShape(rng, in(rng, 3, 40));
+    const int32_t dx = between(rng, 3, 40), dy = between(rng, -dx / 2, dx / 2);
+    const int32_t pieces = between(rng, 2, 40), steps = 2000 / dx + 4;
+    const Convex shape = randomConvex(rng, between(rng, 3, 40), Turn::MaybeTurned);
     const bool driven = rng() % 2;
-    const int64_t speed = in(rng, kUnit / 4, 12 * kUnit);
-    const Vec2w gravity{0, -in(rng, 2000, 2 * kUnit)};
+    const int64_t speed = between(rng, kUnit / 4, 12 * kUnit);
+    const Vec2w gravity{0, -between(rng, 2000, 2 * kUnit)};
     std::vector<int32_t> cuts{0, steps};
-    for (int k = 0; k < pieces; ++k) cuts.push_back(in(rng, 1, steps - 1));
+    for (int k = 0; k < pieces; ++k) cuts.push_back(between(rng, 1, steps - 1));
     std::sort(cuts.begin(), cuts.end());
     cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
     const Vec2 origin{-1000, 500};
@@ -159,17 +139,17 @@ TEST(Joints, BendsNeverStallADrivenBody) {
     std::vector<Vec2> points{{0, 0}};
     int64_t heading = 0;  // degrees
     for (int k = 0; k < 12; ++k) {
-      heading = std::clamp<int64_t>(heading + in(rng, -30, 30), -35, 35);
-      points.push_back(along(points.back(), angleFromDegrees(heading), in(rng, 40, 200)));
+      heading = std::clamp<int64_t>(heading + between(rng, -30, 30), -35, 35);
+      points.push_back(along(points.back(), angleFromDegrees(heading), between(rng, 40, 200)));
     }
     part.line({-400, points[0].y}, points[0]);
     for (size_t k = 0; k + 1 < points.size(); ++k) part.line(points[k], points[k + 1]);
-    part.setGravity({0, -in(rng, 4000, kUnit)});
+    part.setGravity({0, -between(rng, 4000, kUnit)});
     part.initialize();
-    const EntityId id = world.createEntity(randomShape(rng, in(rng, 4, 25)));
+    const EntityId id = world.createEntity(randomConvex(rng, between(rng, 4, 25), Turn::MaybeTurned));
     if (!insertAbove(world, id, 1, {-200, 1}, 0)) continue;
     ++cases;
-    const int64_t speed = in(rng, 2 * kUnit, 8 * kUnit);
+    const int64_t speed = between(rng, 2 * kUnit, 8 * kUnit);
     int32_t lastX = world.entity(id).position().x;
     int stalled = 0;
     for (int f = 1; f <= 3000 && world.entity(id).position().x < points.back().x - 60; ++f) {
@@ -199,12 +179,12 @@ struct Crease {
 bool makeCrease(Crease& c, std::mt19937_64& rng, int64_t alpha1, int64_t alpha2, int64_t tilt, const Convex& shape) {
   MapPart& part = c.world.createMapPart(1);
   const Angle up = angleFromDegrees(90 + tilt);
-  const Vec2 apex{in(rng, -5000, 5000), in(rng, -5000, 5000)};
+  const Vec2 apex{between(rng, -5000, 5000), between(rng, -5000, 5000)};
   const int64_t length = 40000;
   part.line(apex, along(apex, static_cast<Angle>(up - angleFromDegrees(alpha1)), length));
   part.line(along(apex, static_cast<Angle>(up + angleFromDegrees(alpha2)), length), apex);
   const Rotation down = rotationOf(static_cast<Angle>(up + kHalfTurn));
-  const int64_t g = in(rng, 3000, 2 * kUnit);
+  const int64_t g = between(rng, 3000, 2 * kUnit);
   c.gravity = {static_cast<int64_t>(roundDiv(down.c * g, i128{1} << 30)),
                static_cast<int64_t>(roundDiv(down.s * g, i128{1} << 30))};
   part.setGravity(c.gravity);
@@ -264,10 +244,10 @@ TEST(Creases, EveryCornerAndValleyHoldsStillAndLetsGo) {
   std::mt19937_64 rng(31);
   int cases = 0;
   for (int trial = 0; trial < 300; ++trial) {
-    const int32_t alpha1 = in(rng, 10, 85), alpha2 = in(rng, 10, 85);
-    const int32_t tilt = in(rng, -std::min(alpha1, alpha2) + 5, std::min(alpha1, alpha2) - 5);
+    const int32_t alpha1 = between(rng, 10, 85), alpha2 = between(rng, 10, 85);
+    const int32_t tilt = between(rng, -std::min(alpha1, alpha2) + 5, std::min(alpha1, alpha2) - 5);
     Crease c;
-    if (!makeCrease(c, rng, alpha1, alpha2, tilt, randomShape(rng, in(rng, 3, 50)))) continue;
+    if (!makeCrease(c, rng, alpha1, alpha2, tilt, randomConvex(rng, between(rng, 3, 50), Turn::MaybeTurned))) continue;
     ++cases;
     // Falling in takes a while; once it stops, it must stay stopped.
     const int lastMove = settle(c, 200, 4000);
@@ -314,10 +294,10 @@ TEST(Creases, SettlingTakesAFewFramesOnceInTheCorner) {
   int worst = 0, cases = 0;
   std::string worstCase;
   for (int trial = 0; trial < 300; ++trial) {
-    const int32_t alpha1 = in(rng, 10, 85), alpha2 = in(rng, 10, 85);
-    const int32_t tilt = in(rng, -std::min(alpha1, alpha2) + 5, std::min(alpha1, alpha2) - 5);
+    const int32_t alpha1 = between(rng, 10, 85), alpha2 = between(rng, 10, 85);
+    const int32_t tilt = between(rng, -std::min(alpha1, alpha2) + 5, std::min(alpha1, alpha2) - 5);
     Crease c;
-    if (!makeCrease(c, rng, alpha1, alpha2, tilt, randomShape(rng, in(rng, 3, 50)))) continue;
+    if (!makeCrease(c, rng, alpha1, alpha2, tilt, randomConvex(rng, between(rng, 3, 50), Turn::MaybeTurned))) continue;
     // Within 1.5 units of both lines, slower than a quarter unit a frame, gravity pointing into both
     // (floating point is fine for telling when to start counting).
     auto pressed = [&] {

@@ -6,17 +6,18 @@
 #include <gtest/gtest.h>
 
 #include "platon/physics/world.h"
+#include "platon/testing/random_shapes.h"
 
 using namespace platon::physics;
 
 namespace {
 
+using platon::testing::between;
+using platon::testing::randomConvex;
+using platon::testing::Turn;
+
 constexpr int64_t kUnit = 65536;
 constexpr uint32_t kPlayer = 1, kCrate = 2, kCoin = 4, kEnemy = 8;
-
-int32_t in(std::mt19937_64& rng, int32_t lo, int32_t hi) {
-  return lo + static_cast<int32_t>(rng() % static_cast<uint64_t>(hi - lo + 1));
-}
 
 // Counts begin/over/end per (entity, other) pair, and solid contacts with entities.
 struct Events : Rules {
@@ -54,21 +55,6 @@ struct Room {
     return id;
   }
 };
-
-Convex randomShape(std::mt19937_64& rng, int32_t size) {
-  for (;;) {
-    std::vector<Vec2> points;
-    const int n = 3 + static_cast<int>(rng() % 6);
-    for (int i = 0; i < n; ++i) points.push_back({in(rng, -size, size), in(rng, -size, size)});
-    std::vector<Vec2> hull = convexHull(points);
-    if (hull.size() < 3) continue;
-    Vec2 lo = hull[0], hi = hull[0];
-    for (const Vec2 v : hull)
-      lo = {std::min(lo.x, v.x), std::min(lo.y, v.y)}, hi = {std::max(hi.x, v.x), std::max(hi.y, v.y)};
-    for (Vec2& v : hull) v = {v.x - (lo.x + hi.x) / 2, v.y - (lo.y + hi.y) / 2};
-    return Convex(hull);
-  }
-}
 
 }  // namespace
 
@@ -230,21 +216,21 @@ TEST(EntitySolids, RandomCrowdsNeverOverlapAndPairTheirEvents) {
       Events events;
       room.world.setRules(&events);
       for (int i = 0; i < 20; ++i) {
-        const Vec2 a{in(r, -3800, 3800), in(r, 100, 3800)};
-        const Vec2 b{a.x + in(r, -500, 500), a.y + in(r, -200, 200)};
+        const Vec2 a{between(r, -3800, 3800), between(r, 100, 3800)};
+        const Vec2 b{a.x + between(r, -500, 500), a.y + between(r, -200, 200)};
         if (a != b) room.part->line(a, b);
       }
-      room.part->setGravity({in(r, -3000, 3000), -in(r, 4000, 40000)});
+      room.part->setGravity({between(r, -3000, 3000), -between(r, 4000, 40000)});
       std::vector<EntityId> ids;
       for (int i = 0; i < 40; ++i) {
-        const uint32_t category = 1u << in(r, 0, 3);
-        const EntityFilter filter{category, static_cast<uint32_t>(in(r, 0, 15)), static_cast<uint32_t>(in(r, 0, 15)),
-                                  r() % 2 == 0};
-        const Convex shape = randomShape(r, in(r, 5, 60));
+        const uint32_t category = 1u << between(r, 0, 3);
+        const EntityFilter filter{category, static_cast<uint32_t>(between(r, 0, 15)),
+                                  static_cast<uint32_t>(between(r, 0, 15)), r() % 2 == 0};
+        const Convex shape = randomConvex(r, between(r, 5, 60), Turn::Upright);
         for (int tries = 0; tries < 30; ++tries) {
           try {
-            ids.push_back(room.add(shape, {in(r, -3700, 3700), in(r, 100, 3700)}, filter));
-            room.world.setVelocity(ids.back(), {in(r, -8, 8) * kUnit, in(r, -8, 8) * kUnit});
+            ids.push_back(room.add(shape, {between(r, -3700, 3700), between(r, 100, 3700)}, filter));
+            room.world.setVelocity(ids.back(), {between(r, -8, 8) * kUnit, between(r, -8, 8) * kUnit});
             break;
           } catch (const Error&) {}
         }
@@ -252,7 +238,7 @@ TEST(EntitySolids, RandomCrowdsNeverOverlapAndPairTheirEvents) {
       for (int f = 0; f < 800; ++f) {
         if (f % 7 == 0 && !ids.empty()) {  // drive one, as a player would
           const EntityId id = ids[static_cast<size_t>(f / 7) % ids.size()];
-          room.world.setVelocity(id, {in(r, -6, 6) * kUnit, room.world.entity(id).velocity().y});
+          room.world.setVelocity(id, {between(r, -6, 6) * kUnit, room.world.entity(id).velocity().y});
         }
         room.world.solve();
         if (check && room.world.countOverlaps() != 0) {

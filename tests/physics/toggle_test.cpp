@@ -5,17 +5,18 @@
 #include <gtest/gtest.h>
 
 #include "platon/physics/world.h"
+#include "platon/testing/random_shapes.h"
 
 using namespace platon::physics;
 
 namespace {
 
+using platon::testing::between;
+using platon::testing::randomConvex;
+using platon::testing::Turn;
+
 constexpr int64_t kUnit = 65536;
 constexpr uint32_t kDoor = 7;
-
-int32_t in(std::mt19937_64& rng, int32_t lo, int32_t hi) {
-  return lo + static_cast<int32_t>(rng() % static_cast<uint64_t>(hi - lo + 1));
-}
 
 // Lines tagged kDoor pierce while the door is open; begin and end events are counted per line.
 struct DoorRules : Rules {
@@ -27,21 +28,6 @@ struct DoorRules : Rules {
   void beginContact(const Contact& c) override { begins += c.line.tag == kDoor; }
   void endContact(const Contact& c) override { ends += c.line.tag == kDoor; }
 };
-
-Convex randomShape(std::mt19937_64& rng, int32_t size) {
-  for (;;) {
-    std::vector<Vec2> points;
-    const int n = 3 + static_cast<int>(rng() % 6);
-    for (int i = 0; i < n; ++i) points.push_back({in(rng, -size, size), in(rng, -size, size)});
-    std::vector<Vec2> hull = convexHull(points);
-    if (hull.size() < 3) continue;
-    Vec2 lo = hull[0], hi = hull[0];
-    for (const Vec2 v : hull)
-      lo = {std::min(lo.x, v.x), std::min(lo.y, v.y)}, hi = {std::max(hi.x, v.x), std::max(hi.y, v.y)};
-    for (Vec2& v : hull) v = {v.x - (lo.x + hi.x) / 2, v.y - (lo.y + hi.y) / 2};
-    return Convex(hull);
-  }
-}
 
 }  // namespace
 
@@ -132,19 +118,19 @@ TEST(Toggles, RandomSwitchingNeverTrapsABodyInALine) {
     part.line({-3000, -3000}, {-3000, 3000});
     part.line({3000, -3000}, {3000, 3000});
     for (int i = 0; i < 30; ++i) {
-      const Vec2 a{in(rng, -2800, 2800), in(rng, -2800, 2800)};
-      const Vec2 b{a.x + in(rng, -600, 600), a.y + in(rng, -300, 300)};
+      const Vec2 a{between(rng, -2800, 2800), between(rng, -2800, 2800)};
+      const Vec2 b{a.x + between(rng, -600, 600), a.y + between(rng, -300, 300)};
       if (a != b) part.line(a, b, i % 2 ? kDoor : 0);
     }
-    part.setGravity({in(rng, -8000, 8000), -in(rng, 2000, 40000)});
+    part.setGravity({between(rng, -8000, 8000), -between(rng, 2000, 40000)});
     part.initialize();
     std::vector<EntityId> ids;
     for (int i = 0; i < 8; ++i) {
-      const EntityId id = world.createEntity(randomShape(rng, in(rng, 5, 40)));
+      const EntityId id = world.createEntity(randomConvex(rng, between(rng, 5, 40), Turn::Upright));
       for (int tries = 0; tries < 50; ++tries) {
         try {
-          world.insert(id, 1, {in(rng, -2700, 2700), in(rng, -2700, 2700)}, 0);
-          world.setVelocity(id, {in(rng, -10, 10) * kUnit, in(rng, -10, 10) * kUnit});
+          world.insert(id, 1, {between(rng, -2700, 2700), between(rng, -2700, 2700)}, 0);
+          world.setVelocity(id, {between(rng, -10, 10) * kUnit, between(rng, -10, 10) * kUnit});
           ids.push_back(id);
           break;
         } catch (const Error&) {}
@@ -184,16 +170,16 @@ TEST(OneWay, JumpUpThroughAndLandOnTopForAnyShapeAndAngle) {
     World world;
     MapPart& part = world.createMapPart(1);
     part.line({-5000, 0}, {5000, 0});
-    const int32_t height = in(rng, 100, 400), half = in(rng, 150, 600);
-    const int32_t tilt = trial % 2 ? 0 : in(rng, -half / 3, half / 3);  // up to about 18 degrees
+    const int32_t height = between(rng, 100, 400), half = between(rng, 150, 600);
+    const int32_t tilt = trial % 2 ? 0 : between(rng, -half / 3, half / 3);  // up to about 18 degrees
     const Vec2 a{-half, height - tilt}, b{half, height + tilt};
     part.oneWay(a, b);
-    const int64_t g = in(rng, 4000, kUnit);
+    const int64_t g = between(rng, 4000, kUnit);
     part.setGravity({0, -g});
     part.initialize();
-    const EntityId body = world.createEntity(randomShape(rng, in(rng, 4, 30)));
+    const EntityId body = world.createEntity(randomConvex(rng, between(rng, 4, 30), Turn::Upright));
     try {
-      world.insert(body, 1, {in(rng, -half / 2, half / 2), 40}, 0);
+      world.insert(body, 1, {between(rng, -half / 2, half / 2), 40}, 0);
     } catch (const Error&) {
       continue;
     }
@@ -201,7 +187,8 @@ TEST(OneWay, JumpUpThroughAndLandOnTopForAnyShapeAndAngle) {
     ++cases;
     // Jump hard enough to clear the platform: v^2 >= 2 g (height + size).
     const double need = std::sqrt(2.0 * static_cast<double>(g) / kUnit * (height + std::abs(tilt) + 80));
-    world.setVelocity(body, {in(rng, -2, 2) * kUnit / 4, static_cast<int64_t>((need * in(rng, 11, 20) / 10) * kUnit)});
+    world.setVelocity(
+        body, {between(rng, -2, 2) * kUnit / 4, static_cast<int64_t>((need * between(rng, 11, 20) / 10) * kUnit)});
     bool above = false;
     int f = 0;
     for (; f < 3000; ++f) {
@@ -240,13 +227,13 @@ TEST(OneWay, NothingFallsThroughFromAbove) {
   for (int trial = 0; trial < 300; ++trial) {
     World world;
     MapPart& part = world.createMapPart(1);
-    const Vec2 a{-20000, in(rng, -200, 200)}, b{20000, in(rng, -200, 200)};
+    const Vec2 a{-20000, between(rng, -200, 200)}, b{20000, between(rng, -200, 200)};
     part.oneWay(a, b);
-    part.setGravity({0, -in(rng, 4000, 3 * kUnit)});
+    part.setGravity({0, -between(rng, 4000, 3 * kUnit)});
     part.initialize();
-    const EntityId body = world.createEntity(randomShape(rng, in(rng, 3, 40)));
-    world.insert(body, 1, {in(rng, -500, 500), in(rng, 300, 3000)}, 0);
-    world.setVelocity(body, {in(rng, -2, 2) * kUnit, -in(rng, 0, 300) * kUnit});
+    const EntityId body = world.createEntity(randomConvex(rng, between(rng, 3, 40), Turn::Upright));
+    world.insert(body, 1, {between(rng, -500, 500), between(rng, 300, 3000)}, 0);
+    world.setVelocity(body, {between(rng, -2, 2) * kUnit, -between(rng, 0, 300) * kUnit});
     for (int f = 0; f < 600; ++f) {
       world.solve();
       const InstanceView inst = world.entity(body).instance(0);

@@ -13,35 +13,17 @@
 #include <gtest/gtest.h>
 
 #include "platon/physics/world.h"
+#include "platon/testing/random_shapes.h"
 
 using namespace platon::physics;
 
 namespace {
 
+using platon::testing::between;
+using platon::testing::randomConvex;
+using platon::testing::Turn;
+
 constexpr int64_t kUnit = 65536;
-
-int32_t in(std::mt19937_64& rng, int32_t lo, int32_t hi) {
-  return lo + static_cast<int32_t>(rng() % static_cast<uint64_t>(hi - lo + 1));
-}
-
-Convex randomShape(std::mt19937_64& rng, int32_t size) {
-  for (;;) {
-    std::vector<Vec2> points;
-    const int n = 3 + static_cast<int>(rng() % 6);
-    for (int i = 0; i < n; ++i) points.push_back({in(rng, -size, size), in(rng, -size, size)});
-    std::vector<Vec2> hull = convexHull(points);
-    if (hull.size() < 3) continue;
-    Vec2 lo = hull[0], hi = hull[0];
-    for (const Vec2 v : hull)
-      lo = {std::min(lo.x, v.x), std::min(lo.y, v.y)}, hi = {std::max(hi.x, v.x), std::max(hi.y, v.y)};
-    for (Vec2& v : hull) v = {v.x - (lo.x + hi.x) / 2, v.y - (lo.y + hi.y) / 2};
-    const Convex c(hull);
-    if (rng() % 2) return c;
-    try {
-      return c.rotated(static_cast<Angle>(rng()));
-    } catch (const Error&) {}
-  }
-}
 
 // Face A is [0, E] x [0, E] with its right edge (E, 0) -> (E + slope, E) shared with face B; B's
 // frame is A's turned by `fold` about the origin, so the unfolded plane is flat. A has a floor along
@@ -156,11 +138,12 @@ TEST(WarpJoints, EveryShapeWalksAcrossEveryEdge) {
   for (const int64_t fold : kFolds)
     for (int trial = 0; trial < 24; ++trial) {
       Fold f;
-      const int32_t slope = trial % 3 == 0 ? 0 : in(rng, -3000, 3000);
-      f.build(fold, slope, 0, in(rng, 4000, kUnit));
-      if (!f.drop(randomShape(rng, in(rng, 4, 60)), f.edge - 400 - in(rng, 0, 300))) continue;
+      const int32_t slope = trial % 3 == 0 ? 0 : between(rng, -3000, 3000);
+      f.build(fold, slope, 0, between(rng, 4000, kUnit));
+      if (!f.drop(randomConvex(rng, between(rng, 4, 60), Turn::MaybeTurned), f.edge - 400 - between(rng, 0, 300)))
+        continue;
       ++cases;
-      const int64_t speed = in(rng, kUnit, 10 * kUnit);
+      const int64_t speed = between(rng, kUnit, 10 * kUnit);
       int64_t lastX = f.unfolded().x;
       int stalled = 0;
       Trace trace;
@@ -193,12 +176,12 @@ TEST(WarpCorners, EveryFoldHoldsABodyStillAndLetsItWalkOut) {
   for (const int64_t fold : kFolds)
     for (int trial = 0; trial < 16; ++trial) {
       Fold f;
-      const int32_t slope = trial % 2 == 0 ? 0 : in(rng, -2000, 2000);
-      const int32_t wall = in(rng, 1, 90);
-      f.build(fold, slope, wall, in(rng, 4000, kUnit), 10);  // gravity leans 10 degrees into the corner
-      if (!f.drop(randomShape(rng, in(rng, 4, 60)), f.edge - 300)) continue;
+      const int32_t slope = trial % 2 == 0 ? 0 : between(rng, -2000, 2000);
+      const int32_t wall = between(rng, 1, 90);
+      f.build(fold, slope, wall, between(rng, 4000, kUnit), 10);  // gravity leans 10 degrees into the corner
+      if (!f.drop(randomConvex(rng, between(rng, 4, 60), Turn::MaybeTurned), f.edge - 300)) continue;
       ++cases;
-      const int64_t speed = in(rng, kUnit, 6 * kUnit);
+      const int64_t speed = between(rng, kUnit, 6 * kUnit);
       Trace trace;
       trace.on = tracing(fold, trial);
       if (trace.on) f.world.setRules(&trace), printScene(f);
@@ -247,13 +230,13 @@ TEST(WarpCorners, AnEdgeWithNoRoomBeyondHoldsLikeAWall) {
   for (const int64_t fold : kFolds)
     for (int trial = 0; trial < 12; ++trial) {
       Fold f;
-      const int32_t slope = trial % 2 == 0 ? 0 : in(rng, -2000, 2000);
-      const int32_t wall = in(rng, 1, 3);
-      f.build(fold, slope, wall, in(rng, 4000, kUnit), in(rng, 0, 20));
-      const int32_t size = in(rng, 4, 60);
-      if (!f.drop(randomShape(rng, size), f.edge - 300)) continue;
+      const int32_t slope = trial % 2 == 0 ? 0 : between(rng, -2000, 2000);
+      const int32_t wall = between(rng, 1, 3);
+      f.build(fold, slope, wall, between(rng, 4000, kUnit), between(rng, 0, 20));
+      const int32_t size = between(rng, 4, 60);
+      if (!f.drop(randomConvex(rng, size, Turn::MaybeTurned), f.edge - 300)) continue;
       ++cases;
-      const int64_t speed = in(rng, kUnit, 12 * kUnit);
+      const int64_t speed = between(rng, kUnit, 12 * kUnit);
       for (int frame = 0; frame < 1500; ++frame) {
         f.drive(frame % 300 < 250 ? speed : -speed / 2);
         f.world.solve();
