@@ -42,7 +42,7 @@ class Box2DWorld final : public PeerWorld {
     b2FixtureDef def;
     def.shape = &edge;
     def.friction = 0;
-    def.restitution = 0;
+    def.restitution = static_cast<float>(restitution_);
     def.isSensor = sensor;
     ground_->CreateFixture(&def);
   }
@@ -62,7 +62,7 @@ class Box2DWorld final : public PeerWorld {
     fixture.shape = &shape;
     fixture.density = 1;
     fixture.friction = 0;
-    fixture.restitution = 0;
+    fixture.restitution = static_cast<float>(restitution_);
     body->CreateFixture(&fixture);
     bodies_.push_back(body);
     return static_cast<int>(bodies_.size()) - 1;
@@ -70,6 +70,13 @@ class Box2DWorld final : public PeerWorld {
 
   void setVelocity(int body, double vx, double vy) override { bodies_.at(body)->SetLinearVelocity(vec(vx, vy)); }
   void setAngularVelocity(int body, double w) override { bodies_.at(body)->SetAngularVelocity(static_cast<float>(w)); }
+
+  // Box2D mixes two fixtures' restitutions by their maximum; both are set alike.
+  void setRestitution(double restitution) override {
+    restitution_ = restitution;
+    for (b2Body* b = world_.GetBodyList(); b; b = b->GetNext())
+      for (b2Fixture* f = b->GetFixtureList(); f; f = f->GetNext()) f->SetRestitution(static_cast<float>(restitution));
+  }
 
   void step(double dt) override {
     lastDt_ = dt;
@@ -90,6 +97,7 @@ class Box2DWorld final : public PeerWorld {
   std::vector<b2Body*> bodies_;
   int velocityIterations_, positionIterations_;
   double lastDt_ = 0;
+  double restitution_ = 0;
 };
 
 }  // namespace

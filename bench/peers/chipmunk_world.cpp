@@ -66,6 +66,12 @@ class ChipmunkWorld final : public PeerWorld {
   void setVelocity(int body, double vx, double vy) override { cpBodySetVelocity(bodies_.at(body), cpv(vx, vy)); }
   void setAngularVelocity(int body, double w) override { cpBodySetAngularVelocity(bodies_.at(body), w); }
 
+  // Chipmunk multiplies two shapes' elasticities: both are set alike.
+  void setRestitution(double restitution) override {
+    restitution_ = restitution;
+    for (cpShape* s : shapes_) cpShapeSetElasticity(s, restitution);
+  }
+
   void step(double dt) override {
     lastDt_ = dt;
     cpSpaceStep(space_, dt);
@@ -81,7 +87,7 @@ class ChipmunkWorld final : public PeerWorld {
 
  private:
   void addShape(cpShape* s) {
-    cpShapeSetElasticity(s, 0);
+    cpShapeSetElasticity(s, restitution_);
     cpShapeSetFriction(s, 0);
     shapes_.push_back(cpSpaceAddShape(space_, s));
   }
@@ -92,6 +98,7 @@ class ChipmunkWorld final : public PeerWorld {
   int iterations_;
   int sensorBegins_ = 0;
   double lastDt_ = 0;
+  double restitution_ = 0;
 };
 
 }  // namespace

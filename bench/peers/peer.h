@@ -1,6 +1,10 @@
 // Peer engines behind one small interface, so benchmarks can run the same scene in Box2D 2.4.1 and
 // Chipmunk 7.0.3 and measure them the same way.
 //
+// Debian builds both libraries without NDEBUG: Box2D's b2Assert checks (assert) and Chipmunk's
+// cpAssertSoft/cpAssertWarn run in every call. bench/assertion_cost measures what that costs
+// against NDEBUG builds of the same Debian sources (tools/peers_ndebug.sh).
+//
 // Everything is SI: metres, seconds, radians. Static geometry is segments on one static body;
 // bodies are dynamic convex polygons (counter-clockwise vertices relative to the body origin,
 // at most 8 for Box2D). Unless a scene sets them otherwise, friction and restitution are zero,
@@ -13,8 +17,6 @@
 //     mass from density 1, moment infinite for fixed rotation; cpSpaceSetIterations; collision slop
 //     5 mm (Box2D's linear slop: Chipmunk's default of 0.1 is meant for pixel units and would be
 //     10 cm here), the default bias; sleeping off (the default).
-//     Debian builds the library without NDEBUG: its run-time assertions are on, so it is slower
-//     than a release build.
 //
 // The measurement helpers work in long double on a reported pose, so they judge every engine,
 // Platon included, by the same yardstick.
@@ -46,7 +48,10 @@ class PeerWorld {
   virtual int addBody(const Polygon& convexCCW, double x, double y, bool fixedRotation = true) = 0;
   virtual void setVelocity(int body, double vx, double vy) = 0;  // m/s
   virtual void setAngularVelocity(int body, double w) = 0;       // rad/s
-  virtual void step(double dt) = 0;                              // seconds
+  // Restitution of every shape, present and future (0 by default; 1: perfectly elastic). Platon has
+  // no restitution: its adapter answers with a contact rule (platon_world.h).
+  virtual void setRestitution(double restitution) = 0;
+  virtual void step(double dt) = 0;  // seconds
   virtual Pose pose(int body) const = 0;
   virtual int sensorBeginEvents() const = 0;  // sensor begin events so far, all bodies
 };

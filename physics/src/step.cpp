@@ -3,6 +3,7 @@
 // way, and projects the rest of the motion along the line it met.
 #include <algorithm>
 
+#include "bounce.h"
 #include "bounds.h"
 #include "contact_normal.h"
 #include "fixed_point.h"
@@ -298,6 +299,7 @@ class SubMove {
       if (i > 0) closeGap(i);
     }
     move_.motion = move_.motion - steps_[0];
+    move_.timeLeftQ30 -= static_cast<int64_t>(floorDiv(i128{move_.timeLeftQ30} * t_.num, t_.den));
   }
 
   // 5. Pierce events along the way; a warp reached creates the instance on the other side; the warp
@@ -344,8 +346,18 @@ class SubMove {
       ++pushes;
       return After::Again;
     }
+    if (bounce(normal, w_.checkedRestitution(response.restitution))) return After::Slide;
     if (response.removeNormalVelocity) {
-      e_.velocityQ16 = clampVelocityQ16(removeInto(e_.velocityQ16, normal));
+      // The velocity it meets the line with turns along it; the gravity of the rest of the frame
+      // then acts as the line lets it (a body that slides off a floor onto a rise slows on the rise
+      // for the part of the frame it spends there, not for the whole frame nor not at all).
+      auto forTimeLeft = [&](Vec2w g) {
+        return Vec2w{static_cast<int64_t>(floorDiv(i128{g.x} * move_.timeLeftQ30, i128{1} << kQ30Bits)),
+                     static_cast<int64_t>(floorDiv(i128{g.y} * move_.timeLeftQ30, i128{1} << kQ30Bits))};
+      };
+      const Vec2w atContact = e_.velocityQ16 - forTimeLeft(move_.actingGravityQ16);
+      move_.actingGravityQ16 = removeInto(move_.gravityQ16, normal);
+      e_.velocityQ16 = clampVelocityQ16(removeInto(atContact, normal) + forTimeLeft(move_.actingGravityQ16));
       // In a crease, or turned against the frame's own velocity by its contacts: it is held.
       if (hit_.crease || dot128(e_.velocityQ16, move_.primalVelocity) < 0) e_.velocityQ16 = {};
     }
@@ -382,6 +394,31 @@ class SubMove {
   }
   static Vec2w clampMove(Vec2w v) {
     return {std::clamp<int64_t>(v.x, -kMaxMove, kMaxMove), std::clamp<int64_t>(v.y, -kMaxMove, kMaxMove)};
+  }
+
+  // Bounces off the line (bounce.h): the velocity and the rest of the frame's motion (its whole
+  // units and the remainder below one) turn as the exact motion would. Whatever of the bounced
+  // motion still goes into the line (a bounce too slow to clear it this frame) slides. Not reached
+  // yet (rounding left it touching): it slides and keeps its velocity, to bounce next frame.
+  // False when it lands: the usual response follows.
+  bool bounce(Vec2w normal, Fraction restitution) {
+    if (restitution <= Fraction::zero()) return false;
+    const Vec2w gravity = move_.actingGravityQ16;
+    const Vec2w remainingQ17{move_.motion.x * kQ17 + e_.subunitQ17.x, move_.motion.y * kQ17 + e_.subunitQ17.y};
+    const Bounce b = bounceOff(e_.velocityQ16, gravity, remainingQ17, normal, restitution);
+    if (b.outcome == BounceOutcome::Lands) return false;
+    if (b.outcome == BounceOutcome::Bounces) {
+      e_.velocityQ16 = b.velocityQ16;
+      move_.motion = {static_cast<int64_t>(floorDiv(b.remainingQ17.x, kQ17)),
+                      static_cast<int64_t>(floorDiv(b.remainingQ17.y, kQ17))};
+      e_.subunitQ17 = {b.remainingQ17.x - move_.motion.x * kQ17, b.remainingQ17.y - move_.motion.y * kQ17};
+    }
+    if (dot128(move_.motion, normal) < 0) {
+      Vec2w carryQ17;
+      move_.motion = removeIntoCarrying(move_.motion, normal, carryQ17);
+      e_.subunitQ17 = withoutComponent(e_.subunitQ17 + carryQ17, normal);
+    }
+    return true;
   }
 
   // Moves the whole entity one to three units along `direction` (entity frame) where that move is
@@ -613,30 +650,64 @@ void WorldImpl::stepEntity(Entity& e) {
   if (e.instances.empty()) return;
   const Vec2w before = e.velocityQ16;
   if (e.gravity) e.velocityQ16 = clampVelocityQ16(e.velocityQ16 + part(e.instances[0].part).gravity());
-  // At rest: pressed into the lines it is against, it cannot move. It stays exactly where it is,
-  // with no velocity and no fraction of a unit left over, so it stays at rest.
-  if (e.angularVelocity == 0 && restsAgainstLines(e, e.velocityQ16)) {
-    e.velocityQ16 = {};
-    e.subunitQ17 = {};
-    if (!copiesSettled(e)) {  // a copy lagging more than a lift closes its gap where it is free
-      scratch.normals.clear();
-      Move still{e, {}, scratch.normals, {}, {}};
-      slide(still);
-      reindex(e);
-    }
-    return;
-  }
   // The frame moves by the average of the velocities at its start and end: for constant gravity
   // that is the exact parabola at every frame, not the first-order step most engines take. The
   // sum of the two Q16 velocities is the average in Q17; whole units move now, the remainder
   // below one unit waits for the next frame.
-  const Vec2w acc = e.subunitQ17 + before + e.velocityQ16;
-  const Vec2w whole{acc.x >> 17, acc.y >> 17};
-  e.subunitQ17 = {acc.x - whole.x * kQ17, acc.y - whole.y * kQ17};
+  Vec2w frameQ17 = e.subunitQ17 + before + e.velocityQ16;
+  // At rest: pressed into the lines it is against, it cannot move. It stays exactly where it is,
+  // with no velocity and no fraction of a unit left over, so it stays at rest.
+  if (e.angularVelocity == 0 && restsAgainstLines(e, e.velocityQ16)) {
+    // It was moving and stops here: a landing (a rounded step can end touching a line that the
+    // exact motion reaches just after the frame) is a contact, whichever path finds it.
+    const Arrival arrival = before != Vec2w{} ? reportArrival(e, frameQ17) : Arrival::Rests;
+    if (arrival == Arrival::Stays) e.subunitQ17 = {};
+    if (arrival == Arrival::Rests) {
+      e.velocityQ16 = {};
+      e.subunitQ17 = {};
+      if (!copiesSettled(e)) {  // a copy lagging more than a lift closes its gap where it is free
+        scratch.normals.clear();
+        Move still{e, {}, scratch.normals, {}, {}};
+        slide(still);
+        reindex(e);
+      }
+    }
+    if (arrival != Arrival::Bounces) return;
+  }
+  const Vec2w whole{frameQ17.x >> 17, frameQ17.y >> 17};
+  e.subunitQ17 = {frameQ17.x - whole.x * kQ17, frameQ17.y - whole.y * kQ17};
   scratch.normals.clear();
   Move move{e, whole, scratch.normals, whole, e.velocityQ16};
+  if (e.gravity) move.gravityQ16 = move.actingGravityQ16 = part(e.instances[0].part).gravity();
   slide(move);
   reindex(e);
+}
+
+WorldImpl::Arrival WorldImpl::reportArrival(Entity& e, Vec2w& frameQ17) {
+  bool keepVelocity = false, bounced = false, notYet = false;
+  std::vector<Contact>& arrived = scratch.arrived;
+  arrived = e.contacts;  // the callbacks may read the entity's contacts
+  const Vec2w gravity = e.gravity ? part(e.instances[0].part).gravity() : Vec2w{};
+  for (const Contact& c : arrived) {
+    ContactResponse response;
+    callRules([&](Rules& r) { r.contact(c, response); });
+    keepVelocity = keepVelocity || !response.removeNormalVelocity;
+    const Fraction restitution = checkedRestitution(response.restitution);
+    const Instance* inst = e.instanceIn(c.part);
+    if (!inst || restitution <= Fraction::zero()) continue;
+    // Met at the frame's start: the whole frame's motion is what is left after the contact.
+    const Vec2w normal = inst->frame == 0 ? c.normal : rotateWideInverse(inst->rotation, shortDirection(c.normal));
+    const Bounce b = bounceOff(e.velocityQ16, gravity, frameQ17, normal, restitution);
+    if (b.outcome == BounceOutcome::Bounces) {
+      e.velocityQ16 = b.velocityQ16;
+      frameQ17 = b.remainingQ17;
+      bounced = true;
+    }
+    notYet = notYet || b.outcome == BounceOutcome::NotYet;
+  }
+  if (bounced) return Arrival::Bounces;
+  if (notYet) return Arrival::Stays;
+  return keepVelocity && !restsAgainstLines(e, e.velocityQ16) ? Arrival::Stays : Arrival::Rests;
 }
 
 void WorldImpl::slide(Move& move) {

@@ -14,6 +14,7 @@
 #include "contact_normal.h"
 #include "entity.h"
 #include "entity_index.h"
+#include "fixed_point.h"
 #include "grid.h"
 #include "platon/physics/world.h"
 
@@ -29,6 +30,13 @@ struct Move {
   // mean a crease (see SubMove::slideAlong).
   Vec2w primalMotion;
   Vec2w primalVelocity;
+  // The part's gravity (per frame, Q16), the part of it the velocity still gains until the frame
+  // ends (all of it in flight; along the line while sliding on one), and the part of the frame
+  // still to go (Q30): at a contact the velocity at that moment turns along the line, and the
+  // rest of the frame's gravity acts as that line lets it.
+  Vec2w gravityQ16{};
+  Vec2w actingGravityQ16{};
+  int64_t timeLeftQ30 = int64_t{1} << kQ30Bits;
 };
 
 // Where each instance went during one sub-move, for the pierce events along the way. Empty: the
@@ -91,6 +99,7 @@ struct WorldImpl {
     std::vector<Vec2> other;  // another entity's vertices, in the innermost loops (never held across calls)
     std::vector<LineIndex> touchingLines;
     std::vector<Vec2w> lineNormals;
+    std::vector<Contact> arrived;
     OpenDirections open;
   } scratch;
 
@@ -168,6 +177,12 @@ struct WorldImpl {
   // solid lines it is against (touching or within one unit) so that it cannot move at all. If so,
   // they become its contacts for this frame.
   bool restsAgainstLines(Entity& e, Vec2w w);
+  // The entity was moving and has just come to rest against its contacts (restsAgainstLines): the
+  // rules hear of each. They may let it rest; send it off with a velocity that no longer presses
+  // into them (it Stays where it is for the rest of this frame, as a slide along its contacts
+  // would); or bounce it, which turns its velocity and this frame's motion (`frameQ17`).
+  enum class Arrival { Rests, Stays, Bounces };
+  Arrival reportArrival(Entity& e, Vec2w& frameQ17);
 
   // rotation.cpp
   bool rotateBy(Entity& e, int64_t delta);
@@ -193,6 +208,15 @@ struct WorldImpl {
   void fireOverContacts();
   Contact makeContact(const Entity& e, const Instance& inst, LineIndex line, Fraction t, Vec2w normal,
                       ContactPoints points) const;
+  // A restitution a callback left in its ContactResponse, or zero (and an Error for solve() to
+  // throw at the end of the frame) when it is not a fraction num/den with num >= 0 and den > 0.
+  Fraction checkedRestitution(Fraction r) {
+    if (r.den > 0 && r.num >= 0) return r;
+    if (!pendingError)
+      pendingError = std::make_exception_ptr(Error("ContactResponse::restitution " + std::to_string(r.num) + "/" +
+                                                   std::to_string(r.den) + ": needs num >= 0 and den > 0"));
+    return Fraction::zero();
+  }
   // Runs a rules callback; an exception is kept for the CallbackScope to rethrow once the world
   // is whole again.
   template <class F>

@@ -118,6 +118,7 @@ class FuzzRules : public Rules {
   uint8_t pierceTags = 0;  // bit k: solid lines with tag k pierce
   bool solidWarps = false, noSlide = false, keepNormalVelocity = false, bounce = false, throwOnContact = false;
   bool threw = false;
+  Fraction restitution;  // 0: slide; else bounce, elastic at 1, gaining above
 
   bool pierce(EntityId, const LineRef& line) override {
     if (line.kind == LineKind::Warp) return !solidWarps;
@@ -126,6 +127,7 @@ class FuzzRules : public Rules {
   void contact(const Contact& c, ContactResponse& response) override {
     response.slide = !noSlide;
     response.removeNormalVelocity = !keepNormalVelocity;
+    response.restitution = restitution;
     if (bounce) {  // callbacks may set velocities
       const Vec2w v = world->entity(c.entity).velocity();
       world->setVelocity(c.entity, {-v.x, -v.y});
@@ -207,11 +209,12 @@ void buildMap(Decoder& in, World& world, FuzzRules& rules) {
   rules.keepNormalVelocity = in.oneIn(4);
   rules.bounce = in.oneIn(4);
   rules.throwOnContact = in.oneIn(8);
+  if (in.oneIn(3)) rules.restitution = {in.range(0, 5), in.range(1, 4)};
   // Before any insert: pierce() must not change while an instance overlaps the line.
   world.setRules(&rules);
   trace("world.setRules(&rules);  // pierceTags ", int{rules.pierceTags}, " solidWarps ", rules.solidWarps, " noSlide ",
         rules.noSlide, " keepNormalVelocity ", rules.keepNormalVelocity, " bounce ", rules.bounce, " throwOnContact ",
-        rules.throwOnContact);
+        rules.throwOnContact, " restitution ", rules.restitution.num, "/", rules.restitution.den);
 }
 
 std::vector<Vec2> decodeShape(Decoder& in) {
@@ -301,7 +304,8 @@ struct Scene {
   void platform() {
     if (!platforms.empty() && in.flag()) {
       const PlatformId p = platforms[in.range(0, static_cast<int64_t>(platforms.size()) - 1)];
-      const Vec2 v{static_cast<int32_t>(in.range(-64, 64) << in.shift(8)), static_cast<int32_t>(in.range(-64, 64) << in.shift(8))};
+      const Vec2 v{static_cast<int32_t>(in.range(-64, 64) << in.shift(8)),
+                   static_cast<int32_t>(in.range(-64, 64) << in.shift(8))};
       trace("world.setPlatformMotion(p", p.index, ", ", v, ");");
       attempt("setPlatformMotion", [&] { world.setPlatformMotion(p, v); });
       return;
@@ -317,7 +321,8 @@ struct Scene {
   void setFilter(EntityId id) {
     const EntityFilter f{1u << in.range(0, 1), static_cast<uint32_t>(in.range(0, 3)),
                          static_cast<uint32_t>(in.range(0, 3)), in.range(0, 1) == 1};
-    trace("world.setFilter(", name(id), ", {", f.category, ", ", f.solidWith, ", ", f.overlapWith, ", ", f.pushable, "});");
+    trace("world.setFilter(", name(id), ", {", f.category, ", ", f.solidWith, ", ", f.overlapWith, ", ", f.pushable,
+          "});");
     attempt("setFilter", [&] { world.setFilter(id, f); });  // refused if it would overlap
   }
 

@@ -121,3 +121,28 @@ TEST(Errors, ShapeConstructorsCheckBeforeArithmetic) {
   EXPECT_EQ(Convex::box(kShapeLimit, kShapeLimit).size(), 4);
   EXPECT_EQ(Convex::regular(64, kShapeLimit).size(), 64);
 }
+
+// A rule that leaves a restitution that is no fraction gets an Error from solve() at the end of
+// the frame (the contact slides as by default), whether the slide met the line or the rest test did.
+TEST(Errors, ABadRestitutionIsReportedAndTheFrameFinishes) {
+  struct BadBounce : Rules {
+    Fraction restitution;
+    void contact(const Contact&, ContactResponse& r) override { r.restitution = restitution; }
+  };
+  for (const Fraction bad : {Fraction{1, 0}, Fraction{-1, 2}, Fraction{3, -4}}) {
+    World world;
+    MapPart& part = world.createMapPart(1);
+    part.line({-1000, 0}, {1000, 0});
+    part.setGravity({0, -65536});
+    part.initialize();
+    BadBounce rules;
+    rules.restitution = bad;
+    world.setRules(&rules);
+    const EntityId box = world.createEntity(Convex::box(10, 10));
+    world.insert(box, 1, {0, 40}, 0);
+    world.setVelocity(box, {0, -50 * 65536});
+    expectError([&] { world.solve(); }, "restitution");
+    EXPECT_EQ(world.entity(box).instance(0).position, (Vec2{0, 10}));  // landed, slid: nothing bounced
+    EXPECT_EQ(world.countOverlaps(), 0u);
+  }
+}

@@ -224,17 +224,17 @@ struct Golden {
 };
 
 const Golden kGolden[] = {
-    {"random map 1", [] { return runRandomMap(1, false); }, 0xfa07109b354be2f6ull},
-    {"random map 2", [] { return runRandomMap(2, false); }, 0x805eabf13b5563edull},
-    {"random map 3 + rules", [] { return runRandomMap(3, true); }, 0x8f0ad030057e023bull},
-    {"random map 4 + rules", [] { return runRandomMap(4, true); }, 0x7efb5406e74b5900ull},
-    {"warp 252 degrees", [] { return runWarpAngle(252, 1); }, 0x2ca4ab5066a66737ull},
-    {"warp 120 degrees", [] { return runWarpAngle(120, 2); }, 0xd23b5c6354210fb8ull},
-    {"warp 144 degrees", [] { return runWarpAngle(144, 3); }, 0xf17232a3091cd66cull},
-    {"warp 90 degrees", [] { return runWarpAngle(90, 4); }, 0xa71a755f89215d7bull},
-    {"warp 37 degrees", [] { return runWarpAngle(37, 5); }, 0x0cc426af7b4079b4ull},
-    {"cube 1", [] { return runCube(1); }, 0xd618b8cf05d31e29ull},
-    {"cube 2", [] { return runCube(2); }, 0x54ab44a27ae303c5ull},
+    {"random map 1", [] { return runRandomMap(1, false); }, 0xfdc87897aecadd89ull},
+    {"random map 2", [] { return runRandomMap(2, false); }, 0x05c9f94ad27443daull},
+    {"random map 3 + rules", [] { return runRandomMap(3, true); }, 0x7194369415c8fbfdull},
+    {"random map 4 + rules", [] { return runRandomMap(4, true); }, 0x4b53967e05c75c37ull},
+    {"warp 252 degrees", [] { return runWarpAngle(252, 1); }, 0x6089aa2ccc7fb7e2ull},
+    {"warp 120 degrees", [] { return runWarpAngle(120, 2); }, 0x8a58aad7be71fb40ull},
+    {"warp 144 degrees", [] { return runWarpAngle(144, 3); }, 0x5d216c0313b1fd89ull},
+    {"warp 90 degrees", [] { return runWarpAngle(90, 4); }, 0x5995d54e2575dff3ull},
+    {"warp 37 degrees", [] { return runWarpAngle(37, 5); }, 0x5ca955a1c2aa8548ull},
+    {"cube 1", [] { return runCube(1); }, 0x85abb25cef0ffc7cull},
+    {"cube 2", [] { return runCube(2); }, 0x2ef9d555a1dc3f68ull},
 };
 
 }  // namespace

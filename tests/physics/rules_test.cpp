@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "platon/physics/world.h"
+#include "platon/testing/random_shapes.h"
 
 using namespace platon::physics;
 
@@ -118,6 +119,88 @@ TEST(Rules, ContactResponseCanStopTheSlideAndKeepVelocity) {
   world.solve();
   EXPECT_EQ(world.entity(box).instance(0).position, (Vec2{10, 10}));  // no slide after the hit
   EXPECT_EQ(world.entity(box).velocity(), (Vec2w{20 * kUnit, -20 * kUnit}));
+}
+
+// The world never changes a moving body's velocity without telling the rules: whether the slide
+// met a line inside the frame or a rounded step ended touching it and the rest test stopped the
+// body at the next frame's start, contact() is called. Random shapes, upright and turned, dropped
+// and thrown onto floors and slopes at random gravities. (A body already at rest hears nothing.)
+TEST(Rules, EveryStopIsAContact) {
+  std::mt19937_64 rng(0x1a2d);
+  using platon::testing::between;
+  struct Counter : Rules {
+    int contacts = 0;
+    void contact(const Contact&, ContactResponse&) override { ++contacts; }
+  };
+  int stops = 0, changes = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    World world;
+    MapPart& part = world.createMapPart(1);
+    const int32_t rise = between(rng, -600, 600);
+    part.line({-4000, -rise}, {4000, rise});
+    part.line({-4000, -rise}, {-4000, 4000});
+    part.line({4000, rise}, {4000, 4000});
+    const Vec2w gravity{between(rng, -2000, 2000), -between(rng, 2000, 200000)};
+    part.setGravity(gravity);
+    part.initialize();
+    Counter counter;
+    world.setRules(&counter);
+    const EntityId body =
+        world.createEntity(platon::testing::randomConvex(rng, between(rng, 3, 60), platon::testing::Turn::MaybeTurned));
+    world.insert(body, 1, {between(rng, -500, 500), 700 + between(rng, 0, 2000)}, 0);
+    world.setVelocity(body, {between(rng, -20, 20) * kUnit, between(rng, -20, 20) * kUnit + between(rng, 0, 65535)});
+    for (int frame = 0; frame < 400; ++frame) {
+      const Vec2w before = world.entity(body).velocity();
+      const int heard = counter.contacts;
+      world.solve();
+      ASSERT_EQ(world.countOverlaps(), 0u);
+      const Vec2w after = world.entity(body).velocity();
+      if (before == Vec2w{} || after == before + gravity) continue;
+      ++changes;
+      stops += after == Vec2w{};
+      ASSERT_GT(counter.contacts, heard) << "trial " << trial << " frame " << frame
+                                         << ": the velocity changed and no contact was heard";
+    }
+  }
+  EXPECT_GT(stops, 100);
+  EXPECT_GT(changes, 1000);
+}
+
+// A rule that keeps the velocity mirrored across the line bounces a body for ever: no landing,
+// however the rounding falls, ends in rest.
+TEST(Rules, AnElasticBounceNeverComesToRest) {
+  std::mt19937_64 rng(0xb0b);
+  using platon::testing::between;
+  struct Mirror : Rules {
+    World* world = nullptr;
+    void contact(const Contact& c, ContactResponse& r) override {
+      const Vec2w v = world->entity(c.entity).velocity(), n = c.normal;
+      const i128 vn = dot128(v, n), nn = dot128(n, n);
+      if (vn < 0)
+        world->setVelocity(
+            c.entity, {static_cast<int64_t>(v.x - 2 * vn * n.x / nn), static_cast<int64_t>(v.y - 2 * vn * n.y / nn)});
+      r.removeNormalVelocity = false;
+    }
+  };
+  for (int trial = 0; trial < 60; ++trial) {
+    World world;
+    MapPart& part = world.createMapPart(1);
+    part.line({-100000, 0}, {100000, 0});
+    part.setGravity({0, -between(rng, 3000, 100000)});
+    part.initialize();
+    Mirror mirror;
+    mirror.world = &world;
+    world.setRules(&mirror);
+    const EntityId body = world.createEntity(Convex::box(between(rng, 2, 40), between(rng, 2, 40)));
+    world.insert(body, 1, {0, 200 + between(rng, 0, 3000)}, 0);
+    int stillFrames = 0;
+    for (int frame = 0; frame < 3000; ++frame) {
+      world.solve();
+      ASSERT_EQ(world.countOverlaps(), 0u);
+      stillFrames = world.entity(body).velocity() == Vec2w{} ? stillFrames + 1 : 0;
+      ASSERT_LT(stillFrames, 2) << "trial " << trial << " came to rest at frame " << frame;
+    }
+  }
 }
 
 TEST(Rules, AnErrorInACallbackLeavesTheWorldWholeAndIsRethrown) {

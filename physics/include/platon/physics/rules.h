@@ -36,9 +36,17 @@ struct Contact {
 
 // What a solid contact does to the motion. Defaults: slide along the line and lose the velocity
 // component that points into it.
+//
+// A restitution above zero bounces instead: the body leaves the line with that fraction of the
+// normal speed it met it with ({1, 1}: elastic), and the rest of the frame follows the bounce, so
+// with constant gravity a bounce is exact (the apex of an elastic drop is where it started, on
+// time). A body that would leave slower than one frame of gravity brings back lands instead (the
+// defaults apply), so bouncing bodies come to rest. The velocity is the world's to set then: the
+// two fields above do not apply.
 struct ContactResponse {
   bool slide = true;                 // false: the rest of this frame's motion is dropped
   bool removeNormalVelocity = true;  // false: keep the velocity as the callback left it
+  Fraction restitution = Fraction::zero();
 };
 
 class Rules {
