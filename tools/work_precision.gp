@@ -1,12 +1,13 @@
 # Work-precision plot from bench/work_precision's CSV: one log-log panel per scene, error against
-# run time. Points are single settings; the line through an engine's points is its best error for
-# a given run time (the Pareto front: sorted by run time, each point better than all cheaper ones).
+# run time. Points are single settings at their median run time, with the spread over the runs as
+# horizontal bars; the line through an engine's points is its best error for a given run time (the
+# Pareto front: sorted by median run time, each point better than all cheaper ones).
 #
 # Usage: gnuplot -c tools/work_precision.gp docs/work_precision.csv docs/work_precision.png
 csv = ARG1 eq "" ? "docs/work_precision.csv" : ARG1
 png = ARG2 eq "" ? "docs/work_precision.png" : ARG2
 
-set terminal pngcairo size 1800,1500 font "DejaVu Sans,12" linewidth 1.5
+set terminal pngcairo size 2000,2300 font "DejaVu Sans,12" linewidth 1.5
 set output png
 set datafile separator ","
 set logscale xy
@@ -14,11 +15,11 @@ set format x "10^{%L}"
 set format y "10^{%L}"
 set grid xtics ytics mxtics mytics lc rgb "#e4e4e4" lw 0.6
 set tics nomirror
-set xlabel "run time of the scene (s, best of several runs)" offset 0,0.4
+set xlabel "run time of the scene (s, median and spread over the runs)" offset 0,0.4
 set ylabel "max position error (m)" offset 1.5,0
 set key top right spacing 1.1 samplen 2 font ",10" box opaque
 
-# Exact zeros (Platon at rest, Chipmunk on the chain) cannot sit on a log axis: drawn at the floor.
+# Exact zeros (resting bodies) cannot sit on a log axis: drawn at the floor.
 floor = 1e-10
 err(e) = e > floor ? e : floor
 
@@ -36,10 +37,10 @@ set style line 4 lc rgb "#1f5fbf" pt 7 ps 0.7 lw 2   # warp 90
 set style line 5 lc rgb "#8a2be2" pt 5 ps 0.7 lw 2   # warp 120
 set style line 6 lc rgb "#e08000" pt 9 ps 0.8 lw 2   # warp 252
 
-set multiplot layout 4,3 title "Work-precision: error against run time (log-log). Points: one setting each (Platon: 64-4096 units/m x 30-240 Hz; Box2D: v1p1-v20p8 x 30-240 Hz; Chipmunk: 1-30 iterations x 30-240 Hz).\nLines: best error for the run time (Pareto front). Large marks: the usual settings (Platon 1024 u/m, Box2D v8p3, Chipmunk it10, all 60 Hz). Errors of exactly 0 drawn at 10^{-10} m." font ",13"
+set multiplot layout 6,3 title "Work-precision: error against run time (log-log). Points: one setting each (Platon: 64-4096 units/m x 30-240 Hz; Box2D: v1p1-v20p8 x 30-240 Hz; Chipmunk: 1-30 iterations x 30-240 Hz).\nLines: best error for the run time (Pareto front). Large marks: the usual settings (Platon 1024 u/m, Box2D v8p3, Chipmunk it10, all 60 Hz). Errors of exactly 0 drawn at 10^{-10} m." font ",13"
 
-titles = "flight:free flight, 1.5 s (parabola)|landing:landing from 2 m, 1.5 s (parabola, then exact contact height)|slope10:frictionless slope 10°, 2 s (along the slope)|slope30:frictionless slope 30°, 2 s|slope45:frictionless slope 45°, 2 s|slope60:frictionless slope 60°, 2 s|chain:running 10 m/s over 1,000 collinear segments, 45 s|rest:resting on a floor, 10^6 frames"
-scenes = "flight landing slope10 slope30 slope45 slope60 chain rest"
+titles = "flight:free flight, 1.5 s (parabola)|landing:landing from 2 m (own resting height)|slope10:frictionless slope 10°, 2 s (along the slope)|slope30:frictionless slope 30°, 2 s|slope45:frictionless slope 45°, 2 s|slope60:frictionless slope 60°, 2 s|chain:running 10 m/s over 1,000 collinear segments, 45 s|rest:resting on a floor from its own rest pose, 10^6 frames|bounce10:elastic bounce: apex after 10 bounces|bounce100:elastic bounce: apex after 100 bounces|ramp:run-up: speed set every frame by the game|circle:velocity turned every frame (2 m circle)|slopechange:sliding into a 20° rise met inside a frame"
+scenes = "flight landing slope10 slope30 slope45 slope60 chain rest bounce10 bounce100 ramp circle slopechange"
 title_of(s) = (i = strstrt(titles, s . ":"), t = titles[i + strlen(s) + 1:], j = strstrt(t, "|"), j > 0 ? t[1:j - 1] : t)
 
 do for [k = 1:words(scenes)] {
@@ -47,13 +48,13 @@ do for [k = 1:words(scenes)] {
   set title title_of(s) font ",12"
   if (k > 1) { unset key } else { set key }
   plot \
-    rows("Platon", s) using 9:(err($5)) with points ls 1 pt 6 notitle, \
+    rows("Platon", s) using 9:(err($5)):10:11 with xerrorbars ls 1 pt 6 notitle, \
     front("Platon", s) using 9:(err($5)) with linespoints ls 1 title "Platon", \
     usual("Platon", s, "1024u/m") using 9:(err($5)) with points ls 1 ps 2.2 notitle, \
-    rows("Box2D 2.4.1", s) using 9:(err($5)) with points ls 2 pt 4 notitle, \
+    rows("Box2D 2.4.1", s) using 9:(err($5)):10:11 with xerrorbars ls 2 pt 4 notitle, \
     front("Box2D 2.4.1", s) using 9:(err($5)) with linespoints ls 2 title "Box2D 2.4.1", \
     usual("Box2D 2.4.1", s, "v8p3") using 9:(err($5)) with points ls 2 ps 2.2 notitle, \
-    rows("Chipmunk 7.0.3", s) using 9:(err($5)) with points ls 3 pt 8 notitle, \
+    rows("Chipmunk 7.0.3", s) using 9:(err($5)):10:11 with xerrorbars ls 3 pt 8 notitle, \
     front("Chipmunk 7.0.3", s) using 9:(err($5)) with linespoints ls 3 title "Chipmunk 7.0.3 (debug build)", \
     usual("Chipmunk 7.0.3", s, "it10") using 9:(err($5)) with points ls 3 ps 2.2 notitle
 }
@@ -72,10 +73,10 @@ do for [variant in "walk float"] {
     front("Platon", "warp252" . suffix) using 9:(err($5)) with linespoints ls 6 title "72+180° (dodecahedron)"
 }
 # Gap and penetration per scene with a floor: every setting of each engine, side by side.
-contact = "landing slope10 slope30 slope45 slope60 chain rest"
+contact = "landing slope10 slope30 slope45 slope60 chain rest slopechange"
 byScene(engine, column) = sprintf("< awk -F, -v list='%s' 'BEGIN {n = split(list, s, \" \"); for (i = 1; i <= n; ++i) at[s[i]] = i} $1==\"%s\" && ($3 in at) {print at[$3] \",\" $%d}' %s", contact, engine, column, csv)
 set xrange [0.5:words(contact) + 0.5]
-set xtics ("landing" 1, "slope10" 2, "slope30" 3, "slope45" 4, "slope60" 5, "chain" 6, "rest" 7) font ",10"
+set xtics ("landing" 1, "slope10" 2, "slope30" 3, "slope45" 4, "slope60" 5, "chain" 6, "rest" 7, "slopechange" 8) font ",10"
 unset logscale x
 set format x "%g"
 set xlabel ""

@@ -27,7 +27,7 @@ std::string length(double m) {
   const double a = std::fabs(m);
   if (a == 0) return "0";
   if (a < 1e-6) return format("%.2g m", m);
-  if (a < 1e-3) return format("%.2g µm", m * 1e6);
+  if (a < 1e-3) return format("%.3g µm", m * 1e6);
   if (a < 1e-2) return format("%.2g mm", m * 1e3);
   if (a < 1) return format("%.3g cm", m * 1e2);
   return format("%.3g m", m);

@@ -231,7 +231,15 @@ class SubMove {
     // rounded, and may point straight into a floor the exact motion slides along).
     const Vec2w wanted = i == 0 ? moves_[0] : shortDirection(rotateQ30(inst.rotation, move_.motion));
     if (open.empty() || open.open(wanted)) return;
-    const int best = open.slideNormal(wanted);
+    int best = open.slideNormal(wanted);
+    // Rounded down to whole units, a slow slide along a line can point a unit straight into it (its
+    // remainder carried along the line may be negative), and a frame's exact motion can be all but
+    // nothing. That is no crease if the exact motion, or else the velocity, goes along: it slides on.
+    for (const Vec2w intent : {move_.exactQ17, e_.velocityQ16}) {
+      if (best >= 0 || i > 0 || intent == Vec2w{}) break;
+      if (open.open(shortDirection(intent))) return;
+      best = open.slideNormal(shortDirection(intent));
+    }
     if (best < 0) {
       hit_.crease = true;
       return;
@@ -358,9 +366,12 @@ class SubMove {
       const Vec2w atContact = e_.velocityQ16 - forTimeLeft(move_.actingGravityQ16);
       move_.actingGravityQ16 = removeInto(move_.gravityQ16, normal);
       e_.velocityQ16 = clampVelocityQ16(removeInto(atContact, normal) + forTimeLeft(move_.actingGravityQ16));
-      // In a crease, or turned against the frame's own velocity by its contacts: it is held.
-      if (hit_.crease || dot128(e_.velocityQ16, move_.primalVelocity) < 0) e_.velocityQ16 = {};
+      // In a crease, or turned against the frame's own velocity by its contacts (one after another:
+      // one line alone turns it only along, or back by the gravity after the contact): it is held.
+      if (hit_.crease || (!move_.normals.empty() && dot128(e_.velocityQ16, move_.primalVelocity) < 0))
+        e_.velocityQ16 = {};
     }
+    move_.exactQ17 = {};  // from here on, the remaining motion is the slide's
     if (!response.slide) return After::Stop;
     slideAlong(normal, response.removeNormalVelocity);
     return After::Slide;
@@ -678,6 +689,7 @@ void WorldImpl::stepEntity(Entity& e) {
   e.subunitQ17 = {frameQ17.x - whole.x * kQ17, frameQ17.y - whole.y * kQ17};
   scratch.normals.clear();
   Move move{e, whole, scratch.normals, whole, e.velocityQ16};
+  move.exactQ17 = frameQ17;
   if (e.gravity) move.gravityQ16 = move.actingGravityQ16 = part(e.instances[0].part).gravity();
   slide(move);
   reindex(e);

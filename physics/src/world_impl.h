@@ -36,6 +36,9 @@ struct Move {
   // rest of the frame's gravity acts as that line lets it.
   Vec2w gravityQ16{};
   Vec2w actingGravityQ16{};
+  // The frame's exact motion (Q17, the remainder included) until its first contact: which way the
+  // body means to go, where its whole-unit motion (rounded down) points a unit off it.
+  Vec2w exactQ17{};
   int64_t timeLeftQ30 = int64_t{1} << kQ30Bits;
 };
 

@@ -224,16 +224,16 @@ struct Golden {
 };
 
 const Golden kGolden[] = {
-    {"random map 1", [] { return runRandomMap(1, false); }, 0xfdc87897aecadd89ull},
-    {"random map 2", [] { return runRandomMap(2, false); }, 0x05c9f94ad27443daull},
-    {"random map 3 + rules", [] { return runRandomMap(3, true); }, 0x7194369415c8fbfdull},
-    {"random map 4 + rules", [] { return runRandomMap(4, true); }, 0x4b53967e05c75c37ull},
+    {"random map 1", [] { return runRandomMap(1, false); }, 0xc7dcfecc3f8dd6e7ull},
+    {"random map 2", [] { return runRandomMap(2, false); }, 0x1aa64e29bd7923ecull},
+    {"random map 3 + rules", [] { return runRandomMap(3, true); }, 0x8326225b3711d6a4ull},
+    {"random map 4 + rules", [] { return runRandomMap(4, true); }, 0xd364dfcca4e0c4b1ull},
     {"warp 252 degrees", [] { return runWarpAngle(252, 1); }, 0x6089aa2ccc7fb7e2ull},
     {"warp 120 degrees", [] { return runWarpAngle(120, 2); }, 0x8a58aad7be71fb40ull},
     {"warp 144 degrees", [] { return runWarpAngle(144, 3); }, 0x5d216c0313b1fd89ull},
-    {"warp 90 degrees", [] { return runWarpAngle(90, 4); }, 0x5995d54e2575dff3ull},
+    {"warp 90 degrees", [] { return runWarpAngle(90, 4); }, 0x801a192b2fb8d98full},
     {"warp 37 degrees", [] { return runWarpAngle(37, 5); }, 0x5ca955a1c2aa8548ull},
-    {"cube 1", [] { return runCube(1); }, 0x85abb25cef0ffc7cull},
+    {"cube 1", [] { return runCube(1); }, 0x62ed7e2e04d5b99eull},
     {"cube 2", [] { return runCube(2); }, 0x2ef9d555a1dc3f68ull},
 };
 
