@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "platon/physics/world.h"
+#include "spread.h"
 
 namespace {
 
@@ -134,19 +135,6 @@ double timeScene(S& s, int settle, int frames) {
   return std::chrono::duration<double, std::nano>(Clock::now() - t0).count() / frames;
 }
 
-struct Stat {
-  double median, lo, hi;
-};
-Stat stat(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return {v[v.size() / 2], v.front(), v.back()};
-}
-std::string show(const Stat& s) {
-  char buf[96];
-  std::snprintf(buf, sizeof buf, "%.0f (%.0f-%.0f)", s.median, s.lo, s.hi);
-  return buf;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -174,9 +162,10 @@ int main(int argc, char** argv) {
           awake.push_back(timeScene(s, settle, frames));
         }
       }
-      const Stat p = stat(platon), a = stat(asleep), b = stat(awake);
-      std::printf("| %s | %d | %s | %s | %s | %.2f | %.2f |\n", name(scene), n, show(p).c_str(), show(a).c_str(),
-                  show(b).c_str(), p.median / a.median, p.median / b.median);
+      using platon::bench::Spread;
+      const Spread p = Spread::of(platon), a = Spread::of(asleep), b = Spread::of(awake);
+      std::printf("| %s | %d | %s | %s | %s | %.2f | %.2f |\n", name(scene), n, p.show().c_str(), a.show().c_str(),
+                  b.show().c_str(), p.median / a.median, p.median / b.median);
     }
   return 0;
 }

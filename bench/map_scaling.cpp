@@ -1,14 +1,16 @@
-// One entity patrolling maps of 10^2, 10^4 and 10^6 segments of constant local density: Platon
-// (one MapPart) against Box2D 2.4.1 (static b2EdgeShape fixtures on one static body, one dynamic
-// fixed-rotation body of the same shape). Each map is first built in a forked process of its own,
-// so the RSS delta measures that engine alone; the patrols are then timed side by side.
+// One entity patrolling maps of 10^2, 10^4 and 10^6 segments of constant local density, in Platon
+// and in Box2D 2.4.1 built two ways: as a Box2D user builds a level (each room's outline one
+// b2ChainShape loop, each platform a b2PolygonShape box) and as bare two-sided b2EdgeShape
+// fixtures, one per segment. Each map is built in forked processes of its own, so the RSS delta
+// measures that engine alone, in the order a loader meets the pieces (room by room) and shuffled;
+// the patrols are then timed side by side, every case in turn, several runs.
 //
 // The map is a block of identical-size rooms (24 x 8 m, 100 segments each: a rolling floor, walls,
 // a ceiling and 14 box platforms), so a bigger map covers a bigger area at the same density. Each
 // room's layout depends only on its index; the entity patrols room 0, which is the same in every map
 // and closed, so the motion is the same whatever the map's size.
 //
-// Usage: map_scaling [--quick] [--frames=N]
+// Usage: map_scaling [--quick] [--frames=N] [--runs=N]
 #include <algorithm>
 #include <box2d/box2d.h>
 #include <chrono>
@@ -17,16 +19,20 @@
 #include <cstdlib>
 #include <cstring>
 #include <memory>
+#include <random>
+#include <string>
 #include <sys/wait.h>
 #include <unistd.h>
 #include <vector>
 
 #include "platon/physics/world.h"
 #include "platon/testing/rng.h"
+#include "spread.h"
 
 namespace {
 
 using namespace platon::physics;
+using platon::bench::Spread;
 using Clock = std::chrono::steady_clock;
 
 constexpr int kUnitsPerMetre = 1024;
@@ -62,42 +68,66 @@ Vec2 units(double xMetres, double yMetres) {
           static_cast<int32_t>(std::lround(yMetres * kUnitsPerMetre))};
 }
 
-void addRoom(std::vector<Segment>& out, int room, int columns) {
+// ---- The map -------------------------------------------------------------------------------------
+
+// A room: its outline (floor left to right, right wall, ceiling, left wall: counter-clockwise, the
+// room inside) and its platforms (boxes, corners counter-clockwise).
+struct Room {
+  std::vector<Vec2> outline;
+  std::vector<std::array<Vec2, 4>> platforms;
+};
+
+Room makeRoom(int room, int columns) {
   Rng rng{0x9a7e0000ULL + static_cast<uint64_t>(room) * 0x100000001b3ULL};
   const double x0 = (room % columns) * kPitchX, y0 = (room / columns) * kPitchY;
   auto at = [&](double x, double y) { return units(x0 + x, y0 + y); };
+  Room r;
   // Floor: a rolling polyline 0-0.45 m high, slopes under 15 degrees, so the entity runs over it.
-  std::vector<Vec2> floor;
   double h = 0.2;
   for (int i = 0; i <= kFloorSegments; ++i) {
-    floor.push_back(at(i * kRoomW / kFloorSegments, h));
+    r.outline.push_back(at(i * kRoomW / kFloorSegments, h));
     h = std::clamp(h + rng.uniform(-0.15, 0.15), 0.0, 0.45);
   }
-  for (int i = 0; i < kFloorSegments; ++i) out.push_back({floor[i], floor[i + 1]});
   // Walls and a ceiling close the room: neighbours never change the patrol in room 0.
-  out.push_back({floor.front(), at(0, kRoomH)});
-  out.push_back({floor.back(), at(kRoomW, kRoomH)});
-  out.push_back({at(0, kRoomH), at(kRoomW / 2, kRoomH)});
-  out.push_back({at(kRoomW / 2, kRoomH), at(kRoomW, kRoomH)});
+  r.outline.insert(r.outline.end(), {at(kRoomW, kRoomH), at(kRoomW / 2, kRoomH), at(0, kRoomH)});
   // Platforms: closed boxes 1-3 m wide, bottoms 1.6-6 m up; the low ones are within a jump.
   for (int p = 0; p < kPlatforms; ++p) {
     const double w = rng.uniform(1, 3), x = rng.uniform(1, kRoomW - 1 - w);
     const double y = rng.uniform(1.6, 6), t = rng.uniform(0.2, 0.4);
-    const Vec2 a = at(x, y), b = at(x + w, y), c = at(x + w, y + t), d = at(x, y + t);
-    out.insert(out.end(), {Segment{a, b}, Segment{b, c}, Segment{c, d}, Segment{d, a}});
+    r.platforms.push_back({at(x, y), at(x + w, y), at(x + w, y + t), at(x, y + t)});
   }
+  return r;
 }
 
-// Rooms laid out in a roughly square block.
-std::vector<Segment> makeMap(int rooms) {
+// Rooms laid out in a roughly square block, in the order a loader meets them (row by row).
+std::vector<Room> makeMap(int rooms) {
   const int columns = std::max(1, static_cast<int>(std::lround(std::sqrt(rooms * kPitchY / kPitchX))));
-  std::vector<Segment> segments;
-  segments.reserve(static_cast<size_t>(rooms) * kSegmentsPerRoom);
-  for (int r = 0; r < rooms; ++r) addRoom(segments, r, columns);
-  return segments;
+  std::vector<Room> out;
+  out.reserve(static_cast<size_t>(rooms));
+  for (int r = 0; r < rooms; ++r) out.push_back(makeRoom(r, columns));
+  return out;
 }
 
-// The same commands for both engines: run at kSpeed, turn at the patrol ends, jump every second.
+// Every segment: the outline's and the platforms' sides.
+std::vector<Segment> segmentsOf(const std::vector<Room>& rooms) {
+  std::vector<Segment> out;
+  out.reserve(rooms.size() * kSegmentsPerRoom);
+  for (const Room& r : rooms) {
+    for (size_t i = 0; i < r.outline.size(); ++i) out.push_back({r.outline[i], r.outline[(i + 1) % r.outline.size()]});
+    for (const auto& p : r.platforms)
+      for (size_t i = 0; i < 4; ++i) out.push_back({p[i], p[(i + 1) % 4]});
+  }
+  return out;
+}
+
+enum class Engine { Platon, Box2DChains, Box2DEdges };
+const char* nameOf(Engine e) {
+  return e == Engine::Platon ? "Platon" : e == Engine::Box2DChains ? "Box2D chains" : "Box2D edges";
+}
+
+// ---- The patrol ------------------------------------------------------------------------------------
+
+// The same commands for every engine: run at kSpeed, turn at the patrol ends, jump every second.
 struct Patrol {
   double direction = 1;
   double vx(double x) {
@@ -110,10 +140,11 @@ struct Patrol {
 
 // Building a map: what each case reports back to the parent through a pipe (plain data).
 struct Build {
-  double addMs = 0;      // Platon: MapPart::line() calls; Box2D: CreateFixture calls
+  double addMs = 0;      // Platon: MapPart::lines(); Box2D: CreateFixture calls
   double buildMs = 0;    // Platon: MapPart::initialize(); Box2D: first Step's pair search (dt = 0)
   double ownBytes = -1;  // Platon: MapPart::memoryBytes(); Box2D: not reported
   double rssBytes = 0;   // RSS after building minus before, in a fresh process
+  double totalMs() const { return addMs + buildMs; }
 };
 
 // One patrol.
@@ -133,12 +164,13 @@ b2Vec2 metres(Vec2 p) { return {static_cast<float>(p.x) / kUnitsPerMetre, static
 
 class PlatonMap {
  public:
-  Build build(const std::vector<Segment>& segments) {
+  Build build(const std::vector<Room>& rooms, bool shuffled) {
+    std::vector<Segment> segments = segmentsOf(rooms);
+    if (shuffled) std::shuffle(segments.begin(), segments.end(), std::mt19937_64(7));
     Build b;
     MapPart& part = world_.createMapPart(1);
     auto t0 = Clock::now();
-    part.reserve(segments.size());  // a loader knows its line count
-    for (const Segment& s : segments) part.line(s.a, s.b);
+    part.lines(segments);  // a loader hands over the lines it has read, in bulk
     b.addMs = elapsedMs(t0);
     t0 = Clock::now();
     part.initialize();
@@ -181,15 +213,47 @@ class PlatonMap {
 
 class Box2DMap {
  public:
-  Build build(const std::vector<Segment>& segments) {
+  explicit Box2DMap(Engine style) : style_(style) {}
+
+  Build build(const std::vector<Room>& rooms, bool shuffled) {
     Build b;
     const b2BodyDef groundDef;
     b2Body* ground = world_.CreateBody(&groundDef);
     auto t0 = Clock::now();
-    for (const Segment& s : segments) {
-      b2EdgeShape edge;
-      edge.SetTwoSided(metres(s.a), metres(s.b));  // Platon's lines block from both sides
-      ground->CreateFixture(&edge, 0.0f);
+    if (style_ == Engine::Box2DEdges) {
+      std::vector<Segment> segments = segmentsOf(rooms);
+      if (shuffled) std::shuffle(segments.begin(), segments.end(), std::mt19937_64(7));
+      t0 = Clock::now();
+      for (const Segment& s : segments) {
+        b2EdgeShape edge;
+        edge.SetTwoSided(metres(s.a), metres(s.b));  // Platon's lines block from both sides
+        ground->CreateFixture(&edge, 0.0f);
+      }
+    } else {
+      // A room's outline is one chain, wound clockwise: Box2D's chains collide on their right side,
+      // here the inside of the room. A platform is a box. Shuffled: the fixtures' order.
+      std::vector<std::pair<size_t, int>> pieces;  // room, -1 for its outline or the platform index
+      for (size_t r = 0; r < rooms.size(); ++r)
+        for (int p = -1; p < kPlatforms; ++p) pieces.push_back({r, p});
+      if (shuffled) std::shuffle(pieces.begin(), pieces.end(), std::mt19937_64(7));
+      std::vector<b2Vec2> loop;
+      t0 = Clock::now();
+      for (const auto& [r, p] : pieces) {
+        if (p < 0) {
+          loop.clear();
+          for (auto v = rooms[r].outline.rbegin(); v != rooms[r].outline.rend(); ++v) loop.push_back(metres(*v));
+          b2ChainShape chain;
+          chain.CreateLoop(loop.data(), static_cast<int32>(loop.size()));
+          ground->CreateFixture(&chain, 0.0f);
+        } else {
+          b2Vec2 corners[4];
+          for (int k = 0; k < 4; ++k)
+            corners[k] = metres(rooms[r].platforms[static_cast<size_t>(p)][static_cast<size_t>(k)]);
+          b2PolygonShape box;
+          box.Set(corners, 4);
+          ground->CreateFixture(&box, 0.0f);
+        }
+      }
     }
     b.addMs = elapsedMs(t0);
     // New fixtures wait in the broad-phase move buffer; the next Step searches pairs for all of them.
@@ -238,8 +302,11 @@ class Box2DMap {
   }
 
  private:
+  Engine style_;
   b2World world_{{0, static_cast<float>(-kGravity)}};
 };
+
+// ---- Measuring ---------------------------------------------------------------------------------------
 
 // Runs `f` in a forked child and returns its Build; a failing child ends the benchmark.
 template <class F>
@@ -272,84 +339,72 @@ Build inChild(F f) {
   return b;
 }
 
-// Each build runs in a fresh process, as a game loads a level: its RSS delta is that engine's alone,
-// and its time includes the page faults of new memory. Times are the best of kBuilds such processes.
-constexpr int kBuilds = 3;
-// Patrols: each case is timed kPatrols times, the cases interleaved so that a busy neighbour on a
-// shared machine slows all of them alike; the fastest patrol counts.
-constexpr int kPatrols = 5;
-
-template <class Map>
-Build measureBuild(int rooms) {
-  const std::vector<Segment> segments = makeMap(rooms);
-  Build best;
-  for (int i = 0; i < kBuilds; ++i) {
-    const Build b = inChild([&] {
-      const double rss0 = rssBytes();
-      Map map;
-      Build r = map.build(segments);
-      r.rssBytes = rssBytes() - rss0;
-      return r;
-    });
-    if (i == 0) best = b;
-    best.addMs = std::min(best.addMs, b.addMs);
-    best.buildMs = std::min(best.buildMs, b.buildMs);
-  }
-  return best;
-}
-
 struct Case {
   int segments;
-  const char* engine;
-  Build build;
-  Motion motion;
+  Engine engine;
+  bool shuffled;
+  std::vector<Build> builds{};     // one per run, each in a fresh process, as a game loads a level
+  std::vector<double> patrolNs{};  // ns per frame, one per run
+  Motion motion{};                 // the last patrol
+  Spread buildMs() const {
+    std::vector<double> v;
+    for (const Build& b : builds) v.push_back(b.totalMs());
+    return Spread::of(v);
+  }
+  double rssBytes() const {
+    std::vector<double> v;
+    for (const Build& b : builds) v.push_back(b.rssBytes);
+    return Spread::of(v).median;
+  }
 };
+
+Build buildOnce(const Case& c, const std::vector<Room>& rooms) {
+  return inChild([&] {
+    const double rss0 = rssBytes();
+    Build r;
+    if (c.engine == Engine::Platon) {
+      PlatonMap map;
+      r = map.build(rooms, c.shuffled);
+      r.rssBytes = rssBytes() - rss0;
+    } else {
+      Box2DMap map(c.engine);
+      r = map.build(rooms, c.shuffled);
+      r.rssBytes = rssBytes() - rss0;
+    }
+    return r;
+  });
+}
 
 void printRow(const Case& c) {
   char own[32] = "-", overlaps[32] = "-";
-  if (c.build.ownBytes >= 0) std::snprintf(own, sizeof own, "%.2f", c.build.ownBytes / 1e6);
+  if (c.builds.front().ownBytes >= 0) std::snprintf(own, sizeof own, "%.2f", c.builds.front().ownBytes / 1e6);
   if (c.motion.overlaps >= 0) std::snprintf(overlaps, sizeof overlaps, "%ld", c.motion.overlaps);
-  std::printf("%9d %-7s %9.2f %9.2f %9.2f %9s %9.2f %9.0f %9.1f %7.2f,%5.2f %6ld %8s\n", c.segments, c.engine,
-              c.build.addMs, c.build.buildMs, c.build.addMs + c.build.buildMs, own, c.build.rssBytes / 1e6,
-              c.motion.nsPerFrame, c.motion.travelled, c.motion.finalX, c.motion.finalY, c.motion.stuckFrames,
-              overlaps);
+  std::printf("%9d %-13s %-9s %26s %8s %8.2f %24s %7.1f %7.2f,%5.2f %6ld %8s\n", c.segments, nameOf(c.engine),
+              c.shuffled ? "shuffled" : "ordered", c.buildMs().show("%.2f").c_str(), own, c.rssBytes() / 1e6,
+              Spread::of(c.patrolNs).show().c_str(), c.motion.travelled, c.motion.finalX, c.motion.finalY,
+              c.motion.stuckFrames, overlaps);
 }
 
-// Times the patrols of every case, interleaved; keeps the fastest and the last patrol's motion.
-void measurePatrols(std::vector<Case>& platon, std::vector<Case>& box2d, int frames) {
-  std::vector<std::unique_ptr<PlatonMap>> platonMaps;
-  std::vector<std::unique_ptr<Box2DMap>> box2dMaps;
-  for (const Case& c : platon) {
-    const std::vector<Segment> segments = makeMap(c.segments / kSegmentsPerRoom);
-    platonMaps.push_back(std::make_unique<PlatonMap>());
-    platonMaps.back()->build(segments);
-    box2dMaps.push_back(std::make_unique<Box2DMap>());
-    box2dMaps.back()->build(segments);
-  }
-  auto keepFastest = [](Case& c, const Motion& m) {
-    const double best = c.motion.nsPerFrame > 0 ? std::min(c.motion.nsPerFrame, m.nsPerFrame) : m.nsPerFrame;
-    c.motion = m;
-    c.motion.nsPerFrame = best;
-  };
-  for (int run = 0; run < kPatrols; ++run)
-    for (size_t i = 0; i < platon.size(); ++i) {
-      keepFastest(platon[i], platonMaps[i]->patrol(frames));
-      keepFastest(box2d[i], box2dMaps[i]->patrol(frames));
-    }
+const Case& find(const std::vector<Case>& cases, int segments, Engine e, bool shuffled) {
+  for (const Case& c : cases)
+    if (c.segments == segments && c.engine == e && c.shuffled == shuffled) return c;
+  std::abort();
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   bool quick = false;
-  int frames = 10000;
+  int frames = 10000, runs = 5;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--quick") == 0)
-      quick = true, frames = 600;
+      quick = true, frames = 600, runs = 2;
     else if (std::strncmp(argv[i], "--frames=", 9) == 0)
       frames = std::max(1, std::atoi(argv[i] + 9));
+    else if (std::strncmp(argv[i], "--runs=", 7) == 0)
+      runs = std::max(1, std::atoi(argv[i] + 7));
     else
-      return std::fprintf(stderr, "usage: map_scaling [--quick] [--frames=N]\n"), 2;
+      return std::fprintf(stderr, "usage: map_scaling [--quick] [--frames=N] [--runs=N]\n"), 2;
   }
   const std::vector<int> sizes = quick ? std::vector<int>{100, 10000} : std::vector<int>{100, 10000, 1000000};
   std::printf(
@@ -358,43 +413,95 @@ int main(int argc, char** argv) {
       "jumping every %d frames, gravity %g m/s^2, %d frames at %g Hz\n",
       kRoomW, kRoomH, kSegmentsPerRoom, kPlatforms, kUnitsPerMetre, kRadius, kSpeed, kJumpEvery, kGravity, frames, kHz);
   std::printf(
-      "Platon add = MapPart::line() calls, build = initialize(), own = memoryBytes(); Box2D add = "
-      "CreateFixture(b2EdgeShape) calls, build = first Step's pair search; Step(1/60, 8, 3) per frame.\n"
-      "Builds: each in a fresh process, times best of %d, RSS delta of the first. ns/frame: best of %d "
-      "patrols by a fresh entity, all cases interleaved;\nmoved / final / stuck / overlaps: the last "
-      "patrol (overlaps = World::countOverlaps() after its last frame)\n",
-      kBuilds, kPatrols);
+      "Platon: MapPart::lines() with every segment, then initialize(). Box2D chains: each room's outline one "
+      "b2ChainShape loop, each platform a b2PolygonShape (as a Box2D user builds a level); Box2D edges: one "
+      "two-sided b2EdgeShape per segment. Box2D's build: CreateFixture calls plus the first Step's pair "
+      "search; Step(1/60, 8, 3) per frame.\nordered: the pieces room by room, as a loader meets them; "
+      "shuffled: in random order. Each build in a fresh process: ms median (min-max) over %d builds, RSS "
+      "delta (median). ns/frame: median (min-max) over %d patrols by a fresh entity, every case in turn.\n"
+      "moved / final / stuck / overlaps: the last patrol (overlaps = World::countOverlaps() after its last "
+      "frame)\n\n",
+      runs, runs);
 
-  std::vector<Case> platon, box2d;
-  for (const int segments : sizes) {
-    const int rooms = segments / kSegmentsPerRoom;
-    platon.push_back({segments, "Platon", measureBuild<PlatonMap>(rooms), {}});
-    box2d.push_back({segments, "Box2D", measureBuild<Box2DMap>(rooms), {}});
+  std::vector<Case> cases;
+  for (const int segments : sizes)
+    for (const bool shuffled : {false, true})
+      for (const Engine e : {Engine::Platon, Engine::Box2DChains, Engine::Box2DEdges})
+        cases.push_back({segments, e, shuffled});
+  // Builds: every case once per run, in turn.
+  for (int run = 0; run < runs; ++run)
+    for (const int segments : sizes) {
+      const std::vector<Room> rooms = makeMap(segments / kSegmentsPerRoom);
+      for (Case& c : cases)
+        if (c.segments == segments) c.builds.push_back(buildOnce(c, rooms));
+    }
+  // Patrols: every map built once here, then patrolled in turn.
+  std::vector<std::unique_ptr<PlatonMap>> platonMaps(cases.size());
+  std::vector<std::unique_ptr<Box2DMap>> box2dMaps(cases.size());
+  for (size_t i = 0; i < cases.size(); ++i) {
+    const std::vector<Room> rooms = makeMap(cases[i].segments / kSegmentsPerRoom);
+    if (cases[i].engine == Engine::Platon)
+      (platonMaps[i] = std::make_unique<PlatonMap>())->build(rooms, cases[i].shuffled);
+    else
+      (box2dMaps[i] = std::make_unique<Box2DMap>(cases[i].engine))->build(rooms, cases[i].shuffled);
   }
-  measurePatrols(platon, box2d, frames);
-  std::printf("%9s %-7s %9s %9s %9s %9s %9s %9s %9s %13s %6s %8s\n", "segments", "engine", "add ms", "build ms",
-              "total ms", "own MB", "RSS MB", "ns/frame", "moved m", "final x,y m", "stuck", "overlaps");
-  for (size_t i = 0; i < sizes.size(); ++i) printRow(platon[i]), printRow(box2d[i]);
+  for (int run = 0; run < runs; ++run)
+    for (size_t i = 0; i < cases.size(); ++i) {
+      cases[i].motion = platonMaps[i] ? platonMaps[i]->patrol(frames) : box2dMaps[i]->patrol(frames);
+      cases[i].patrolNs.push_back(cases[i].motion.nsPerFrame);
+    }
+
+  std::printf("%9s %-13s %-9s %26s %8s %8s %24s %7s %13s %6s %8s\n", "segments", "engine", "order", "build ms",
+              "own MB", "RSS MB", "ns/frame", "moved m", "final x,y m", "stuck", "overlaps");
+  for (const Case& c : cases) printRow(c);
 
   PlatonMap small;
-  small.build(makeMap(sizes.front() / kSegmentsPerRoom));
+  small.build(makeMap(sizes.front() / kSegmentsPerRoom), false);
   const Motion checked = small.patrol(frames, true);
   std::printf(
       "\n%d-segment map, World::countOverlaps() after every frame: %ld overlaps in %d frames "
       "(final position %.3f, %.3f m)\n",
       sizes.front(), checked.overlaps, frames, checked.finalX, checked.finalY);
 
-  const Case &p0 = platon.front(), &pN = platon.back(), &bN = box2d.back();
-  std::printf("\nRatios (largest map: %d segments)\n", pN.segments);
-  std::printf("  Platon ns/frame, %d vs %d segments:        %6.2f  (goal <= 1.5)\n", pN.segments, p0.segments,
-              pN.motion.nsPerFrame / p0.motion.nsPerFrame);
-  for (size_t i = 0; i < sizes.size(); ++i)
-    std::printf("  Platon frame / Box2D step, %7d segments:    %6.3f  (goal <= 0.5)\n", sizes[i],
-                platon[i].motion.nsPerFrame / box2d[i].motion.nsPerFrame);
-  const double platonBuild = pN.build.addMs + pN.build.buildMs, box2dBuild = bN.build.addMs + bN.build.buildMs;
-  std::printf("  Box2D build / Platon build (add + build):        %6.1f  (goal >= 10)\n", box2dBuild / platonBuild);
-  std::printf("  Box2D build (add + build) / Platon initialize(): %6.1f\n", box2dBuild / pN.build.buildMs);
-  std::printf("  Platon memory / Box2D memory (RSS deltas):       %6.3f  (goal <= 0.5)\n",
-              pN.build.rssBytes / bN.build.rssBytes);
-  std::printf("  Platon memoryBytes() / Box2D RSS delta:          %6.3f\n", pN.build.ownBytes / bN.build.rssBytes);
+  // The goals, against the Box2D a user writes (chains) and against bare edges; run i of one case
+  // against run i of the other.
+  const int largest = sizes.back();
+  const Case &p0 = find(cases, sizes.front(), Engine::Platon, false), &pN = find(cases, largest, Engine::Platon, false);
+  const size_t n = static_cast<size_t>(runs);
+  std::printf("\nRatios (medians; in brackets the runs that met the goal)\n");
+  std::printf("  Platon ns/frame, %d vs %d segments:               %6.2f  (goal <= 1.5: %s)\n", largest, sizes.front(),
+              Spread::of(pN.patrolNs).median / Spread::of(p0.patrolNs).median,
+              platon::bench::runsMet(n, [&](size_t i) { return pN.patrolNs[i] <= 1.5 * p0.patrolNs[i]; }).c_str());
+  for (const Engine peer : {Engine::Box2DChains, Engine::Box2DEdges}) {
+    const char* who = nameOf(peer);
+    for (const int segments : sizes) {
+      const Case &p = find(cases, segments, Engine::Platon, false), &b = find(cases, segments, peer, false);
+      std::printf("  Platon frame / %s step, %7d segments:  %6.3f  (goal <= 0.5: %s)\n", who, segments,
+                  Spread::of(p.patrolNs).median / Spread::of(b.patrolNs).median,
+                  platon::bench::runsMet(n, [&](size_t i) { return p.patrolNs[i] <= 0.5 * b.patrolNs[i]; }).c_str());
+    }
+    for (const bool shuffled : {false, true}) {
+      const Case &p = find(cases, largest, Engine::Platon, shuffled), &b = find(cases, largest, peer, shuffled);
+      std::printf("  %s build / Platon build, %s:           %6.1f  (goal >= 10: %s)\n", who,
+                  shuffled ? "shuffled" : "ordered ", b.buildMs().median / p.buildMs().median,
+                  platon::bench::runsMet(n, [&](size_t i) {
+                    return b.builds[i].totalMs() >= 10 * p.builds[i].totalMs();
+                  }).c_str());
+      std::printf("  Platon memory / %s memory (RSS), %s:   %6.3f  (goal <= 0.5: %s)\n", who,
+                  shuffled ? "shuffled" : "ordered ", p.rssBytes() / b.rssBytes(),
+                  platon::bench::runsMet(n, [&](size_t i) {
+                    return p.builds[i].rssBytes <= 0.5 * b.builds[i].rssBytes;
+                  }).c_str());
+    }
+  }
+  std::printf(
+      "  Insertion order, %d segments: shuffled / ordered build time: Platon %.2f, Box2D chains %.2f, Box2D "
+      "edges %.2f\n",
+      largest,
+      find(cases, largest, Engine::Platon, true).buildMs().median /
+          find(cases, largest, Engine::Platon, false).buildMs().median,
+      find(cases, largest, Engine::Box2DChains, true).buildMs().median /
+          find(cases, largest, Engine::Box2DChains, false).buildMs().median,
+      find(cases, largest, Engine::Box2DEdges, true).buildMs().median /
+          find(cases, largest, Engine::Box2DEdges, false).buildMs().median);
 }

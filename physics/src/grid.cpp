@@ -116,13 +116,9 @@ void Grid::forEachCell(const Segment& s, const CellRect& span, Visit&& visit) co
   }
 }
 
-void Grid::build(std::span<const Segment> segments) {
+void Grid::build(std::span<const Segment> segments, Vec2 low, Vec2 high) {
   const size_t n = segments.size();
-  int64_t minX = INT64_MAX, maxX = INT64_MIN, minY = INT64_MAX, maxY = INT64_MIN;
-  for (const Segment& s : segments) {
-    minX = std::min<int64_t>({minX, s.a.x, s.b.x}), maxX = std::max<int64_t>({maxX, s.a.x, s.b.x});
-    minY = std::min<int64_t>({minY, s.a.y, s.b.y}), maxY = std::max<int64_t>({maxY, s.a.y, s.b.y});
-  }
+  const int64_t minX = low.x, maxX = high.x, minY = low.y, maxY = high.y;
   // About n cells, shaped after the map's extent so long levels get more columns than rows.
   // Columns are ceil(sqrt(n * width / height)) and rows ceil(sqrt(n * height / width)), each
   // between 1 and n, in exact integers.
@@ -154,27 +150,33 @@ void Grid::build(std::span<const Segment> segments) {
   xAxis_.index();
   yAxis_.index();
 
-  // Two passes over the lines: count each cell's entries, then fill the compressed table. Each
-  // line's cells are found from the previous line's (levels list neighbouring lines together),
-  // so the cell table is visited in nearly sequential order.
+  // One pass over the lines finds their cells (each line's from the previous line's: levels list
+  // neighbouring lines together, so the cell table is visited in nearly sequential order) and
+  // counts each cell's entries; a second pass, over what the first wrote down, fills the
+  // compressed table without any geometry.
   const size_t cellCount = xAxis_.cuts.size() * yAxis_.cuts.size();
-  auto forEachLineCell = [&](auto&& visit) {
-    CellRect span{0, 0, 0, 0};
-    for (uint32_t i = 0; i < n; ++i) {
-      const Segment& s = segments[i];
-      span = {xAxis_.cellNear(std::min(s.a.x, s.b.x), span.x0), yAxis_.cellNear(std::min(s.a.y, s.b.y), span.y0),
-              xAxis_.cellNear(std::max(s.a.x, s.b.x), span.x1), yAxis_.cellNear(std::max(s.a.y, s.b.y), span.y1)};
-      forEachCell(s, span, [&](size_t cell) { visit(cell, i); });
-    }
-  };
+  std::vector<uint32_t> entryCells;   // the cells of line 0, then of line 1, ...
+  std::vector<uint32_t> lineEnds(n);  // where each line's cells end in entryCells
+  entryCells.reserve(n + n / 2);
   cellStart_.assign(cellCount + 1, 0);
-  forEachLineCell([&](size_t cell, uint32_t) { ++cellStart_[cell + 1]; });
+  CellRect span{0, 0, 0, 0};
+  for (uint32_t i = 0; i < n; ++i) {
+    const Segment& s = segments[i];
+    span = {xAxis_.cellNear(std::min(s.a.x, s.b.x), span.x0), yAxis_.cellNear(std::min(s.a.y, s.b.y), span.y0),
+            xAxis_.cellNear(std::max(s.a.x, s.b.x), span.x1), yAxis_.cellNear(std::max(s.a.y, s.b.y), span.y1)};
+    forEachCell(s, span, [&](size_t cell) {
+      entryCells.push_back(static_cast<uint32_t>(cell));
+      ++cellStart_[cell + 1];
+    });
+    lineEnds[i] = static_cast<uint32_t>(entryCells.size());
+  }
   // cellStart_[c + 1] becomes cell c's start and serves as its write cursor, so that after the
   // fill it holds cell c's end, which is cell c + 1's start: no second table needed.
   uint32_t running = 0;
   for (size_t c = 0; c < cellCount; ++c) running += std::exchange(cellStart_[c + 1], running);
   cellLines_.resize(running);
-  forEachLineCell([&](size_t cell, uint32_t line) { cellLines_[cellStart_[cell + 1]++] = line; });
+  for (uint32_t i = 0, k = 0; i < n; ++i)
+    for (; k < lineEnds[i]; ++k) cellLines_[cellStart_[entryCells[k] + 1]++] = i;
 }
 
 size_t Grid::memoryBytes() const {

@@ -33,7 +33,8 @@ struct Box {  // closed integer box
 
 class Grid {
  public:
-  void build(std::span<const Segment> segments);
+  // `low` and `high`: the box around every segment (the map part keeps it as lines come).
+  void build(std::span<const Segment> segments, Vec2 low, Vec2 high);
 
   int columns() const { return static_cast<int>(xAxis_.cuts.size()); }
   int rows() const { return static_cast<int>(yAxis_.cuts.size()); }

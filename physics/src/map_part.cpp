@@ -17,34 +17,57 @@ void MapPart::checkOpen(const char* what) const {
   if (initialized_) throw Error(partName(id_) + ": cannot add a " + what + " after initialize()");
 }
 
-void MapPart::checkSegment(Vec2 p0, Vec2 p1, const char* what) const {
+void MapPart::checkSegment(Vec2 p0, Vec2 p1, const char* what, size_t index) const {
   if (inRange(p0) && inRange(p1) && p0 != p1) return;
-  const std::string line = partName(id_) + " " + what + " " + std::to_string(lines_.size());
+  const std::string line = partName(id_) + " " + what + " " + std::to_string(index);
   if (p0 == p1) throw Error(line + ": zero length at " + toString(p0));
   throw Error(line + ": endpoint " + toString(inRange(p0) ? p1 : p0) +
               " is outside the coordinate range |x|,|y| <= 2^30 - 1");
 }
 
+LineIndex MapPart::add(Line line, Segment segment) {
+  lines_.push_back(line);
+  segments_.push_back(segment);
+  low_ = {std::min({low_.x, segment.a.x, segment.b.x}), std::min({low_.y, segment.a.y, segment.b.y})};
+  high_ = {std::max({high_.x, segment.a.x, segment.b.x}), std::max({high_.y, segment.a.y, segment.b.y})};
+  return static_cast<LineIndex>(lines_.size() - 1);
+}
+
 LineIndex MapPart::line(Vec2 p0, Vec2 p1, uint32_t tag) {
   checkOpen("line");
-  checkSegment(p0, p1, "line");
-  lines_.push_back({tag, LineKind::Solid, UINT32_MAX});
-  segments_.push_back({p0, p1});
-  return static_cast<LineIndex>(lines_.size() - 1);
+  checkSegment(p0, p1, "line", lines_.size());
+  return add({tag, LineKind::Solid, UINT32_MAX}, {p0, p1});
+}
+
+LineIndex MapPart::lines(std::span<const Segment> segments, uint32_t tag) {
+  checkOpen("line");
+  // One pass checks every segment and grows the box; nothing is added unless all are good.
+  Vec2 low = low_, high = high_;
+  for (size_t k = 0; k < segments.size(); ++k) {
+    const Segment& s = segments[k];
+    checkSegment(s.a, s.b, "line", lines_.size() + k);
+    low = {std::min({low.x, s.a.x, s.b.x}), std::min({low.y, s.a.y, s.b.y})};
+    high = {std::max({high.x, s.a.x, s.b.x}), std::max({high.y, s.a.y, s.b.y})};
+  }
+  const LineIndex first = static_cast<LineIndex>(lines_.size());
+  lines_.insert(lines_.end(), segments.size(), Line{tag, LineKind::Solid, UINT32_MAX});
+  segments_.insert(segments_.end(), segments.begin(), segments.end());
+  low_ = low, high_ = high;
+  return first;
 }
 
 LineIndex MapPart::oneWay(Vec2 p0, Vec2 p1, uint32_t tag) {
   checkOpen("one-way line");
-  checkSegment(p0, p1, "one-way line");
-  lines_.push_back({tag, LineKind::OneWay, UINT32_MAX});
-  segments_.push_back({p0, p1});
-  return static_cast<LineIndex>(lines_.size() - 1);
+  checkSegment(p0, p1, "one-way line", lines_.size());
+  return add({tag, LineKind::OneWay, UINT32_MAX}, {p0, p1});
 }
 
 LineIndex MapPart::warp(Vec2 p0, Vec2 p1, MapPartId target, Vec2 t0, Vec2 t1, uint32_t tag) {
   checkOpen("warp");
-  checkSegment(p0, p1, "warp");
-  checkSegment(t0, t1, "warp target of");
+  if (target == id_)
+    throw Error(partName(id_) + " warp " + std::to_string(lines_.size()) + ": a warp cannot target its own part");
+  checkSegment(p0, p1, "warp", lines_.size());
+  checkSegment(t0, t1, "warp target of", lines_.size());
   const Vec2w d = p1 - p0, e = t1 - t0;
   // A plausibility check on the lengths (whole units, rounded down), not geometry.
   const int64_t ld = static_cast<int64_t>(isqrt(static_cast<u128>(dot(d, d))));
@@ -61,9 +84,8 @@ LineIndex MapPart::warp(Vec2 p0, Vec2 p1, MapPartId target, Vec2 t0, Vec2 t1, ui
   const bool axisAligned = (d.x == 0 || d.y == 0) && (e.x == 0 || e.y == 0);
   if (axisAligned) w.turn = snapped;
   w.rotation = rotationOf(w.turn);
-  lines_.push_back({tag, LineKind::Warp, static_cast<uint32_t>(warps_.size())});
-  segments_.push_back({p0, p1});
   warps_.push_back(w);
+  add({tag, LineKind::Warp, static_cast<uint32_t>(warps_.size() - 1)}, {p0, p1});
   return static_cast<LineIndex>(lines_.size() - 1);
 }
 
@@ -82,14 +104,8 @@ void MapPart::setGravity(Vec2w g) {
 
 void MapPart::initialize() {
   if (initialized_) throw Error(partName(id_) + ": initialize() called twice");
-  for (size_t i = 0; i < lines_.size(); ++i) {
-    if (lines_[i].kind != LineKind::Warp) continue;
-    const MapPartId target = warps_[lines_[i].warp].target;
-    if (target == id_)
-      throw Error(partName(id_) + " warp " + std::to_string(i) + ": a warp cannot target its own part");
-  }
   if (lines_.size() >= UINT32_MAX - 1) throw Error(partName(id_) + ": too many lines");
-  grid_->build(segments_);
+  grid_->build(segments_, low_, high_);
   initialized_ = true;
 }
 

@@ -157,7 +157,7 @@ std::vector<Scene> stabilityScenes(double offset) {
   }
   scenes.push_back(
       restOnFloor("rest-1e6", "a 0.5 m box resting on a floor for 10^6 frames", 9.81, box(0.25, 0.25), 0.25, 1000000));
-  scenes.back().settleFrames = 10;
+  scenes.back().settleFrames = 1000;
   for (Scene& s : scenes) {
     if (offset == 0) continue;
     for (Seg& g : s.solids) g = {g[0] + offset, g[1] + offset, g[2] + offset, g[3] + offset};
@@ -201,7 +201,7 @@ Outcome runWarpCorner(double upm) {
   world.insert(body, 1, {L - unitsFromMetres(1, upm), half}, 0);
   const int64_t vx = q16FromSpeed(2, upm, 60);
   Outcome out;
-  Vec2 settled{};
+  Vec2 settled{}, last = world.entity(body).instance(0).position;
   for (int f = 1; f <= 10000; ++f) {
     world.setVelocity(body, {vx, world.entity(body).velocity().y});
     world.solve();
@@ -209,6 +209,7 @@ Outcome runWarpCorner(double upm) {
     const EntityView e = world.entity(body);
     const std::optional<InstanceView> onA = e.instanceIn(1);
     if (!onA || onA->position.x > L + wall - half || onA->position.y < half) ++out.tunnelFrames;
+    if (onA && onA->position != last) out.lastMoveFrame = f, last = onA->position;
     if (f == 2000 && onA) settled = onA->position;
     if (f > 2000 && onA)
       out.drift = std::max(out.drift, std::hypot(onA->position.x - settled.x, onA->position.y - settled.y) / upm);
@@ -225,6 +226,7 @@ Outcome runWarpCorner(double upm) {
 void OutcomeTracker::frame(int f, const Pose& p) {
   if (!scene_.allowed(p)) ++out_.tunnelFrames;
   if (scene_.minSpeedX > 0 && (p.x - previous_.x) * scene_.hz < 0.5 * scene_.minSpeedX) ++out_.stuckFrames;
+  if (std::hypot(p.x - previous_.x, p.y - previous_.y) > 1e-9 || p.angle != previous_.angle) out_.lastMoveFrame = f;
   if (f == scene_.settleFrames) settled_ = p;
   if (scene_.settleFrames >= 0 && f > scene_.settleFrames)
     out_.drift = std::max(out_.drift, std::hypot(p.x - settled_.x, p.y - settled_.y));

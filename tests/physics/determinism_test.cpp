@@ -1,5 +1,6 @@
 // Same inputs, same bits: two worlds stepped side by side hash alike; a one-unit change shows.
 #include <random>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -8,14 +9,16 @@
 using namespace platon::physics;
 
 namespace {
-uint64_t runScene(int32_t nudge, int frames) {
+uint64_t runScene(int32_t nudge, int frames, bool inBulk = false) {
   World world;
   MapPart& a = world.createMapPart(1);
   MapPart& b = world.createMapPart(2);
-  a.line({0, 0}, {4000, 0});
-  a.line({0, 4000}, {0, 0});
-  a.line({4000, 4000}, {0, 4000});
-  a.line({1000, 0}, {1600, 700});
+  const std::vector<Segment> room{
+      {{0, 0}, {4000, 0}}, {{0, 4000}, {0, 0}}, {{4000, 4000}, {0, 4000}}, {{1000, 0}, {1600, 700}}};
+  if (inBulk)
+    a.lines(room);
+  else
+    for (const Segment& s : room) a.line(s.a, s.b);
   a.warp({4000, 0}, {4000, 4000}, 2, {4000, 0}, {0, 0});
   b.warp({0, 0}, {4000, 0}, 1, {4000, 4000}, {4000, 0});
   b.line({4000, 0}, {4000, 4000});
@@ -42,3 +45,5 @@ TEST(Determinism, IdenticalRunsHashIdentically) {
   EXPECT_EQ(runScene(0, 600), runScene(0, 600));
   EXPECT_NE(runScene(0, 600), runScene(1, 600));
 }
+
+TEST(Determinism, LinesAddedInBulkAreTheSameLines) { EXPECT_EQ(runScene(0, 600, true), runScene(0, 600, false)); }

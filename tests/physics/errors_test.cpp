@@ -53,8 +53,8 @@ TEST(Errors, MapPartsCheckTheirLines) {
   world.insert(box, 3, {50, 50}, 0);
   World other;
   MapPart& self = other.createMapPart(1);
-  self.warp({0, 0}, {100, 0}, 1, {0, 0}, {100, 0});
-  expectError([&] { self.initialize(); }, "cannot target its own part");
+  expectError([&] { self.warp({0, 0}, {100, 0}, 1, {0, 0}, {100, 0}); }, "cannot target its own part");
+  EXPECT_TRUE(self.lines().empty());  // refused: nothing added
   MapPart& done = other.createMapPart(2);
   done.line({0, 0}, {10, 0});
   done.initialize();
@@ -145,4 +145,23 @@ TEST(Errors, ABadRestitutionIsReportedAndTheFrameFinishes) {
     EXPECT_EQ(world.entity(box).instance(0).position, (Vec2{0, 10}));  // landed, slid: nothing bounced
     EXPECT_EQ(world.countOverlaps(), 0u);
   }
+}
+
+// Lines in bulk are all checked before any is added: one bad segment adds none, and the error
+// names the index that line would have had.
+TEST(Errors, BulkLinesAreCheckedBeforeAnyIsAdded) {
+  World world;
+  MapPart& part = world.createMapPart(1);
+  part.line({0, 0}, {10, 0});
+  const std::vector<Segment> bad{{{0, 10}, {10, 10}}, {{5, 5}, {5, 5}}, {{0, 20}, {10, 20}}};
+  expectError([&] { part.lines(bad); }, "line 2: zero length at (5, 5)");
+  EXPECT_EQ(part.lines().size(), 1u);
+  const std::vector<Segment> far{{{0, 10}, {int32_t{1} << 30, 10}}};
+  expectError([&] { part.lines(far); }, "outside the coordinate range");
+  EXPECT_EQ(part.lines().size(), 1u);
+  EXPECT_EQ(part.lines(std::vector<Segment>{{{0, 10}, {10, 10}}, {{0, 20}, {10, 20}}}, 4), 1u);
+  EXPECT_EQ(part.lines().size(), 3u);
+  EXPECT_EQ(part.lines()[2].tag, 4u);
+  part.initialize();
+  expectError([&] { part.lines(std::vector<Segment>{{{0, 30}, {10, 30}}}); }, "after initialize");
 }

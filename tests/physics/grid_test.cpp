@@ -11,6 +11,16 @@
 using namespace platon::physics;
 
 namespace {
+
+// Builds the grid with the box around the segments, as MapPart passes it.
+void buildGrid(Grid& grid, std::span<const Segment> segments) {
+  Vec2 low{INT32_MAX, INT32_MAX}, high{INT32_MIN, INT32_MIN};
+  for (const Segment& s : segments) {
+    low = {std::min({low.x, s.a.x, s.b.x}), std::min({low.y, s.a.y, s.b.y})};
+    high = {std::max({high.x, s.a.x, s.b.x}), std::max({high.y, s.a.y, s.b.y})};
+  }
+  grid.build(segments, low, high);
+}
 std::vector<Segment> randomSegments(std::mt19937_64& rng, int n, int32_t half, int32_t maxLength) {
   std::vector<Segment> out;
   while (static_cast<int>(out.size()) < n) {
@@ -46,7 +56,7 @@ TEST(Grid, CellsCoveringABoxHoldEveryLineThatMeetsIt) {
   for (const int32_t maxLength : {3, 50, 5000}) {
     const auto segments = randomSegments(rng, 3000, 10000, maxLength);
     Grid grid;
-    grid.build(segments);
+    buildGrid(grid, segments);
     EXPECT_GE(grid.columns() * grid.rows(), 1000);
     EXPECT_LE(grid.columns() * grid.rows(), 20000);
     for (int q = 0; q < 300; ++q) {
@@ -69,7 +79,8 @@ TEST(Grid, EntriesGrowLinearlyWithShortLines) {
     // Constant density: the area grows with the count.
     const int32_t half = static_cast<int32_t>(100 * std::sqrt(static_cast<double>(n)));
     Grid grid;
-    grid.build(randomSegments(rng, n, half, 60));
+    const std::vector<Segment> segments = randomSegments(rng, n, half, 60);
+    buildGrid(grid, segments);
     perLine[k++] = grid.entries() * 1000 / n;
   }
   EXPECT_LE(perLine[1], perLine[0] * 3 / 2) << "entries per line: " << perLine[0] << " vs " << perLine[1];
@@ -79,7 +90,7 @@ TEST(Region, IncrementalUpdatesMatchAFreshScan) {
   std::mt19937_64 rng(7);
   const auto segments = randomSegments(rng, 5000, 20000, 400);
   Grid grid;
-  grid.build(segments);
+  buildGrid(grid, segments);
   Region region;
   int64_t x = 0, y = 0;
   for (int step = 0; step < 3000; ++step) {

@@ -42,6 +42,9 @@ class MapPart {
 
   // Adds a solid line; returns its index. Throws on zero length, range, or after initialize().
   LineIndex line(Vec2 p0, Vec2 p1, uint32_t tag = 0);
+  // Adds solid lines in bulk, as a loader holds them; returns the first one's index. All are checked
+  // first: one bad segment adds none.
+  LineIndex lines(std::span<const Segment> segments, uint32_t tag = 0);
   // Adds a one-way line, solid from its left side only (see LineKind::OneWay).
   LineIndex oneWay(Vec2 p0, Vec2 p1, uint32_t tag = 0);
   // Adds a warp line to part `target`, where the same edge runs t0 -> t1. The two edges should be
@@ -74,14 +77,16 @@ class MapPart {
   friend struct WorldImpl;
   explicit MapPart(MapPartId id);
   void checkOpen(const char* what) const;
-  void checkSegment(Vec2 p0, Vec2 p1, const char* what) const;
+  void checkSegment(Vec2 p0, Vec2 p1, const char* what, size_t index) const;
+  LineIndex add(Line line, Segment segment);
   const Grid& grid() const { return *grid_; }
 
   MapPartId id_;
   bool initialized_ = false;
   Vec2w gravity_;
   std::vector<Line> lines_;
-  std::vector<Segment> segments_;  // parallel to lines_, packed for the sweep loops
+  std::vector<Segment> segments_;                                // parallel to lines_, packed for the sweep loops
+  Vec2 low_{INT32_MAX, INT32_MAX}, high_{INT32_MIN, INT32_MIN};  // the box around them, kept as they come
   std::vector<Warp> warps_;
   std::unique_ptr<Grid> grid_;
 };

@@ -35,6 +35,8 @@ struct Scene {
   // Where the body's origin is allowed to be (false = it went through a line: a tunnel).
   std::function<bool(const Pose&)> allowed;
   // For rest scenes: frames after which the body must not move any more (drift is measured after).
+  // Long enough for every engine's own settling (Box2D pushes a body out onto its skin over about
+  // 30 frames); the table shows when each one actually stopped.
   int settleFrames = -1;
   // For sliding scenes: the body should keep moving along x at least this fast (m/s).
   double minSpeedX = 0;
@@ -53,6 +55,7 @@ struct Outcome {
   int triggerEnds = 0;
   int missedEvents = 0;       // expected crossings without a begin or an end
   double drift = 0;           // movement after settleFrames
+  int lastMoveFrame = 0;      // the last frame on which the body moved (by more than 1 nm)
   int stuckFrames = 0;        // frames moving slower than minSpeedX
   bool missedTarget = false;  // ended away from targetX
   Pose final;
