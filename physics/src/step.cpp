@@ -448,9 +448,13 @@ class SubMove {
       sub.planMotions();
       sub.findFirstEvent();
       if (!sub.free()) continue;
+      const Angle frameBefore = e_.angle;
       sub.roundSteps();
       sub.commit();
       sub.afterMove();
+      // The lift can take the anchor off its part (the link to the copy ends it): the rest of the
+      // frame's move turns into the new anchor's frame, as rebase turned the lift's.
+      if (e_.angle != frameBefore) w_.turnMove(move_, static_cast<Angle>(e_.angle - frameBefore));
       return true;
     }
     return false;

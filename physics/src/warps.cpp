@@ -143,9 +143,18 @@ void WorldImpl::rebase(Move& move, size_t k) {
   // Keep the carried remainder below one unit after rounding.
   e.subunitQ17.x = std::clamp<int64_t>(e.subunitQ17.x, 0, kQ17 - 1);
   e.subunitQ17.y = std::clamp<int64_t>(e.subunitQ17.y, 0, kQ17 - 1);
+  turnMove(move, theta);
+}
+
+void WorldImpl::turnMove(Move& move, Angle theta) {
+  const Rotation r = rotationOf(theta);
   move.motion = rotateWide(r, move.motion);
   move.primalMotion = rotateWide(r, move.primalMotion);
   move.primalVelocity = rotateWide(r, move.primalVelocity);
+  move.exactQ17 = rotateWide(r, move.exactQ17);
+  // The rest of the frame falls as the new anchor's part pulls (parts have gravity of their own).
+  if (move.gravityQ16 != Vec2w{})
+    move.gravityQ16 = move.actingGravityQ16 = part(move.entity.instances[0].part).gravity();
   // The frame's earlier contact normals were in the old frame, and belong to the part it left.
   move.normals.clear();
 }
