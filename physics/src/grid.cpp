@@ -155,8 +155,10 @@ void Grid::build(std::span<const Segment> segments, Vec2 low, Vec2 high) {
   // counts each cell's entries; a second pass, over what the first wrote down, fills the
   // compressed table without any geometry.
   const size_t cellCount = xAxis_.cuts.size() * yAxis_.cuts.size();
-  std::vector<uint32_t> entryCells;   // the cells of line 0, then of line 1, ...
-  std::vector<uint32_t> lineEnds(n);  // where each line's cells end in entryCells
+  // The cells of line 0, then of line 1, ...; the top bit marks a line's last cell (cells number
+  // about as many as lines, fewer than 2^31: a map part holds fewer lines than that).
+  constexpr uint32_t kLast = 0x80000000u;
+  std::vector<uint32_t> entryCells;
   entryCells.reserve(n + n / 2);
   cellStart_.assign(cellCount + 1, 0);
   CellRect span{0, 0, 0, 0};
@@ -168,15 +170,18 @@ void Grid::build(std::span<const Segment> segments, Vec2 low, Vec2 high) {
       entryCells.push_back(static_cast<uint32_t>(cell));
       ++cellStart_[cell + 1];
     });
-    lineEnds[i] = static_cast<uint32_t>(entryCells.size());
+    entryCells.back() |= kLast;  // every line has at least one cell
   }
   // cellStart_[c + 1] becomes cell c's start and serves as its write cursor, so that after the
   // fill it holds cell c's end, which is cell c + 1's start: no second table needed.
   uint32_t running = 0;
   for (size_t c = 0; c < cellCount; ++c) running += std::exchange(cellStart_[c + 1], running);
   cellLines_.resize(running);
-  for (uint32_t i = 0, k = 0; i < n; ++i)
-    for (; k < lineEnds[i]; ++k) cellLines_[cellStart_[entryCells[k] + 1]++] = i;
+  uint32_t line = 0;
+  for (const uint32_t entry : entryCells) {
+    cellLines_[cellStart_[(entry & ~kLast) + 1]++] = line;
+    line += entry >> 31;
+  }
 }
 
 size_t Grid::memoryBytes() const {

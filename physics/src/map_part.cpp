@@ -104,7 +104,8 @@ void MapPart::setGravity(Vec2w g) {
 
 void MapPart::initialize() {
   if (initialized_) throw Error(partName(id_) + ": initialize() called twice");
-  if (lines_.size() >= UINT32_MAX - 1) throw Error(partName(id_) + ": too many lines");
+  if (lines_.size() > (size_t{1} << 30))
+    throw Error(partName(id_) + ": too many lines (" + std::to_string(lines_.size()) + "; 2^30 at most)");
   grid_->build(segments_, low_, high_);
   initialized_ = true;
 }
