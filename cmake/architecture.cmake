@@ -14,6 +14,7 @@
 set(PLATON_ARROWS_platon_physics "")
 set(PLATON_ARROWS_platon_stage platon_physics)
 set(PLATON_ARROWS_platon_core platon_stage platon_physics)
+set(PLATON_ARROWS_platon_script platon_core platon_stage platon_physics)
 
 set(PLATON_MODULES "" CACHE INTERNAL "")
 

@@ -3,7 +3,8 @@
 set -euo pipefail
 # clang + libclang-rt-14-dev (the libFuzzer and sanitizer runtimes): the fuzz stage of tools/test.
 packages=(cmake make g++ pkg-config libgtest-dev libgmock-dev libbenchmark-dev libbox2d-dev libchipmunk-dev
-  clang libclang-rt-14-dev)
+  clang libclang-rt-14-dev
+  libluajit-5.1-dev)  # the script module (LuaJIT 2.1)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

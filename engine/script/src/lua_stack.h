@@ -1,0 +1,170 @@
+// The one binding layer between C++ and LuaJIT: typed reads of Lua arguments, typed pushes, and
+// the wrapper that turns a C++ exception into a Lua error. Every function Lua can call is
+// wrapped by `bound<F>`, so no C++ exception ever crosses into Lua and no Lua error unwinds
+// through a C++ frame that holds a live object: checks throw ArgError inside the try block,
+// the wrapper leaves it, and only then raises the Lua error.
+//
+// Handles cross as numbers: an EntityId is index + 2^32 * (generation mod 2^21), exact in a
+// double. A handle kept across 2^21 reuses of the same slot would alias; the physics world hands
+// slots out again only after every other free one, so that takes 2^21 destroy/create cycles of a
+// full world.
+#pragma once
+#include <lua.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+#include "platon/physics/ids.h"
+
+namespace platon::script::lua {
+
+// A bad argument from Lua. `bound` turns it into a Lua error at the caller's file:line.
+class ArgError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+inline std::string typeName(lua_State* L, int index) { return luaL_typename(L, index); }
+
+[[noreturn]] inline void argError(lua_State* L, int index, std::string_view expected) {
+  throw ArgError("argument " + std::to_string(index) + ": expected " + std::string(expected) + ", got " +
+                 (lua_type(L, index) == LUA_TNUMBER ? std::to_string(lua_tonumber(L, index)) : typeName(L, index)));
+}
+
+inline double checkNumber(lua_State* L, int index) {
+  if (lua_type(L, index) != LUA_TNUMBER) argError(L, index, "a number");
+  const double value = lua_tonumber(L, index);
+  if (!std::isfinite(value)) argError(L, index, "a finite number");
+  return value;
+}
+
+// An integer in [low, high]; a fraction or a value out of range is an error, never a silent cast.
+inline int64_t checkInteger(lua_State* L, int index, int64_t low, int64_t high) {
+  const double value = checkNumber(L, index);
+  if (value != std::floor(value) || value < static_cast<double>(low) || value > static_cast<double>(high))
+    argError(L, index, "an integer in [" + std::to_string(low) + ", " + std::to_string(high) + "]");
+  return static_cast<int64_t>(value);
+}
+
+inline int32_t checkInt32(lua_State* L, int index, int32_t low = INT32_MIN, int32_t high = INT32_MAX) {
+  return static_cast<int32_t>(checkInteger(L, index, low, high));
+}
+
+inline uint32_t checkUint32(lua_State* L, int index) {
+  return static_cast<uint32_t>(checkInteger(L, index, 0, UINT32_MAX));
+}
+
+inline bool checkBoolean(lua_State* L, int index) {
+  if (lua_type(L, index) != LUA_TBOOLEAN) argError(L, index, "a boolean");
+  return lua_toboolean(L, index) != 0;
+}
+
+inline std::string_view checkString(lua_State* L, int index) {
+  if (lua_type(L, index) != LUA_TSTRING) argError(L, index, "a string");
+  size_t length = 0;
+  const char* text = lua_tolstring(L, index, &length);
+  return {text, length};
+}
+
+inline void checkTable(lua_State* L, int index) {
+  if (lua_type(L, index) != LUA_TTABLE) argError(L, index, "a table");
+}
+
+inline void checkFunction(lua_State* L, int index) {
+  if (lua_type(L, index) != LUA_TFUNCTION) argError(L, index, "a function");
+}
+
+constexpr uint32_t kGenerationBits = 21;
+constexpr uint32_t kGenerationMask = (1u << kGenerationBits) - 1;
+
+inline double handleNumber(uint32_t index, uint32_t generation) {
+  return static_cast<double>(index) + 4294967296.0 * static_cast<double>(generation & kGenerationMask);
+}
+
+inline void pushEntity(lua_State* L, physics::EntityId id) {
+  if (!id.isSet()) return lua_pushnil(L);
+  lua_pushnumber(L, handleNumber(id.index, id.generation));
+}
+
+// The handle as Lua holds it: only the generation's low bits, which the world's own check must
+// complete (see World-side lookups in world_api.cpp).
+struct HandleBits {
+  uint32_t index = 0;
+  uint32_t generationLow = 0;
+};
+
+inline HandleBits checkHandle(lua_State* L, int index, std::string_view what) {
+  if (lua_type(L, index) != LUA_TNUMBER) argError(L, index, std::string(what) + " handle");
+  const double value = lua_tonumber(L, index);
+  if (!(value >= 0) || value != std::floor(value) || value >= 9007199254740992.0)
+    argError(L, index, std::string(what) + " handle");
+  const auto bits = static_cast<uint64_t>(value);
+  return {static_cast<uint32_t>(bits & 0xffffffffu), static_cast<uint32_t>(bits >> 32)};
+}
+
+// Wraps `F(lua_State*) -> int` (results pushed) as a lua_CFunction: a C++ exception becomes a Lua
+// error "file:line: name: message" at the calling Lua line. Lua errors raised inside F by the Lua
+// API itself (out of memory) pass through: LuaJIT unwinds x64 C++ frames like exceptions.
+template <int (*F)(lua_State*)>
+int bound(lua_State* L) {
+  std::string error;
+  try {
+    return F(L);
+  } catch (const std::exception& e) {
+    error = e.what();
+  }
+  luaL_where(L, 1);
+  lua_pushlstring(L, error.data(), error.size());
+  lua_concat(L, 2);
+  return lua_error(L);
+}
+
+// A registry reference that frees itself: functions and tables C++ keeps across calls.
+class Ref {
+ public:
+  Ref() = default;
+  Ref(lua_State* L, int index) : L_(L) {
+    lua_pushvalue(L, index);
+    ref_ = luaL_ref(L, LUA_REGISTRYINDEX);
+  }
+  Ref(const Ref&) = delete;
+  Ref& operator=(const Ref&) = delete;
+  Ref(Ref&& other) noexcept : L_(other.L_), ref_(other.ref_) { other.ref_ = LUA_NOREF; }
+  Ref& operator=(Ref&& other) noexcept {
+    if (this != &other) {
+      reset();
+      L_ = other.L_, ref_ = other.ref_;
+      other.ref_ = LUA_NOREF;
+    }
+    return *this;
+  }
+  ~Ref() { reset(); }
+  void reset() {
+    if (L_ && ref_ != LUA_NOREF && ref_ != LUA_REFNIL) luaL_unref(L_, LUA_REGISTRYINDEX, ref_);
+    ref_ = LUA_NOREF;
+  }
+  bool isSet() const { return ref_ != LUA_NOREF && ref_ != LUA_REFNIL; }
+  void push() const { lua_rawgeti(L_, LUA_REGISTRYINDEX, ref_); }
+
+ private:
+  lua_State* L_ = nullptr;
+  int ref_ = LUA_NOREF;
+};
+
+// Restores the stack top on scope exit: C++ code that reads Lua values cannot leak slots.
+class StackGuard {
+ public:
+  explicit StackGuard(lua_State* L) : L_(L), top_(lua_gettop(L)) {}
+  ~StackGuard() { lua_settop(L_, top_); }
+  StackGuard(const StackGuard&) = delete;
+  StackGuard& operator=(const StackGuard&) = delete;
+
+ private:
+  lua_State* L_;
+  int top_;
+};
+
+}  // namespace platon::script::lua

@@ -1,0 +1,30 @@
+// What the Lua API functions reach through their upvalue: the scene they act on, the draw list of
+// the current frame (or none), the current input. One per ScriptSystem; no globals.
+#pragma once
+#include "lua_host.h"
+#include "platon/core/draw_list.h"
+#include "platon/core/input.h"
+#include "platon/core/scene.h"
+
+namespace platon::script {
+
+struct ScriptContext {
+  core::Scene* scene = nullptr;
+  core::DrawList* draw = nullptr;  // set only while draw() runs with a renderer
+  LuaHost* host = nullptr;
+};
+
+inline ScriptContext& contextOf(lua_State* L) {
+  return *static_cast<ScriptContext*>(lua_touserdata(L, lua_upvalueindex(1)));
+}
+
+// Registers platon.world.* (world_api.cpp) and platon.draw.* (draw_api.cpp) in the API table
+// sandboxes see, with `context` as their upvalue.
+void registerWorldApi(LuaHost& host, ScriptContext& context);
+void registerDrawApi(LuaHost& host, ScriptContext& context);
+
+// Adds the functions of `functions` (name, C function; ends with {nullptr, nullptr}) to the table
+// at the top of the stack, each with `context` as its upvalue.
+void setFunctions(lua_State* L, const luaL_Reg* functions, ScriptContext& context);
+
+}  // namespace platon::script

@@ -1,0 +1,444 @@
+// platon.world: the physics world in Lua, in the world's own terms. Units: positions in whole
+// units (integers), velocities in units per frame, gravity in units per frame per frame (the
+// world's Q16 fixed point converted both ways, rounded to nearest), angles in degrees (binary
+// angles: 2^32 per turn, rounded to nearest).
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "script_context.h"
+
+namespace platon::script {
+namespace {
+
+using lua::checkInt32;
+using lua::checkNumber;
+using lua::checkUint32;
+using physics::EntityId;
+using physics::World;
+
+constexpr double kQ16 = 65536.0;
+// Entity handles as Lua numbers: index + 2^24 * generation, exact in a double while the generation
+// stays below 2^29 (a slot reused 536 million times); beyond that pushing the handle is an error.
+constexpr double kIndexScale = 16777216.0;
+
+World& worldOf(lua_State* L) { return contextOf(L).scene->world(); }
+
+void pushEntity(lua_State* L, EntityId id) {
+  if (!id.isSet()) return lua_pushnil(L);
+  if (id.index >= (1u << 24) || id.generation >= (1u << 29))
+    throw lua::ArgError("entity handle out of the range Lua numbers hold exactly");
+  lua_pushnumber(L, static_cast<double>(id.index) + kIndexScale * static_cast<double>(id.generation));
+}
+
+EntityId checkEntity(lua_State* L, int index) {
+  const double value = lua_type(L, index) == LUA_TNUMBER ? lua_tonumber(L, index) : -1;
+  if (!(value >= 0) || value != std::floor(value) || value >= 9007199254740992.0)
+    lua::argError(L, index, "an entity handle");
+  const auto bits = static_cast<uint64_t>(value);
+  const EntityId id{static_cast<uint32_t>(bits % (1u << 24)), static_cast<uint32_t>(bits >> 24)};
+  if (!worldOf(L).valid(id))
+    throw lua::ArgError("argument " + std::to_string(index) + ": stale entity handle (destroyed, or never created)");
+  return id;
+}
+
+physics::PlatformId checkPlatform(lua_State* L, int index) {
+  const auto bits = static_cast<uint64_t>(lua::checkInteger(L, index, 0, (int64_t{1} << 53) - 1));
+  return {static_cast<uint32_t>(bits % (1u << 24)), static_cast<uint32_t>(bits >> 24)};
+}
+
+int64_t toQ16(lua_State* L, int index) {
+  const double value = checkNumber(L, index) * kQ16;
+  if (std::fabs(value) > 4.6e18) lua::argError(L, index, "a velocity within +-2^46 units per frame");
+  return std::llround(value);
+}
+
+physics::Angle toAngle(lua_State* L, int index) {
+  const double turns = checkNumber(L, index) / 360.0;
+  const double fraction = turns - std::floor(turns);
+  return static_cast<physics::Angle>(static_cast<uint64_t>(std::llround(fraction * 4294967296.0)) & 0xffffffffu);
+}
+
+double degrees(physics::Angle angle) { return static_cast<double>(angle) * (360.0 / 4294967296.0); }
+
+physics::MapPartId checkPart(lua_State* L, int index) {
+  const physics::MapPartId id = checkUint32(L, index);
+  if (!worldOf(L).findMapPart(id)) throw lua::ArgError("argument " + std::to_string(index) + ": no map part " + std::to_string(id));
+  return id;
+}
+
+const char* kindName(physics::LineKind kind) {
+  switch (kind) {
+    case physics::LineKind::Solid: return "solid";
+    case physics::LineKind::Warp: return "warp";
+    case physics::LineKind::OneWay: return "oneway";
+  }
+  return "solid";
+}
+
+// Reads the integers of t[1..n] (a flat list x0, y0, x1, y1, ...).
+std::vector<int32_t> intList(lua_State* L, int index) {
+  lua::checkTable(L, index);
+  const size_t n = lua_objlen(L, index);
+  std::vector<int32_t> out;
+  out.reserve(n);
+  for (size_t i = 1; i <= n; ++i) {
+    lua_rawgeti(L, index, static_cast<int>(i));
+    if (lua_type(L, -1) != LUA_TNUMBER || lua_tonumber(L, -1) != std::floor(lua_tonumber(L, -1)) ||
+        std::fabs(lua_tonumber(L, -1)) > 1073741823.0)
+      throw lua::ArgError("argument " + std::to_string(index) + ": item " + std::to_string(i) +
+                          " is not an integer coordinate within +-(2^30 - 1)");
+    out.push_back(static_cast<int32_t>(lua_tonumber(L, -1)));
+    lua_pop(L, 1);
+  }
+  return out;
+}
+
+// createEntity{circle = r [, sides = 16]} | {box = {halfWidth, halfHeight}} | {polygon = {x0, y0, ...}}
+int createEntity(lua_State* L) {
+  lua::checkTable(L, 1);
+  lua_getfield(L, 1, "circle");
+  lua_getfield(L, 1, "box");
+  lua_getfield(L, 1, "polygon");
+  std::optional<physics::Convex> shape;
+  if (!lua_isnil(L, -3)) {
+    const int32_t radius = checkInt32(L, -3, 1, 1 << 28);
+    lua_getfield(L, 1, "sides");
+    const int sides = lua_isnil(L, -1) ? 16 : checkInt32(L, -1, 3, 64);
+    shape = physics::Convex::regular(sides, radius);
+  } else if (!lua_isnil(L, -2)) {
+    const std::vector<int32_t> half = intList(L, lua_gettop(L) - 1);
+    if (half.size() != 2 || half[0] <= 0 || half[1] <= 0) throw lua::ArgError("box = {halfWidth, halfHeight}, both > 0");
+    shape = physics::Convex::box(half[0], half[1]);
+  } else if (!lua_isnil(L, -1)) {
+    const std::vector<int32_t> xy = intList(L, lua_gettop(L));
+    if (xy.size() < 6 || xy.size() % 2) throw lua::ArgError("polygon = {x0, y0, x1, y1, x2, y2, ...}: 3 or more points");
+    std::vector<physics::Vec2> points;
+    for (size_t i = 0; i < xy.size(); i += 2) points.push_back({xy[i], xy[i + 1]});
+    shape.emplace(std::move(points));  // the Convex constructor checks convexity and order
+  } else {
+    throw lua::ArgError("createEntity: give a shape: {circle = r}, {box = {hw, hh}} or {polygon = {x0, y0, ...}}");
+  }
+  pushEntity(L, worldOf(L).createEntity(*shape));
+  return 1;
+}
+
+int destroyEntity(lua_State* L) {
+  worldOf(L).destroyEntity(checkEntity(L, 1));
+  return 0;
+}
+
+int valid(lua_State* L) {
+  const double value = lua_type(L, 1) == LUA_TNUMBER ? lua_tonumber(L, 1) : -1;
+  bool ok = value >= 0 && value == std::floor(value) && value < 9007199254740992.0;
+  if (ok) {
+    const auto bits = static_cast<uint64_t>(value);
+    ok = worldOf(L).valid({static_cast<uint32_t>(bits % (1u << 24)), static_cast<uint32_t>(bits >> 24)});
+  }
+  lua_pushboolean(L, ok);
+  return 1;
+}
+
+int insert(lua_State* L) {
+  const EntityId e = checkEntity(L, 1);
+  const physics::MapPartId part = checkPart(L, 2);
+  const physics::Vec2 at{checkInt32(L, 3), checkInt32(L, 4)};
+  const physics::Angle angle = lua_isnoneornil(L, 5) ? 0 : toAngle(L, 5);
+  worldOf(L).insert(e, part, at, angle);
+  return 0;
+}
+
+int erase(lua_State* L) {
+  worldOf(L).erase(checkEntity(L, 1), checkPart(L, 2));
+  return 0;
+}
+
+int position(lua_State* L) {
+  const physics::EntityView e = worldOf(L).entity(checkEntity(L, 1));
+  if (!e.inserted()) throw lua::ArgError("position: the entity is in no map part (insert it first)");
+  const physics::InstanceView anchor = e.instance(0);
+  lua_pushnumber(L, anchor.part);
+  lua_pushnumber(L, anchor.position.x);
+  lua_pushnumber(L, anchor.position.y);
+  return 3;
+}
+
+int angle(lua_State* L) {
+  lua_pushnumber(L, degrees(worldOf(L).entity(checkEntity(L, 1)).angle()));
+  return 1;
+}
+
+int velocity(lua_State* L) {
+  const physics::Vec2w v = worldOf(L).entity(checkEntity(L, 1)).velocity();
+  lua_pushnumber(L, static_cast<double>(v.x) / kQ16);
+  lua_pushnumber(L, static_cast<double>(v.y) / kQ16);
+  return 2;
+}
+
+int setVelocity(lua_State* L) {
+  const EntityId e = checkEntity(L, 1);
+  worldOf(L).setVelocity(e, {toQ16(L, 2), toQ16(L, 3)});
+  return 0;
+}
+
+int setAngularVelocity(lua_State* L) {
+  const EntityId e = checkEntity(L, 1);
+  const double perFrame = checkNumber(L, 2);
+  if (std::fabs(perFrame) > 90) lua::argError(L, 2, "degrees per frame within +-90");
+  worldOf(L).setAngularVelocity(e, static_cast<int32_t>(std::llround(perFrame / 360.0 * 4294967296.0)));
+  return 0;
+}
+
+int setGravityEnabled(lua_State* L) {
+  const EntityId e = checkEntity(L, 1);
+  worldOf(L).setGravityEnabled(e, lua::checkBoolean(L, 2));
+  return 0;
+}
+
+uint32_t optionalBits(lua_State* L, int table, const char* field) {
+  lua_getfield(L, table, field);
+  const uint32_t value = lua_isnil(L, -1) ? 0 : checkUint32(L, -1);
+  lua_pop(L, 1);
+  return value;
+}
+
+// setFilter(e, {category =, solidWith =, overlapWith =, pushable =})
+int setFilter(lua_State* L) {
+  const EntityId e = checkEntity(L, 1);
+  lua::checkTable(L, 2);
+  physics::EntityFilter filter;
+  filter.category = optionalBits(L, 2, "category");
+  filter.solidWith = optionalBits(L, 2, "solidWith");
+  filter.overlapWith = optionalBits(L, 2, "overlapWith");
+  lua_getfield(L, 2, "pushable");
+  filter.pushable = lua_toboolean(L, -1) != 0;
+  worldOf(L).setFilter(e, filter);
+  return 0;
+}
+
+int contactCount(lua_State* L) {
+  lua_pushnumber(L, static_cast<double>(worldOf(L).entity(checkEntity(L, 1)).contacts().size()));
+  return 1;
+}
+
+// contact(e, i) -> nx, ny (unit normal, away from the line), tag, kind, part, line index, other
+// entity or nil. i from 1 to contactCount(e): the solid contacts of the latest frame.
+int contact(lua_State* L) {
+  const auto contacts = worldOf(L).entity(checkEntity(L, 1)).contacts();
+  const int64_t i = lua::checkInteger(L, 2, 1, static_cast<int64_t>(contacts.size()) + 1);
+  if (i > static_cast<int64_t>(contacts.size())) return 0;
+  const physics::Contact& c = contacts[static_cast<size_t>(i - 1)];
+  const double nx = static_cast<double>(c.normal.x), ny = static_cast<double>(c.normal.y);
+  const double length = std::hypot(nx, ny);
+  lua_pushnumber(L, length > 0 ? nx / length : 0);
+  lua_pushnumber(L, length > 0 ? ny / length : 0);
+  lua_pushnumber(L, c.line.tag);
+  lua_pushstring(L, c.line.index == physics::kNoLine ? "entity" : kindName(c.line.kind));
+  lua_pushnumber(L, c.part);
+  lua_pushnumber(L, c.line.index);
+  pushEntity(L, c.other);
+  return 7;
+}
+
+int instanceCount(lua_State* L) {
+  lua_pushnumber(L, static_cast<double>(worldOf(L).entity(checkEntity(L, 1)).instanceCount()));
+  return 1;
+}
+
+// instance(e, i) -> part, x, y, angle in that part (degrees); i from 1 (the anchor).
+int instance(lua_State* L) {
+  const physics::EntityView e = worldOf(L).entity(checkEntity(L, 1));
+  const int64_t i = lua::checkInteger(L, 2, 1, static_cast<int64_t>(e.instanceCount()) + 1);
+  if (i > static_cast<int64_t>(e.instanceCount())) return 0;
+  const physics::InstanceView v = e.instance(static_cast<size_t>(i - 1));
+  lua_pushnumber(L, v.part);
+  lua_pushnumber(L, v.position.x);
+  lua_pushnumber(L, v.position.y);
+  lua_pushnumber(L, degrees(v.angle));
+  return 4;
+}
+
+int gravity(lua_State* L) {
+  const physics::Vec2w g = worldOf(L).mapPart(checkPart(L, 1)).gravity();
+  lua_pushnumber(L, static_cast<double>(g.x) / kQ16);
+  lua_pushnumber(L, static_cast<double>(g.y) / kQ16);
+  return 2;
+}
+
+int setGravity(lua_State* L) {
+  const physics::MapPartId part = checkPart(L, 1);
+  worldOf(L).mapPart(part).setGravity({toQ16(L, 2), toQ16(L, 3)});
+  return 0;
+}
+
+int addLine(lua_State* L, physics::LineKind kind) {
+  const physics::MapPartId part = checkPart(L, 1);
+  const physics::Vec2 a{checkInt32(L, 2), checkInt32(L, 3)}, b{checkInt32(L, 4), checkInt32(L, 5)};
+  const uint32_t tag = lua_isnoneornil(L, 6) ? 0 : checkUint32(L, 6);
+  physics::MapPart& map = worldOf(L).mapPart(part);
+  const physics::LineIndex index = kind == physics::LineKind::OneWay ? map.oneWay(a, b, tag) : map.line(a, b, tag);
+  lua_pushnumber(L, index);
+  return 1;
+}
+int line(lua_State* L) { return addLine(L, physics::LineKind::Solid); }
+int oneWay(lua_State* L) { return addLine(L, physics::LineKind::OneWay); }
+
+int lineCount(lua_State* L) {
+  lua_pushnumber(L, static_cast<double>(worldOf(L).mapPart(checkPart(L, 1)).lines().size()));
+  return 1;
+}
+
+// lineAt(part, i) -> x0, y0, x1, y1, tag, kind; i from 0, as the world counts lines.
+int lineAt(lua_State* L) {
+  const physics::MapPart& map = worldOf(L).mapPart(checkPart(L, 1));
+  const int64_t i = lua::checkInteger(L, 2, 0, static_cast<int64_t>(map.lines().size()) - 1);
+  const physics::Segment& s = map.segments()[static_cast<size_t>(i)];
+  lua_pushnumber(L, s.p0.x);
+  lua_pushnumber(L, s.p0.y);
+  lua_pushnumber(L, s.p1.x);
+  lua_pushnumber(L, s.p1.y);
+  lua_pushnumber(L, map.lines()[static_cast<size_t>(i)].tag);
+  lua_pushstring(L, kindName(map.lines()[static_cast<size_t>(i)].kind));
+  return 6;
+}
+
+int refreshPierce(lua_State* L) {
+  worldOf(L).refreshPierce(checkUint32(L, 1));
+  return 0;
+}
+
+// createPlatform(part, {x0, y0, x1, y1, ...}, tag, "solid" | "oneway") -> platform handle
+int createPlatform(lua_State* L) {
+  const physics::MapPartId part = checkPart(L, 1);
+  const std::vector<int32_t> xy = intList(L, 2);
+  if (xy.empty() || xy.size() % 4) throw lua::ArgError("createPlatform: lines as {x0, y0, x1, y1, ...}");
+  const uint32_t tag = lua_isnoneornil(L, 3) ? 0 : checkUint32(L, 3);
+  physics::LineKind kind = physics::LineKind::Solid;
+  if (!lua_isnoneornil(L, 4)) {
+    const std::string_view name = lua::checkString(L, 4);
+    if (name == "oneway") kind = physics::LineKind::OneWay;
+    else if (name != "solid") throw lua::ArgError("createPlatform: kind is \"solid\" or \"oneway\"");
+  }
+  std::vector<physics::PlatformLine> lines;
+  for (size_t i = 0; i < xy.size(); i += 4) lines.push_back({{{xy[i], xy[i + 1]}, {xy[i + 2], xy[i + 3]}}, tag, kind});
+  const physics::PlatformId id = worldOf(L).createPlatform(part, lines);
+  lua_pushnumber(L, static_cast<double>(id.index) + kIndexScale * static_cast<double>(id.generation));
+  return 1;
+}
+
+int setPlatformMotion(lua_State* L) {
+  const physics::PlatformId id = checkPlatform(L, 1);
+  worldOf(L).setPlatformMotion(id, {checkInt32(L, 2, -(1 << 20), 1 << 20), checkInt32(L, 3, -(1 << 20), 1 << 20)});
+  return 0;
+}
+
+int platformOffset(lua_State* L) {
+  const physics::PlatformView p = worldOf(L).platform(checkPlatform(L, 1));
+  lua_pushnumber(L, p.offset.x);
+  lua_pushnumber(L, p.offset.y);
+  return 2;
+}
+
+int destroyPlatform(lua_State* L) {
+  worldOf(L).destroyPlatform(checkPlatform(L, 1));
+  return 0;
+}
+
+int frame(lua_State* L) {
+  lua_pushnumber(L, static_cast<double>(worldOf(L).frame()));
+  return 1;
+}
+
+int stateHash(lua_State* L) {
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(worldOf(L).stateHash()));
+  lua_pushstring(L, text);
+  return 1;
+}
+
+int countOverlaps(lua_State* L) {
+  lua_pushnumber(L, static_cast<double>(worldOf(L).countOverlaps()));
+  return 1;
+}
+
+// The stage's faces: partCount() and face(i) -> part id, corners {x0, y0, ...} (i from 1).
+int faceCount(lua_State* L) {
+  const stage::SolidNet* net = contextOf(L).scene->stage();
+  lua_pushnumber(L, net ? static_cast<double>(net->parts.size()) : 0);
+  return 1;
+}
+
+int face(lua_State* L) {
+  const stage::SolidNet* net = contextOf(L).scene->stage();
+  const int64_t count = net ? static_cast<int64_t>(net->parts.size()) : 0;
+  const int64_t i = lua::checkInteger(L, 1, 1, count > 0 ? count : 1);
+  if (i > count) throw lua::ArgError("face: the scene has no stage");
+  const size_t f = static_cast<size_t>(i - 1);
+  lua_pushnumber(L, net->parts[f]);
+  lua_createtable(L, static_cast<int>(net->corners[f].size() * 2), 0);
+  int k = 1;
+  for (const physics::Vec2 c : net->corners[f]) {
+    lua_pushnumber(L, c.x);
+    lua_rawseti(L, -2, k++);
+    lua_pushnumber(L, c.y);
+    lua_rawseti(L, -2, k++);
+  }
+  return 2;
+}
+
+constexpr luaL_Reg kWorld[] = {
+    {"createEntity", lua::bound<createEntity>},
+    {"destroyEntity", lua::bound<destroyEntity>},
+    {"valid", lua::bound<valid>},
+    {"insert", lua::bound<insert>},
+    {"erase", lua::bound<erase>},
+    {"position", lua::bound<position>},
+    {"angle", lua::bound<angle>},
+    {"velocity", lua::bound<velocity>},
+    {"setVelocity", lua::bound<setVelocity>},
+    {"setAngularVelocity", lua::bound<setAngularVelocity>},
+    {"setGravityEnabled", lua::bound<setGravityEnabled>},
+    {"setFilter", lua::bound<setFilter>},
+    {"contactCount", lua::bound<contactCount>},
+    {"contact", lua::bound<contact>},
+    {"instanceCount", lua::bound<instanceCount>},
+    {"instance", lua::bound<instance>},
+    {"gravity", lua::bound<gravity>},
+    {"setGravity", lua::bound<setGravity>},
+    {"line", lua::bound<line>},
+    {"oneWay", lua::bound<oneWay>},
+    {"lineCount", lua::bound<lineCount>},
+    {"lineAt", lua::bound<lineAt>},
+    {"refreshPierce", lua::bound<refreshPierce>},
+    {"createPlatform", lua::bound<createPlatform>},
+    {"setPlatformMotion", lua::bound<setPlatformMotion>},
+    {"platformOffset", lua::bound<platformOffset>},
+    {"destroyPlatform", lua::bound<destroyPlatform>},
+    {"frame", lua::bound<frame>},
+    {"stateHash", lua::bound<stateHash>},
+    {"countOverlaps", lua::bound<countOverlaps>},
+    {"faceCount", lua::bound<faceCount>},
+    {"face", lua::bound<face>},
+    {nullptr, nullptr},
+};
+
+}  // namespace
+
+void setFunctions(lua_State* L, const luaL_Reg* functions, ScriptContext& context) {
+  for (; functions->name; ++functions) {
+    lua_pushlightuserdata(L, &context);
+    lua_pushcclosure(L, functions->func, 1);
+    lua_setfield(L, -2, functions->name);
+  }
+}
+
+void registerWorldApi(LuaHost& host, ScriptContext& context) {
+  lua_State* L = host.state();
+  lua::StackGuard guard(L);
+  host.pushApi();
+  lua_newtable(L);
+  setFunctions(L, kWorld, context);
+  lua_setfield(L, -2, "world");
+}
+
+}  // namespace platon::script

@@ -1,0 +1,251 @@
+// Every refusal of the sandbox, proved by the error a script gets, and the limits that stop a
+// runaway script: an endless loop (also one the JIT would compile), unbounded memory, pcall games.
+#include <gtest/gtest.h>
+
+#include <chrono>
+
+#include "lua_host.h"
+
+namespace platon::script {
+namespace {
+
+// Runs `code` as a sandboxed chunk named "mod.lua"; returns the error's message ("" if none).
+std::string runSandboxed(LuaHost& host, const std::string& code) {
+  try {
+    host.loadString(code, "@mod.lua", Trust::Sandboxed);
+    host.call(0, 0);
+  } catch (const ScriptError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::string runSandboxed(const std::string& code) {
+  LuaHost host;
+  return runSandboxed(host, code);
+}
+
+TEST(Sandbox, PlainLuaRuns) {
+  EXPECT_EQ(runSandboxed("local t = {} for i = 1, 100 do t[#t + 1] = string.format('%d', i) end "
+                         "assert(table.concat(t):sub(1, 3) == '123') assert(math.floor(2.5) == 2) "
+                         "assert(bit.band(6, 3) == 2) assert(type(os.time()) == 'number') "
+                         "local co = coroutine.wrap(function() coroutine.yield(1) end) assert(co() == 1)"),
+            "");
+}
+
+struct Refusal {
+  const char* code;
+  const char* message;  // a part of the error the script gets
+};
+
+class SandboxRefuses : public testing::TestWithParam<Refusal> {};
+
+TEST_P(SandboxRefuses, WithAClearError) {
+  const std::string error = runSandboxed(GetParam().code);
+  EXPECT_NE(error.find(GetParam().message), std::string::npos) << "code: " << GetParam().code << "\nerror: " << error;
+  EXPECT_EQ(error.rfind("mod.lua:", 0), 0u) << error;  // every error names the script's file:line
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Each, SandboxRefuses,
+    testing::Values(Refusal{"io.open('/etc/passwd')", "attempt to index global 'io' (a nil value)"},
+                    Refusal{"os.execute('true')", "attempt to call field 'execute' (a nil value)"},
+                    Refusal{"os.exit(1)", "attempt to call field 'exit' (a nil value)"},
+                    Refusal{"os.remove('x')", "attempt to call field 'remove' (a nil value)"},
+                    Refusal{"os.getenv('HOME')", "attempt to call field 'getenv' (a nil value)"},
+                    Refusal{"require('os')", "attempt to call global 'require' (a nil value)"},
+                    Refusal{"package.loadlib('libc.so.6', 'system')", "attempt to index global 'package'"},
+                    Refusal{"local ffi = ffi.C", "attempt to index global 'ffi' (a nil value)"},
+                    Refusal{"jit.off()", "attempt to index global 'jit' (a nil value)"},
+                    Refusal{"debug.getregistry()", "attempt to index global 'debug' (a nil value)"},
+                    Refusal{"load('return 1')", "attempt to call global 'load' (a nil value)"},
+                    Refusal{"loadstring('\\27LJ')", "attempt to call global 'loadstring' (a nil value)"},
+                    Refusal{"dofile('/etc/passwd')", "attempt to call global 'dofile' (a nil value)"},
+                    Refusal{"loadfile('x')", "attempt to call global 'loadfile' (a nil value)"},
+                    Refusal{"string.dump(print)", "attempt to call field 'dump' (a nil value)"},
+                    Refusal{"getfenv(0).x = 1", "attempt to call global 'getfenv' (a nil value)"},
+                    Refusal{"setfenv(1, {})", "attempt to call global 'setfenv' (a nil value)"},
+                    Refusal{"rawset(platon, 'x', 1)", "attempt to call global 'rawset' (a nil value)"},
+                    Refusal{"newproxy(true)", "attempt to call global 'newproxy' (a nil value)"},
+                    Refusal{"collectgarbage('stop')", "a sandbox may only ask for \"count\""},
+                    Refusal{"getmetatable('').__index = {}", "attempt to index a string value"},
+                    Refusal{"setmetatable(platon, {})", "cannot change a protected metatable"},
+                    Refusal{"platon.x = 1", "platon is read-only (tried to set x)"},
+                    Refusal{"string.find(string.rep('a', 5000), '.-.-.-b')", "pattern too costly"},
+                    Refusal{"for w in string.gmatch(string.rep('a', 20000), 'a*a*') do end", "pattern too costly"},
+                    Refusal{"module('x')", "attempt to call global 'module' (a nil value)"}));
+
+TEST(Sandbox, ChangesToTheSharedLibrariesStayInTheSandbox) {
+  LuaHost host;
+  EXPECT_EQ(runSandboxed(host, "string.upper = nil; math.floor = nil; table.insert = nil"), "");
+  EXPECT_EQ(runSandboxed(host, "assert(string.upper('a') == 'A'); assert(('a'):upper() == 'A'); "
+                               "assert(math.floor(1.5) == 1); table.insert({}, 1)"),
+            "");
+  // Trusted code sees its own libraries untouched too.
+  host.loadString("return string.upper('a'), math.floor(1.5)", "=trusted", Trust::Trusted);
+  host.call(0, 2);
+  EXPECT_STREQ(lua_tostring(host.state(), -2), "A");
+  lua_pop(host.state(), 2);
+}
+
+TEST(Sandbox, GlobalsOfOneSandboxAreNotAnothers) {
+  LuaHost host;
+  EXPECT_EQ(runSandboxed(host, "secret = 42"), "");
+  EXPECT_EQ(runSandboxed(host, "assert(secret == nil, 'leaked')"), "");
+}
+
+TEST(Sandbox, RandomIsTheSameSequenceEveryRun) {
+  LuaHost host;
+  EXPECT_EQ(runSandboxed(host, "math.randomseed(7) local a = math.random(1, 1000) math.randomseed(7) "
+                               "assert(a == math.random(1, 1000)) assert(a >= 1 and a <= 1000)"),
+            "");
+}
+
+TEST(Sandbox, BytecodeIsRefused) {
+  LuaHost host;
+  host.loadString("return string.dump(function() return 1 end)", "=trusted", Trust::Trusted);
+  host.call(0, 1);
+  size_t length = 0;
+  const char* bytes = lua_tolstring(host.state(), -1, &length);
+  const std::string bytecode(bytes, length);
+  lua_pop(host.state(), 1);
+  try {
+    host.loadString(bytecode, "@mod.luac", Trust::Sandboxed);
+    FAIL() << "bytecode loaded in a sandbox";
+  } catch (const ScriptError& e) {
+    EXPECT_NE(std::string(e.what()).find("mod.luac: a compiled (bytecode) chunk: sandboxed scripts load from text only"), std::string::npos) << e.what();
+  }
+}
+
+// --- runaway scripts ---
+
+LuaLimits shortBudget() {
+  LuaLimits limits;
+  limits.callNanoseconds = 50'000'000;  // 50 ms
+  return limits;
+}
+
+// Runs `code` sandboxed under a 50 ms budget and checks it is stopped in bounded time.
+void expectStoppedByBudget(const std::string& code) {
+  LuaHost host(shortBudget());
+  const auto start = std::chrono::steady_clock::now();
+  const std::string error = runSandboxed(host, code);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_NE(error.find("script stopped: it ran longer than its budget of 50 ms"), std::string::npos) << error;
+  EXPECT_EQ(error.rfind("mod.lua:", 0), 0u) << error;
+  EXPECT_LT(seconds, 5.0);
+  // The host is usable afterwards.
+  EXPECT_EQ(runSandboxed(host, "local x = 0 for i = 1, 1000 do x = x + i end assert(x == 500500)"), "");
+}
+
+TEST(Runaway, AnEndlessLoopIsStopped) { expectStoppedByBudget("while true do end"); }
+
+// The loop LuaJIT would compile after a few dozen iterations; compiled traces run no hooks. The
+// sandbox turns the JIT off for the chunk's functions, so the hook still sees it.
+TEST(Runaway, AHotNumericLoopIsStopped) {
+  expectStoppedByBudget("local x = 0 for i = 1, 1e15 do x = x + i * 0.5 end");
+}
+
+TEST(Runaway, ALoopInAFunctionItDefinedIsStopped) {
+  expectStoppedByBudget("local function spin(n) local s = 0 while n > 0 do s = s + n end return s end spin(1)");
+}
+
+TEST(Runaway, PcallCannotSwallowTheStop) {
+  expectStoppedByBudget("while true do pcall(function() while true do end end) end");
+  expectStoppedByBudget("while true do xpcall(function() while true do end end, function() while true do end end) end");
+  expectStoppedByBudget("xpcall(function() while true do end end, function(e) while true do end end)");
+}
+
+TEST(Runaway, XpcallHandlersStillWork) {
+  EXPECT_EQ(runSandboxed("local ok, m = xpcall(function(a) error('x' .. a, 0) end, function(e) return 'handled ' .. e end, 1) "
+                         "assert(not ok and m == 'handled x1', m) "
+                         "local ok2, a, b = xpcall(function(x, y) return x, y end, print, 1, nil) assert(ok2 and a == 1 and b == nil)"),
+            "");
+}
+
+TEST(Runaway, ALoopInsideACoroutineIsStopped) {
+  expectStoppedByBudget("local co = coroutine.wrap(function() while true do end end) co()");
+}
+
+TEST(Runaway, ALoopInAMetamethodIsStopped) {
+  expectStoppedByBudget("local t = setmetatable({}, {__index = function() while true do end end}) local _ = t.x");
+}
+
+// What the sandbox guards against, shown: trusted code's compiled loop runs no hook at all.
+TEST(Runaway, TrustedCompiledLoopsRunNoHooks) {
+  LuaHost host(shortBudget());
+  host.loadString("local x = 0 for i = 1, 3e8 do x = x + i end return x", "=trusted", Trust::Trusted);
+  const auto start = std::chrono::steady_clock::now();
+  host.call(0, 1);  // > 50 ms of work, yet no budget error: the JIT-compiled loop never sees the hook
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  lua_pop(host.state(), 1);
+  if (seconds < 0.05) GTEST_SKIP() << "machine too fast for the demonstration (" << seconds << " s)";
+}
+
+TEST(Runaway, UnboundedMemoryIsStopped) {
+  LuaLimits limits;
+  limits.memoryBytes = size_t{32} << 20;
+  LuaHost host(limits);
+  const std::string error = runSandboxed(host, "local t = {} while true do t[#t + 1] = string.rep('x', 1000) .. #t end");
+  EXPECT_NE(error.find("memory limit of 32 MB"), std::string::npos) << error;
+  EXPECT_LE(host.memoryUsed(), limits.memoryBytes);
+  EXPECT_EQ(runSandboxed(host, "local t = {} for i = 1, 1000 do t[i] = i end"), "");  // the garbage went
+}
+
+TEST(Runaway, OneHugeStringIsStopped) {
+  LuaLimits limits;
+  limits.memoryBytes = size_t{32} << 20;
+  LuaHost host(limits);
+  const std::string error = runSandboxed(host, "local s = string.rep('x', 1e9)");
+  EXPECT_NE(error.find("memory limit of 32 MB"), std::string::npos) << error;
+}
+
+TEST(Runaway, EndlessRecursionIsAnError) {
+  const std::string error = runSandboxed("local function f(n) return 1 + f(n + 1) end f(1)");
+  EXPECT_NE(error.find("stack overflow"), std::string::npos) << error;
+}
+
+// --- errors ---
+
+TEST(Errors, CarryFileLineAndTraceback) {
+  LuaHost host;
+  try {
+    host.loadString("local function inner()\n  error('boom')\nend\nlocal function outer() inner() end\nouter()\n",
+                    "@levels/x.lua", Trust::Sandboxed);
+    host.call(0, 0);
+    FAIL();
+  } catch (const ScriptError& e) {
+    EXPECT_STREQ(e.what(), "levels/x.lua:2: boom");
+    EXPECT_NE(e.traceback().find("levels/x.lua:4: in function 'outer'"), std::string::npos) << e.traceback();
+    EXPECT_EQ(e.traceback().rfind("stack traceback:", 0), 0u) << e.traceback();
+  }
+}
+
+TEST(Errors, SyntaxErrorsCarryFileLine) {
+  LuaHost host;
+  try {
+    host.loadString("local x = \nif", "@levels/y.lua", Trust::Sandboxed);
+    FAIL();
+  } catch (const ScriptError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("levels/y.lua:2:", 0), 0u) << e.what();
+  }
+}
+
+TEST(Errors, NonStringErrorObjectsAreReported) {
+  EXPECT_NE(runSandboxed("error({})").find("error object is a table value"), std::string::npos);
+  // No metamethod runs in the message handler (it may run inside the budget hook, where nothing
+  // could stop a looping __tostring).
+  EXPECT_NE(runSandboxed("error(setmetatable({}, {__tostring = function() while true do end end}))")
+                .find("error object is a table value"),
+            std::string::npos);
+}
+
+TEST(Errors, TheStackIsLeftAsItWas) {
+  LuaHost host;
+  const int top = lua_gettop(host.state());
+  for (int i = 0; i < 100; ++i) runSandboxed(host, "error('x')");
+  EXPECT_EQ(lua_gettop(host.state()), top);
+}
+
+}  // namespace
+}  // namespace platon::script
