@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "platon/core/scene.h"
+#include "run_command.h"
 
 using namespace platon;
 using physics::Vec2;
@@ -51,12 +52,14 @@ class Roller : public core::System {
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc > 1 && std::strcmp(argv[1], "run") == 0) return platon::app::runCommand(argc - 1, argv + 1);
   int frames = 3000;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--frames") == 0 && i + 1 < argc) {
       frames = std::atoi(argv[++i]);
     } else {
-      std::fprintf(stderr, "usage: %s [--frames N]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--frames N]      the headless demo\n"
+                           "       %s run [-j N] [--junit report.xml] scenario.lua...\n", argv[0], argv[0]);
       return 2;
     }
   }

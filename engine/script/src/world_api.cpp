@@ -293,10 +293,10 @@ int lineAt(lua_State* L) {
   const physics::MapPart& map = worldOf(L).mapPart(checkPart(L, 1));
   const int64_t i = lua::checkInteger(L, 2, 0, static_cast<int64_t>(map.lines().size()) - 1);
   const physics::Segment& s = map.segments()[static_cast<size_t>(i)];
-  lua_pushnumber(L, s.p0.x);
-  lua_pushnumber(L, s.p0.y);
-  lua_pushnumber(L, s.p1.x);
-  lua_pushnumber(L, s.p1.y);
+  lua_pushnumber(L, s.a.x);
+  lua_pushnumber(L, s.a.y);
+  lua_pushnumber(L, s.b.x);
+  lua_pushnumber(L, s.b.y);
   lua_pushnumber(L, map.lines()[static_cast<size_t>(i)].tag);
   lua_pushstring(L, kindName(map.lines()[static_cast<size_t>(i)].kind));
   return 6;

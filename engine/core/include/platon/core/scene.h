@@ -5,6 +5,7 @@
 #include <optional>
 #include <vector>
 
+#include "platon/core/manifest.h"
 #include "platon/core/system.h"
 #include "platon/physics/world.h"
 #include "platon/stage/solid_net.h"
@@ -20,9 +21,14 @@ class Scene {
   void setStage(stage::SolidNet net) { stage_ = std::move(net); }
   const stage::SolidNet* stage() const { return stage_ ? &*stage_ : nullptr; }
 
+  // The manifest the scene was loaded from (empty for scenes built in code).
+  const SceneManifest& manifest() const { return manifest_; }
+  void setManifest(SceneManifest manifest) { manifest_ = std::move(manifest); }
+
   // Systems run in the order they were added.
   void addSystem(std::unique_ptr<System> system);
   size_t systemCount() const { return systems_.size(); }
+  System& system(size_t index) { return *systems_.at(index); }
 
   // One fixed frame.
   physics::SolveReport step(const InputFrame& input);
@@ -31,9 +37,16 @@ class Scene {
   void draw(DrawList& out) const;
 
  private:
+  SceneManifest manifest_;
   physics::World world_;
   std::optional<stage::SolidNet> stage_;
   std::vector<std::unique_ptr<System>> systems_;
 };
+
+// Loads a scene from its manifest: builds the stage, creates the systems the manifest names that
+// `registry` knows (the others are left out: a headless run registers no renderer), lets them
+// build the level, initializes the faces and starts the systems. Throws std::runtime_error with
+// file:line:column for a bad manifest and the systems' own errors for the rest.
+std::unique_ptr<Scene> loadScene(const std::string& manifestPath, const SystemRegistry& registry);
 
 }  // namespace platon::core

@@ -19,6 +19,10 @@ class Scene;
 class System {
  public:
   virtual ~System() = default;
+  // Once, after the stage's faces exist and before they are initialized: add the level's lines.
+  virtual void build(Scene& scene) { (void)scene; }
+  // Once, after the faces are initialized: place the player and the level's entities.
+  virtual void start(Scene& scene) { (void)scene; }
   // Before the physics step: turn input into velocities, run level logic.
   virtual void beforeStep(Scene& scene, const InputFrame& input) { (void)scene, (void)input; }
   // After the physics step: react to where things ended up.

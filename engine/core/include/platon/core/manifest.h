@@ -1,0 +1,54 @@
+// A scene manifest: a Lua table literal that names what a scene needs. It is data, read here in
+// C++ without a Lua state (a scene with no scripts never creates one): `return { ... }` with
+// strings, numbers, booleans and nested tables, `--` comments. Anything else (a function call, an
+// expression, a variable) is an error at file:line:column. docs/scripting.md documents the fields.
+#pragma once
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace platon::core {
+
+struct DataValue;
+using DataTable = std::vector<std::pair<std::string, DataValue>>;  // keys in file order; list items "1", "2", ...
+
+struct DataValue {
+  std::variant<std::monostate, bool, double, std::string, std::shared_ptr<DataTable>> value;
+  int line = 0, column = 0;  // where it was written
+
+  const DataTable* table() const;
+  const std::string* string() const;
+  const double* number() const;
+  const bool* boolean() const;
+  const DataValue* field(std::string_view key) const;  // nullptr when absent or not a table
+};
+
+// Parses `text` (the file's contents); throws std::runtime_error "file:line:column: reason".
+DataValue parseDataFile(std::string_view text, const std::string& fileName);
+
+struct SceneManifest {
+  std::string path;       // the manifest file
+  std::string directory;  // its folder: level-relative paths resolve here
+  std::string name;
+  std::vector<std::string> systems;  // "scripting", "rendering", "meshes", "audio"
+  std::string solid = "cube";        // tetrahedron | cube (octahedron, dodecahedron, icosahedron with the stages issue)
+  int32_t edge = 4096;               // face edge, units
+  double gravity = 0.35;             // units per frame per frame, along each face's -y
+  // Scripts: "scripts/..." names an engine script (trusted); any other path is the level's own,
+  // relative to the manifest, and runs sandboxed.
+  std::string rules, player, progression, level;
+  std::vector<std::string> mods;
+  size_t memoryMegabytes = 128;
+  double callMilliseconds = 250;
+  uint32_t seed = 1;
+
+  bool needs(std::string_view system) const;
+};
+
+// Reads and checks a manifest file; throws std::runtime_error "file:line:column: reason".
+SceneManifest loadManifest(const std::string& path);
+
+}  // namespace platon::core

@@ -1,0 +1,52 @@
+// The scripting system: one LuaJIT state per scene, created only for scenes whose manifest lists
+// "scripting". It loads the scene's scripts (scripts/scene.lua drives them): the rules, the
+// player, the progression, the level script and mods, and runs them each frame.
+#pragma once
+#include <memory>
+#include <string>
+
+#include "platon/core/scene.h"
+#include "platon/script/script_error.h"
+
+namespace platon::script {
+
+// The game's state as the scripts keep it: what scenarios check and the HUD shows.
+struct GameStatus {
+  bool won = false;
+  uint64_t wonFrame = 0;  // the frame the goal was reached (0: not yet)
+  int deaths = 0;
+  physics::MapPartId face = 0;  // the player's face (its anchor's part)
+  int32_t x = 0, y = 0;         // the player's position on it
+  std::string message;          // the latest level message
+};
+
+class ScriptSystem final : public core::System {
+ public:
+  // root: the folder that holds scripts/ (engine scripts are found there).
+  ScriptSystem(core::Scene& scene, std::string root);
+  ~ScriptSystem() override;
+
+  void build(core::Scene& scene) override;
+  void start(core::Scene& scene) override;
+  void beforeStep(core::Scene& scene, const core::InputFrame& input) override;
+  void afterStep(core::Scene& scene) override;
+  void draw(const core::Scene& scene, core::DrawList& out) const override;
+
+  GameStatus status() const;
+  // Runs `code` as trusted Lua in the scene's state with `game` and `platon` visible; for
+  // scenarios' checks. Returns its first result converted to a string ("" for nil).
+  std::string evaluate(const std::string& code, const std::string& chunkName);
+  size_t luaMemoryBytes() const;
+
+  struct State;  // the Lua state and what the bindings reach (script_system.cpp)
+
+ private:
+  std::unique_ptr<State> state_;
+};
+
+// The registry's factory for "scripting": finds the engine's scripts under PLATON_ROOT, or the
+// source tree the engine was built from.
+std::unique_ptr<core::System> makeScriptSystem(core::Scene& scene);
+std::string engineRoot();
+
+}  // namespace platon::script

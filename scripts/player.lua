@@ -1,0 +1,80 @@
+-- The player (trusted): a small sphere that walks, jumps and falls along its face's "down".
+-- Velocities are in units per frame; the face's gravity gives "down", so when the player crosses
+-- onto another face (and the world turns its velocity into that face's frame), down turns too.
+local game = ...
+local world = platon.world
+local sqrt = math.sqrt
+
+local Player = {}
+Player.__index = Player
+
+Player.RADIUS = 96          -- units
+Player.WALK_SPEED = 9       -- units per frame
+Player.GROUND_ACCEL = 0.6   -- per frame, towards the walk speed
+Player.GROUND_BRAKE = 0.9   -- per frame, towards standing still with no input
+Player.AIR_ACCEL = 0.35
+Player.JUMP_SPEED = 11      -- units per frame, straight up from the face's down
+Player.JUMP_CUT = 4         -- releasing jump while rising caps the upward speed here
+Player.COYOTE_FRAMES = 6    -- a jump still works this long after leaving a ledge
+Player.BUFFER_FRAMES = 6    -- a jump pressed this long before landing happens on landing
+Player.GROUND_COS = 0.64    -- a contact whose normal is within ~50 degrees of up is ground
+
+function Player.spawn(_, face, x, y)
+  local e = world.createEntity { circle = Player.RADIUS, sides = 16 }
+  world.insert(e, face, x, y, 0)
+  return setmetatable({ entity = e, coyote = 0, buffer = 0, grounded = false }, Player)
+end
+
+local function approach(value, target, step)
+  if value < target then return math.min(value + step, target) end
+  return math.max(value - step, target)
+end
+
+function Player.tick(self, input)
+  local e = self.entity
+  local part = world.position(e)
+  local gx, gy = world.gravity(part)
+  local g = sqrt(gx * gx + gy * gy)
+  local dx, dy = 0, -1  -- down
+  if g > 0 then dx, dy = gx / g, gy / g end
+  local rx, ry = -dy, dx  -- right
+
+  self.grounded = false
+  for i = 1, world.contactCount(e) do
+    local nx, ny = world.contact(e, i)
+    if -(nx * dx + ny * dy) > Player.GROUND_COS then self.grounded = true end
+  end
+  if self.grounded then self.coyote = Player.COYOTE_FRAMES elseif self.coyote > 0 then self.coyote = self.coyote - 1 end
+  if input.pressed.jump then self.buffer = Player.BUFFER_FRAMES elseif self.buffer > 0 then self.buffer = self.buffer - 1 end
+
+  local vx, vy = world.velocity(e)
+  local along = vx * rx + vy * ry
+  local fall = vx * dx + vy * dy  -- > 0: falling
+
+  local dir = (input.right and 1 or 0) - (input.left and 1 or 0)
+  local accel = self.grounded and Player.GROUND_ACCEL or Player.AIR_ACCEL
+  if dir ~= 0 then
+    along = approach(along, dir * Player.WALK_SPEED, accel)
+  elseif self.grounded then
+    along = approach(along, 0, Player.GROUND_BRAKE)
+  end
+
+  if self.buffer > 0 and self.coyote > 0 then
+    fall = -Player.JUMP_SPEED
+    self.buffer, self.coyote = 0, 0
+  elseif not input.jump and fall < -Player.JUMP_CUT then
+    fall = -Player.JUMP_CUT
+  end
+
+  world.setVelocity(e, rx * along + dx * fall, ry * along + dy * fall)
+end
+
+function Player.draw(self, draw)
+  if not draw.enabled() then return end
+  for i = 1, world.instanceCount(self.entity) do
+    local part, x, y = world.instance(self.entity, i)
+    draw.circle(part, x, y, Player.RADIUS, 0xf2c14e)
+  end
+end
+
+return Player

@@ -1,0 +1,44 @@
+-- The game's contact rules (trusted). Line tags:
+--   0          plain solid wall or floor
+--   1          hazard: touching it kills the player
+--   2          goal: a trigger line (passable); the player entering it wins
+--   3          checkpoint: a trigger line; entering it moves the restart point there
+--   1000 + n   door n: solid while switch n is off, open while it is on
+--   2000 + n   switch n: a trigger line; entering it toggles switch n
+-- Warp lines (the solid's edges) always pierce. One-way lines are a line kind, not a tag.
+local game = ...
+local HAZARD, GOAL, CHECKPOINT = 1, 2, 3
+local DOOR, SWITCH = 1000, 2000
+
+local function isPlayer(entity) return game.player ~= nil and entity == game.player.entity end
+
+local rules = {}
+
+function rules.pierce(entity, tag, kind)
+  if kind == "warp" then return true end
+  if tag == GOAL or tag == CHECKPOINT then return true end
+  if tag >= SWITCH and tag < SWITCH + 1000 then return true end
+  if tag >= DOOR and tag < DOOR + 1000 then return game.switches[tag - DOOR] == true end
+  return false
+end
+
+function rules.beginContact(entity, tag, kind, part)
+  if not isPlayer(entity) then return end
+  if tag == GOAL then
+    game.reachedGoal = true
+  elseif tag == CHECKPOINT then
+    game.touchedCheckpoint = true
+  elseif tag >= SWITCH and tag < SWITCH + 1000 then
+    game.pendingToggles[#game.pendingToggles + 1] = tag - SWITCH
+  end
+end
+
+function rules.contact(entity, tag)
+  if tag == HAZARD and isPlayer(entity) then game.killed = true end
+end
+
+function rules.crushed(entity)
+  if isPlayer(entity) then game.killed = true end
+end
+
+return rules
