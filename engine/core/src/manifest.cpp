@@ -108,6 +108,7 @@ class DataReader {
     int nextIndex = 1;
     for (;;) {
       skipSpace();
+      if (pos_ >= text_.size()) fail("unexpected end of file (a '}' is missing)");
       if (peek() == '}') {
         advance();
         return t;
@@ -151,6 +152,8 @@ class DataReader {
       skipSpace();
       if (peek() == ',' || peek() == ';') {
         advance();
+      } else if (pos_ >= text_.size()) {
+        fail("unexpected end of file (a '}' is missing)");
       } else if (peek() != '}') {
         fail("expected ',' or '}'");
       }

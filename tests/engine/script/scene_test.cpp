@@ -1,0 +1,231 @@
+// Scenes from manifests: what they load and what they leave out, script errors with file:line,
+// and scenarios that pass and fail.
+#include <gtest/gtest.h>
+
+#include <dlfcn.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "platon/core/scene.h"
+#include "platon/script/scenario.h"
+#include "platon/script/script_system.h"
+
+namespace platon::script {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A folder of its own under the build tree, with files written on demand.
+class Folder {
+ public:
+  explicit Folder(const std::string& name) : path_(fs::temp_directory_path() / ("platon_" + name)) {
+    fs::remove_all(path_);
+    fs::create_directories(path_);
+  }
+  ~Folder() { fs::remove_all(path_); }
+  std::string write(const std::string& file, const std::string& text) const {
+    std::ofstream(path_ / file) << text;
+    return (path_ / file).string();
+  }
+
+ private:
+  fs::path path_;
+};
+
+std::string manifestError(const std::string& text) {
+  Folder folder("manifest");
+  const std::string path = folder.write("scene.lua", text);
+  try {
+    core::loadManifest(path);
+  } catch (const std::runtime_error& e) {
+    const std::string message = e.what();
+    return message.substr(message.find("scene.lua"));
+  }
+  return "";
+}
+
+TEST(Manifest, ErrorsNameFileLineColumn) {
+  EXPECT_EQ(manifestError("return {\n  name = 'x',\n  gravity = os.time(),\n}"),
+            "scene.lua:3:13: 'os': a manifest holds only strings, numbers, booleans and tables");
+  EXPECT_EQ(manifestError("return { stage = { solid = 'torus' } }"),
+            "scene.lua:1:28: unknown solid 'torus' (known: tetrahedron, cube)");
+  EXPECT_EQ(manifestError("return { systems = { 'scripting' }, scripts = { level = '../../etc/passwd.lua' } }"),
+            "scene.lua:1:57: '../../etc/passwd.lua': a script is a .lua path inside the level's folder or under "
+            "scripts/ (no '..', not absolute)");
+  EXPECT_EQ(manifestError("return { scripts = { level = 'level.lua' } }"),
+            "scene.lua:1:20: the scene has scripts but does not list \"scripting\" in its systems");
+  EXPECT_EQ(manifestError("return { name = 'a', name = 'b' }"), "scene.lua:1:22: 'name' is given twice");
+  EXPECT_EQ(manifestError("return { gravity = 1e999 }"), "scene.lua:1:20: '1e999' is not a number");
+  EXPECT_EQ(manifestError("return { colour = 3 }").substr(0, 40), "scene.lua:1:19: unknown field 'colour' (");
+  EXPECT_EQ(manifestError("return { name = 'x'"), "scene.lua:1:20: unexpected end of file (a '}' is missing)");
+  EXPECT_EQ(manifestError("return { name = 'unfinished }"), "scene.lua:1:30: unfinished string");
+}
+
+TEST(Manifest, AcceptsCommentsAndListsSystems) {
+  Folder folder("manifest_ok");
+  const std::string path = folder.write("scene.lua",
+                                        "-- a comment\nreturn {\n  name = \"A\", --[[ block ]] systems = { 'scripting', "
+                                        "'rendering' },\n  scripts = { player = 'scripts/player.lua', level = 'l.lua' },\n}\n");
+  const core::SceneManifest m = core::loadManifest(path);
+  EXPECT_EQ(m.name, "A");
+  EXPECT_TRUE(m.needs("scripting"));
+  EXPECT_TRUE(m.needs("rendering"));
+  EXPECT_FALSE(m.needs("meshes"));
+  EXPECT_EQ(m.player, "scripts/player.lua");
+  EXPECT_EQ(m.level, m.directory + "/l.lua");
+}
+
+TEST(Systems, ASceneWithoutScriptsCreatesNoLuaState) {
+  Folder folder("no_scripts");
+  const std::string path = folder.write("scene.lua", "return { name = 'bare', stage = { solid = 'cube' } }");
+  int created = 0;
+  core::SystemRegistry registry;
+  registry.add("scripting", [&](core::Scene& scene) {
+    ++created;
+    return makeScriptSystem(scene);
+  });
+  const auto scene = core::loadScene(path, registry);
+  EXPECT_EQ(created, 0);
+  EXPECT_EQ(scene->systemCount(), 0u);
+  for (int i = 0; i < 60; ++i) scene->step({});
+  EXPECT_EQ(created, 0);
+}
+
+TEST(Systems, AHeadlessScenarioMapsNoGraphicsOrMeshLibraries) {
+  const ScenarioResult r = runScenario(std::string(PLATON_SOURCE_ROOT) + "/tests/scenarios/cube_intro_walk.lua");
+  ASSERT_TRUE(r.passed) << r.message;
+  std::ifstream maps("/proc/self/maps");
+  std::stringstream text;
+  text << maps.rdbuf();
+  for (const char* library : {"libGL", "libEGL", "libSDL2", "libassimp", "libGLX"})
+    EXPECT_EQ(text.str().find(library), std::string::npos) << library << " is mapped in a headless run";
+}
+
+// A level folder with a manifest whose rules, player or level scripts are the test's.
+std::string levelWith(const Folder& folder, const std::string& levelScript, const std::string& rules = "") {
+  folder.write("level.lua", levelScript);
+  if (!rules.empty()) folder.write("rules.lua", rules);
+  return folder.write("scene.lua", "return { systems = { 'scripting' }, gravity = 0.35, scripts = { player = "
+                                   "'scripts/player.lua', progression = 'scripts/progression.lua', level = 'level.lua', "
+                                   "rules = " +
+                                       std::string(rules.empty() ? "'scripts/rules/game.lua'" : "'rules.lua'") + " } }");
+}
+
+const char* kFloorLevel =
+    "local level = { start = { face = 0, x = 600, y = 700 } }\n"
+    "function level.build(game) for i = 1, game.world.faceCount() do game.world.line(game.world.face(i), 0, 512, 4096, 512) end end\n"
+    "return level\n";
+
+std::string scenarioFor(const Folder& folder, const std::string& scene, const std::string& body) {
+  return folder.write("scenario.lua", "return { scene = '" + scene + "', " + body + " }");
+}
+
+TEST(Scripts, AnErrorInARuleCallbackNamesItsLineAndTheWorldStaysWhole) {
+  Folder folder("rule_error");
+  const std::string scene = levelWith(folder, kFloorLevel,
+                                      "local game = ...\nlocal rules = {}\nfunction rules.contact(e, tag)\n"
+                                      "  error('rule broke on tag ' .. tag)\nend\nreturn rules\n");
+  const ScenarioResult r = runScenario(scenarioFor(folder, scene, "frames = 120"));
+  EXPECT_FALSE(r.passed);
+  EXPECT_NE(r.message.find("rules.lua:4: rule broke on tag 0"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("stack traceback:"), std::string::npos) << r.message;
+}
+
+TEST(Scripts, AStaleEntityHandleIsALuaError) {
+  Folder folder("stale");
+  const std::string scene =
+      levelWith(folder,
+                "local level = { start = { face = 0, x = 600, y = 700 } }\n"
+                "function level.tick(game, frame)\n"
+                "  if frame == 2 then\n"
+                "    local e = game.world.createEntity { circle = 10 }\n"
+                "    game.world.destroyEntity(e)\n"
+                "    game.world.velocity(e)\n"
+                "  end\n"
+                "end\nreturn level\n");
+  const ScenarioResult r = runScenario(scenarioFor(folder, scene, "frames = 10"));
+  EXPECT_FALSE(r.passed);
+  EXPECT_NE(r.message.find("level.lua:6: argument 1: stale entity handle"), std::string::npos) << r.message;
+}
+
+TEST(Scripts, WrongTypesAndRangesAreLuaErrors) {
+  Folder folder("types");
+  const std::string scene = levelWith(folder,
+                                      "local level = { start = { face = 0, x = 600, y = 700 } }\n"
+                                      "function level.tick(game, frame)\n"
+                                      "  game.world.line(0, 'a', 0, 1, 1)\n"
+                                      "end\nreturn level\n");
+  const ScenarioResult r = runScenario(scenarioFor(folder, scene, "frames = 10"));
+  EXPECT_NE(r.message.find("level.lua:3: argument 2: expected a number, got string"), std::string::npos) << r.message;
+  const std::string scene2 = levelWith(folder,
+                                       "local level = { start = { face = 0, x = 600, y = 700 } }\n"
+                                       "function level.tick(game, frame)\n"
+                                       "  game.world.line(0, 0.5, 0, 1, 1)\n"
+                                       "end\nreturn level\n");
+  const ScenarioResult r2 = runScenario(scenarioFor(folder, scene2, "frames = 10"));
+  EXPECT_NE(r2.message.find("level.lua:3: argument 2: expected an integer in [-2147483648, 2147483647]"),
+            std::string::npos)
+      << r2.message;
+}
+
+TEST(Scripts, ALevelScriptCannotReachTheMachine) {
+  Folder folder("escape");
+  const std::string scene = levelWith(folder, "io.open('/tmp/platon_pwned', 'w')\nreturn {}\n");
+  const ScenarioResult r = runScenario(scenarioFor(folder, scene, "frames = 1"));
+  EXPECT_FALSE(r.passed);
+  EXPECT_NE(r.message.find("level.lua:1: attempt to index global 'io' (a nil value)"), std::string::npos) << r.message;
+  EXPECT_FALSE(fs::exists("/tmp/platon_pwned"));
+}
+
+TEST(Scenarios, AHazardKillsAndTheGoalWins) {
+  Folder folder("hazard");
+  const std::string scene =
+      levelWith(folder,
+                "local level = { start = { face = 0, x = 600, y = 700 } }\n"
+                "function level.build(game)\n"
+                "  local w = game.world\n"
+                "  w.line(0, 0, 512, 4096, 512)\n"
+                "  w.line(0, 1500, 512, 1500, 600, 1)\n"  // a low hazard post on the floor
+                "  w.line(0, 3000, 520, 3000, 3000, 2)\n"  // the goal beyond it
+                "end\nreturn level\n");
+  // Walking right runs into the hazard: one death, back at the start, no goal.
+  const ScenarioResult dies = runScenario(scenarioFor(
+      folder, scene, "frames = 200, input = { { hold = 'right', from = 1, to = 200 } }, expect = { deaths = 1 }"));
+  EXPECT_TRUE(dies.passed) << dies.message;
+  // Jumping over it reaches the goal.
+  const ScenarioResult wins = runScenario(
+      scenarioFor(folder, scene,
+                  "frames = 600, input = { { hold = 'right', from = 1, to = 600 }, { press = 'jump', at = 85, frames = 30 } },"
+                  " expect = { goal_by = 600, deaths = 0 }"));
+  EXPECT_TRUE(wins.passed) << wins.message;
+}
+
+TEST(Scenarios, FailWhenTheirExpectationsDoNotHold) {
+  const std::string walk = std::string(PLATON_SOURCE_ROOT) + "/tests/scenarios/cube_intro_walk.lua";
+  Folder folder("expect");
+  const std::string scene = std::string(PLATON_SOURCE_ROOT) + "/levels/cube_intro/scene.lua";
+  const ScenarioResult early = runScenario(scenarioFor(
+      folder, scene, "frames = 400, input = { { hold = 'right', from = 1, to = 400 } }, expect = { goal_by = 100 }"));
+  EXPECT_FALSE(early.passed);
+  EXPECT_NE(early.message.find("goal not reached by frame 100"), std::string::npos) << early.message;
+  const ScenarioResult hash = runScenario(scenarioFor(folder, scene, "frames = 10, expect = { hash = { [5] = '0000' } }"));
+  EXPECT_FALSE(hash.passed);
+  EXPECT_NE(hash.message.find("frame 5: state hash"), std::string::npos) << hash.message;
+  const ScenarioResult face = runScenario(scenarioFor(folder, scene, "frames = 10, expect = { face = { [5] = 3 } }"));
+  EXPECT_NE(face.message.find("frame 5: player on face 0, expected face 3"), std::string::npos) << face.message;
+  const ScenarioResult bad = runScenario(scenarioFor(folder, scene, "frames = 10, input = { { hold = 'fly', from = 1, to = 2 } }"));
+  EXPECT_NE(bad.message.find("input[1]: unknown button"), std::string::npos) << bad.message;
+}
+
+TEST(Scenarios, TheSameRunGivesTheSameHash) {
+  const std::string walk = std::string(PLATON_SOURCE_ROOT) + "/tests/scenarios/cube_intro_walk.lua";
+  const ScenarioResult a = runScenario(walk), b = runScenario(walk);
+  ASSERT_TRUE(a.passed) << a.message;
+  EXPECT_EQ(a.hash, b.hash);
+  EXPECT_EQ(a.frames, b.frames);
+}
+
+}  // namespace
+}  // namespace platon::script
