@@ -80,13 +80,6 @@ constexpr luaL_Reg kDraw[] = {
 
 }  // namespace
 
-void registerDrawApi(LuaHost& host, ScriptContext& context) {
-  lua_State* L = host.state();
-  lua::StackGuard guard(L);
-  host.pushApi();
-  lua_newtable(L);
-  setFunctions(L, kDraw, context);
-  lua_setfield(L, -2, "draw");
-}
+void registerDrawApi(LuaHost& host, ScriptContext& context) { addApiTable(host, context, "draw", kDraw); }
 
 }  // namespace platon::script

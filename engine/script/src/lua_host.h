@@ -42,10 +42,9 @@ class LuaHost {
   lua_State* state() const { return L_; }
 
   // Compiles a file or a string and pushes the chunk as a function; throws ScriptError with the
-  // syntax error's file:line. Sandboxed: text only (bytecode is refused), the environment is a new
-  // sandbox (also pushed below the chunk? no: set as the chunk's environment), the JIT off for the
-  // chunk and every function inside it. `sandbox` is the stack index of the environment table to
-  // use (0: a fresh one from newSandbox()).
+  // syntax error's file:line. Sandboxed: text only (bytecode is refused), the chunk's environment
+  // is the sandbox table at stack index `sandbox` (0: a fresh one from newSandbox()), and the JIT
+  // is off for the chunk and every function inside it.
   void loadFile(const std::string& path, Trust trust, int sandbox = 0);
   void loadString(std::string_view code, const std::string& chunkName, Trust trust, int sandbox = 0);
 

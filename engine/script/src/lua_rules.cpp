@@ -7,12 +7,7 @@ namespace {
 
 constexpr const char* kNames[] = {"pierce", "beginContact", "overContact", "endContact",
                                   "contact", "touchContact", "crushed"};
-constexpr double kIndexScale = 16777216.0;  // as world_api.cpp: index + 2^24 * generation
-
-void pushEntity(lua_State* L, physics::EntityId id) {
-  if (!id.isSet()) return lua_pushnil(L);
-  lua_pushnumber(L, static_cast<double>(id.index) + kIndexScale * static_cast<double>(id.generation));
-}
+using lua::pushEntity;
 
 }  // namespace
 

@@ -3,16 +3,12 @@
 // wrapped by `bound<F>`, so no C++ exception ever crosses into Lua and no Lua error unwinds
 // through a C++ frame that holds a live object: checks throw ArgError inside the try block,
 // the wrapper leaves it, and only then raises the Lua error.
-//
-// Handles cross as numbers: an EntityId is index + 2^32 * (generation mod 2^21), exact in a
-// double. A handle kept across 2^21 reuses of the same slot would alias; the physics world hands
-// slots out again only after every other free one, so that takes 2^21 destroy/create cycles of a
-// full world.
 #pragma once
 #include <lua.hpp>
 
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -77,32 +73,39 @@ inline void checkFunction(lua_State* L, int index) {
   if (lua_type(L, index) != LUA_TFUNCTION) argError(L, index, "a function");
 }
 
-constexpr uint32_t kGenerationBits = 21;
-constexpr uint32_t kGenerationMask = (1u << kGenerationBits) - 1;
+// Entity and platform handles as Lua numbers: index + 2^24 * generation, exact in a double while
+// the index stays below 2^24 and the generation below 2^29 (a slot reused 536 million times);
+// beyond that pushing the handle is an error, never a wrong handle.
+constexpr double kHandleIndexScale = 16777216.0;
 
-inline double handleNumber(uint32_t index, uint32_t generation) {
-  return static_cast<double>(index) + 4294967296.0 * static_cast<double>(generation & kGenerationMask);
+struct HandleBits {
+  uint32_t index = UINT32_MAX;
+  uint32_t generation = 0;
+};
+
+inline void pushHandle(lua_State* L, uint32_t index, uint32_t generation) {
+  if (index >= (1u << 24) || generation >= (1u << 29))
+    throw ArgError("handle out of the range Lua numbers hold exactly");
+  lua_pushnumber(L, static_cast<double>(index) + kHandleIndexScale * static_cast<double>(generation));
 }
 
 inline void pushEntity(lua_State* L, physics::EntityId id) {
   if (!id.isSet()) return lua_pushnil(L);
-  lua_pushnumber(L, handleNumber(id.index, id.generation));
+  pushHandle(L, id.index, id.generation);
 }
 
-// The handle as Lua holds it: only the generation's low bits, which the world's own check must
-// complete (see World-side lookups in world_api.cpp).
-struct HandleBits {
-  uint32_t index = 0;
-  uint32_t generationLow = 0;
-};
+// The handle's parts, or nothing when the value is not a handle number at all.
+inline std::optional<HandleBits> toHandle(lua_State* L, int index) {
+  const double value = lua_type(L, index) == LUA_TNUMBER ? lua_tonumber(L, index) : -1;
+  if (!(value >= 0) || value != std::floor(value) || value >= 9007199254740992.0) return std::nullopt;
+  const auto bits = static_cast<uint64_t>(value);
+  return HandleBits{static_cast<uint32_t>(bits % (1u << 24)), static_cast<uint32_t>(bits >> 24)};
+}
 
 inline HandleBits checkHandle(lua_State* L, int index, std::string_view what) {
-  if (lua_type(L, index) != LUA_TNUMBER) argError(L, index, std::string(what) + " handle");
-  const double value = lua_tonumber(L, index);
-  if (!(value >= 0) || value != std::floor(value) || value >= 9007199254740992.0)
-    argError(L, index, std::string(what) + " handle");
-  const auto bits = static_cast<uint64_t>(value);
-  return {static_cast<uint32_t>(bits & 0xffffffffu), static_cast<uint32_t>(bits >> 32)};
+  const std::optional<HandleBits> handle = toHandle(L, index);
+  if (!handle) argError(L, index, std::string(what) + " handle");
+  return *handle;
 }
 
 // Wraps `F(lua_State*) -> int` (results pushed) as a lua_CFunction: a C++ exception becomes a Lua

@@ -23,8 +23,8 @@ inline ScriptContext& contextOf(lua_State* L) {
 void registerWorldApi(LuaHost& host, ScriptContext& context);
 void registerDrawApi(LuaHost& host, ScriptContext& context);
 
-// Adds the functions of `functions` (name, C function; ends with {nullptr, nullptr}) to the table
-// at the top of the stack, each with `context` as its upvalue.
-void setFunctions(lua_State* L, const luaL_Reg* functions, ScriptContext& context);
+// Sets platon.<name> in the API table to a table of `functions` (ends with {nullptr, nullptr}),
+// each with `context` as its upvalue.
+void addApiTable(LuaHost& host, ScriptContext& context, const char* name, const luaL_Reg* functions);
 
 }  // namespace platon::script

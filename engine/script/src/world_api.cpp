@@ -18,33 +18,22 @@ using physics::EntityId;
 using physics::World;
 
 constexpr double kQ16 = 65536.0;
-// Entity handles as Lua numbers: index + 2^24 * generation, exact in a double while the generation
-// stays below 2^29 (a slot reused 536 million times); beyond that pushing the handle is an error.
-constexpr double kIndexScale = 16777216.0;
 
 World& worldOf(lua_State* L) { return contextOf(L).scene->world(); }
 
-void pushEntity(lua_State* L, EntityId id) {
-  if (!id.isSet()) return lua_pushnil(L);
-  if (id.index >= (1u << 24) || id.generation >= (1u << 29))
-    throw lua::ArgError("entity handle out of the range Lua numbers hold exactly");
-  lua_pushnumber(L, static_cast<double>(id.index) + kIndexScale * static_cast<double>(id.generation));
-}
+using lua::pushEntity;
 
 EntityId checkEntity(lua_State* L, int index) {
-  const double value = lua_type(L, index) == LUA_TNUMBER ? lua_tonumber(L, index) : -1;
-  if (!(value >= 0) || value != std::floor(value) || value >= 9007199254740992.0)
-    lua::argError(L, index, "an entity handle");
-  const auto bits = static_cast<uint64_t>(value);
-  const EntityId id{static_cast<uint32_t>(bits % (1u << 24)), static_cast<uint32_t>(bits >> 24)};
+  const lua::HandleBits bits = lua::checkHandle(L, index, "an entity");
+  const EntityId id{bits.index, bits.generation};
   if (!worldOf(L).valid(id))
     throw lua::ArgError("argument " + std::to_string(index) + ": stale entity handle (destroyed, or never created)");
   return id;
 }
 
 physics::PlatformId checkPlatform(lua_State* L, int index) {
-  const auto bits = static_cast<uint64_t>(lua::checkInteger(L, index, 0, (int64_t{1} << 53) - 1));
-  return {static_cast<uint32_t>(bits % (1u << 24)), static_cast<uint32_t>(bits >> 24)};
+  const lua::HandleBits bits = lua::checkHandle(L, index, "a platform");
+  return {bits.index, bits.generation};
 }
 
 int64_t toQ16(lua_State* L, int index) {
@@ -129,13 +118,8 @@ int destroyEntity(lua_State* L) {
 }
 
 int valid(lua_State* L) {
-  const double value = lua_type(L, 1) == LUA_TNUMBER ? lua_tonumber(L, 1) : -1;
-  bool ok = value >= 0 && value == std::floor(value) && value < 9007199254740992.0;
-  if (ok) {
-    const auto bits = static_cast<uint64_t>(value);
-    ok = worldOf(L).valid({static_cast<uint32_t>(bits % (1u << 24)), static_cast<uint32_t>(bits >> 24)});
-  }
-  lua_pushboolean(L, ok);
+  const std::optional<lua::HandleBits> bits = lua::toHandle(L, 1);
+  lua_pushboolean(L, bits && worldOf(L).valid({bits->index, bits->generation}));
   return 1;
 }
 
@@ -322,7 +306,7 @@ int createPlatform(lua_State* L) {
   std::vector<physics::PlatformLine> lines;
   for (size_t i = 0; i < xy.size(); i += 4) lines.push_back({{{xy[i], xy[i + 1]}, {xy[i + 2], xy[i + 3]}}, tag, kind});
   const physics::PlatformId id = worldOf(L).createPlatform(part, lines);
-  lua_pushnumber(L, static_cast<double>(id.index) + kIndexScale * static_cast<double>(id.generation));
+  lua::pushHandle(L, id.index, id.generation);
   return 1;
 }
 
@@ -424,21 +408,19 @@ constexpr luaL_Reg kWorld[] = {
 
 }  // namespace
 
-void setFunctions(lua_State* L, const luaL_Reg* functions, ScriptContext& context) {
+void addApiTable(LuaHost& host, ScriptContext& context, const char* name, const luaL_Reg* functions) {
+  lua_State* L = host.state();
+  lua::StackGuard guard(L);
+  host.pushApi();
+  lua_newtable(L);
   for (; functions->name; ++functions) {
     lua_pushlightuserdata(L, &context);
     lua_pushcclosure(L, functions->func, 1);
     lua_setfield(L, -2, functions->name);
   }
+  lua_setfield(L, -2, name);
 }
 
-void registerWorldApi(LuaHost& host, ScriptContext& context) {
-  lua_State* L = host.state();
-  lua::StackGuard guard(L);
-  host.pushApi();
-  lua_newtable(L);
-  setFunctions(L, kWorld, context);
-  lua_setfield(L, -2, "world");
-}
+void registerWorldApi(LuaHost& host, ScriptContext& context) { addApiTable(host, context, "world", kWorld); }
 
 }  // namespace platon::script
