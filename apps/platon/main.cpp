@@ -52,14 +52,17 @@ class Roller : public core::System {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc > 1 && std::strcmp(argv[1], "run") == 0) return platon::app::runCommand(argc - 1, argv + 1);
+  if (argc > 1 && (std::strcmp(argv[1], "run") == 0 || std::strcmp(argv[1], "replay") == 0))
+    return platon::app::runCommand(argc - 1, argv + 1);
+  if (argc > 1 && std::strcmp(argv[1], "scenario") == 0) return platon::app::scenarioCommand(argc - 1, argv + 1);
   int frames = 3000;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--frames") == 0 && i + 1 < argc) {
       frames = std::atoi(argv[++i]);
     } else {
       std::fprintf(stderr, "usage: %s [--frames N]      the headless demo\n"
-                           "       %s run [-j N] [--junit report.xml] scenario.lua...\n", argv[0], argv[0]);
+                           "       %s run [-j N] [--junit report.xml] [--record dir] scenario.lua|run.replay...\n"
+                           "       %s scenario run.replay [-o scenario.lua]\n", argv[0], argv[0], argv[0]);
       return 2;
     }
   }

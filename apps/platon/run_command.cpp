@@ -97,8 +97,36 @@ void writeJunit(const std::string& path, const std::vector<std::string>& names, 
 }
 
 int usage() {
-  std::fprintf(stderr, "usage: platon run [-j N] [--junit report.xml] [--timeout seconds] [--trace frames] scenario.lua...\n");
+  std::fprintf(stderr,
+               "usage: platon run [-j N] [--junit report.xml] [--timeout seconds] [--trace frames]\n"
+               "                  [--record dir] [--hash-every frames] scenario.lua|run.replay...\n");
   return 2;
+}
+
+bool endsWith(const std::string& s, const std::string& tail) {
+  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+// "tests/scenarios/walk.lua" -> "walk"
+std::string stem(const std::string& path) {
+  std::string name = path.substr(path.find_last_of('/') + 1);
+  return name.substr(0, name.find_last_of('.'));
+}
+
+// One file: a scenario or a replay; with a record folder, its run is written there as a replay.
+script::ScenarioResult runOne(const std::string& file, const script::RunOptions& options, const std::string& recordDir) {
+  script::ScenarioResult r = endsWith(file, ".replay") ? script::runReplay(file, options) : script::runScenario(file, options);
+  if (!recordDir.empty() && r.recorded) {
+    const std::string out = recordDir + "/" + stem(file) + ".replay";
+    try {
+      core::writeReplay(*r.recorded, out);
+      r.message += " (recorded to " + out + ")";
+    } catch (const std::exception& e) {
+      r.passed = false;
+      r.message = e.what();
+    }
+  }
+  return r;
 }
 
 }  // namespace
@@ -107,7 +135,8 @@ int runCommand(int argc, char** argv) {
   int jobs = 1;
   double timeout = 600;
   std::string junit;
-  uint64_t trace = 0;
+  script::RunOptions options;
+  std::string recordDir;
   std::vector<std::string> files;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -115,7 +144,9 @@ int runCommand(int argc, char** argv) {
     else if (a.rfind("-j", 0) == 0 && a.size() > 2) jobs = std::atoi(a.c_str() + 2);
     else if (a == "--junit" && i + 1 < argc) junit = argv[++i];
     else if (a == "--timeout" && i + 1 < argc) timeout = std::atof(argv[++i]);
-    else if (a == "--trace" && i + 1 < argc) trace = std::strtoull(argv[++i], nullptr, 10);
+    else if (a == "--trace" && i + 1 < argc) options.traceEvery = std::strtoull(argv[++i], nullptr, 10);
+    else if (a == "--record" && i + 1 < argc) recordDir = argv[++i], options.record = true;
+    else if (a == "--hash-every" && i + 1 < argc) options.hashEvery = std::strtoull(argv[++i], nullptr, 10);
     else if (!a.empty() && a[0] == '-') return usage();
     else files.push_back(a);
   }
@@ -124,7 +155,7 @@ int runCommand(int argc, char** argv) {
   std::vector<Outcome> outcomes(files.size());
 
   if (jobs == 1) {
-    for (size_t i = 0; i < files.size(); ++i) outcomes[i] = {true, script::runScenario(files[i], trace)};
+    for (size_t i = 0; i < files.size(); ++i) outcomes[i] = {true, runOne(files[i], options, recordDir)};
   } else {
     struct Worker {
       pid_t pid;
@@ -142,7 +173,7 @@ int runCommand(int argc, char** argv) {
       if (pid == 0) {
         close(fds[0]);
         for (size_t i = static_cast<size_t>(w); i < files.size(); i += static_cast<size_t>(jobs))
-          writeRecord(fds[1], i, script::runScenario(files[i], trace));
+          writeRecord(fds[1], i, runOne(files[i], options, recordDir));
         close(fds[1]);
         _exit(0);
       }
@@ -185,7 +216,10 @@ int runCommand(int argc, char** argv) {
   int failed = 0;
   for (size_t i = 0; i < files.size(); ++i) {
     Outcome& o = outcomes[i];
-    if (!o.done) o.result = {false, "not finished within the time limit of " + std::to_string(timeout) + " s (killed)", 0, 0, ""};
+    if (!o.done) {
+      o.result = {};
+      o.result.message = "not finished within the time limit of " + std::to_string(timeout) + " s (killed)";
+    }
     const script::ScenarioResult& r = o.result;
     if (r.passed) {
       std::printf("PASS %s: %s, %llu frames, %.3f s, hash %s\n", files[i].c_str(), r.message.c_str(),
@@ -198,6 +232,39 @@ int runCommand(int argc, char** argv) {
   std::printf("%zu scenarios, %d failed, %.2f s with -j %d\n", files.size(), failed, seconds, jobs);
   if (!junit.empty()) writeJunit(junit, files, outcomes, seconds);
   return failed ? 1 : 0;
+}
+
+int scenarioCommand(int argc, char** argv) {
+  std::string replayPath, out;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if ((a == "-o" || a == "--out") && i + 1 < argc) out = argv[++i];
+    else if (replayPath.empty() && !a.empty() && a[0] != '-') replayPath = a;
+    else return std::fprintf(stderr, "usage: platon scenario run.replay [-o scenario.lua]\n"), 2;
+  }
+  if (replayPath.empty()) return std::fprintf(stderr, "usage: platon scenario run.replay [-o scenario.lua]\n"), 2;
+  try {
+    const core::Replay replay = core::readReplay(replayPath);
+    const script::ScenarioResult outcome = script::runReplay(replayPath);
+    if (!outcome.passed) {
+      std::fprintf(stderr, "%s: the replay does not reproduce, so it makes no scenario: %s\n", replayPath.c_str(),
+                   outcome.message.c_str());
+      return 1;
+    }
+    const std::string text = script::scenarioFromReplay(replay, outcome, stem(replayPath) + ".replay");
+    if (out.empty()) {
+      std::fputs(text.c_str(), stdout);
+    } else {
+      std::ofstream file(out, std::ios::binary | std::ios::trunc);
+      if (!(file << text).flush()) return std::fprintf(stderr, "%s: cannot write\n", out.c_str()), 1;
+      std::fprintf(stderr, "wrote %s (%llu frames, %s)\n", out.c_str(), static_cast<unsigned long long>(replay.frames()),
+                   outcome.message.c_str());
+    }
+    return 0;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 1;
+  }
 }
 
 }  // namespace platon::app

@@ -11,28 +11,14 @@
 #include "platon/core/scene.h"
 #include "platon/script/scenario.h"
 #include "platon/script/script_system.h"
+#include "platon/testing/temp_folder.h"
 
 namespace platon::script {
 namespace {
 
 namespace fs = std::filesystem;
 
-// A folder of its own under the build tree, with files written on demand.
-class Folder {
- public:
-  explicit Folder(const std::string& name) : path_(fs::temp_directory_path() / ("platon_" + name)) {
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~Folder() { fs::remove_all(path_); }
-  std::string write(const std::string& file, const std::string& text) const {
-    std::ofstream(path_ / file) << text;
-    return (path_ / file).string();
-  }
-
- private:
-  fs::path path_;
-};
+using Folder = platon::testing::TempFolder;
 
 std::string manifestError(const std::string& text) {
   Folder folder("manifest");

@@ -1,0 +1,60 @@
+// A replay: the buttons held on every frame of a run, and the world's state hash every few frames,
+// in a small text file. The simulation is deterministic (integer physics, a fixed step, seeded
+// randomness), so feeding the same input to the same scene reproduces the run bit for bit, and
+// the hashes say on which frame a replay first went another way.
+//
+//   platon replay 1
+//   scene "levels/cube_intro/scene.lua"
+//   frames 336
+//   hash_every 60
+//   input
+//   12 -                       <- 12 frames with nothing held
+//   300 right                  <- then 300 frames holding right
+//   24 right jump
+//   end
+//   hash 60 0a1b2c3d4e5f6a7b
+//   hash 120 ...
+//
+// Blank lines and lines starting with '#' are ignored. Errors name file:line:column.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace platon::core {
+
+struct ReplayHash {
+  uint64_t frame;
+  uint64_t hash;
+};
+
+struct Replay {
+  std::string scene;           // the scene's manifest, as the run named it
+  std::vector<uint8_t> held;   // held[f - 1]: the buttons held on frame f (InputFrame::held bits)
+  uint64_t hashEvery = 60;     // frames between recorded hashes (0: none)
+  std::vector<ReplayHash> hashes;  // increasing frames
+
+  uint64_t frames() const { return held.size(); }
+};
+
+// Throws std::runtime_error "file:line:column: reason" for anything malformed.
+Replay readReplay(const std::string& path);
+Replay parseReplay(const std::string& text, const std::string& fileName);
+std::string formatReplay(const Replay& replay);
+// Writes through a temporary file and a rename, so a crash never leaves half a replay.
+void writeReplay(const Replay& replay, const std::string& path);
+
+// Builds a replay while a run goes on: call frame() after each simulated frame.
+class ReplayRecorder {
+ public:
+  ReplayRecorder(std::string scene, uint64_t hashEvery);
+  void frame(uint8_t held, uint64_t stateHashAfter);
+  // The replay so far, its last frame's hash included.
+  Replay replay() const;
+
+ private:
+  Replay replay_;
+  uint64_t lastHash_ = 0;
+};
+
+}  // namespace platon::core
