@@ -19,9 +19,14 @@ Player.COYOTE_FRAMES = 6    -- a jump still works this long after leaving a ledg
 Player.BUFFER_FRAMES = 6    -- a jump pressed this long before landing happens on landing
 Player.GROUND_COS = 0.64    -- a contact whose normal is within ~50 degrees of up is ground
 
+-- Errors (leaving nothing behind) when the place is taken by a wall or the face does not exist.
 function Player.spawn(_, face, x, y)
   local e = world.createEntity { circle = Player.RADIUS, sides = 16 }
-  world.insert(e, face, x, y, 0)
+  local ok, err = pcall(world.insert, e, face, x, y, 0)
+  if not ok then
+    world.destroyEntity(e)
+    error(err, 2)
+  end
   return setmetatable({ entity = e, coyote = 0, buffer = 0, grounded = false }, Player)
 end
 

@@ -12,8 +12,15 @@ local function spawnPoint()
   return c.face, c.x, c.y
 end
 
+progression.spawnPoint = spawnPoint
+
 function progression.start()
   game.player = game.Player.spawn(game, spawnPoint())
+end
+
+-- After a hot reload restored the switches: the new world's doors follow them.
+function progression.onReload()
+  for id in pairs(game.switches) do world.refreshPierce(DOOR + id) end
 end
 
 function progression.afterStep()

@@ -20,6 +20,7 @@ local BUTTONS = { "left", "right", "up", "down", "jump", "restart", "pause", "re
 local game = {
   name = setup.name,
   won = false, wonFrame = 0, deaths = 0, message = "",
+  time = 0,            -- frames played on this level (kept across hot reloads, unlike world.frame())
   switches = {},       -- switch id -> true when on
   pendingToggles = {}, -- switch ids toggled during the frame, applied after it
   killed = false,
@@ -34,7 +35,7 @@ local levelApi = {
   toggle = function(id) game.pendingToggles[#game.pendingToggles + 1] = id end,
   kill = function() game.killed = true end,
   checkpoint = function(face, x, y) game.checkpoint = { face = face, x = x, y = y } end,
-  frame = function() return world.frame() end,
+  frame = function() return game.time end,  -- frames played: kept across hot reloads
   player = function() return game.player and game.player.entity end,
   won = function() return game.won end,
 }
@@ -66,7 +67,7 @@ function scene.beforeStep(held, pressed)
     input.pressed[name] = band(pressed, b) ~= 0
   end
   if game.player and game.Player then game.Player.tick(game.player, input) end
-  local frame = world.frame() + 1
+  local frame = game.time + 1
   if game.level.tick then game.level.tick(levelApi, frame) end
   for i = 1, #game.mods do
     if game.mods[i].tick then game.mods[i].tick(levelApi, frame) end
@@ -74,7 +75,72 @@ function scene.beforeStep(held, pressed)
 end
 
 function scene.afterStep()
+  game.time = game.time + 1
   if game.progression.afterStep then game.progression.afterStep(game) end
+end
+
+-- Hot reload: the old version's save() is copied as plain data into the new version's restore().
+local KEPT = { "won", "wonFrame", "deaths", "message", "time", "checkpoint", "switches" }
+
+local function plainFields(t)
+  local out = {}
+  for k, v in pairs(t) do
+    local kind = type(v)
+    if kind == "number" or kind == "string" or kind == "boolean" then out[k] = v end
+  end
+  return out
+end
+
+function scene.save()
+  local saved = { game = {}, mods = {} }
+  for _, key in ipairs(KEPT) do saved.game[key] = game[key] end
+  local p = game.player
+  if p and world.valid(p.entity) then
+    local face, x, y = world.position(p.entity)
+    local vx, vy = world.velocity(p.entity)
+    saved.player = { face = face, x = x, y = y, vx = vx, vy = vy, angle = world.angle(p.entity),
+                     state = game.Player.save and game.Player.save(p) or plainFields(p) }
+  end
+  if game.level.save then saved.level = game.level.save(levelApi) end
+  for i = 1, #game.mods do
+    if game.mods[i].save then saved.mods[i] = game.mods[i].save(levelApi) end
+  end
+  return saved
+end
+
+-- Puts the player back where it was; where the new level has a wall there (or the face is gone),
+-- it stays at the level start where progression.start() put it.
+local function restorePlayer(saved)
+  if not saved or not game.player then return false end
+  local old = game.player
+  world.destroyEntity(old.entity)
+  local ok, player = pcall(game.Player.spawn, game, saved.face, saved.x, saved.y)
+  if not ok then
+    local start = game.level.start or { face = 0, x = 0, y = 0 }
+    if game.progression.spawnPoint then game.player = game.Player.spawn(game, game.progression.spawnPoint())
+    else game.player = game.Player.spawn(game, start.face, start.x, start.y) end
+    return false
+  end
+  game.player = player
+  world.setVelocity(player.entity, saved.vx, saved.vy)
+  if game.Player.onReload then game.Player.onReload(player, saved.state)
+  else
+    for k, v in pairs(saved.state or {}) do if k ~= "entity" and type(player[k]) == type(v) then player[k] = v end end
+  end
+  return true
+end
+
+function scene.restore(saved)
+  for _, key in ipairs(KEPT) do
+    if saved.game[key] ~= nil then game[key] = saved.game[key] end
+  end
+  if game.progression.onReload then game.progression.onReload(game) end
+  game.restoredPlayer = restorePlayer(saved.player)
+  if not game.restoredPlayer and saved.player then game.message = "reloaded: the player's place is gone, back to the start" end
+  if game.level.onReload then game.level.onReload(levelApi, saved.level) end
+  for i = 1, #game.mods do
+    if game.mods[i].onReload then game.mods[i].onReload(levelApi, saved.mods[i]) end
+  end
 end
 
 function scene.draw()
@@ -85,6 +151,7 @@ end
 local status = {}
 function scene.status()
   status.won, status.wonFrame, status.deaths, status.message = game.won, game.wonFrame, game.deaths, game.message
+  status.time = game.time
   if game.player and world.valid(game.player.entity) then
     status.face, status.x, status.y = world.position(game.player.entity)
   end

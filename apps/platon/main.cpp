@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "platon/core/scene.h"
+#include "play_command.h"
 #include "run_command.h"
 
 using namespace platon;
@@ -54,6 +55,7 @@ class Roller : public core::System {
 int main(int argc, char** argv) {
   if (argc > 1 && (std::strcmp(argv[1], "run") == 0 || std::strcmp(argv[1], "replay") == 0))
     return platon::app::runCommand(argc - 1, argv + 1);
+  if (argc > 1 && std::strcmp(argv[1], "play") == 0) return platon::app::playCommand(argc - 1, argv + 1);
   if (argc > 1 && std::strcmp(argv[1], "scenario") == 0) return platon::app::scenarioCommand(argc - 1, argv + 1);
   int frames = 3000;
   for (int i = 1; i < argc; ++i) {
@@ -62,7 +64,8 @@ int main(int argc, char** argv) {
     } else {
       std::fprintf(stderr, "usage: %s [--frames N]      the headless demo\n"
                            "       %s run [-j N] [--junit report.xml] [--record dir] scenario.lua|run.replay...\n"
-                           "       %s scenario run.replay [-o scenario.lua]\n", argv[0], argv[0], argv[0]);
+                           "       %s play scene.lua [--frames N] [--input run.replay] [--record out.replay] [--watch] [--fast]\n"
+                           "       %s scenario run.replay [-o scenario.lua]\n", argv[0], argv[0], argv[0], argv[0]);
       return 2;
     }
   }

@@ -1,13 +1,34 @@
 #include "platon/core/scene.h"
 
+#include <exception>
+
 namespace platon::core {
 
-void Scene::addSystem(std::unique_ptr<System> system) { systems_.push_back(std::move(system)); }
+void Scene::addSystem(std::unique_ptr<System> system, std::string name) {
+  systems_.push_back(std::move(system));
+  names_.push_back(std::move(name));
+}
+
+System* Scene::findSystem(std::string_view name) {
+  for (size_t i = 0; i < systems_.size(); ++i)
+    if (names_[i] == name) return systems_[i].get();
+  return nullptr;
+}
 
 physics::SolveReport Scene::step(const InputFrame& input) {
-  for (const auto& s : systems_) s->beforeStep(*this, input);
-  const physics::SolveReport report = world_.solve();
-  for (const auto& s : systems_) s->afterStep(*this);
+  std::exception_ptr first;
+  auto guarded = [&](auto&& call) {
+    try {
+      call();
+    } catch (...) {
+      if (!first) first = std::current_exception();
+    }
+  };
+  for (const auto& s : systems_) guarded([&] { s->beforeStep(*this, input); });
+  physics::SolveReport report{};
+  guarded([&] { report = world_.solve(); });  // the world finishes its frame before rethrowing
+  for (const auto& s : systems_) guarded([&] { s->afterStep(*this); });
+  if (first) std::rethrow_exception(first);
   return report;
 }
 
@@ -26,7 +47,7 @@ std::unique_ptr<Scene> loadScene(const std::string& manifestPath, const SystemRe
   const std::vector<std::string> systems = manifest.systems;
   scene->setManifest(std::move(manifest));
   for (const std::string& name : systems)
-    if (registry.has(name)) scene->addSystem(registry.create(name, *scene));
+    if (registry.has(name)) scene->addSystem(registry.create(name, *scene), name);
   for (size_t i = 0; i < scene->systemCount(); ++i) scene->system(i).build(*scene);
   for (const physics::MapPartId id : scene->stage()->parts) scene->world().mapPart(id).initialize();
   for (size_t i = 0; i < scene->systemCount(); ++i) scene->system(i).start(*scene);

@@ -14,6 +14,7 @@
 #include <string_view>
 
 #include "platon/physics/ids.h"
+#include "platon/script/script_error.h"
 
 namespace platon::script::lua {
 
@@ -111,17 +112,27 @@ inline HandleBits checkHandle(lua_State* L, int index, std::string_view what) {
 // Wraps `F(lua_State*) -> int` (results pushed) as a lua_CFunction: a C++ exception becomes a Lua
 // error "file:line: name: message" at the calling Lua line. Lua errors raised inside F by the Lua
 // API itself (out of memory) pass through: LuaJIT unwinds x64 C++ frames like exceptions.
+// A ScriptError (a script that F loaded or called failed) already names its own file:line and
+// passes unchanged.
 template <int (*F)(lua_State*)>
 int bound(lua_State* L) {
   std::string error;
+  bool located = false;
   try {
     return F(L);
+  } catch (const ScriptError& e) {
+    error = e.what();
+    located = true;
   } catch (const std::exception& e) {
     error = e.what();
   }
-  luaL_where(L, 1);
-  lua_pushlstring(L, error.data(), error.size());
-  lua_concat(L, 2);
+  if (located) {
+    lua_pushlstring(L, error.data(), error.size());
+  } else {
+    luaL_where(L, 1);
+    lua_pushlstring(L, error.data(), error.size());
+    lua_concat(L, 2);
+  }
   return lua_error(L);
 }
 

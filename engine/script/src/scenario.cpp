@@ -1,6 +1,8 @@
 #include "platon/script/scenario.h"
 
+#include <algorithm>
 #include <chrono>
+#include <functional>
 #include <cstdio>
 #include <map>
 #include <vector>
@@ -27,6 +29,14 @@ struct Plan {
   std::map<uint64_t, physics::MapPartId> faceAt;
   std::vector<Box> inside;
   std::map<uint64_t, std::string> hashAt;
+
+  uint64_t lastCheck() const {
+    uint64_t last = 0;
+    if (!faceAt.empty()) last = std::max(last, faceAt.rbegin()->first);
+    if (!hashAt.empty()) last = std::max(last, hashAt.rbegin()->first);
+    for (const Box& b : inside) last = std::max(last, b.frame);
+    return last;
+  }
 };
 
 [[noreturn]] void planError(const std::string& path, const std::string& what) {
@@ -146,9 +156,42 @@ std::string hex(uint64_t value) {
   return text;
 }
 
+
+// The checks of frame f; "" when they pass.
+std::string checkFrame(const Plan& plan, uint64_t f, core::Scene& scene, ScriptSystem* scripts, uint64_t traceEvery,
+                       const std::string& path) {
+  const std::string at = "frame " + std::to_string(f) + ": ";
+  if (traceEvery > 0 && scripts && f % traceEvery == 0) {
+    const GameStatus s = scripts->status();
+    std::fprintf(stderr, "%s: frame %llu: face %u at (%d, %d)%s\n", path.c_str(), static_cast<unsigned long long>(f), s.face,
+                 s.x, s.y, s.won ? ", won" : "");
+  }
+  if (const size_t overlaps = scene.world().countOverlaps(); overlaps != 0)
+    return at + std::to_string(overlaps) + " instance(s) overlap a solid line";
+  if (auto h = plan.hashAt.find(f); h != plan.hashAt.end() && hex(scene.world().stateHash()) != h->second)
+    return at + "state hash " + hex(scene.world().stateHash()) + ", expected " + h->second;
+  if (!scripts) return "";
+  if (auto face = plan.faceAt.find(f); face != plan.faceAt.end()) {
+    const GameStatus s = scripts->status();
+    if (s.face != face->second)
+      return at + "player on face " + std::to_string(s.face) + ", expected face " + std::to_string(face->second);
+  }
+  for (const Box& b : plan.inside) {
+    if (b.frame != f) continue;
+    const GameStatus s = scripts->status();
+    if (s.face != b.face || s.x < b.x0 || s.x > b.x1 || s.y < b.y0 || s.y > b.y1)
+      return at + "player at face " + std::to_string(s.face) + " (" + std::to_string(s.x) + ", " + std::to_string(s.y) +
+             "), expected inside face " + std::to_string(b.face) + " [" + std::to_string(b.x0) + ", " +
+             std::to_string(b.y0) + "]-[" + std::to_string(b.x1) + ", " + std::to_string(b.y1) + "]";
+  }
+  return "";
+}
 }  // namespace
 
-ScenarioResult runScenario(const std::string& path, uint64_t traceEvery) {
+namespace {
+
+// Runs a plan: the scene, its input, every check on every frame.
+ScenarioResult runPlan(const std::string& path, const std::function<Plan()>& makePlan, const RunOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   ScenarioResult result;
   auto finish = [&](bool passed, std::string message) {
@@ -157,12 +200,12 @@ ScenarioResult runScenario(const std::string& path, uint64_t traceEvery) {
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;
   };
+  std::optional<core::ReplayRecorder> recorder;
+  auto keepRecording = [&] {
+    if (recorder) result.recorded = recorder->replay();
+  };
   try {
-    Plan plan;
-    {
-      LuaHost host;  // the scenario's own state: it only reads the plan
-      plan = readPlan(host, path);
-    }
+    const Plan plan = makePlan();
     core::SystemRegistry registry;
     registry.add("scripting", makeScriptSystem);
     std::unique_ptr<core::Scene> scene = core::loadScene(plan.scene, registry);
@@ -171,54 +214,94 @@ ScenarioResult runScenario(const std::string& path, uint64_t traceEvery) {
       if (auto* s = dynamic_cast<ScriptSystem*>(&scene->system(i))) scripts = s;
     if ((plan.goalBy || plan.deaths || !plan.faceAt.empty() || !plan.inside.empty()) && !scripts)
       return finish(false, "the scene has no scripts, so no player to check");
+    if (options.record) recorder.emplace(plan.scene, options.hashEvery);
     core::InputEdges edges;
-    for (uint64_t f = 1; f <= plan.frames; ++f) {
+    std::string failure;
+    for (uint64_t f = 1; f <= plan.frames && failure.empty(); ++f) {
       scene->step(edges.next(plan.held[f]));
       result.frames = f;
-      if (traceEvery > 0 && scripts && f % traceEvery == 0) {
-        const GameStatus s = scripts->status();
-        std::fprintf(stderr, "%s: frame %llu: face %u at (%d, %d)%s\n", path.c_str(), static_cast<unsigned long long>(f),
-                     s.face, s.x, s.y, s.won ? ", won" : "");
-      }
-      if (const size_t overlaps = scene->world().countOverlaps(); overlaps != 0)
-        return finish(false, "frame " + std::to_string(f) + ": " + std::to_string(overlaps) + " instance(s) overlap a solid line");
-      if (auto h = plan.hashAt.find(f); h != plan.hashAt.end() && hex(scene->world().stateHash()) != h->second)
-        return finish(false, "frame " + std::to_string(f) + ": state hash " + hex(scene->world().stateHash()) +
-                                 ", expected " + h->second);
-      if (!scripts) continue;
-      if (auto face = plan.faceAt.find(f); face != plan.faceAt.end()) {
-        const GameStatus s = scripts->status();
-        if (s.face != face->second)
-          return finish(false, "frame " + std::to_string(f) + ": player on face " + std::to_string(s.face) +
-                                   ", expected face " + std::to_string(face->second));
-      }
-      for (const Box& b : plan.inside) {
-        if (b.frame != f) continue;
-        const GameStatus s = scripts->status();
-        if (s.face != b.face || s.x < b.x0 || s.x > b.x1 || s.y < b.y0 || s.y > b.y1)
-          return finish(false, "frame " + std::to_string(f) + ": player at face " + std::to_string(s.face) + " (" +
-                                   std::to_string(s.x) + ", " + std::to_string(s.y) + "), expected inside face " +
-                                   std::to_string(b.face) + " [" + std::to_string(b.x0) + ", " + std::to_string(b.y0) +
-                                   "]-[" + std::to_string(b.x1) + ", " + std::to_string(b.y1) + "]");
-      }
-      if (plan.goalBy && scripts->status().won) break;
+      if (recorder) recorder->frame(plan.held[f], scene->world().stateHash());
+      failure = checkFrame(plan, f, *scene, scripts, options.traceEvery, path);
+      // With the goal reached there is nothing left to see, unless a check waits for a later frame.
+      if (failure.empty() && plan.goalBy && f >= plan.lastCheck() && scripts && scripts->status().won) break;
     }
+    keepRecording();
     result.hash = hex(scene->world().stateHash());
+    if (scripts) result.status = scripts->status();
+    if (!failure.empty()) return finish(false, failure);
     if (scripts) {
-      const GameStatus s = scripts->status();
+      const GameStatus& s = *result.status;
       if (plan.goalBy && (!s.won || s.wonFrame > *plan.goalBy))
         return finish(false, "goal not reached by frame " + std::to_string(*plan.goalBy) + " (player on face " +
                                  std::to_string(s.face) + " at " + std::to_string(s.x) + ", " + std::to_string(s.y) + ")");
       if (plan.deaths && s.deaths != *plan.deaths)
         return finish(false, std::to_string(s.deaths) + " deaths, expected " + std::to_string(*plan.deaths));
+      if (!plan.hashAt.empty() && !plan.goalBy)
+        return finish(true, std::to_string(plan.hashAt.size()) + " hashes matched" + (s.won ? ", goal at frame " + std::to_string(s.wonFrame) : ""));
       return finish(true, s.won ? "goal at frame " + std::to_string(s.wonFrame) : "ok");
     }
-    return finish(true, "ok");
+    return finish(true, plan.hashAt.empty() ? "ok" : std::to_string(plan.hashAt.size()) + " hashes matched");
   } catch (const ScriptError& e) {
+    keepRecording();
     return finish(false, e.report());
   } catch (const std::exception& e) {
+    keepRecording();
     return finish(false, e.what());
   }
+}
+
+}  // namespace
+
+ScenarioResult runScenario(const std::string& path, const RunOptions& options) {
+  return runPlan(path, [&] {
+    LuaHost host;  // the scenario's own state: it only reads the plan
+    return readPlan(host, path);
+  }, options);
+}
+
+ScenarioResult runReplay(const std::string& path, const RunOptions& options) {
+  return runPlan(path, [&] {
+    const core::Replay replay = core::readReplay(path);
+    Plan plan;
+    plan.scene = replay.scene;
+    plan.frames = replay.frames();
+    plan.held.assign(1, 0);
+    plan.held.insert(plan.held.end(), replay.held.begin(), replay.held.end());
+    for (const core::ReplayHash& h : replay.hashes) plan.hashAt[h.frame] = hex(h.hash);
+    return plan;
+  }, options);
+}
+
+std::string scenarioFromReplay(const core::Replay& replay, const ScenarioResult& outcome, const std::string& name) {
+  std::string out = "-- Made by `platon scenario` from " + name + ": the recorded input, and what that run reached.\n";
+  out += "return {\n  scene = \"" + replay.scene + "\",\n  frames = " + std::to_string(replay.frames()) + ",\n  input = {\n";
+  for (int b = 0; b < core::kButtonCount; ++b) {
+    const std::string button(core::buttonName(static_cast<core::Button>(b)));
+    for (size_t i = 0; i < replay.held.size();) {
+      if (!(replay.held[i] >> b & 1)) {
+        ++i;
+        continue;
+      }
+      size_t j = i;
+      while (j < replay.held.size() && (replay.held[j] >> b & 1)) ++j;
+      out += "    { hold = \"" + button + "\", from = " + std::to_string(i + 1) + ", to = " + std::to_string(j) + " },\n";
+      i = j;
+    }
+  }
+  out += "  },\n  expect = {\n";
+  if (outcome.status) {
+    const GameStatus& s = *outcome.status;
+    if (s.won) out += "    goal_by = " + std::to_string(s.wonFrame) + ",\n";
+    out += "    deaths = " + std::to_string(s.deaths) + ",\n";
+    out += "    face = { [" + std::to_string(outcome.frames) + "] = " + std::to_string(s.face) + " },\n";
+  }
+  out += "    hash = {";
+  for (const core::ReplayHash& h : replay.hashes) {
+    if (h.frame > outcome.frames) break;
+    out += " [" + std::to_string(h.frame) + "] = \"" + hex(h.hash) + "\",";
+  }
+  out += " },\n  },\n}\n";
+  return out;
 }
 
 }  // namespace platon::script

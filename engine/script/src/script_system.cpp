@@ -14,6 +14,7 @@ struct ScriptSystem::State {
   ScriptContext context;
   lua::Ref driver;  // the table scripts/scene.lua returned
   std::unique_ptr<LuaRules> rules;
+  std::vector<std::string> files;  // every script file loaded: hot reload watches them
 
   State(core::Scene& s, std::string r, LuaLimits limits) : scene(&s), root(std::move(r)), host(limits) {
     context.scene = &s;
@@ -44,6 +45,7 @@ int engineLoad(lua_State* L) {
   const bool trusted = lua::checkBoolean(L, 2);
   const int nargs = lua_gettop(L) - 2;
   const std::string file = trusted ? state.root + "/" + path : path;
+  state.files.push_back(file);
   state.host.loadFile(file, trusted ? Trust::Trusted : Trust::Sandboxed);
   lua_insert(L, 3);
   state.host.call(nargs, 1);
@@ -74,6 +76,51 @@ constexpr luaL_Reg kEngine[] = {
     {nullptr, nullptr},
 };
 
+// Copies plain data from one Lua state to another: nil, booleans, numbers, strings, and tables of
+// them keyed by strings or numbers. Functions, userdata, coroutines and anything nested deeper
+// than kMaxDepth (a cycle, say) are left out. Runs inside a protected call of the destination, so
+// running out of its memory is an error there, not a panic.
+constexpr int kMaxDepth = 24;
+
+struct PlainCopy {
+  lua_State* from;
+  int index;
+};
+
+void copyPlain(lua_State* from, int index, lua_State* to, int depth) {
+  if (!lua_checkstack(to, 3) || !lua_checkstack(from, 3)) luaL_error(to, "data too deeply nested to carry over");
+  switch (lua_type(from, index)) {
+    case LUA_TBOOLEAN: return lua_pushboolean(to, lua_toboolean(from, index));
+    case LUA_TNUMBER: return lua_pushnumber(to, lua_tonumber(from, index));
+    case LUA_TSTRING: {
+      size_t n = 0;
+      const char* text = lua_tolstring(from, index, &n);
+      return lua_pushlstring(to, text, n);
+    }
+    case LUA_TTABLE:
+      if (depth < kMaxDepth) break;
+      [[fallthrough]];
+    default: return lua_pushnil(to);
+  }
+  const int source = index < 0 ? lua_gettop(from) + index + 1 : index;
+  lua_newtable(to);
+  for (lua_pushnil(from); lua_next(from, source); lua_pop(from, 1)) {
+    const int keyType = lua_type(from, -2);
+    if (keyType != LUA_TSTRING && keyType != LUA_TNUMBER) continue;
+    copyPlain(from, -2, to, depth + 1);
+    copyPlain(from, lua_gettop(from), to, depth + 1);
+    if (lua_isnil(to, -1)) lua_pop(to, 2);
+    else lua_rawset(to, -3);
+  }
+}
+
+int copyPlainProtected(lua_State* to) {
+  const auto* job = static_cast<const PlainCopy*>(lua_touserdata(to, 1));
+  lua_pop(to, 1);
+  copyPlain(job->from, job->index, to, 0);
+  return 1;
+}
+
 }  // namespace
 
 ScriptSystem::ScriptSystem(core::Scene& scene, std::string root) {
@@ -96,7 +143,8 @@ void ScriptSystem::build(core::Scene& scene) {
   // The trusted `platon` global: the API table itself (sandboxes get read-only views of it).
   state_->host.pushApi();
   lua_setglobal(L, "platon");
-  state_->host.loadFile(state_->root + "/scripts/scene.lua", Trust::Trusted);
+  state_->files.push_back(state_->root + "/scripts/scene.lua");
+  state_->host.loadFile(state_->files.back(), Trust::Trusted);
   lua_newtable(L);  // engine: what only trusted scripts may call
   lua_pushlightuserdata(L, state_.get());
   for (const luaL_Reg* f = kEngine; f->name; ++f) {
@@ -168,6 +216,7 @@ GameStatus ScriptSystem::status() const {
   lua_pop(L, 1);
   s.wonFrame = static_cast<uint64_t>(number("wonFrame"));
   s.deaths = static_cast<int>(number("deaths"));
+  s.time = static_cast<uint64_t>(number("time"));
   s.face = static_cast<physics::MapPartId>(number("face"));
   s.x = static_cast<int32_t>(number("x"));
   s.y = static_cast<int32_t>(number("y"));
@@ -190,6 +239,30 @@ std::string ScriptSystem::evaluate(const std::string& code, const std::string& c
   size_t n = 0;
   const char* text = lua_tolstring(L, -1, &n);
   return std::string(text ? text : "", n);
+}
+
+void ScriptSystem::sourceFiles(std::vector<std::string>& out) const {
+  out.insert(out.end(), state_->files.begin(), state_->files.end());
+}
+
+void ScriptSystem::carryOver(core::Scene&, core::System& previous) {
+  auto* old = dynamic_cast<ScriptSystem*>(&previous);
+  if (!old) return;
+  lua_State* from = old->state_->host.state();
+  lua_State* to = state_->host.state();
+  lua::StackGuard guardFrom(from), guardTo(to);
+  // The old version's save() may itself be what the edit fixes: if it fails, the new version
+  // starts from the level start rather than refusing the fix.
+  try {
+    old->state_->callDriver("save", 0, 1);
+  } catch (const ScriptError&) {
+    return;
+  }
+  PlainCopy job{from, lua_gettop(from)};
+  lua_pushcfunction(to, copyPlainProtected);
+  lua_pushlightuserdata(to, &job);
+  state_->host.call(1, 1);
+  state_->callDriver("restore", 1, 0);
 }
 
 size_t ScriptSystem::luaMemoryBytes() const { return state_->host.memoryUsed(); }

@@ -25,12 +25,16 @@ class Scene {
   const SceneManifest& manifest() const { return manifest_; }
   void setManifest(SceneManifest manifest) { manifest_ = std::move(manifest); }
 
-  // Systems run in the order they were added.
-  void addSystem(std::unique_ptr<System> system);
+  // Systems run in the order they were added; `name` is the registry's name for it.
+  void addSystem(std::unique_ptr<System> system, std::string name = "");
   size_t systemCount() const { return systems_.size(); }
   System& system(size_t index) { return *systems_.at(index); }
+  const std::string& systemName(size_t index) const { return names_.at(index); }
+  // The named system, or nullptr.
+  System* findSystem(std::string_view name);
 
-  // One fixed frame.
+  // One fixed frame. A system that throws does not stop the frame: the physics step and the other
+  // systems run, and the first error is rethrown at the end, so a frame always happens once.
   physics::SolveReport step(const InputFrame& input);
   uint64_t frame() const { return world_.frame(); }
   // Asks every system what to draw; does nothing when the list is disabled (no renderer).
@@ -41,6 +45,7 @@ class Scene {
   physics::World world_;
   std::optional<stage::SolidNet> stage_;
   std::vector<std::unique_ptr<System>> systems_;
+  std::vector<std::string> names_;
 };
 
 // Loads a scene from its manifest: builds the stage, creates the systems the manifest names that

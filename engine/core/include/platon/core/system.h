@@ -29,6 +29,14 @@ class System {
   virtual void afterStep(Scene& scene) { (void)scene; }
   // Say what to draw; called only when the scene has a renderer.
   virtual void draw(const Scene& scene, DrawList& out) const { (void)scene, (void)out; }
+
+  // Hot reload (core/live_scene.h). The files this system read to build the scene: a save to any
+  // of them reloads the scene.
+  virtual void sourceFiles(std::vector<std::string>& out) const { (void)out; }
+  // Called on the new version of a system, once it has started, with the same-named system of the
+  // scene it replaces: take over what the new version still allows (the player's place and
+  // state, counters). Throwing refuses the new version; the old one stays live.
+  virtual void carryOver(Scene& scene, System& previous) { (void)scene, (void)previous; }
 };
 
 using SystemFactory = std::function<std::unique_ptr<System>(Scene&)>;

@@ -10,11 +10,24 @@
 //                hash = { [600] = "0123456789abcdef" } },
 //   }
 // Every frame also checks that no instance overlaps a solid line (World::countOverlaps() == 0).
+//
+// Replays (platon/core/replay.h) run through the same loop: their input, and a check of every
+// recorded state hash.
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string>
 
+#include "platon/core/replay.h"
+#include "platon/script/script_system.h"
+
 namespace platon::script {
+
+struct RunOptions {
+  uint64_t traceEvery = 0;   // > 0: print the player's face and position to stderr this often
+  bool record = false;       // keep the run's input and hashes in ScenarioResult::recorded
+  uint64_t hashEvery = 60;   // the recording's hash interval
+};
 
 struct ScenarioResult {
   bool passed = false;
@@ -22,9 +35,17 @@ struct ScenarioResult {
   uint64_t frames = 0;  // frames simulated
   double seconds = 0;   // wall time, load included
   std::string hash;     // the world's state hash after the last frame
+  std::optional<GameStatus> status;      // the game's state at the end (scenes with scripts)
+  std::optional<core::Replay> recorded;  // with RunOptions::record
 };
 
-// traceEvery > 0: print the player's face and position to stderr every that many frames.
-ScenarioResult runScenario(const std::string& path, uint64_t traceEvery = 0);
+ScenarioResult runScenario(const std::string& path, const RunOptions& options = {});
+// Replays a recorded run headless and checks every recorded hash: the first frame whose state
+// differs fails it.
+ScenarioResult runReplay(const std::string& path, const RunOptions& options = {});
+// Turns a replay into a regression scenario (Lua text): its input as hold ranges, and what the
+// run reached (`outcome`, from runReplay) as expectations: the goal frame, the deaths, the face
+// and the recorded hashes. `name` goes into the leading comment.
+std::string scenarioFromReplay(const core::Replay& replay, const ScenarioResult& outcome, const std::string& name);
 
 }  // namespace platon::script

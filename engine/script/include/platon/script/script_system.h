@@ -15,6 +15,7 @@ struct GameStatus {
   bool won = false;
   uint64_t wonFrame = 0;  // the frame the goal was reached (0: not yet)
   int deaths = 0;
+  uint64_t time = 0;            // frames played on the level (kept across hot reloads)
   physics::MapPartId face = 0;  // the player's face (its anchor's part)
   int32_t x = 0, y = 0;         // the player's position on it
   std::string message;          // the latest level message
@@ -31,6 +32,10 @@ class ScriptSystem final : public core::System {
   void beforeStep(core::Scene& scene, const core::InputFrame& input) override;
   void afterStep(core::Scene& scene) override;
   void draw(const core::Scene& scene, core::DrawList& out) const override;
+  void sourceFiles(std::vector<std::string>& out) const override;
+  // Hands the old version's save() (plain data: counters, the player, what level scripts and mods
+  // save) to the new version's restore(); docs/scripting.md, "Hot reload".
+  void carryOver(core::Scene& scene, core::System& previous) override;
 
   GameStatus status() const;
   // Runs `code` as trusted Lua in the scene's state with `game` and `platon` visible; for

@@ -1,0 +1,14 @@
+-- Cube, switches: jump to hit a switch that opens a door for a few seconds, over a deadly pit and
+-- a checkpoint, then run across an edge onto the next face and through the door to the goal.
+return {
+  name = "Cube: switches",
+  systems = { "scripting", "rendering" },
+  stage = { solid = "cube", edge = 4096 },
+  gravity = 0.35,
+  scripts = {
+    rules = "scripts/rules/game.lua",
+    player = "scripts/player.lua",
+    progression = "scripts/progression.lua",
+    level = "level.lua",
+  },
+}
