@@ -15,7 +15,35 @@ local function load(path, ...)
   return engine.load(path, trusted, ...)
 end
 
-local BUTTONS = { "left", "right", "up", "down", "jump", "restart", "pause", "reload" }
+-- Level scripts and mods are sandboxed: their functions run with the JIT off (so the time budget's
+-- hook can stop any loop). Trusted code calls them through engine.call, a C function: LuaJIT
+-- stitches the trusted code's traces around it instead of giving up on them. Their tables are read
+-- raw, once, so no metamethod of theirs ever runs outside a sandboxed call.
+local call = engine.call
+local HOOKS = { "build", "tick", "draw", "save", "onReload" }
+
+local function sandboxedModule(t, path)
+  if t == nil then return {} end
+  if type(t) ~= "table" then error(path .. ": a level script or mod returns a table", 0) end
+  local m = {}
+  for _, name in ipairs(HOOKS) do
+    local f = rawget(t, name)
+    if type(f) == "function" then m[name] = f end
+  end
+  local start = rawget(t, "start")
+  if type(start) == "table" then
+    m.start = { face = tonumber(rawget(start, "face")), x = tonumber(rawget(start, "x")), y = tonumber(rawget(start, "y")) }
+  end
+  return m
+end
+
+-- The buttons, by their InputFrame bits (core/input.h): left 1, right 2, up 4, down 8, jump 16,
+-- restart 32, pause 64, reload 128. Written out with constant keys, which the JIT turns into
+-- direct slots (a loop over names costs a hash lookup each).
+local function decode(t, bits)
+  t.left, t.right, t.up, t.down = band(bits, 1) ~= 0, band(bits, 2) ~= 0, band(bits, 4) ~= 0, band(bits, 8) ~= 0
+  t.jump, t.restart, t.pause, t.reload = band(bits, 16) ~= 0, band(bits, 32) ~= 0, band(bits, 64) ~= 0, band(bits, 128) ~= 0
+end
 
 local game = {
   name = setup.name,
@@ -24,7 +52,10 @@ local game = {
   switches = {},       -- switch id -> true when on
   pendingToggles = {}, -- switch ids toggled during the frame, applied after it
   killed = false,
-  input = { pressed = {} },
+  input = { pressed = { left = false, right = false, up = false, down = false, jump = false, restart = false,
+                        pause = false, reload = false },
+            left = false, right = false, up = false, down = false, jump = false, restart = false, pause = false,
+            reload = false },
 }
 
 -- What level scripts and mods see (a read-only view inside their sandbox).
@@ -44,13 +75,12 @@ game.levelApi = levelApi
 local scene = {}
 
 function scene.build()
-  game.level = load(setup.level, levelApi) or {}
-  if type(game.level) ~= "table" then error(setup.level .. ": a level script returns a table", 0) end
+  game.level = sandboxedModule(load(setup.level, levelApi), setup.level)
   game.Player = load(setup.player, game)
   game.progression = load(setup.progression, game) or {}
   game.mods = {}
-  for i, path in ipairs(setup.mods) do game.mods[i] = load(path, levelApi) or {} end
-  if game.level.build then game.level.build(levelApi) end
+  for i, path in ipairs(setup.mods) do game.mods[i] = sandboxedModule(load(path, levelApi), path) end
+  if game.level.build then call(game.level.build, levelApi) end
 end
 
 function scene.start()
@@ -61,16 +91,13 @@ end
 
 function scene.beforeStep(held, pressed)
   local input = game.input
-  for i = 1, #BUTTONS do
-    local name, b = BUTTONS[i], 2 ^ (i - 1)
-    input[name] = band(held, b) ~= 0
-    input.pressed[name] = band(pressed, b) ~= 0
-  end
+  decode(input, held)
+  decode(input.pressed, pressed)
   if game.player and game.Player then game.Player.tick(game.player, input) end
   local frame = game.time + 1
-  if game.level.tick then game.level.tick(levelApi, frame) end
+  if game.level.tick then call(game.level.tick, levelApi, frame) end
   for i = 1, #game.mods do
-    if game.mods[i].tick then game.mods[i].tick(levelApi, frame) end
+    if game.mods[i].tick then call(game.mods[i].tick, levelApi, frame) end
   end
 end
 
@@ -101,9 +128,9 @@ function scene.save()
     saved.player = { face = face, x = x, y = y, vx = vx, vy = vy, angle = world.angle(p.entity),
                      state = game.Player.save and game.Player.save(p) or plainFields(p) }
   end
-  if game.level.save then saved.level = game.level.save(levelApi) end
+  if game.level.save then saved.level = call(game.level.save, levelApi) end
   for i = 1, #game.mods do
-    if game.mods[i].save then saved.mods[i] = game.mods[i].save(levelApi) end
+    if game.mods[i].save then saved.mods[i] = call(game.mods[i].save, levelApi) end
   end
   return saved
 end
@@ -137,15 +164,15 @@ function scene.restore(saved)
   if game.progression.onReload then game.progression.onReload(game) end
   game.restoredPlayer = restorePlayer(saved.player)
   if not game.restoredPlayer and saved.player then game.message = "reloaded: the player's place is gone, back to the start" end
-  if game.level.onReload then game.level.onReload(levelApi, saved.level) end
+  if game.level.onReload then call(game.level.onReload, levelApi, saved.level) end
   for i = 1, #game.mods do
-    if game.mods[i].onReload then game.mods[i].onReload(levelApi, saved.mods[i]) end
+    if game.mods[i].onReload then call(game.mods[i].onReload, levelApi, saved.mods[i]) end
   end
 end
 
 function scene.draw()
   if game.player and game.Player and game.Player.draw then game.Player.draw(game.player, platon.draw) end
-  if game.level.draw then game.level.draw(levelApi, platon.draw) end
+  if game.level.draw then call(game.level.draw, levelApi, platon.draw) end
 end
 
 local status = {}

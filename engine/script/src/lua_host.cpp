@@ -25,7 +25,7 @@ struct LuaHost::Shared {
 
 namespace {
 
-constexpr int kHookInstructions = 1000;
+constexpr int kHookInstructions = 100000;
 
 int64_t monotonicNanoseconds() {
   timespec t{};
@@ -143,7 +143,11 @@ void LuaHost::openTrusted() {
   luaL_openlibs(L_);
   lua_sethook(L_, budgetHook, LUA_MASKCOUNT, kHookInstructions);
   lua_pushcfunction(L_, tracebackHandler);
-  lua_setfield(L_, LUA_REGISTRYINDEX, "platon.traceback");
+  lua_pushvalue(L_, -1);
+  tracebackRef_ = luaL_ref(L_, LUA_REGISTRYINDEX);
+  // The handler also stays in the state's first stack slot for good: calls from C++ name it there,
+  // with no insert and remove around every call (rules callbacks run a million times a session).
+  if (lua_gettop(L_) != kTracebackSlot) throw ScriptError("the Lua state did not start with an empty stack", "");
   lua_newtable(L_);
   lua_setfield(L_, LUA_REGISTRYINDEX, "platon.api");
   // The sandbox factory: trusted Lua, run once (sandbox.cpp).
@@ -200,10 +204,17 @@ void LuaHost::loadFile(const std::string& path, Trust trust, int sandbox) {
 }
 
 void LuaHost::call(int nargs, int nresults) {
-  const int base = lua_gettop(L_) - nargs;  // the function's slot
-  lua_getfield(L_, LUA_REGISTRYINDEX, "platon.traceback");
-  lua_insert(L_, base);
+  // Outermost calls come from C++ with no Lua running, where the first stack slot is the state's
+  // own: the handler waits there. Nested calls (C++ called from Lua calling Lua again) see their C
+  // function's frame instead and put the handler below their function.
   const bool outermost = depth_ == 0;
+  int base = lua_gettop(L_) - nargs;  // the function's slot
+  int handler = kTracebackSlot;
+  if (!outermost) {
+    lua_rawgeti(L_, LUA_REGISTRYINDEX, tracebackRef_);
+    lua_insert(L_, base);
+    handler = base++;
+  }
   if (outermost) {
     shared_->inCall = true;
     shared_->callStart = 0;
@@ -211,7 +222,7 @@ void LuaHost::call(int nargs, int nresults) {
     shared_->memoryRefused = false;
   }
   ++depth_;
-  const int status = lua_pcall(L_, nargs, nresults, base);
+  const int status = lua_pcall(L_, nargs, nresults, handler);
   --depth_;
   if (outermost) {
     shared_->inCall = false;
@@ -219,11 +230,11 @@ void LuaHost::call(int nargs, int nresults) {
   }
   if (status != 0) {
     ScriptError error = errorFromStack(L_, status, *shared_);
-    lua_settop(L_, base - 1);
+    lua_settop(L_, outermost ? base - 1 : base - 2);
     if (outermost && (shared_->memoryRefused || shared_->expired)) lua_gc(L_, LUA_GCCOLLECT, 0);
     throw error;
   }
-  lua_remove(L_, base);
+  if (!outermost) lua_remove(L_, handler);
 }
 
 void LuaHost::setPrintSink(std::function<void(std::string_view, std::string_view)> sink) {

@@ -76,6 +76,8 @@ class LuaHost {
   std::unique_ptr<Shared> shared_;
   lua_State* L_ = nullptr;
   int depth_ = 0;
+  int tracebackRef_ = LUA_NOREF;
+  static constexpr int kTracebackSlot = 1;
   void openTrusted();
 };
 

@@ -68,13 +68,16 @@ void LuaRules::contact(const physics::Contact& c, physics::ContactResponse& resp
   callbacks_[kContact].push();
   const int n = pushLine(c.entity, c.line);
   const double nx = static_cast<double>(c.normal.x), ny = static_cast<double>(c.normal.y);
-  const double length = std::hypot(nx, ny);
+  const double length = std::sqrt(nx * nx + ny * ny);  // exact squares for any normal a line can have
   lua_pushnumber(L, length > 0 ? nx / length : 0);
   lua_pushnumber(L, length > 0 ? ny / length : 0);
   pushEntity(L, c.other);
   host_.call(n + 3, 1);
   const int type = lua_type(L, -1);
-  if (type == LUA_TNIL) return;
+  if (type == LUA_TNIL) {
+    lua_pop(L, 1);
+    return;
+  }
   if (type == LUA_TBOOLEAN) {
     response.slide = lua_toboolean(L, -1) != 0;
     lua_pop(L, 1);

@@ -1,6 +1,8 @@
 // What the Lua API functions reach through their upvalue: the scene they act on, the draw list of
 // the current frame (or none), the current input. One per ScriptSystem; no globals.
 #pragma once
+#include <memory>
+
 #include "lua_host.h"
 #include "platon/core/draw_list.h"
 #include "platon/core/input.h"
@@ -12,6 +14,7 @@ struct ScriptContext {
   core::Scene* scene = nullptr;
   core::DrawList* draw = nullptr;  // set only while draw() runs with a renderer
   LuaHost* host = nullptr;
+  std::shared_ptr<void> ffi;  // the FFI fast path's function table (world_ffi.cpp), when registered
 };
 
 inline ScriptContext& contextOf(lua_State* L) {
@@ -22,6 +25,9 @@ inline ScriptContext& contextOf(lua_State* L) {
 // sandboxes see, with `context` as their upvalue.
 void registerWorldApi(LuaHost& host, ScriptContext& context);
 void registerDrawApi(LuaHost& host, ScriptContext& context);
+// Replaces the per-frame world functions with FFI calls (world_ffi.cpp). Trusted states only: it
+// needs the ffi library, which sandboxes never get.
+void registerWorldFfi(LuaHost& host, ScriptContext& context);
 
 // Sets platon.<name> in the API table to a table of `functions` (ends with {nullptr, nullptr}),
 // each with `context` as its upvalue.

@@ -21,6 +21,8 @@ struct ScriptSystem::State {
     context.host = &host;
   }
 
+  lua::Ref beforeStep, afterStep;  // driver.beforeStep and driver.afterStep: called every frame
+
   // Pushes driver[name] and calls it with nargs arguments already pushed after it.
   void callDriver(const char* name, int nargs, int nresults) {
     lua_State* L = host.state();
@@ -69,7 +71,17 @@ int engineNewSandbox(lua_State* L) {
   return 1;
 }
 
+// engine.call(f, ...) -> f(...): a plain C function (no C++ object lives in this frame, so a Lua
+// error may unwind through it). It exists so that LuaJIT stitches traces around calls into
+// sandboxed functions, which run with the JIT off, instead of aborting and blacklisting them.
+int engineCall(lua_State* L) {
+  luaL_checktype(L, 1, LUA_TFUNCTION);
+  lua_call(L, lua_gettop(L) - 1, LUA_MULTRET);
+  return lua_gettop(L);
+}
+
 constexpr luaL_Reg kEngine[] = {
+    {"call", engineCall},
     {"load", lua::bound<engineLoad>},
     {"setRules", lua::bound<engineSetRules>},
     {"newSandbox", lua::bound<engineNewSandbox>},
@@ -130,6 +142,7 @@ ScriptSystem::ScriptSystem(core::Scene& scene, std::string root) {
   limits.callNanoseconds = static_cast<int64_t>(m.callMilliseconds * 1e6);
   state_ = std::make_unique<State>(scene, std::move(root), limits);
   registerWorldApi(state_->host, state_->context);
+  if (std::getenv("PLATON_NO_FFI") == nullptr) registerWorldFfi(state_->host, state_->context);
   registerDrawApi(state_->host, state_->context);
 }
 
@@ -173,7 +186,11 @@ void ScriptSystem::build(core::Scene& scene) {
   lua_setfield(L, -2, "seed");
   state_->host.call(2, 1);
   state_->driver = lua::Ref(L, -1);
-  lua_pop(L, 1);
+  lua_getfield(L, -1, "beforeStep");
+  state_->beforeStep = lua::Ref(L, -1);
+  lua_getfield(L, -2, "afterStep");
+  state_->afterStep = lua::Ref(L, -1);
+  lua_pop(L, 3);
   state_->callDriver("build", 0, 0);
 }
 
@@ -181,12 +198,16 @@ void ScriptSystem::start(core::Scene&) { state_->callDriver("start", 0, 0); }
 
 void ScriptSystem::beforeStep(core::Scene&, const core::InputFrame& input) {
   lua_State* L = state_->host.state();
+  state_->beforeStep.push();
   lua_pushnumber(L, input.held);
   lua_pushnumber(L, input.pressed);
-  state_->callDriver("beforeStep", 2, 0);
+  state_->host.call(2, 0);
 }
 
-void ScriptSystem::afterStep(core::Scene&) { state_->callDriver("afterStep", 0, 0); }
+void ScriptSystem::afterStep(core::Scene&) {
+  state_->afterStep.push();
+  state_->host.call(0, 0);
+}
 
 void ScriptSystem::draw(const core::Scene&, core::DrawList& out) const {
   state_->context.draw = &out;

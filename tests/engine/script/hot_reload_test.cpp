@@ -141,7 +141,7 @@ TEST(HotReload, ABrokenEditIsReportedAndTheLastGoodVersionGoesOn) {
   const Edit edits[] = {
       {"level.lua", "local level = {\nreturn level\n", "level.lua:2: unexpected symbol near 'return'"},
       {"level.lua", level("  game.world.line(0, 1, 2)"), "level.lua:4: argument 4: expected a number, got no value"},
-      {"level.lua", "return 42\n", "a level script returns a table"},
+      {"level.lua", "return 42\n", "level.lua: a level script or mod returns a table"},
       {"level.lua", "while true do end\n", "level.lua:1: "},
       {"scene.lua", "return { systems = { 'scripting' }, gravity = 'x' }", "scene.lua:1:47: 'gravity' must be a number"},
   };

@@ -1,0 +1,176 @@
+#include "game_in_cpp.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace platon::bench {
+namespace {
+
+using physics::EntityId;
+constexpr double kQ16 = 65536.0;
+constexpr uint32_t kHazard = 1, kGoal = 2, kCheckpoint = 3, kDoor = 1000, kSwitch = 2000;
+
+struct Place {
+  physics::MapPartId face;
+  int32_t x, y;
+};
+
+class Game final : public core::System, public physics::Rules {
+ public:
+  // levels/cube_intro/level.lua: build()
+  void build(core::Scene& scene) override {
+    physics::World& world = scene.world();
+    for (const physics::MapPartId face : scene.stage()->parts) {
+      world.mapPart(face).line({256, 512}, {2600, 512}, 0);
+      world.mapPart(face).line({3000, 512}, {3800, 900}, 0);
+      world.mapPart(face).line({1200, 1800}, {2400, 1800}, 0);
+    }
+    world.mapPart(3).line({3600, 200}, {3600, 3900}, kGoal);
+  }
+
+  // scripts/progression.lua: start(); scripts/scene.lua: start() sets the rules.
+  void start(core::Scene& scene) override {
+    world_ = &scene.world();
+    world_->setRules(this);
+    spawn(spawnPoint());
+  }
+
+  void beforeStep(core::Scene&, const core::InputFrame& input) override {
+    tick(input);
+    if (time_ + 1 == 1) message_ = "walk right: every edge turns the cube";
+    pressedRestart_ = input.wasPressed(core::Button::Restart);
+  }
+
+  // scripts/progression.lua: afterStep()
+  void afterStep(core::Scene&) override {
+    ++time_;
+    for (const uint32_t id : pendingToggles_) {
+      switches_[id] = !switches_[id];
+      world_->refreshPierce(kDoor + id);
+    }
+    pendingToggles_.clear();
+    if (touchedCheckpoint_) {
+      touchedCheckpoint_ = false;
+      const physics::InstanceView anchor = world_->entity(player_).instance(0);
+      checkpoint_ = Place{anchor.part, anchor.position.x, anchor.position.y};
+    }
+    if (reachedGoal_ && !won_) {
+      won_ = true;
+      message_ = "goal reached";
+    }
+    if (killed_ || (pressedRestart_ && !won_)) {
+      killed_ = false;
+      ++deaths_;
+      world_->destroyEntity(player_);
+      spawn(spawnPoint());
+    }
+  }
+
+  // scripts/rules/game.lua
+  bool pierce(EntityId, const physics::LineRef& line) override {
+    if (line.kind == physics::LineKind::Warp) return true;
+    if (line.tag == kGoal || line.tag == kCheckpoint) return true;
+    if (line.tag >= kSwitch && line.tag < kSwitch + 1000) return true;
+    if (line.tag >= kDoor && line.tag < kDoor + 1000) return switches_[line.tag - kDoor];
+    return false;
+  }
+  void beginContact(const physics::Contact& c) override {
+    if (c.entity != player_) return;
+    if (c.line.tag == kGoal) reachedGoal_ = true;
+    else if (c.line.tag == kCheckpoint) touchedCheckpoint_ = true;
+    else if (c.line.tag >= kSwitch && c.line.tag < kSwitch + 1000) pendingToggles_.push_back(c.line.tag - kSwitch);
+  }
+  void contact(const physics::Contact& c, physics::ContactResponse&) override {
+    if (c.line.tag == kHazard && c.entity == player_) killed_ = true;
+  }
+  void crushed(const physics::Contact& c) override {
+    if (c.entity == player_) killed_ = true;
+  }
+
+ private:
+  Place spawnPoint() const { return checkpoint_.value_or(Place{0, 600, 700}); }
+
+  void spawn(Place at) {
+    player_ = world_->createEntity(physics::Convex::regular(16, 96));
+    world_->insert(player_, at.face, {at.x, at.y}, 0);
+    coyote_ = buffer_ = 0;
+    grounded_ = false;
+  }
+
+  static double approach(double value, double target, double step) {
+    if (value < target) return std::min(value + step, target);
+    return std::max(value - step, target);
+  }
+
+  // scripts/player.lua: Player.tick, with the same arithmetic in the same order.
+  void tick(const core::InputFrame& input) {
+    constexpr double kWalk = 9, kGroundAccel = 0.6, kBrake = 0.9, kAirAccel = 0.35, kJump = 11, kCut = 4;
+    constexpr int kCoyote = 6, kBuffer = 6;
+    constexpr double kGroundCos = 0.64;
+    const physics::EntityView e = world_->entity(player_);
+    const physics::Vec2w gq = world_->mapPart(e.instance(0).part).gravity();
+    const double gx = static_cast<double>(gq.x) / kQ16, gy = static_cast<double>(gq.y) / kQ16;
+    const double g = std::sqrt(gx * gx + gy * gy);
+    double dx = 0, dy = -1;
+    if (g > 0) dx = gx / g, dy = gy / g;
+    const double rx = -dy, ry = dx;
+
+    grounded_ = false;
+    for (const physics::Contact& c : e.contacts()) {
+      const double cx = static_cast<double>(c.normal.x), cy = static_cast<double>(c.normal.y);
+      const double length = std::hypot(cx, cy);
+      const double nx = length > 0 ? cx / length : 0, ny = length > 0 ? cy / length : 0;
+      if (-(nx * dx + ny * dy) > kGroundCos) grounded_ = true;
+    }
+    if (grounded_) coyote_ = kCoyote;
+    else if (coyote_ > 0) --coyote_;
+    if (input.wasPressed(core::Button::Jump)) buffer_ = kBuffer;
+    else if (buffer_ > 0) --buffer_;
+
+    const double vx = static_cast<double>(e.velocity().x) / kQ16, vy = static_cast<double>(e.velocity().y) / kQ16;
+    double along = vx * rx + vy * ry;
+    double fall = vx * dx + vy * dy;
+    const int dir = (input.isHeld(core::Button::Right) ? 1 : 0) - (input.isHeld(core::Button::Left) ? 1 : 0);
+    const double accel = grounded_ ? kGroundAccel : kAirAccel;
+    if (dir != 0) along = approach(along, dir * kWalk, accel);
+    else if (grounded_) along = approach(along, 0, kBrake);
+    if (buffer_ > 0 && coyote_ > 0) {
+      fall = -kJump;
+      buffer_ = coyote_ = 0;
+    } else if (!input.isHeld(core::Button::Jump) && fall < -kCut) {
+      fall = -kCut;
+    }
+    world_->setVelocity(player_, {std::llround((rx * along + dx * fall) * kQ16), std::llround((ry * along + dy * fall) * kQ16)});
+  }
+
+  physics::World* world_ = nullptr;
+  EntityId player_;
+  int coyote_ = 0, buffer_ = 0;
+  bool grounded_ = false;
+  std::map<uint32_t, bool> switches_;
+  std::vector<uint32_t> pendingToggles_;
+  std::optional<Place> checkpoint_;
+  bool reachedGoal_ = false, touchedCheckpoint_ = false, killed_ = false, won_ = false, pressedRestart_ = false;
+  int deaths_ = 0;
+  uint64_t time_ = 0;
+  std::string message_;
+};
+
+}  // namespace
+
+std::unique_ptr<core::Scene> cubeIntroInCpp() {
+  auto scene = std::make_unique<core::Scene>();
+  scene->setStage(stage::buildSolidNet(scene->world(), stage::SolidType::Hexahedron, 4096, 0));
+  const auto gravity = static_cast<int64_t>(0.35 * 65536.0 + 0.5);  // as loadScene converts the manifest's
+  for (const physics::MapPartId id : scene->stage()->parts) scene->world().mapPart(id).setGravity({0, -gravity});
+  scene->addSystem(std::make_unique<Game>(), "game");
+  scene->system(0).build(*scene);
+  for (const physics::MapPartId id : scene->stage()->parts) scene->world().mapPart(id).initialize();
+  scene->system(0).start(*scene);
+  return scene;
+}
+
+}  // namespace platon::bench

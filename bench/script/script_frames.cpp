@@ -1,0 +1,97 @@
+// Frames per second of the first level played headless with the Lua player, rules, progression and
+// level script, beside the same game written in C++ (bench/script/game_in_cpp.cpp), and beside the
+// physics alone (the same player body driven by no game at all). Same input in both games, and the
+// same state hash at the end, or the comparison is void and the program says so.
+//
+// Goals (issue 9): >= 100,000 frames/s with Lua; Lua's frame <= 1.5x the C++ frame.
+//   build/bench/script_frames [frames] [runs]
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "game_in_cpp.h"
+#include "platon/core/scene.h"
+#include "platon/script/script_system.h"
+#include "spread.h"
+
+using namespace platon;
+
+namespace {
+
+// Walk right and left in turns of 300 frames, a jump held 20 frames in every 70: the player runs
+// along floors, falls off them, jumps onto platforms and crosses the cube's edges.
+uint8_t heldOn(uint64_t frame) {
+  uint8_t held = (frame / 300) % 2 == 0 ? core::InputFrame::bit(core::Button::Right) : core::InputFrame::bit(core::Button::Left);
+  if (frame % 70 < 20) held |= core::InputFrame::bit(core::Button::Jump);
+  return held;
+}
+
+struct Run {
+  double nanosecondsPerFrame;
+  uint64_t hash;
+};
+
+Run play(core::Scene& scene, uint64_t frames) {
+  core::InputEdges edges;
+  const auto start = std::chrono::steady_clock::now();
+  for (uint64_t f = 1; f <= frames; ++f) scene.step(edges.next(heldOn(f)));
+  const double ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count();
+  return {ns / static_cast<double>(frames), scene.world().stateHash()};
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const uint64_t frames = argc > 1 ? std::strtoull(argv[1], nullptr, 10) : 20000;
+  const int runs = argc > 2 ? std::atoi(argv[2]) : 7;
+  const std::string only = argc > 3 ? argv[3] : "";  // "lua" or "cpp": one side alone, for a profiler
+  if (!only.empty()) {
+    for (int r = 0; r < runs; ++r) {
+      core::SystemRegistry registry;
+      registry.add("scripting", script::makeScriptSystem);
+      std::unique_ptr<core::Scene> scene = only == "lua" ? core::loadScene(std::string(PLATON_SOURCE_ROOT) + "/levels/cube_intro/scene.lua", registry)
+                                                         : bench::cubeIntroInCpp();
+      if (const char* code = std::getenv("PLATON_BENCH_LUA"); code && only == "lua")  // an experiment's setup
+        dynamic_cast<script::ScriptSystem&>(*scene->findSystem("scripting")).evaluate(code, "=experiment");
+      std::printf("%s: %.0f ns/frame\n", only.c_str(), play(*scene, frames).nanosecondsPerFrame);
+    }
+    return 0;
+  }
+  core::SystemRegistry registry;
+  registry.add("scripting", script::makeScriptSystem);
+  const std::string manifest = std::string(PLATON_SOURCE_ROOT) + "/levels/cube_intro/scene.lua";
+
+  std::vector<double> lua, cpp, ratio;
+  uint64_t luaHash = 0, cppHash = 0;
+  size_t luaMemory = 0;
+  for (int r = 0; r < runs; ++r) {  // interleaved, so a slow moment of the machine hits both
+    std::unique_ptr<core::Scene> luaScene = core::loadScene(manifest, registry);
+    if (const char* log = std::getenv("PLATON_JIT_LOG"); log && r == 0)  // LuaJIT's trace log: what compiles
+      dynamic_cast<script::ScriptSystem&>(*luaScene->findSystem("scripting"))
+          .evaluate(std::string("require('jit.v').start('") + log + "')", "=jit log");
+    const Run l = play(*luaScene, frames);
+    luaMemory = dynamic_cast<script::ScriptSystem&>(*luaScene->findSystem("scripting")).luaMemoryBytes();
+    std::unique_ptr<core::Scene> cppScene = bench::cubeIntroInCpp();
+    const Run c = play(*cppScene, frames);
+    lua.push_back(l.nanosecondsPerFrame);
+    cpp.push_back(c.nanosecondsPerFrame);
+    ratio.push_back(l.nanosecondsPerFrame / c.nanosecondsPerFrame);
+    luaHash = l.hash, cppHash = c.hash;
+  }
+  const bench::Spread luaNs = bench::Spread::of(lua), cppNs = bench::Spread::of(cpp), ratios = bench::Spread::of(ratio);
+  std::vector<double> fps;
+  for (double ns : lua) fps.push_back(1e9 / ns);
+  std::printf("cube_intro, %llu frames a run, %d interleaved runs; median (min-max)\n",
+              static_cast<unsigned long long>(frames), runs);
+  std::printf("  game in Lua : %s ns/frame, %s frames/s, Lua heap %.0f KiB\n", luaNs.show("%.0f").c_str(),
+              bench::Spread::of(fps).show("%.0f").c_str(), static_cast<double>(luaMemory) / 1024.0);
+  std::printf("  game in C++ : %s ns/frame\n", cppNs.show("%.0f").c_str());
+  std::printf("  Lua / C++   : %s   (goal <= 1.5: %s)\n", ratios.show("%.2f").c_str(),
+              bench::runsMet(ratio.size(), [&](size_t i) { return ratio[i] <= 1.5; }).c_str());
+  std::printf("  frames/s >= 100,000: %s\n", bench::runsMet(lua.size(), [&](size_t i) { return lua[i] <= 10000; }).c_str());
+  std::printf("  same state hash: %s (Lua %016llx, C++ %016llx)\n", luaHash == cppHash ? "yes" : "NO: the games differ",
+              static_cast<unsigned long long>(luaHash), static_cast<unsigned long long>(cppHash));
+  return luaHash == cppHash ? 0 : 1;
+}
