@@ -121,7 +121,7 @@ class Game final : public core::System, public physics::Rules {
     grounded_ = false;
     for (const physics::Contact& c : e.contacts()) {
       const double cx = static_cast<double>(c.normal.x), cy = static_cast<double>(c.normal.y);
-      const double length = std::hypot(cx, cy);
+      const double length = std::sqrt(cx * cx + cy * cy);  // as lua::unitNormal
       const double nx = length > 0 ? cx / length : 0, ny = length > 0 ? cy / length : 0;
       if (-(nx * dx + ny * dy) > kGroundCos) grounded_ = true;
     }

@@ -67,10 +67,10 @@ void LuaRules::contact(const physics::Contact& c, physics::ContactResponse& resp
   lua_State* L = host_.state();
   callbacks_[kContact].push();
   const int n = pushLine(c.entity, c.line);
-  const double nx = static_cast<double>(c.normal.x), ny = static_cast<double>(c.normal.y);
-  const double length = std::sqrt(nx * nx + ny * ny);  // exact squares for any normal a line can have
-  lua_pushnumber(L, length > 0 ? nx / length : 0);
-  lua_pushnumber(L, length > 0 ? ny / length : 0);
+  double nx = 0, ny = 0;
+  lua::unitNormal(c.normal.x, c.normal.y, nx, ny);
+  lua_pushnumber(L, nx);
+  lua_pushnumber(L, ny);
   pushEntity(L, c.other);
   host_.call(n + 3, 1);
   const int type = lua_type(L, -1);

@@ -74,6 +74,15 @@ inline void checkFunction(lua_State* L, int index) {
   if (lua_type(L, index) != LUA_TFUNCTION) argError(L, index, "a function");
 }
 
+// A contact normal (not normalized, Q16-scaled integers) as the unit vector Lua sees. One
+// definition for world.contact, its FFI twin and the rules' contact(), so all three agree to the bit.
+inline void unitNormal(int64_t x, int64_t y, double& nx, double& ny) {
+  const double dx = static_cast<double>(x), dy = static_cast<double>(y);
+  const double length = std::sqrt(dx * dx + dy * dy);
+  nx = length > 0 ? dx / length : 0;
+  ny = length > 0 ? dy / length : 0;
+}
+
 // Entity and platform handles as Lua numbers: index + 2^24 * generation, exact in a double while
 // the index stays below 2^24 and the generation below 2^29 (a slot reused 536 million times);
 // beyond that pushing the handle is an error, never a wrong handle.

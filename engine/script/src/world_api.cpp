@@ -212,10 +212,10 @@ int contact(lua_State* L) {
   const int64_t i = lua::checkInteger(L, 2, 1, static_cast<int64_t>(contacts.size()) + 1);
   if (i > static_cast<int64_t>(contacts.size())) return 0;
   const physics::Contact& c = contacts[static_cast<size_t>(i - 1)];
-  const double nx = static_cast<double>(c.normal.x), ny = static_cast<double>(c.normal.y);
-  const double length = std::hypot(nx, ny);
-  lua_pushnumber(L, length > 0 ? nx / length : 0);
-  lua_pushnumber(L, length > 0 ? ny / length : 0);
+  double nx = 0, ny = 0;
+  lua::unitNormal(c.normal.x, c.normal.y, nx, ny);
+  lua_pushnumber(L, nx);
+  lua_pushnumber(L, ny);
   lua_pushnumber(L, c.line.tag);
   lua_pushstring(L, c.line.index == physics::kNoLine ? "entity" : kindName(c.line.kind));
   lua_pushnumber(L, c.part);

@@ -49,11 +49,19 @@ int guarded(F&& f) noexcept {
   }
 }
 
-int ffiPosition(void* context, double handle, double* out) {
+// The entity functions' shared part: the handle checked, then f(world, entity) with nothing thrown.
+template <class F>
+int withEntity(void* context, double handle, F&& f) noexcept {
   return guarded([&] {
     physics::World& world = worldOf(context);
     EntityId e;
     if (const int s = entityOf(world, handle, e)) return s;
+    return f(world, e);
+  });
+}
+
+int ffiPosition(void* context, double handle, double* out) {
+  return withEntity(context, handle, [&](physics::World& world, EntityId e) {
     const physics::EntityView view = world.entity(e);
     if (!view.inserted()) return static_cast<int>(kNotInserted);
     const physics::InstanceView anchor = view.instance(0);
@@ -63,10 +71,7 @@ int ffiPosition(void* context, double handle, double* out) {
 }
 
 int ffiVelocity(void* context, double handle, double* out) {
-  return guarded([&] {
-    physics::World& world = worldOf(context);
-    EntityId e;
-    if (const int s = entityOf(world, handle, e)) return s;
+  return withEntity(context, handle, [&](physics::World& world, EntityId e) {
     const physics::Vec2w v = world.entity(e).velocity();
     out[0] = static_cast<double>(v.x) / kQ16, out[1] = static_cast<double>(v.y) / kQ16;
     return static_cast<int>(kOk);
@@ -74,10 +79,7 @@ int ffiVelocity(void* context, double handle, double* out) {
 }
 
 int ffiSetVelocity(void* context, double handle, double vx, double vy) {
-  return guarded([&] {
-    physics::World& world = worldOf(context);
-    EntityId e;
-    if (const int s = entityOf(world, handle, e)) return s;
+  return withEntity(context, handle, [&](physics::World& world, EntityId e) {
     const double x = vx * kQ16, y = vy * kQ16;
     if (!std::isfinite(x) || !std::isfinite(y) || std::fabs(x) > 4.6e18 || std::fabs(y) > 4.6e18) return static_cast<int>(kBadValue);
     world.setVelocity(e, {std::llround(x), std::llround(y)});
@@ -97,10 +99,7 @@ int ffiGravity(void* context, double part, double* out) {
 }
 
 int ffiContactCount(void* context, double handle, double* out) {
-  return guarded([&] {
-    physics::World& world = worldOf(context);
-    EntityId e;
-    if (const int s = entityOf(world, handle, e)) return s;
+  return withEntity(context, handle, [&](physics::World& world, EntityId e) {
     out[0] = static_cast<double>(world.entity(e).contacts().size());
     return static_cast<int>(kOk);
   });
@@ -108,10 +107,7 @@ int ffiContactCount(void* context, double handle, double* out) {
 
 // out: nx, ny, tag, kind (0 solid, 1 warp, 2 oneway, 3 entity), part, line, other (-1: none).
 int ffiContact(void* context, double handle, double i, double* out) {
-  return guarded([&] {
-    physics::World& world = worldOf(context);
-    EntityId e;
-    if (const int s = entityOf(world, handle, e)) return s;
+  return withEntity(context, handle, [&](physics::World& world, EntityId e) {
     const auto contacts = world.entity(e).contacts();
     if (!(i >= 1 && i <= static_cast<double>(contacts.size()) + 1) || i != std::floor(i)) return static_cast<int>(kBadIndex);
     if (i > static_cast<double>(contacts.size())) {
@@ -119,10 +115,7 @@ int ffiContact(void* context, double handle, double i, double* out) {
       return static_cast<int>(kOk);
     }
     const physics::Contact& c = contacts[static_cast<size_t>(i) - 1];
-    const double nx = static_cast<double>(c.normal.x), ny = static_cast<double>(c.normal.y);
-    const double length = std::hypot(nx, ny);
-    out[0] = length > 0 ? nx / length : 0;
-    out[1] = length > 0 ? ny / length : 0;
+    lua::unitNormal(c.normal.x, c.normal.y, out[0], out[1]);
     out[2] = c.line.tag;
     out[3] = c.line.index == physics::kNoLine ? 3 : static_cast<int>(c.line.kind);
     out[4] = c.part;
