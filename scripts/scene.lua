@@ -9,10 +9,11 @@ local engine, setup = ...
 local world = platon.world
 local band = bit.band
 
+local function trusted(path) return path:sub(1, 8) == "scripts/" end
+
 local function load(path, ...)
   if path == nil or path == "" then return nil end
-  local trusted = path:sub(1, 8) == "scripts/"
-  return engine.load(path, trusted, ...)
+  return engine.load(path, trusted(path), ...)
 end
 
 -- Level scripts and mods are sandboxed: their functions run with the JIT off (so the time budget's
@@ -85,7 +86,7 @@ end
 
 function scene.start()
   local rules = load(setup.rules, game)
-  if rules then engine.setRules(rules) end
+  if rules then engine.setRules(rules, not trusted(setup.rules)) end
   if game.progression.start then game.progression.start(game) end
 end
 

@@ -44,8 +44,18 @@ int main(int argc, char** argv) {
                   "end }, function() end\n",
                   "=bench", script::Trust::Trusted);
   host.call(0, 2);
-  script::LuaRules luaRules(host, -2);
+  script::LuaRules luaRules(host, -2, script::LuaRules::Call::Classic);
+  script::LuaRules ffiRules(host, -2, script::LuaRules::Call::Ffi);
   const int empty = luaL_ref(L, LUA_REGISTRYINDEX);
+  lua_pop(L, 1);
+  // The same rule in a mod: sandboxed, its functions interpreted (the JIT is off for them).
+  host.loadString("local player, killed = 7, false\n"
+                  "return { contact = function(entity, tag, kind, part, line, nx, ny, other)\n"
+                  "  if tag == 1 and entity == player then killed = true end\n"
+                  "end }\n",
+                  "=mod", script::Trust::Sandboxed);
+  host.call(0, 1);
+  script::LuaRules modClassic(host, -1, script::LuaRules::Call::Classic);
   lua_pop(L, 1);
   HazardRule hazard;
   hazard.player = {7, 0};
@@ -58,11 +68,19 @@ int main(int argc, char** argv) {
   contact.normal = {0, 65536};
   physics::ContactResponse response;
 
-  std::vector<double> lua, cpp, bare, ratio;
+  std::vector<double> lua, ffi, cpp, bare, ratio, ffiRatio, sandboxClassic;
   for (int r = 0; r < runs; ++r) {
     lua.push_back(nanosecondsPerCall(calls, [&](uint64_t i) {
       contact.line.tag = static_cast<uint32_t>(i & 1);
       luaRules.contact(contact, response);
+    }));
+    ffi.push_back(nanosecondsPerCall(calls, [&](uint64_t i) {
+      contact.line.tag = static_cast<uint32_t>(i & 1);
+      ffiRules.contact(contact, response);
+    }));
+    sandboxClassic.push_back(nanosecondsPerCall(calls, [&](uint64_t i) {
+      contact.line.tag = static_cast<uint32_t>(i & 1);
+      modClassic.contact(contact, response);
     }));
     cpp.push_back(nanosecondsPerCall(calls, [&](uint64_t i) {
       contact.line.tag = static_cast<uint32_t>(i & 1);
@@ -73,13 +91,17 @@ int main(int argc, char** argv) {
       lua_pcall(L, 0, 0, 0);
     }));
     ratio.push_back(lua.back() / bare.back());
+    ffiRatio.push_back(ffi.back() / bare.back());
   }
   std::printf("one contact callback, %llu calls a run, %d interleaved runs; median (min-max) ns per call\n",
               static_cast<unsigned long long>(calls), runs);
-  std::printf("  Lua rule (LuaRules::contact, 8 arguments, traceback handler, budget): %s\n", bench::Spread::of(lua).show("%.1f").c_str());
+  std::printf("  Lua rule, classic (8 arguments pushed, traceback handler, budget)   : %s\n", bench::Spread::of(lua).show("%.1f").c_str());
+  std::printf("  Lua rule, FFI (struct written, JIT-compiled trampoline; the engine's): %s\n", bench::Spread::of(ffi).show("%.1f").c_str());
+  std::printf("  sandboxed rule (a mod's: JIT off, so the classic path)            : %s\n", bench::Spread::of(sandboxClassic).show("%.1f").c_str());
   std::printf("  C++ rule (virtual call)                                             : %s\n", bench::Spread::of(cpp).show("%.1f").c_str());
   std::printf("  bare lua_pcall of an empty function                                 : %s\n", bench::Spread::of(bare).show("%.1f").c_str());
-  std::printf("  Lua rule / bare lua_pcall: %s (goal <= 2: %s)\n", bench::Spread::of(ratio).show("%.2f").c_str(),
-              bench::runsMet(ratio.size(), [&](size_t i) { return ratio[i] <= 2.0; }).c_str());
+  std::printf("  classic Lua rule / bare lua_pcall: %s\n", bench::Spread::of(ratio).show("%.2f").c_str());
+  std::printf("  FFI Lua rule / bare lua_pcall    : %s (goal <= 2: %s)\n", bench::Spread::of(ffiRatio).show("%.2f").c_str(),
+              bench::runsMet(ffiRatio.size(), [&](size_t i) { return ffiRatio[i] <= 2.0; }).c_str());
   return 0;
 }

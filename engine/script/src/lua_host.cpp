@@ -207,34 +207,44 @@ void LuaHost::call(int nargs, int nresults) {
   // Outermost calls come from C++ with no Lua running, where the first stack slot is the state's
   // own: the handler waits there. Nested calls (C++ called from Lua calling Lua again) see their C
   // function's frame instead and put the handler below their function.
-  const bool outermost = depth_ == 0;
-  int base = lua_gettop(L_) - nargs;  // the function's slot
-  int handler = kTracebackSlot;
-  if (!outermost) {
-    lua_rawgeti(L_, LUA_REGISTRYINDEX, tracebackRef_);
-    lua_insert(L_, base);
-    handler = base++;
-  }
-  if (outermost) {
-    shared_->inCall = true;
-    shared_->callStart = 0;
-    shared_->expired = false;
-    shared_->memoryRefused = false;
-  }
+  if (depth_ != 0) return callNested(nargs, nresults);
+  Shared& shared = *shared_;
+  shared.inCall = true;
+  shared.callStart = 0;
+  shared.expired = false;
+  shared.memoryRefused = false;
+  depth_ = 1;
+  const int status = lua_pcall(L_, nargs, nresults, kTracebackSlot);
+  depth_ = 0;
+  shared.inCall = false;
+  if (status != 0 || shared.expired) [[unlikely]] afterFailedCall(status, lua_gettop(L_) - 1);
+}
+
+void LuaHost::callNested(int nargs, int nresults) {
+  const int handler = lua_gettop(L_) - nargs;  // the function's slot, where the handler goes
+  lua_rawgeti(L_, LUA_REGISTRYINDEX, tracebackRef_);
+  lua_insert(L_, handler);
   ++depth_;
   const int status = lua_pcall(L_, nargs, nresults, handler);
   --depth_;
-  if (outermost) {
-    shared_->inCall = false;
-    if (shared_->expired) lua_sethook(L_, budgetHook, LUA_MASKCOUNT, kHookInstructions);
-  }
   if (status != 0) {
     ScriptError error = errorFromStack(L_, status, *shared_);
-    lua_settop(L_, outermost ? base - 1 : base - 2);
-    if (outermost && (shared_->memoryRefused || shared_->expired)) lua_gc(L_, LUA_GCCOLLECT, 0);
+    lua_settop(L_, handler - 1);
     throw error;
   }
-  if (!outermost) lua_remove(L_, handler);
+  lua_remove(L_, handler);
+}
+
+// The outermost call's slow path: the budget's hook set back to its normal rate if it was spent,
+// and on an error the message popped (leaving the stack as before the function was pushed), the
+// garbage of a stopped script collected, and the error thrown.
+void LuaHost::afterFailedCall(int status, int below) {
+  if (shared_->expired) lua_sethook(L_, budgetHook, LUA_MASKCOUNT, kHookInstructions);
+  if (status == 0) return;
+  ScriptError error = errorFromStack(L_, status, *shared_);
+  lua_settop(L_, below);
+  if (shared_->memoryRefused || shared_->expired) lua_gc(L_, LUA_GCCOLLECT, 0);
+  throw error;
 }
 
 void LuaHost::setPrintSink(std::function<void(std::string_view, std::string_view)> sink) {

@@ -79,6 +79,8 @@ class LuaHost {
   int tracebackRef_ = LUA_NOREF;
   static constexpr int kTracebackSlot = 1;
   void openTrusted();
+  void callNested(int nargs, int nresults);
+  [[gnu::cold]] void afterFailedCall(int status, int below);
 };
 
 }  // namespace platon::script

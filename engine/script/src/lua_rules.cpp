@@ -9,17 +9,67 @@ constexpr const char* kNames[] = {"pierce", "beginContact", "overContact", "endC
                                   "contact", "touchContact", "crushed"};
 using lua::pushEntity;
 
+// The FFI trampolines, loaded anew for every LuaRules so that each has prototypes of its own (a
+// trace blacklisted for one script, say a sandboxed one whose functions run with the JIT off,
+// stays interpreted for that script only). Arguments: ffi, the slot's address, the callbacks.
+constexpr const char* kTrampolines = R"lua(
+local ffi, address, callbacks = ...
+if not pcall(ffi.typeof, "struct platon_contact_slot") then
+  ffi.cdef "struct platon_contact_slot { double entity, tag, kind, part, line, nx, ny, other; };"
+end
+local c = ffi.cast("struct platon_contact_slot*", address)
+local sqrt = math.sqrt
+local KINDS = { [0] = "solid", "warp", "oneway", "entity" }
+local out = {}
+local pierce, contact = callbacks.pierce, callbacks.contact
+if pierce then
+  out.pierce = function()
+    local line = c.line
+    if line < 0 then line = nil end
+    return pierce(c.entity, c.tag, KINDS[c.kind], c.part, line)
+  end
+end
+if contact then
+  out.contact = function()
+    local line, other = c.line, c.other
+    if line < 0 then line = nil end
+    if other < 0 then other = nil end
+    -- The slot holds the normal as it is; it is made a unit vector here, with the operations of
+    -- lua::unitNormal in the same order (same doubles), so that a callback that ignores it does
+    -- not pay for the square root: the JIT drops unused work.
+    local x, y = c.nx, c.ny
+    local length = sqrt(x * x + y * y)
+    local nx, ny = 0, 0
+    if length > 0 then nx, ny = x / length, y / length end
+    return contact(c.entity, c.tag, KINDS[c.kind], c.part, line, nx, ny, other)
+  end
+end
+for _, name in ipairs { "beginContact", "overContact", "endContact", "touchContact", "crushed" } do
+  local f = callbacks[name]
+  if f then
+    out[name] = function()
+      local line, other = c.line, c.other
+      if line < 0 then line = nil end
+      if other < 0 then other = nil end
+      return f(c.entity, c.tag, KINDS[c.kind], c.part, line, other)
+    end
+  end
+end
+return out
+)lua";
+
 }  // namespace
 
-LuaRules::LuaRules(LuaHost& host, int index) : host_(host) {
+LuaRules::LuaRules(LuaHost& host, int index, Call how) : host_(host) {
   lua_State* L = host.state();
   lua::StackGuard guard(L);
   if (index < 0 && index > LUA_REGISTRYINDEX) index = lua_gettop(L) + 1 + index;
   if (lua_type(L, index) != LUA_TTABLE) throw ScriptError("rules: the script must return a table of callbacks", "");
+  // Raw reads: no metamethod of a (sandboxed) script's table runs outside a sandboxed call.
   for (int i = 0; i < kCount; ++i) {
-    lua_getfield(L, index, kNames[i]);
-    if (lua_isfunction(L, -1)) callbacks_[i] = lua::Ref(L, -1);
-    else if (!lua_isnil(L, -1))
+    lua_pushstring(L, kNames[i]);
+    lua_rawget(L, index);
+    if (!lua_isfunction(L, -1) && !lua_isnil(L, -1))
       throw ScriptError(std::string("rules: '") + kNames[i] + "' is a " + luaL_typename(L, -1) + ", not a function", "");
     lua_pop(L, 1);
   }
@@ -29,18 +79,76 @@ LuaRules::LuaRules(LuaHost& host, int index) : host_(host) {
     kindNames_[i] = lua::Ref(L, -1);
     lua_pop(L, 1);
   }
+  if (how != Call::Classic) {
+    slot_ = std::make_unique<Slot>();
+    makeTrampolines(index);
+    index = lua_gettop(L);  // the table of trampolines
+  }
+  for (int i = 0; i < kCount; ++i) {
+    lua_pushstring(L, kNames[i]);
+    lua_rawget(L, index);
+    if (lua_isfunction(L, -1)) callbacks_[i] = lua::Ref(L, -1);
+    lua_pop(L, 1);
+  }
 }
 
-int LuaRules::pushLine(physics::EntityId entity, const physics::LineRef& line) {
+void LuaRules::makeTrampolines(int index) {
+  lua_State* L = host_.state();
+  host_.loadString(kTrampolines, "=platon/rules (FFI)", Trust::Trusted);
+  lua_getglobal(L, "require");
+  lua_pushliteral(L, "ffi");
+  host_.call(1, 1);
+  lua_pushlightuserdata(L, slot_.get());
+  // The trampolines read the callbacks raw as well.
+  lua_newtable(L);
+  for (const char* name : kNames) {
+    lua_pushstring(L, name);
+    lua_rawget(L, index);
+    lua_setfield(L, -2, name);
+  }
+  host_.call(3, 1);
+}
+
+inline int LuaRules::pushLine(physics::EntityId entity, const physics::LineRef& line) {
+  const bool withEntity = line.index == physics::kNoLine;
+  const int kind = withEntity ? 3 : static_cast<int>(line.kind);
+  if (slot_) {
+    Slot& s = *slot_;
+    s.entity = lua::handleNumber(entity.index, entity.generation);
+    s.tag = line.tag, s.kind = kind, s.part = line.part;
+    s.line = withEntity ? -1.0 : static_cast<double>(line.index);
+    return 0;
+  }
   lua_State* L = host_.state();
   pushEntity(L, entity);
   lua_pushnumber(L, line.tag);
-  const bool withEntity = line.index == physics::kNoLine;
-  kindNames_[withEntity ? 3 : static_cast<int>(line.kind)].push();
+  kindNames_[kind].push();
   lua_pushnumber(L, line.part);
   if (withEntity) lua_pushnil(L);
   else lua_pushnumber(L, line.index);
   return 5;
+}
+
+inline int LuaRules::pushOther(physics::EntityId other) {
+  if (slot_) {
+    slot_->other = other.isSet() ? lua::handleNumber(other.index, other.generation) : -1.0;
+    return 0;
+  }
+  pushEntity(host_.state(), other);
+  return 1;
+}
+
+inline int LuaRules::pushNormal(const physics::Vec2w& normal) {
+  if (slot_) {  // the trampoline makes it a unit vector
+    slot_->nx = static_cast<double>(normal.x), slot_->ny = static_cast<double>(normal.y);
+    return 0;
+  }
+  double nx = 0, ny = 0;
+  lua::unitNormal(normal.x, normal.y, nx, ny);
+  lua_State* L = host_.state();
+  lua_pushnumber(L, nx);
+  lua_pushnumber(L, ny);
+  return 2;
 }
 
 bool LuaRules::pierce(physics::EntityId entity, const physics::LineRef& line) {
@@ -55,24 +163,20 @@ bool LuaRules::pierce(physics::EntityId entity, const physics::LineRef& line) {
 
 void LuaRules::event(Callback which, const physics::Contact& c) {
   if (!callbacks_[which].isSet()) return;
-  lua_State* L = host_.state();
   callbacks_[which].push();
-  const int n = pushLine(c.entity, c.line);
-  pushEntity(L, c.other);
-  host_.call(n + 1, 0);
+  int n = pushLine(c.entity, c.line);
+  n += pushOther(c.other);
+  host_.call(n, 0);
 }
 
 void LuaRules::contact(const physics::Contact& c, physics::ContactResponse& response) {
   if (!callbacks_[kContact].isSet()) return;
   lua_State* L = host_.state();
   callbacks_[kContact].push();
-  const int n = pushLine(c.entity, c.line);
-  double nx = 0, ny = 0;
-  lua::unitNormal(c.normal.x, c.normal.y, nx, ny);
-  lua_pushnumber(L, nx);
-  lua_pushnumber(L, ny);
-  pushEntity(L, c.other);
-  host_.call(n + 3, 1);
+  int n = pushLine(c.entity, c.line);
+  n += pushNormal(c.normal);
+  n += pushOther(c.other);
+  host_.call(n, 1);
   const int type = lua_type(L, -1);
   if (type == LUA_TNIL) {
     lua_pop(L, 1);
@@ -89,11 +193,15 @@ void LuaRules::contact(const physics::Contact& c, physics::ContactResponse& resp
                           "; return nothing, false, or {slide =, keepVelocity =, restitution =}",
                       "");
   }
-  lua_getfield(L, -1, "slide");
+  // Raw reads: the table may be a sandboxed script's, and its metamethods must not run out here.
+  lua_pushliteral(L, "slide");
+  lua_rawget(L, -2);
   if (!lua_isnil(L, -1)) response.slide = lua_toboolean(L, -1) != 0;
-  lua_getfield(L, -2, "keepVelocity");
+  lua_pushliteral(L, "keepVelocity");
+  lua_rawget(L, -3);
   if (!lua_isnil(L, -1)) response.removeNormalVelocity = lua_toboolean(L, -1) == 0;
-  lua_getfield(L, -3, "restitution");
+  lua_pushliteral(L, "restitution");
+  lua_rawget(L, -4);
   if (!lua_isnil(L, -1)) {
     const double r = lua_tonumber(L, -1);
     if (lua_type(L, -1) != LUA_TNUMBER || !(r >= 0 && r <= 1)) {

@@ -12,8 +12,15 @@
 // kind is "solid", "warp", "oneway" or "entity"; line is the line's index in its part (nil for an
 // entity); nx, ny the unit normal from the line towards the entity; other the other entity or nil.
 // A Lua error inside a callback throws ScriptError; the world finishes the frame and rethrows it.
+//
+// Two ways to make the call, the same arguments either way. Classic: every argument pushed through
+// the C API (eight pushes for contact()). FFI (trusted states with the ffi library): the contact's
+// numbers are written into a plain C struct and a small Lua function per callback, compiled by the
+// JIT, reads them and calls the script's function, so C++ makes one argument-less call.
+// bench/script/script_callbacks measures both.
 #pragma once
 #include <array>
+#include <memory>
 
 #include "lua_host.h"
 #include "platon/physics/rules.h"
@@ -22,8 +29,13 @@ namespace platon::script {
 
 class LuaRules final : public physics::Rules {
  public:
+  // Classic: arguments pushed. Ffi: trampolines, for trusted scripts only. A sandboxed script's
+  // functions run with the JIT off: a trace calling one is aborted and the trampoline blacklisted,
+  // leaving its FFI reads to the interpreter (320 ns a call), and calling them through
+  // lua::callThrough to keep the trace measured 46 ns against the classic path's 44.
+  enum class Call { Classic, Ffi };
   // Reads the callbacks of the table at `index`.
-  LuaRules(LuaHost& host, int index);
+  LuaRules(LuaHost& host, int index, Call how = Call::Classic);
 
   bool pierce(physics::EntityId entity, const physics::LineRef& line) override;
   void beginContact(const physics::Contact& c) override { event(kBegin, c); }
@@ -36,11 +48,23 @@ class LuaRules final : public physics::Rules {
  private:
   enum Callback { kPierce, kBegin, kOver, kEnd, kContact, kTouch, kCrushed, kCount };
   void event(Callback which, const physics::Contact& c);
-  int pushLine(physics::EntityId entity, const physics::LineRef& line);
+  // Classic: pushes entity, tag, kind, part, line (5 values). FFI: writes them into the slot, pushes
+  // nothing. Returns the number of values pushed.
+  inline int pushLine(physics::EntityId entity, const physics::LineRef& line);
+  inline int pushOther(physics::EntityId other);
+  inline int pushNormal(const physics::Vec2w& normal);
+  void makeTrampolines(int index);
+
+  // What the FFI trampolines read (doubles only: the same numbers the classic path pushes, but the
+  // normal as the world gives it; -1 for "no line" and "no other entity", which they turn into nil).
+  struct Slot {
+    double entity, tag, kind, part, line, nx, ny, other;
+  };
 
   LuaHost& host_;
-  std::array<lua::Ref, kCount> callbacks_;
-  std::array<lua::Ref, 4> kindNames_;  // solid, warp, oneway, entity: interned once
+  std::array<lua::Ref, kCount> callbacks_;  // the script's functions, or their FFI trampolines
+  std::array<lua::Ref, 4> kindNames_;       // solid, warp, oneway, entity: interned once
+  std::unique_ptr<Slot> slot_;              // set for Call::Ffi; Lua holds its address
 };
 
 }  // namespace platon::script

@@ -93,10 +93,14 @@ struct HandleBits {
   uint32_t generation = 0;
 };
 
-inline void pushHandle(lua_State* L, uint32_t index, uint32_t generation) {
+inline double handleNumber(uint32_t index, uint32_t generation) {
   if (index >= (1u << 24) || generation >= (1u << 29))
     throw ArgError("handle out of the range Lua numbers hold exactly");
-  lua_pushnumber(L, static_cast<double>(index) + kHandleIndexScale * static_cast<double>(generation));
+  return static_cast<double>(index) + kHandleIndexScale * static_cast<double>(generation);
+}
+
+inline void pushHandle(lua_State* L, uint32_t index, uint32_t generation) {
+  lua_pushnumber(L, handleNumber(index, generation));
 }
 
 inline void pushEntity(lua_State* L, physics::EntityId id) {
@@ -178,6 +182,16 @@ class Ref {
 };
 
 // Restores the stack top on scope exit: C++ code that reads Lua values cannot leak slots.
+// f(...) -> the results of f(...), as a plain C function (no C++ object lives in its frame, so a
+// Lua error may unwind through it). Trusted code calls sandboxed functions, which run with the JIT
+// off, through it: LuaJIT stitches the caller's trace around a C function instead of aborting it
+// and, after a few aborts, blacklisting the caller.
+inline int callThrough(lua_State* L) {
+  luaL_checktype(L, 1, LUA_TFUNCTION);
+  lua_call(L, lua_gettop(L) - 1, LUA_MULTRET);
+  return lua_gettop(L);
+}
+
 class StackGuard {
  public:
   explicit StackGuard(lua_State* L) : L_(L), top_(lua_gettop(L)) {}

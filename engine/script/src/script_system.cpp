@@ -15,6 +15,7 @@ struct ScriptSystem::State {
   lua::Ref driver;  // the table scripts/scene.lua returned
   std::unique_ptr<LuaRules> rules;
   std::vector<std::string> files;  // every script file loaded: hot reload watches them
+  bool ffi = std::getenv("PLATON_NO_FFI") == nullptr;  // the FFI fast paths (off: for the benches)
 
   State(core::Scene& s, std::string r, LuaLimits limits) : scene(&s), root(std::move(r)), host(limits) {
     context.scene = &s;
@@ -54,12 +55,16 @@ int engineLoad(lua_State* L) {
   return 1;
 }
 
+// engine.setRules(rules, sandboxed): rules is a table of callbacks or nil (the C++ defaults);
+// sandboxed says its functions run with the JIT off.
 int engineSetRules(lua_State* L) {
   ScriptSystem::State& state = stateOf(L);
+  const bool sandboxed = lua_toboolean(L, 2) != 0;
   state.scene->world().setRules(nullptr);
   state.rules.reset();
   if (!lua_isnil(L, 1)) {
-    state.rules = std::make_unique<LuaRules>(state.host, 1);
+    const LuaRules::Call how = state.ffi && !sandboxed ? LuaRules::Call::Ffi : LuaRules::Call::Classic;
+    state.rules = std::make_unique<LuaRules>(state.host, 1, how);
     state.scene->world().setRules(state.rules.get());
   }
   return 0;
@@ -71,17 +76,8 @@ int engineNewSandbox(lua_State* L) {
   return 1;
 }
 
-// engine.call(f, ...) -> f(...): a plain C function (no C++ object lives in this frame, so a Lua
-// error may unwind through it). It exists so that LuaJIT stitches traces around calls into
-// sandboxed functions, which run with the JIT off, instead of aborting and blacklisting them.
-int engineCall(lua_State* L) {
-  luaL_checktype(L, 1, LUA_TFUNCTION);
-  lua_call(L, lua_gettop(L) - 1, LUA_MULTRET);
-  return lua_gettop(L);
-}
-
 constexpr luaL_Reg kEngine[] = {
-    {"call", engineCall},
+    {"call", lua::callThrough},
     {"load", lua::bound<engineLoad>},
     {"setRules", lua::bound<engineSetRules>},
     {"newSandbox", lua::bound<engineNewSandbox>},
@@ -142,7 +138,7 @@ ScriptSystem::ScriptSystem(core::Scene& scene, std::string root) {
   limits.callNanoseconds = static_cast<int64_t>(m.callMilliseconds * 1e6);
   state_ = std::make_unique<State>(scene, std::move(root), limits);
   registerWorldApi(state_->host, state_->context);
-  if (std::getenv("PLATON_NO_FFI") == nullptr) registerWorldFfi(state_->host, state_->context);
+  if (state_->ffi) registerWorldFfi(state_->host, state_->context);
   registerDrawApi(state_->host, state_->context);
 }
 

@@ -248,34 +248,5 @@ TEST(Errors, TheStackIsLeftAsItWas) {
   EXPECT_EQ(lua_gettop(host.state()), top);
 }
 
-// Rules are called from C++ outside any Lua call, a million times a session: each callback must
-// leave the stack as it found it, whatever it returns (a leak of one slot overflowed it once).
-TEST(Rules, CallbacksLeaveTheStackAsTheyFoundIt) {
-  LuaHost host;
-  lua_State* L = host.state();
-  host.loadString("local r = 0\n"
-                  "return { pierce = function() return true end,\n"
-                  "  beginContact = function() end,\n"
-                  "  contact = function(e, tag)\n"
-                  "    r = r + 1\n"
-                  "    if r % 3 == 0 then return nil elseif r % 3 == 1 then return false end\n"
-                  "    return { slide = true, keepVelocity = false, restitution = 0.5 }\n"
-                  "  end }\n",
-                  "=rules", Trust::Trusted);
-  host.call(0, 1);
-  LuaRules rules(host, -1);
-  lua_pop(L, 1);
-  const int top = lua_gettop(L);
-  physics::Contact c{};
-  c.entity = {1, 0};
-  physics::ContactResponse response;
-  for (int i = 0; i < 100000; ++i) {
-    rules.contact(c, response);
-    rules.beginContact(c);
-    EXPECT_TRUE(rules.pierce(c.entity, c.line));
-    ASSERT_EQ(lua_gettop(L), top) << "after " << i + 1 << " calls";
-  }
-}
-
 }  // namespace
 }  // namespace platon::script
