@@ -1,7 +1,7 @@
 # The architecture as CMake enforces it. Each engine module is one target; a module may link only
 # the modules its arrows allow (docs/architecture.md):
 #
-#   physics  <- stage <- core <- script          render -> core, stage
+#   physics  <- stage <- core <- script          render -> core's headers (a plugin)
 #                 ^               |   (script -> stage, physics)
 #
 # Two checks, both in every build:
@@ -15,6 +15,8 @@ set(PLATON_ARROWS_platon_physics "")
 set(PLATON_ARROWS_platon_stage platon_physics)
 set(PLATON_ARROWS_platon_core platon_stage platon_physics)
 set(PLATON_ARROWS_platon_script platon_core platon_stage platon_physics)
+# The renderer is a plugin: core's headers only (plain data and interfaces), no engine library.
+set(PLATON_ARROWS_platon_render "")
 
 set(PLATON_MODULES "" CACHE INTERNAL "")
 

@@ -4,7 +4,11 @@ set -euo pipefail
 # clang + libclang-rt-14-dev (the libFuzzer and sanitizer runtimes): the fuzz stage of tools/test.
 packages=(cmake make g++ pkg-config libgtest-dev libgmock-dev libbenchmark-dev libbox2d-dev libchipmunk-dev
   clang libclang-rt-14-dev
-  libluajit-5.1-dev)  # the script module (LuaJIT 2.1)
+  libluajit-5.1-dev  # the script module (LuaJIT 2.1)
+  # the renderer plugin: SDL2 window, GL loader, text, PNG screenshots, the font; Mesa for GL
+  # without a GPU (SDL_VIDEODRIVER=offscreen), Xvfb and xdotool for the real-window test
+  libsdl2-dev libsdl2-ttf-dev libsdl2-image-dev libepoxy-dev fonts-dejavu-core
+  libgl1-mesa-dri libegl1 xvfb xauth xdotool)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -1,7 +1,9 @@
-// Plays a scene headless (the window comes with the renderer): in real time at 60 frames a second
-// or as fast as it goes, with input from a replay or none, printing the level's messages, errors
-// and results as they happen. With --watch, saving the level, its manifest or a script reloads it
-// while it runs; a broken edit is reported and the last good version goes on.
+// Plays a scene in real time at 60 frames a second (or as fast as it goes), printing the level's
+// messages, errors and results as they happen. When the scene names "rendering" it is shown in a
+// window (the renderer plugin, loaded only then) and played from the keyboard; --headless, or no
+// display, plays it without one. Input can also come from a replay. With --watch, saving the
+// level, its manifest or a script reloads it while it runs; a broken edit is reported (on screen
+// too) and the last good version goes on.
 #include "play_command.h"
 
 #include <chrono>
@@ -10,6 +12,8 @@
 #include <string>
 #include <thread>
 
+#include "engine_registry.h"
+#include "platon/core/display.h"
 #include "platon/core/fixed_step.h"
 #include "platon/core/live_scene.h"
 #include "platon/core/replay.h"
@@ -21,12 +25,15 @@ namespace {
 int usage() {
   std::fprintf(stderr,
                "usage: platon play scene.lua [--frames N] [--input run.replay] [--record out.replay]\n"
-               "                             [--watch] [--fast]\n"
+               "                             [--watch] [--fast] [--headless] [--shot out.png]\n"
                "  --frames N   stop after N frames (default: at the goal, or never with --watch)\n"
                "  --input F    the buttons of a recorded run (nothing held without it)\n"
                "  --record F   write this run's input and hashes to F as a replay\n"
                "  --watch      reload the scene when its files are saved\n"
-               "  --fast       do not wait for real time\n");
+               "  --fast       do not wait for real time\n"
+               "  --headless   no window, even when the scene names \"rendering\"\n"
+               "  --shot F     save the last frame shown to F (PNG) at the end\n"
+               "keys in the window: arrows or WASD move, Space jumps, R restarts, F11 fullscreen, Esc quits\n");
   return 2;
 }
 
@@ -34,12 +41,36 @@ script::ScriptSystem* scriptsOf(core::Scene& scene) {
   return dynamic_cast<script::ScriptSystem*>(scene.findSystem("scripting"));
 }
 
+core::Display* displayOf(core::Scene& scene) {
+  core::System* rendering = scene.findSystem("rendering");
+  return rendering ? rendering->display() : nullptr;
+}
+
+// One picture: the player's face, the scripts' shapes, the heads-up lines and the last error.
+void show(core::Display& display, core::LiveScene& live) {
+  core::Scene& scene = live.scene();
+  const script::ScriptSystem* scripts = scriptsOf(scene);
+  const script::GameStatus status = scripts ? scripts->status() : script::GameStatus{};
+  core::View view = core::faceView(scene, status.face);
+  const uint64_t seconds = status.time / 60;
+  char line[160];
+  std::snprintf(line, sizeof line, "%s    %llu:%02llu    deaths %d%s", scene.manifest().name.c_str(),
+                static_cast<unsigned long long>(seconds / 60), static_cast<unsigned long long>(seconds % 60), status.deaths,
+                status.won ? "    goal reached!" : "");
+  view.hud.push_back(line);
+  if (!status.message.empty()) view.hud.push_back(status.message);
+  view.error = live.lastError();
+  core::DrawList draw(true);
+  scene.draw(draw);
+  display.present(view, draw);
+}
+
 }  // namespace
 
 int playCommand(int argc, char** argv) {
-  std::string scenePath, inputPath, recordPath;
+  std::string scenePath, inputPath, recordPath, shotPath;
   uint64_t frames = 0;
-  bool watch = false, fast = false;
+  bool watch = false, fast = false, headless = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--frames" && i + 1 < argc) frames = std::strtoull(argv[++i], nullptr, 10);
@@ -47,6 +78,8 @@ int playCommand(int argc, char** argv) {
     else if (a == "--record" && i + 1 < argc) recordPath = argv[++i];
     else if (a == "--watch") watch = true;
     else if (a == "--fast") fast = true;
+    else if (a == "--headless") headless = true;
+    else if (a == "--shot" && i + 1 < argc) shotPath = argv[++i];
     else if (scenePath.empty() && !a.empty() && a[0] != '-') scenePath = a;
     else return usage();
   }
@@ -62,13 +95,26 @@ int playCommand(int argc, char** argv) {
     scenePath = input.scene;
   }
 
-  core::SystemRegistry registry;
-  registry.add("scripting", script::makeScriptSystem);
+  core::SystemRegistry registry = engineRegistry(headless ? Presentation::Headless : Presentation::Window);
   std::optional<core::LiveScene> live;
   try {
     live.emplace(scenePath, registry, watch);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s\n", core::errorReport(e).c_str());
+    return 1;
+  }
+  core::Display* display = displayOf(live->scene());
+  if (display) {
+    uint8_t ignored = 0;
+    try {
+      display->pollEvents(ignored);  // opens the window: no display shows here, in one line
+    } catch (const std::exception& e) {
+      std::printf("%s: playing headless\n", e.what());
+      display = nullptr;
+    }
+  }
+  if (!display && !shotPath.empty()) {
+    std::fprintf(stderr, "--shot needs a window: the scene names no \"rendering\", or there is no display\n");
     return 1;
   }
   std::printf("playing %s%s\n", live->scene().manifest().name.c_str(), watch ? " (watching its files: save one to reload)" : "");
@@ -101,8 +147,11 @@ int playCommand(int argc, char** argv) {
         std::printf("reload refused, the last good version goes on:\n%s\n", r->error.c_str());
       }
     }
+    uint8_t keys = 0;
+    display = displayOf(live->scene()) && display ? displayOf(live->scene()) : nullptr;  // a reload replaces it
+    if (display && !display->pollEvents(keys)) break;  // the window was closed
     for (int s = 0; s < due && (frames == 0 || frame < frames); ++s) {
-      const uint8_t held = frame < input.held.size() ? input.held[frame] : 0;
+      const uint8_t held = inputPath.empty() ? keys : frame < input.held.size() ? input.held[frame] : 0;
       ++frame;
       if (std::optional<std::string> error = live->step(edges.next(held)); error && *error != lastError) {
         std::printf("frame %llu: error (the game goes on):\n%s\n", static_cast<unsigned long long>(frame), error->c_str());
@@ -122,13 +171,24 @@ int playCommand(int argc, char** argv) {
                     static_cast<double>(status.time) / 60.0, status.deaths);
       }
     }
+    if (display && (due > 0 || fast)) show(*display, *live);
     std::fflush(stdout);
-    if (won && frames == 0 && !watch) break;
+    if (won && frames == 0 && !watch && !display) break;
     if (!fast && due == 0) std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
   if (recorder) {
     core::writeReplay(recorder->replay(), recordPath);
     std::printf("recorded %llu frames to %s\n", static_cast<unsigned long long>(frame), recordPath.c_str());
+  }
+  if (display && !shotPath.empty()) {
+    try {
+      show(*display, *live);
+      display->saveScreenshot(shotPath);
+      std::printf("screenshot: %s\n", shotPath.c_str());
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "%s\n", e.what());
+      return 1;
+    }
   }
   std::printf("state hash %016llx after %llu frames\n", static_cast<unsigned long long>(live->scene().world().stateHash()),
               static_cast<unsigned long long>(frame));

@@ -15,6 +15,7 @@
 namespace platon::core {
 
 class Scene;
+class Display;
 
 class System {
  public:
@@ -37,14 +38,28 @@ class System {
   // scene it replaces: take over what the new version still allows (the player's place and
   // state, counters). Throwing refuses the new version; the old one stays live.
   virtual void carryOver(Scene& scene, System& previous) { (void)scene, (void)previous; }
+
+  // The window this system shows the scene in, for the rendering system (core/display.h).
+  virtual Display* display() { return nullptr; }
 };
 
 using SystemFactory = std::function<std::unique_ptr<System>(Scene&)>;
+
+// The C function a plugin exports: creates its system for `scene` (ownership passes to the caller),
+// or returns nullptr with a reason in `error` (at most errorSize bytes, NUL-terminated). No C++
+// exception crosses it.
+extern "C" using PluginEntry = System*(Scene& scene, char* error, size_t errorSize);
+inline constexpr const char* kPluginEntryName = "platon_create_system";
 
 class SystemRegistry {
  public:
   // Registers a factory under `name`; a repeated name throws.
   void add(std::string name, SystemFactory factory);
+  // Registers a system that lives in a shared module, lib<module>.so, loaded (dlopen) the first time
+  // a scene needs it and kept loaded for the rest of the process (a system's code must outlive it).
+  // Searched in $PLATON_PLUGIN_PATH (colon-separated folders), then `folders`. Creating it when no
+  // folder has the module, or the module fails to load, throws naming every place tried.
+  void addPlugin(std::string name, std::string module, std::vector<std::string> folders);
   bool has(std::string_view name) const;
   // Creates the named system for `scene`. An unknown name throws, listing the known ones.
   std::unique_ptr<System> create(std::string_view name, Scene& scene) const;

@@ -1,0 +1,37 @@
+// The rendering system: a window showing the face the player is on, its map lines coloured by tag,
+// what the scripts drew (core::DrawList), the heads-up lines and the error overlay. The window
+// opens on first use and passes to the new version of the system on a hot reload, so a reload
+// never reopens it.
+#pragma once
+#include <memory>
+#include <optional>
+
+#include "platon/core/display.h"
+#include "platon/core/system.h"
+
+namespace platon::render {
+
+class RenderSystem final : public core::System, public core::Display {
+ public:
+  RenderSystem();
+  ~RenderSystem() override;
+
+  void carryOver(core::Scene& scene, core::System& previous) override;
+  core::Display* display() override { return this; }
+
+  bool pollEvents(uint8_t& held) override;
+  void present(const core::View& view, const core::DrawList& draw) override;
+  std::vector<uint8_t> capture(int& width, int& height) override;
+  void saveScreenshot(const std::string& path) override;
+
+ private:
+  struct Gl;
+  Gl& gl();
+  void paint(const core::View& view, const core::DrawList& draw);
+
+  std::unique_ptr<Gl> gl_;
+  std::optional<core::View> lastView_;
+  core::DrawList lastDraw_{true};
+};
+
+}  // namespace platon::render

@@ -1,0 +1,37 @@
+// An SDL2 window with an OpenGL 3.3 core context: resizable, high-DPI aware, vsync and 4x
+// multisampling when the driver has them. Keyboard state becomes the engine's buttons.
+#pragma once
+#include <SDL2/SDL.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace platon::render {
+
+class Window {
+ public:
+  // Throws std::runtime_error when there is no display or no GL 3.3 core context.
+  Window(const std::string& title, int width, int height);
+  ~Window();
+  Window(const Window&) = delete;
+  Window& operator=(const Window&) = delete;
+
+  // Handles pending events; `held` gets the buttons held now. False once the window was closed or
+  // Esc pressed.
+  bool pollEvents(uint8_t& held);
+  void setTitle(const std::string& title);
+  // The drawable's size in pixels, and pixels per window point (2 on a high-DPI screen).
+  int pixelWidth() const;
+  int pixelHeight() const;
+  float pixelsPerPoint() const;
+  void swap();
+  // The back buffer's pixels, rows from the top, RGBA.
+  std::vector<uint8_t> readPixels(int& width, int& height) const;
+
+ private:
+  SDL_Window* window_ = nullptr;
+  SDL_GLContext context_ = nullptr;
+};
+
+}  // namespace platon::render

@@ -1,0 +1,4 @@
+#version 330 core
+in vec4 vertexColor;
+out vec4 fragColor;
+void main() { fragColor = vertexColor; }

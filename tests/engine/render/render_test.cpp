@@ -1,0 +1,156 @@
+// The renderer plugin, loaded as the engine loads it, drawing offscreen (SDL_VIDEODRIVER=offscreen:
+// a GL core context on Mesa llvmpipe, no display needed). Pixels are read back and checked where
+// the picture must have the face, a hazard line, the player's circle, the heads-up text and the
+// error overlay.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "platon/core/display.h"
+#include "platon/core/scene.h"
+#include "platon/testing/temp_folder.h"
+
+namespace platon {
+namespace {
+
+struct Rgba {
+  int r, g, b, a;
+};
+
+class Renderer : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    setenv("SDL_VIDEODRIVER", "offscreen", 1);
+    registry.addPlugin("rendering", "platon_render", {PLATON_PLUGIN_DIR});
+    const std::string manifest = folder.write("scene.lua", "return { name = 'render test', systems = { 'rendering' } }");
+    scene = core::loadScene(manifest, registry);
+    ASSERT_NE(scene->findSystem("rendering"), nullptr);
+    display = scene->findSystem("rendering")->display();
+    ASSERT_NE(display, nullptr);
+  }
+
+  // A square face 0..1000 with a hazard line along y = 100 and the player's circle at its centre.
+  core::View squareFace() const {
+    core::View view;
+    view.title = "render test";
+    view.border = {{0, 0}, {1000, 0}, {1000, 1000}, {0, 1000}};
+    view.lines.push_back({{100, 100}, {900, 100}, 1, 0});
+    return view;
+  }
+
+  Rgba at(const std::vector<uint8_t>& pixels, int width, int x, int y) const {
+    const size_t i = (static_cast<size_t>(y) * width + x) * 4;
+    return {pixels[i], pixels[i + 1], pixels[i + 2], pixels[i + 3]};
+  }
+
+  testing::TempFolder folder{"render"};
+  core::SystemRegistry registry;
+  std::unique_ptr<core::Scene> scene;
+  core::Display* display = nullptr;
+};
+
+bool near(Rgba p, int r, int g, int b, int tolerance = 12) {
+  return std::abs(p.r - r) <= tolerance && std::abs(p.g - g) <= tolerance && std::abs(p.b - b) <= tolerance;
+}
+
+std::string show(Rgba p) {
+  return "(" + std::to_string(p.r) + ", " + std::to_string(p.g) + ", " + std::to_string(p.b) + ")";
+}
+
+TEST_F(Renderer, DrawsTheFaceItsLinesAndTheScriptsShapes) {
+  core::DrawList draw(true);
+  draw.circle(core::Place::onFace(0), {500, 500}, 50, {10, 200, 10, 255});
+  draw.circle(core::Place::onFace(3), {500, 500}, 400, {200, 10, 200, 255});  // another face: not shown
+  display->present(squareFace(), draw);
+  int w = 0, h = 0;
+  const std::vector<uint8_t> pixels = display->capture(w, h);
+  ASSERT_EQ(w, 1280);
+  ASSERT_EQ(h, 720);
+  // The face fills a 640 x 640 square in the middle (40 px margins): centre (640, 360).
+  const float scale = 640.0f / 1000.0f;
+  auto px = [&](float x, float y) { return at(pixels, w, static_cast<int>(320 + x * scale), static_cast<int>(40 + (1000 - y) * scale)); };
+  EXPECT_TRUE(near(px(500, 500), 10, 200, 10)) << "the player's circle: " << show(px(500, 500));
+  EXPECT_TRUE(near(px(500, 100), 235, 70, 60)) << "the hazard line: " << show(px(500, 100));
+  EXPECT_TRUE(near(px(200, 800), 50, 56, 70)) << "the face: " << show(px(200, 800));
+  EXPECT_TRUE(near(at(pixels, w, 100, 400), 22, 24, 30)) << "outside the face: " << show(at(pixels, w, 100, 400));
+  for (int y = 0; y < h; y += 7)
+    for (int x = 0; x < w; x += 7) ASSERT_FALSE(near(at(pixels, w, x, y), 200, 10, 200, 30)) << "another face's shape at " << x << ", " << y;
+}
+
+TEST_F(Renderer, ShowsTheHeadsUpLinesAndTheErrorOverlay) {
+  core::View view = squareFace();
+  core::DrawList draw(true);
+  display->present(view, draw);
+  int w = 0, h = 0;
+  const std::vector<uint8_t> plain = display->capture(w, h);
+  view.hud = {"Cube: first steps    0:03    deaths 0"};
+  view.error = "levels/x/level.lua:20: attempt to index a nil value\nstack traceback:\n\tlevels/x/level.lua:20: in function";
+  display->present(view, draw);
+  const std::vector<uint8_t> shown = display->capture(w, h);
+  int bright = 0;  // text pixels in the heads-up corner
+  for (int y = 8; y < 30; ++y)
+    for (int x = 8; x < 300; ++x) bright += at(shown, w, x, y).r > 200 && at(plain, w, x, y).r < 60;
+  EXPECT_GT(bright, 100);
+  // The overlay: a red box along the bottom, over the face too, with white text on it.
+  const Rgba box = at(shown, w, 1200, h - 20);
+  EXPECT_GT(box.r, 90);
+  EXPECT_LT(box.g, 40);
+  EXPECT_TRUE(near(at(plain, w, 1200, h - 20), 22, 24, 30));
+  int white = 0;
+  for (int y = h - 100; y < h; ++y)
+    for (int x = 16; x < 400; ++x) white += near(at(shown, w, x, y), 255, 255, 255, 40);
+  EXPECT_GT(white, 100);
+}
+
+TEST_F(Renderer, SavesAScreenshotAsPng) {
+  display->present(squareFace(), core::DrawList(true));
+  const std::string path = folder.path("shot.png");
+  display->saveScreenshot(path);
+  std::ifstream file(path, std::ios::binary);
+  std::string head(8, '\0');
+  file.read(head.data(), 8);
+  EXPECT_EQ(head, "\x89PNG\r\n\x1a\n");
+  EXPECT_THROW(display->saveScreenshot("/nonexistent/folder/shot.png"), std::runtime_error);
+}
+
+// The plugin is loaded only when a scene names it, and only then are SDL2 and GL in the process.
+TEST(Plugins, LoadedOnlyWhenASceneNamesThem) {
+  auto mapped = [](const char* library) {
+    std::ifstream maps("/proc/self/maps");
+    std::stringstream text;
+    text << maps.rdbuf();
+    return text.str().find(library) != std::string::npos;
+  };
+  EXPECT_EXIT(
+      {
+        setenv("SDL_VIDEODRIVER", "offscreen", 1);
+        testing::TempFolder folder("plugins");
+        core::SystemRegistry registry;
+        registry.addPlugin("rendering", "platon_render", {PLATON_PLUGIN_DIR});
+        auto bare = core::loadScene(folder.write("a.lua", "return { name = 'a' }"), registry);
+        const bool before = mapped("libplaton_render") || mapped("libSDL2") || mapped("libGL");
+        auto shown = core::loadScene(folder.write("b.lua", "return { name = 'b', systems = { 'rendering' } }"), registry);
+        shown->findSystem("rendering")->display()->present({}, core::DrawList(true));
+        std::exit(!before && mapped("libplaton_render") && mapped("libSDL2") && mapped("libGL") ? 0 : 1);
+      },
+      ::testing::ExitedWithCode(0), "");
+}
+
+TEST(Plugins, AMissingModuleNamesWhereItLooked) {
+  testing::TempFolder folder("plugins");
+  core::SystemRegistry registry;
+  registry.addPlugin("rendering", "platon_no_such_module", {folder.path("")});
+  try {
+    core::loadScene(folder.write("a.lua", "return { name = 'a', systems = { 'rendering' } }"), registry);
+    FAIL() << "no error";
+  } catch (const std::exception& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("system 'rendering': cannot load its plugin libplaton_no_such_module.so"), std::string::npos) << message;
+    EXPECT_NE(message.find(folder.path("libplaton_no_such_module.so")), std::string::npos) << message;
+  }
+}
+
+}  // namespace
+}  // namespace platon

@@ -1,0 +1,26 @@
+#!/bin/sh
+# A real window under Xvfb, keys typed with xdotool: holding Right must move the player, so the
+# run's state hash differs from the same number of frames with no key held. Run by ctest as
+#   xvfb-run -a real_window_keys.sh PLATON
+set -eu
+platon=$1
+log=$(mktemp)
+"$platon" play levels/cube_intro/scene.lua --frames 240 > "$log" 2>&1 &
+pid=$!
+window=""
+for _ in $(seq 100); do  # up to 10 s for the window to appear
+  window=$(xdotool search --name "Platon" 2>/dev/null | head -n 1) && [ -n "$window" ] && break
+  sleep 0.1
+done
+[ -n "$window" ] || { echo "no window appeared"; cat "$log"; kill "$pid"; exit 1; }
+xdotool windowactivate --sync "$window" 2>/dev/null || xdotool windowfocus "$window"
+xdotool keydown Right
+wait "$pid" || { cat "$log"; exit 1; }
+xdotool keyup Right 2>/dev/null || true
+played=$(tail -n 1 "$log")
+idle=$("$platon" play levels/cube_intro/scene.lua --frames 240 --headless --fast | tail -n 1)
+echo "keys held: $played"
+echo "no keys:   $idle"
+rm -f "$log"
+case "$played" in "state hash "*) ;; *) echo "the game printed no state hash"; exit 1 ;; esac
+[ "$played" != "$idle" ] || { echo "the keys typed into the window did not move the player"; exit 1; }
