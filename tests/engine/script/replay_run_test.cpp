@@ -106,11 +106,15 @@ TEST(Replay, TurnsIntoAScenarioThatPasses) {
     const ScenarioResult outcome = runReplay(replayPath);
     ASSERT_TRUE(outcome.passed) << outcome.message;
     const std::string text = scenarioFromReplay(recorded, outcome, "run.replay");
-    if (trial == 0) EXPECT_NE(text.find("goal_by = "), std::string::npos) << text;
+    if (trial == 0) {
+      EXPECT_NE(text.find("goal_by = "), std::string::npos) << text;
+    }
     const ScenarioResult r = runScenario(folder.write("scenario.lua", text));
     ASSERT_TRUE(r.passed) << r.message << "\n" << text;
     // A scenario that expects the goal stops there; otherwise it ends where the replay did.
-    if (!outcome.status->won) EXPECT_EQ(r.hash, outcome.hash);
+    if (!outcome.status->won) {
+      EXPECT_EQ(r.hash, outcome.hash);
+    }
   }
 }
 
