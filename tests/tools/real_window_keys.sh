@@ -4,6 +4,7 @@
 #   xvfb-run -a real_window_keys.sh PLATON
 set -eu
 platon=$1
+unset SDL_VIDEODRIVER  # the X server xvfb-run started, not offscreen
 log=$(mktemp)
 "$platon" play levels/cube_intro/scene.lua --frames 240 > "$log" 2>&1 &
 pid=$!

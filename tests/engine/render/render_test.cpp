@@ -4,6 +4,7 @@
 // error overlay.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -123,6 +124,9 @@ TEST(Plugins, LoadedOnlyWhenASceneNamesThem) {
     text << maps.rdbuf();
     return text.str().find(library) != std::string::npos;
   };
+  // "threadsafe": the child is this program started afresh, running this test alone, so nothing an
+  // earlier test loaded is mapped in it.
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
   EXPECT_EXIT(
       {
         setenv("SDL_VIDEODRIVER", "offscreen", 1);
@@ -133,7 +137,9 @@ TEST(Plugins, LoadedOnlyWhenASceneNamesThem) {
         const bool before = mapped("libplaton_render") || mapped("libSDL2") || mapped("libGL");
         auto shown = core::loadScene(folder.write("b.lua", "return { name = 'b', systems = { 'rendering' } }"), registry);
         shown->findSystem("rendering")->display()->present({}, core::DrawList(true));
-        std::exit(!before && mapped("libplaton_render") && mapped("libSDL2") && mapped("libGL") ? 0 : 1);
+        const bool after = mapped("libplaton_render") && mapped("libSDL2") && mapped("libGL");
+        if (before || !after) std::fprintf(stderr, "mapped before the scene named it: %d, after: %d\n", before, after);
+        std::exit(!before && after ? 0 : 1);
       },
       ::testing::ExitedWithCode(0), "");
 }
