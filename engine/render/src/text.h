@@ -1,6 +1,6 @@
 // Text drawn with SDL_ttf (DejaVu Sans from fonts-dejavu-core): each distinct string, size and
-// colour is rendered once to a texture and kept while it is drawn; textures not drawn for a second
-// of frames are dropped.
+// colour is rendered once to a texture and kept while it is drawn; textures not drawn in the last 60
+// flushes (a frame flushes up to three times: scene, heads-up lines, error overlay) are dropped.
 #pragma once
 #include <SDL2/SDL_ttf.h>
 
