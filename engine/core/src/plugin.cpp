@@ -3,6 +3,7 @@
 // libGL, assimp). A headless scenario proves it by reading /proc/self/maps.
 #include <dlfcn.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <stdexcept>
 
@@ -33,10 +34,12 @@ PluginEntry* findEntry(const std::string& name, const std::string& module, const
     const std::string file = folder + (folder.ends_with('/') ? "lib" : "/lib") + module + ".so";
     void* handle = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!handle) {
-      tried += "\n  " + std::string(dlerror());
+      const char* why = dlerror();
+      tried += "\n  " + (why ? std::string(why) : file + ": cannot be loaded");
       continue;
     }
     if (auto* entry = reinterpret_cast<PluginEntry*>(dlsym(handle, kPluginEntryName))) return entry;
+    dlclose(handle);  // not a plugin: it need not stay loaded
     tried += "\n  " + file + ": no " + kPluginEntryName + " in it";
   }
   throw std::runtime_error("system '" + name + "': cannot load its plugin lib" + module + ".so" +

@@ -80,14 +80,15 @@ RenderSystem::RenderSystem() = default;
 RenderSystem::~RenderSystem() = default;
 
 RenderSystem::Gl& RenderSystem::gl() {
-  if (!gl_) gl_ = std::make_unique<Gl>();
+  if (!gl_) gl_ = std::make_shared<Gl>();
   return *gl_;
 }
 
 void RenderSystem::carryOver(core::Scene&, core::System& previous) {
-  // The same name in the same registry: the same plugin's class.
+  // The same name in the same registry: the same plugin's class. Shared, not moved: a system after
+  // this one may still refuse the reload, and the old version then goes on with the window.
   auto& old = static_cast<RenderSystem&>(previous);
-  if (old.gl_) gl_ = std::move(old.gl_);
+  if (old.gl_) gl_ = old.gl_;
 }
 
 bool RenderSystem::pollEvents(uint8_t& held) { return gl().window.pollEvents(held); }
@@ -175,6 +176,7 @@ void RenderSystem::paint(const core::View& view, const core::DrawList& draw) {
       while (line.size() > 1 && g.text.width(line, size) > available) {
         size_t cut = line.size() * 9 / 10;
         while (cut > 1 && g.text.width(line.substr(0, cut), size) > available) cut = cut * 9 / 10;
+        if (cut <= 4) break;  // no wider than the indent (a tiny window): cutting would grow the line forever
         lines.push_back(line.substr(0, cut));
         line = "    " + line.substr(cut);
       }

@@ -1,7 +1,8 @@
 // The rendering system: a window showing the face the player is on, its map lines coloured by tag,
 // what the scripts drew (core::DrawList), the heads-up lines and the error overlay. The window
-// opens on first use and passes to the new version of the system on a hot reload, so a reload
-// never reopens it.
+// opens on first use and is shared with the new version of the system on a hot reload (kept by
+// whichever version stays live, even when a later system refuses the reload), so a reload never
+// reopens it.
 #pragma once
 #include <memory>
 #include <optional>
@@ -29,7 +30,7 @@ class RenderSystem final : public core::System, public core::Display {
   Gl& gl();
   void paint(const core::View& view, const core::DrawList& draw);
 
-  std::unique_ptr<Gl> gl_;
+  std::shared_ptr<Gl> gl_;  // shared across a hot reload (carryOver)
   std::optional<core::View> lastView_;
   core::DrawList lastDraw_{true};
 };

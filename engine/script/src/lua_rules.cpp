@@ -10,8 +10,9 @@ constexpr const char* kNames[] = {"pierce", "beginContact", "overContact", "endC
 using lua::pushEntity;
 
 // The FFI trampolines, loaded anew for every LuaRules so that each has prototypes of its own (a
-// trace blacklisted for one script, say a sandboxed one whose functions run with the JIT off,
-// stays interpreted for that script only). Arguments: ffi, the slot's address, the callbacks.
+// trace blacklisted for one rules script stays interpreted for that script only; sandboxed rules,
+// whose functions run with the JIT off, get none: engine.setRules calls them the classic way).
+// Arguments: ffi, the slot's address, the callbacks.
 constexpr const char* kTrampolines = R"lua(
 local ffi, address, callbacks = ...
 if not pcall(ffi.typeof, "struct platon_contact_slot") then

@@ -181,7 +181,6 @@ class Ref {
   int ref_ = LUA_NOREF;
 };
 
-// Restores the stack top on scope exit: C++ code that reads Lua values cannot leak slots.
 // f(...) -> the results of f(...), as a plain C function (no C++ object lives in its frame, so a
 // Lua error may unwind through it). Trusted code calls sandboxed functions, which run with the JIT
 // off, through it: LuaJIT stitches the caller's trace around a C function instead of aborting it
@@ -192,6 +191,7 @@ inline int callThrough(lua_State* L) {
   return lua_gettop(L);
 }
 
+// Restores the stack top on scope exit: C++ code that reads Lua values cannot leak slots.
 class StackGuard {
  public:
   explicit StackGuard(lua_State* L) : L_(L), top_(lua_gettop(L)) {}
