@@ -155,8 +155,9 @@ inline int LuaRules::pushNormal(const physics::Vec2w& normal) {
 bool LuaRules::pierce(physics::EntityId entity, const physics::LineRef& line) {
   if (!callbacks_[kPierce].isSet()) return Rules::pierce(entity, line);
   lua_State* L = host_.state();
+  const int top = lua_gettop(L);
   callbacks_[kPierce].push();
-  host_.call(pushLine(entity, line), 1);
+  host_.call(pushArguments(top, [&] { return pushLine(entity, line); }), 1);
   const bool passes = lua_toboolean(L, -1) != 0;
   lua_pop(L, 1);
   return passes;
@@ -164,19 +165,24 @@ bool LuaRules::pierce(physics::EntityId entity, const physics::LineRef& line) {
 
 void LuaRules::event(Callback which, const physics::Contact& c) {
   if (!callbacks_[which].isSet()) return;
+  const int top = lua_gettop(host_.state());
   callbacks_[which].push();
-  int n = pushLine(c.entity, c.line);
-  n += pushOther(c.other);
-  host_.call(n, 0);
+  host_.call(pushArguments(top, [&] {
+    const int n = pushLine(c.entity, c.line);  // in this order: the arguments' order
+    return n + pushOther(c.other);
+  }), 0);
 }
 
 void LuaRules::contact(const physics::Contact& c, physics::ContactResponse& response) {
   if (!callbacks_[kContact].isSet()) return;
   lua_State* L = host_.state();
+  const int top = lua_gettop(L);
   callbacks_[kContact].push();
-  int n = pushLine(c.entity, c.line);
-  n += pushNormal(c.normal);
-  n += pushOther(c.other);
+  const int n = pushArguments(top, [&] {
+    int pushed = pushLine(c.entity, c.line);  // in this order: the arguments' order
+    pushed += pushNormal(c.normal);
+    return pushed + pushOther(c.other);
+  });
   host_.call(n, 1);
   const int type = lua_type(L, -1);
   if (type == LUA_TNIL) {

@@ -53,6 +53,17 @@ class LuaRules final : public physics::Rules {
   inline int pushLine(physics::EntityId entity, const physics::LineRef& line);
   inline int pushOther(physics::EntityId other);
   inline int pushNormal(const physics::Vec2w& normal);
+  // Runs push (which returns how many values it pushed); if it throws (a handle out of the range
+  // Lua numbers hold), the stack goes back to `top` first, so no slot leaks.
+  template <class Push>
+  int pushArguments(int top, Push&& push) {
+    try {
+      return push();
+    } catch (...) {
+      lua_settop(host_.state(), top);
+      throw;
+    }
+  }
   void makeTrampolines(int index);
 
   // What the FFI trampolines read (doubles only: the same numbers the classic path pushes, but the
