@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 #include <vector>
 
 #include "lua_host.h"
@@ -38,22 +39,19 @@ int main(int argc, char** argv) {
   const int runs = argc > 2 ? std::atoi(argv[2]) : 7;
   script::LuaHost host;
   lua_State* L = host.state();
-  host.loadString("local player, killed = 7, false\n"
-                  "return { contact = function(entity, tag, kind, part, line, nx, ny, other)\n"
-                  "  if tag == 1 and entity == player then killed = true end\n"
-                  "end }, function() end\n",
-                  "=bench", script::Trust::Trusted);
+  // scripts/rules/game.lua's hazard rule, alone.
+  const std::string hazardRule = "local player, killed = 7, false\n"
+                                 "return { contact = function(entity, tag, kind, part, line, nx, ny, other)\n"
+                                 "  if tag == 1 and entity == player then killed = true end\n"
+                                 "end }";
+  host.loadString(hazardRule + ", function() end\n", "=bench", script::Trust::Trusted);
   host.call(0, 2);
   script::LuaRules luaRules(host, -2, script::LuaRules::Call::Classic);
   script::LuaRules ffiRules(host, -2, script::LuaRules::Call::Ffi);
   const int empty = luaL_ref(L, LUA_REGISTRYINDEX);
   lua_pop(L, 1);
   // The same rule in a mod: sandboxed, its functions interpreted (the JIT is off for them).
-  host.loadString("local player, killed = 7, false\n"
-                  "return { contact = function(entity, tag, kind, part, line, nx, ny, other)\n"
-                  "  if tag == 1 and entity == player then killed = true end\n"
-                  "end }\n",
-                  "=mod", script::Trust::Sandboxed);
+  host.loadString(hazardRule + "\n", "=mod", script::Trust::Sandboxed);
   host.call(0, 1);
   script::LuaRules modClassic(host, -1, script::LuaRules::Call::Classic);
   lua_pop(L, 1);

@@ -79,7 +79,11 @@ bool Window::pollEvents(uint8_t& held) {
   return open;
 }
 
-void Window::setTitle(const std::string& title) { SDL_SetWindowTitle(window_, title.c_str()); }
+void Window::setTitle(const std::string& title) {
+  if (title == title_) return;  // a round trip to the window system: only when it changes
+  title_ = title;
+  SDL_SetWindowTitle(window_, title.c_str());
+}
 
 int Window::pixelWidth() const {
   int w = 0, h = 0;

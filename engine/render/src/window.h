@@ -32,6 +32,7 @@ class Window {
  private:
   SDL_Window* window_ = nullptr;
   SDL_GLContext context_ = nullptr;
+  std::string title_;
 };
 
 }  // namespace platon::render

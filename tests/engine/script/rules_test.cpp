@@ -104,14 +104,21 @@ const char* kFailing = "return { contact = function(entity, tag)\n"
                        "  if tag == 7 then error('tag seven') end\n"
                        "end }\n";
 
-class RulesBothWays : public ::testing::TestWithParam<LuaRules::Call> {};
+// Each test: one host, a rules script loaded into it, called the way the parameter says.
+class RulesBothWays : public ::testing::TestWithParam<LuaRules::Call> {
+ protected:
+  LuaRules load(const char* code, const std::string& chunkName, Trust trust) {
+    host.loadString(code, chunkName, trust);
+    host.call(0, 1);
+    LuaRules rules(host, -1, GetParam());
+    lua_pop(host.state(), 1);
+    return rules;
+  }
+  LuaHost host;
+};
 
 TEST_P(RulesBothWays, AnErrorInACallbackCarriesFileLineAndTraceback) {
-  LuaHost host;
-  host.loadString(kFailing, "@levels/demo/rules.lua", Trust::Trusted);
-  host.call(0, 1);
-  LuaRules rules(host, -1, GetParam());
-  lua_pop(host.state(), 1);
+  LuaRules rules = load(kFailing, "@levels/demo/rules.lua", Trust::Trusted);
   physics::Contact c{};
   c.entity = {1, 0};
   physics::ContactResponse response;
@@ -130,13 +137,9 @@ TEST_P(RulesBothWays, AnErrorInACallbackCarriesFileLineAndTraceback) {
 // A sandboxed script's response table is read raw: its metamethods never run outside a sandboxed
 // call, where no time budget would stop them.
 TEST_P(RulesBothWays, AResponseTableIsReadRaw) {
-  LuaHost host;
-  host.loadString("local loop = setmetatable({ slide = false }, { __index = function() while true do end end })\n"
-                  "return { contact = function() return loop end }\n",
-                  "@mod.lua", Trust::Sandboxed);
-  host.call(0, 1);
-  LuaRules rules(host, -1, GetParam());
-  lua_pop(host.state(), 1);
+  LuaRules rules = load("local loop = setmetatable({ slide = false }, { __index = function() while true do end end })\n"
+                        "return { contact = function() return loop end }\n",
+                        "@mod.lua", Trust::Sandboxed);
   physics::Contact c{};
   c.entity = {1, 0};
   physics::ContactResponse response;
@@ -147,20 +150,16 @@ TEST_P(RulesBothWays, AResponseTableIsReadRaw) {
 }
 
 TEST_P(RulesBothWays, CallbacksLeaveTheStackAsTheyFoundIt) {
-  LuaHost host;
+  LuaRules rules = load("local r = 0\n"
+                        "return { pierce = function() return true end,\n"
+                        "  beginContact = function() end,\n"
+                        "  contact = function(e, tag)\n"
+                        "    r = r + 1\n"
+                        "    if r % 3 == 0 then return nil elseif r % 3 == 1 then return false end\n"
+                        "    return { slide = true, keepVelocity = false, restitution = 0.5 }\n"
+                        "  end }\n",
+                        "=rules", Trust::Trusted);
   lua_State* L = host.state();
-  host.loadString("local r = 0\n"
-                  "return { pierce = function() return true end,\n"
-                  "  beginContact = function() end,\n"
-                  "  contact = function(e, tag)\n"
-                  "    r = r + 1\n"
-                  "    if r % 3 == 0 then return nil elseif r % 3 == 1 then return false end\n"
-                  "    return { slide = true, keepVelocity = false, restitution = 0.5 }\n"
-                  "  end }\n",
-                  "=rules", Trust::Trusted);
-  host.call(0, 1);
-  LuaRules rules(host, -1, GetParam());
-  lua_pop(L, 1);
   const int top = lua_gettop(L);
   physics::Contact c{};
   c.entity = {1, 0};
