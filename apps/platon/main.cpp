@@ -72,9 +72,11 @@ int main(int argc, char** argv) {
   core::Scene scene;
   physics::World& world = scene.world();
   constexpr int32_t kEdge = 4096;
-  scene.setStage(stage::buildSolidNet(world, stage::SolidType::Hexahedron, kEdge, 0));
-  for (const physics::MapPartId id : scene.stage()->parts) {
-    physics::MapPart& face = world.mapPart(id);
+  stage::Stage cube = stage::platonicStage(stage::Solid::Hexahedron, kEdge);
+  stage::addStageToWorld(cube, world, 0);
+  scene.setStage(std::move(cube));
+  for (size_t i = 0; i < scene.stage()->faceCount(); ++i) {
+    physics::MapPart& face = world.mapPart(scene.stage()->part(i));
     // A floor with a gap, and a ramp: enough to fall off, roll and climb onto another face.
     face.line({256, 512}, {2600, 512});
     face.line({3000, 512}, {3800, 900});
@@ -83,7 +85,7 @@ int main(int argc, char** argv) {
     face.initialize();
   }
   const physics::EntityId ball = world.createEntity(physics::Convex::regular(16, 96));
-  world.insert(ball, scene.stage()->parts[0], {600, 700}, 0);
+  world.insert(ball, scene.stage()->part(0), {600, 700}, 0);
   world.setVelocity(ball, {24 * kUnit, 0});
   auto roller = std::make_unique<Roller>(ball);
   const Roller& stats = *roller;

@@ -23,7 +23,8 @@ class Game final : public core::System, public physics::Rules {
   // levels/cube_intro/level.lua: build()
   void build(core::Scene& scene) override {
     physics::World& world = scene.world();
-    for (const physics::MapPartId face : scene.stage()->parts) {
+    for (size_t i = 0; i < scene.stage()->faceCount(); ++i) {
+      const physics::MapPartId face = scene.stage()->part(i);
       world.mapPart(face).line({256, 512}, {2600, 512}, 0);
       world.mapPart(face).line({3000, 512}, {3800, 900}, 0);
       world.mapPart(face).line({1200, 1800}, {2400, 1800}, 0);
@@ -163,12 +164,14 @@ class Game final : public core::System, public physics::Rules {
 
 std::unique_ptr<core::Scene> cubeIntroInCpp() {
   auto scene = std::make_unique<core::Scene>();
-  scene->setStage(stage::buildSolidNet(scene->world(), stage::SolidType::Hexahedron, 4096, 0));
+  stage::Stage cube = stage::platonicStage(stage::Solid::Hexahedron, 4096);
+  stage::addStageToWorld(cube, scene->world(), 0);
+  scene->setStage(std::move(cube));
   const auto gravity = static_cast<int64_t>(0.35 * 65536.0 + 0.5);  // as loadScene converts the manifest's
-  for (const physics::MapPartId id : scene->stage()->parts) scene->world().mapPart(id).setGravity({0, -gravity});
+  for (size_t i = 0; i < scene->stage()->faceCount(); ++i) scene->world().mapPart(scene->stage()->part(i)).setGravity({0, -gravity});
   scene->addSystem(std::make_unique<Game>(), "game");
   scene->system(0).build(*scene);
-  for (const physics::MapPartId id : scene->stage()->parts) scene->world().mapPart(id).initialize();
+  for (size_t i = 0; i < scene->stage()->faceCount(); ++i) scene->world().mapPart(scene->stage()->part(i)).initialize();
   scene->system(0).start(*scene);
   return scene;
 }

@@ -1,5 +1,7 @@
 #include "platon/physics/map_part.h"
 
+#include <algorithm>
+
 #include "fixed_point.h"
 #include "grid.h"
 
@@ -107,7 +109,30 @@ void MapPart::initialize() {
   if (lines_.size() > (size_t{1} << 30))
     throw Error(partName(id_) + ": too many lines (" + std::to_string(lines_.size()) + "; 2^30 at most)");
   grid_->build(segments_, low_, high_);
+  findFaceLoop();
   initialized_ = true;
+}
+
+void MapPart::findFaceLoop() {
+  std::vector<LineIndex> warpLines;
+  for (LineIndex i = 0; i < lines_.size(); ++i)
+    if (lines_[i].kind == LineKind::Warp) warpLines.push_back(i);
+  if (warpLines.size() < 3) return;
+  std::vector<LineIndex> loop{warpLines[0]};
+  while (loop.size() < warpLines.size()) {
+    const Vec2 end = segments_[loop.back()].b;
+    LineIndex next = UINT32_MAX;
+    for (const LineIndex i : warpLines)
+      if (segments_[i].a == end) next = next == UINT32_MAX ? i : UINT32_MAX - 1;  // two ways on: no loop
+    if (next >= UINT32_MAX - 1 || std::find(loop.begin(), loop.end(), next) != loop.end()) return;
+    loop.push_back(next);
+  }
+  if (segments_[loop.back()].b != segments_[loop.front()].a) return;
+  for (size_t k = 0; k < loop.size(); ++k) {  // every corner turns left: convex, counter-clockwise
+    const Segment s = segments_[loop[k]], t = segments_[loop[(k + 1) % loop.size()]];
+    if (cross(s.b - s.a, t.b - t.a) <= 0) return;
+  }
+  faceLoop_ = std::move(loop);
 }
 
 size_t MapPart::memoryBytes() const {

@@ -746,6 +746,7 @@ void WorldImpl::slide(Move& move) {
     if (next == SubMove::Next::Again) continue;
     if (sub.respondToContact(pushes) == SubMove::After::Stop) break;
   }
+  keepOnFace(move);
 }
 
 }  // namespace platon::physics

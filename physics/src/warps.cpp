@@ -219,4 +219,136 @@ void WorldImpl::updateLinks(Move& move) {
   }
 }
 
+namespace {
+
+// Whether `p` is inside the face, on its border, or beyond it by no more than rounding: the two
+// copies of an entity crossing an edge both have their origin on it to within a unit or two.
+bool insideFace(const MapPart& part, Vec2 p) {
+  constexpr int64_t kRounding = 4;  // units
+  for (const LineIndex line : part.faceLoop()) {
+    const Segment s = part.segments()[line];
+    const Vec2w d = s.b - s.a;
+    const i128 side = i128{d.x} * (i128{p.y} - s.a.y) - i128{d.y} * (i128{p.x} - s.a.x);
+    if (side < 0 && side * side > i128{kRounding * kRounding} * (i128{d.x} * d.x + i128{d.y} * d.y)) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+// Copies hold together through warp links; near a vertex a copy can be linked only to a copy
+// that has since been erased, and then nothing would ever erase it (it drifts off its face). The
+// copies linked, directly or not, to the anchor stay; on faces, if none of those has its origin on
+// its face but another copy has, that copy's group stays instead (it becomes the anchor).
+void WorldImpl::eraseUnlinkedCopies(Move& move) {
+  Entity& e = move.entity;
+  const size_t n = e.instances.size();
+  std::vector<size_t> group(n);
+  for (size_t i = 0; i < n; ++i) group[i] = i;
+  auto root = [&](size_t i) {
+    while (group[i] != i) i = group[i] = group[group[i]];
+    return i;
+  };
+  auto indexOf = [&](MapPartId p) {
+    for (size_t i = 0; i < n; ++i)
+      if (e.instances[i].part == p) return i;
+    return n;
+  };
+  for (const WarpLink& l : e.links) {
+    const size_t a = indexOf(l.fromPart), b = indexOf(l.toPart);
+    if (a < n && b < n) group[root(a)] = root(b);
+  }
+  size_t keep = root(0);
+  bool anyOutside = false;
+  for (size_t i = 0; i < n; ++i) anyOutside = anyOutside || root(i) != keep;
+  if (!anyOutside) return;
+  auto onFace = [&](size_t i) {
+    const MapPart& p = part(e.instances[i].part);
+    return !p.faceLoop().empty() && insideFace(p, e.instances[i].position);
+  };
+  bool keptOnFace = false;
+  for (size_t i = 0; i < n; ++i) keptOnFace = keptOnFace || (root(i) == keep && onFace(i));
+  size_t newAnchor = 0;
+  if (!keptOnFace)
+    for (size_t i = 0; i < n; ++i)
+      if (onFace(i)) {
+        keep = root(i);
+        newAnchor = i;
+        break;
+      }
+  std::vector<MapPartId> gone;
+  for (size_t i = 0; i < n; ++i)
+    if (root(i) != keep) gone.push_back(e.instances[i].part);
+  if (newAnchor != 0) rebase(move, newAnchor);
+  for (const MapPartId p : gone)
+    for (size_t i = 1; i < e.instances.size(); ++i)
+      if (e.instances[i].part == p) {
+        eraseInstance(move, i);
+        break;
+      }
+}
+
+// The faces meeting at a vertex of a solid leave less than a full turn around it, so a path
+// through the vertex (or close enough that the copies' rounding agrees) comes out beyond the
+// corner of every face at once: no warp edge is crossed and nothing would ever bring the entity
+// back. It is put just inside the anchor's face by that corner, beside the edge its velocity
+// crosses most, far enough along that edge that it goes on over it as over any other edge.
+void WorldImpl::keepOnFace(Move& move) {
+  Entity& e = move.entity;
+  if (e.instances.empty()) return;
+  if (e.instances.size() > 1) eraseUnlinkedCopies(move);
+  for (const Instance& inst : e.instances) {
+    const MapPart& p = part(inst.part);
+    if (p.faceLoop().empty() || insideFace(p, inst.position)) return;  // on a face: the warp links decide
+  }
+  const MapPart& face = part(e.instances[0].part);
+  const Vec2 at = e.instances[0].position;
+  const auto loop = face.faceLoop();
+  // The corner nearest the origin, and its two edges: `in` ends there, `out` starts there.
+  size_t corner = 0;
+  i128 best = -1;
+  for (size_t k = 0; k < loop.size(); ++k) {
+    const Vec2w d = face.segments()[loop[k]].a - at;
+    const i128 d2 = i128{d.x} * d.x + i128{d.y} * d.y;
+    if (best < 0 || d2 < best) best = d2, corner = k;
+  }
+  const Segment out = face.segments()[loop[corner]];
+  const Segment in = face.segments()[loop[(corner + loop.size() - 1) % loop.size()]];
+  const Vec2 vertex = out.a;
+  // Outward normals (right of each counter-clockwise edge); the edge the velocity leaves by most.
+  const Vec2w outDir = out.b - out.a, inDir = in.b - in.a;
+  const Vec2w outNormal{outDir.y, -outDir.x}, inNormal{inDir.y, -inDir.x};
+  const Vec2w v = e.velocityQ16;
+  const int64_t outLength = static_cast<int64_t>(isqrt(static_cast<u128>(i128{outDir.x} * outDir.x + i128{outDir.y} * outDir.y)));
+  const int64_t inLength = static_cast<int64_t>(isqrt(static_cast<u128>(i128{inDir.x} * inDir.x + i128{inDir.y} * inDir.y)));
+  const i128 leaveOut = (i128{v.x} * outNormal.x + i128{v.y} * outNormal.y) * inLength;
+  const i128 leaveIn = (i128{v.x} * inNormal.x + i128{v.y} * inNormal.y) * outLength;
+  const bool byOut = leaveOut >= leaveIn;
+  // Along the chosen edge away from the vertex, and inward (left of the edge).
+  const Vec2w away = byOut ? outDir : Vec2w{-inDir.x, -inDir.y};
+  const Vec2w inward = byOut ? Vec2w{-outDir.y, outDir.x} : Vec2w{-inDir.y, inDir.x};
+  const int64_t length = byOut ? outLength : inLength;
+  if (length == 0) return;
+  // Two units in; far enough along that the velocity meets the edge before passing the vertex:
+  // along >= 4 + 2 * (velocity toward the vertex) / (velocity out across the edge).
+  const i128 towardVertex = -(i128{v.x} * away.x + i128{v.y} * away.y);
+  const i128 across = -(i128{v.x} * inward.x + i128{v.y} * inward.y);
+  int64_t along = 4;
+  if (towardVertex > 0 && across > 0) along += static_cast<int64_t>(std::min<i128>(towardVertex * 2 / across + 1, length / 4));
+  along = std::min<int64_t>(along, length / 2);
+  Instance& anchor = e.instances[0];
+  const Vec2 was = anchor.position;
+  anchor.position = {vertex.x + static_cast<int32_t>(roundDiv(i128{away.x} * along + i128{inward.x} * 2, length)),
+                     vertex.y + static_cast<int32_t>(roundDiv(i128{away.y} * along + i128{inward.y} * 2, length))};
+  std::vector<Vec2>& verts = scratch.probe;
+  worldVertices(anchor, verts);
+  if (!insideFace(face, anchor.position) || !isFree(e, anchor, verts)) {
+    anchor.position = was;  // a wall right at the corner: leave it (it cannot go far that way)
+    return;
+  }
+  while (e.instances.size() > 1) eraseInstance(move, e.instances.size() - 1);
+  anchor.idealQ30 = q30FromPoint(anchor.position);
+  ++report.cornerReturns;
+}
+
 }  // namespace platon::physics

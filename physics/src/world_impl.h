@@ -206,6 +206,10 @@ struct WorldImpl {
   // Turns what is left of a frame's move into a frame turned by theta (the anchor changed).
   void turnMove(Move& move, Angle theta);
   void updateLinks(Move& move);
+  // After a slide: an entity whose every copy is beyond its face's corners (it went through a
+  // vertex) is put back on the anchor's face by that corner (faces: MapPart::faceLoop).
+  void keepOnFace(Move& move);
+  void eraseUnlinkedCopies(Move& move);
   void eraseInstance(Move& move, size_t index);
 
   // pierce_events.cpp

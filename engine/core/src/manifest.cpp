@@ -275,8 +275,9 @@ SceneManifest loadManifest(const std::string& path) {
     if (!stage->table()) fieldError(path, *stage, "'stage' must be a table {solid =, edge =}");
     checkKeys(path, *stage, {"solid", "edge"});
     m.solid = stringField(path, *stage, "solid", m.solid);
-    if (m.solid != "tetrahedron" && m.solid != "cube")
-      fieldError(path, *stage->field("solid"), "unknown solid '" + m.solid + "' (known: tetrahedron, cube)");
+    if (!solidOfManifest(m.solid))
+      fieldError(path, *stage->field("solid"),
+                 "unknown solid '" + m.solid + "' (known: tetrahedron, cube, octahedron, dodecahedron, icosahedron)");
     m.edge = static_cast<int32_t>(numberField(path, *stage, "edge", m.edge, 64, 1 << 24));
   }
   m.gravity = numberField(path, root, "gravity", m.gravity, 0, 1000);
@@ -316,6 +317,16 @@ SceneManifest loadManifest(const std::string& path) {
     m.callMilliseconds = numberField(path, *limits, "call_ms", 250, 1, 60000);
   }
   return m;
+}
+
+std::optional<stage::Solid> solidOfManifest(const std::string& name) {
+  using stage::Solid;
+  if (name == "tetrahedron") return Solid::Tetrahedron;
+  if (name == "cube" || name == "hexahedron") return Solid::Hexahedron;
+  if (name == "octahedron") return Solid::Octahedron;
+  if (name == "dodecahedron") return Solid::Dodecahedron;
+  if (name == "icosahedron") return Solid::Icosahedron;
+  return std::nullopt;
 }
 
 }  // namespace platon::core

@@ -37,19 +37,24 @@ void Scene::draw(DrawList& out) const {
   for (const auto& s : systems_) s->draw(*this, out);
 }
 
+namespace {
+stage::Solid manifestSolid(const SceneManifest& manifest) { return solidOfManifest(manifest.solid).value_or(stage::Solid::Hexahedron); }
+}  // namespace
+
 std::unique_ptr<Scene> loadScene(const std::string& manifestPath, const SystemRegistry& registry) {
   auto scene = std::make_unique<Scene>();
   SceneManifest manifest = loadManifest(manifestPath);
-  const stage::SolidType solid = manifest.solid == "tetrahedron" ? stage::SolidType::Tetrahedron : stage::SolidType::Hexahedron;
-  scene->setStage(stage::buildSolidNet(scene->world(), solid, manifest.edge, 0));
+  stage::Stage solid = stage::platonicStage(manifestSolid(manifest), manifest.edge);
+  stage::addStageToWorld(solid, scene->world(), 0);
+  scene->setStage(std::move(solid));
   const auto gravity = static_cast<int64_t>(manifest.gravity * 65536.0 + 0.5);
-  for (const physics::MapPartId id : scene->stage()->parts) scene->world().mapPart(id).setGravity({0, -gravity});
+  for (size_t i = 0; i < scene->stage()->faceCount(); ++i) scene->world().mapPart(scene->stage()->part(i)).setGravity({0, -gravity});
   const std::vector<std::string> systems = manifest.systems;
   scene->setManifest(std::move(manifest));
   for (const std::string& name : systems)
     if (registry.has(name)) scene->addSystem(registry.create(name, *scene), name);
   for (size_t i = 0; i < scene->systemCount(); ++i) scene->system(i).build(*scene);
-  for (const physics::MapPartId id : scene->stage()->parts) scene->world().mapPart(id).initialize();
+  for (size_t i = 0; i < scene->stage()->faceCount(); ++i) scene->world().mapPart(scene->stage()->part(i)).initialize();
   for (size_t i = 0; i < scene->systemCount(); ++i) scene->system(i).start(*scene);
   return scene;
 }

@@ -7,10 +7,10 @@ View faceView(const Scene& scene, physics::MapPartId face) {
   View view;
   view.title = scene.manifest().name;
   view.face = face;
-  const stage::SolidNet* net = scene.stage();
-  for (size_t i = 0; net && i < net->parts.size(); ++i) {
-    if (net->parts[i] != face) continue;
-    for (const physics::Vec2& c : net->corners[i]) view.border.push_back({static_cast<float>(c.x), static_cast<float>(c.y)});
+  const stage::Stage* net = scene.stage();
+  for (size_t i = 0; net && i < net->faceCount(); ++i) {
+    if (net->part(i) != face) continue;
+    for (const physics::Vec2& c : net->faces[i].corners) view.border.push_back({static_cast<float>(c.x), static_cast<float>(c.y)});
   }
   const physics::MapPart& part = scene.world().mapPart(face);
   const auto segments = part.segments();

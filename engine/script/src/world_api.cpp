@@ -347,21 +347,21 @@ int countOverlaps(lua_State* L) {
 
 // The stage's faces: partCount() and face(i) -> part id, corners {x0, y0, ...} (i from 1).
 int faceCount(lua_State* L) {
-  const stage::SolidNet* net = contextOf(L).scene->stage();
-  lua_pushnumber(L, net ? static_cast<double>(net->parts.size()) : 0);
+  const stage::Stage* net = contextOf(L).scene->stage();
+  lua_pushnumber(L, net ? static_cast<double>(net->faceCount()) : 0);
   return 1;
 }
 
 int face(lua_State* L) {
-  const stage::SolidNet* net = contextOf(L).scene->stage();
-  const int64_t count = net ? static_cast<int64_t>(net->parts.size()) : 0;
+  const stage::Stage* net = contextOf(L).scene->stage();
+  const int64_t count = net ? static_cast<int64_t>(net->faceCount()) : 0;
   const int64_t i = lua::checkInteger(L, 1, 1, count > 0 ? count : 1);
   if (i > count) throw lua::ArgError("face: the scene has no stage");
   const size_t f = static_cast<size_t>(i - 1);
-  lua_pushnumber(L, net->parts[f]);
-  lua_createtable(L, static_cast<int>(net->corners[f].size() * 2), 0);
+  lua_pushnumber(L, net->part(f));
+  lua_createtable(L, static_cast<int>(net->faces[f].corners.size() * 2), 0);
   int k = 1;
-  for (const physics::Vec2 c : net->corners[f]) {
+  for (const physics::Vec2 c : net->faces[f].corners) {
     lua_pushnumber(L, c.x);
     lua_rawseti(L, -2, k++);
     lua_pushnumber(L, c.y);

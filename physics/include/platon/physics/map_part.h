@@ -66,6 +66,10 @@ class MapPart {
   std::span<const Line> lines() const { return lines_; }
   std::span<const Segment> segments() const { return segments_; }
   std::span<const Warp> warps() const { return warps_; }
+  // When the part's warp lines close into one convex counter-clockwise loop (a face of a solid, as
+  // the stage builds them), that loop's line indices in order, from initialize() on; else empty.
+  // The world keeps an entity on such a face when it goes through a corner (docs/physics.md).
+  std::span<const LineIndex> faceLoop() const { return faceLoop_; }
   size_t memoryBytes() const;
 
   MapPart(MapPart&&) noexcept;
@@ -79,6 +83,7 @@ class MapPart {
   void checkOpen(const char* what) const;
   void checkSegment(Vec2 p0, Vec2 p1, const char* what, size_t index) const;
   LineIndex add(Line line, Segment segment);
+  void findFaceLoop();
   const Grid& grid() const { return *grid_; }
 
   MapPartId id_;
@@ -88,6 +93,7 @@ class MapPart {
   std::vector<Segment> segments_;                                // parallel to lines_, packed for the sweep loops
   Vec2 low_{INT32_MAX, INT32_MAX}, high_{INT32_MIN, INT32_MIN};  // the box around them, kept as they come
   std::vector<Warp> warps_;
+  std::vector<LineIndex> faceLoop_;
   std::unique_ptr<Grid> grid_;
 };
 

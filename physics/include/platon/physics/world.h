@@ -25,6 +25,7 @@ struct SolveReport {
   uint32_t warpsCreated = 0;
   uint32_t instancesErased = 0;
   uint32_t copiesReplaced = 0;  // copies moved within two units to free them from a rounding snag
+  uint32_t cornerReturns = 0;   // entities put back on a face after going through a vertex
 };
 
 // A line of a moving platform: solid, or one-way (solid from its left side).

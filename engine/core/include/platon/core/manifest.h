@@ -10,6 +10,8 @@
 #include <variant>
 #include <vector>
 
+#include "platon/stage/polyhedron.h"
+
 namespace platon::core {
 
 struct DataValue;
@@ -34,7 +36,7 @@ struct SceneManifest {
   std::string directory;  // its folder: level-relative paths resolve here
   std::string name;
   std::vector<std::string> systems;  // "scripting", "rendering", "meshes", "audio"
-  std::string solid = "cube";        // tetrahedron | cube (octahedron, dodecahedron, icosahedron with the stages issue)
+  std::string solid = "cube";        // tetrahedron | cube | octahedron | dodecahedron | icosahedron
   int32_t edge = 4096;               // face edge, units
   double gravity = 0.35;             // units per frame per frame, along each face's -y
   // Scripts: "scripts/..." names an engine script (trusted); any other path is the level's own,
@@ -50,5 +52,8 @@ struct SceneManifest {
 
 // Reads and checks a manifest file; throws std::runtime_error "file:line:column: reason".
 SceneManifest loadManifest(const std::string& path);
+
+// The manifest's name for a solid ("cube", "icosahedron", ...), or nothing.
+std::optional<stage::Solid> solidOfManifest(const std::string& name);
 
 }  // namespace platon::core

@@ -8,7 +8,7 @@
 #include "platon/core/manifest.h"
 #include "platon/core/system.h"
 #include "platon/physics/world.h"
-#include "platon/stage/solid_net.h"
+#include "platon/stage/stage.h"
 
 namespace platon::core {
 
@@ -18,8 +18,8 @@ class Scene {
   const physics::World& world() const { return world_; }
 
   // The solid the level is drawn on, once built into the world.
-  void setStage(stage::SolidNet net) { stage_ = std::move(net); }
-  const stage::SolidNet* stage() const { return stage_ ? &*stage_ : nullptr; }
+  void setStage(stage::Stage stage) { stage_ = std::move(stage); }
+  const stage::Stage* stage() const { return stage_ ? &*stage_ : nullptr; }
 
   // The manifest the scene was loaded from (empty for scenes built in code).
   const SceneManifest& manifest() const { return manifest_; }
@@ -43,7 +43,7 @@ class Scene {
  private:
   SceneManifest manifest_;
   physics::World world_;
-  std::optional<stage::SolidNet> stage_;
+  std::optional<stage::Stage> stage_;
   std::vector<std::unique_ptr<System>> systems_;
   std::vector<std::string> names_;
 };

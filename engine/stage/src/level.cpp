@@ -1,0 +1,164 @@
+// Writing levels, checking them against their stage and building them into a world.
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "platon/stage/level.h"
+
+namespace platon::stage {
+namespace {
+
+std::string decimal(double v) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%.17g", v);
+  return text;
+}
+
+std::string tagWords(uint32_t tag) {
+  if (tag == 0) return "";
+  if (tag == kTagHazard) return " hazard";
+  if (tag == kTagGoal) return " goal";
+  if (tag == kTagCheckpoint) return " checkpoint";
+  if (tag > kTagDoor && tag < kTagDoor + 1000) return " door " + std::to_string(tag - kTagDoor);
+  if (tag > kTagSwitch && tag < kTagSwitch + 1000) return " switch " + std::to_string(tag - kTagSwitch);
+  return " tag " + std::to_string(tag);
+}
+
+// > 0: p left of a -> b; exact in 64 bits for coordinates below 2^30.
+int64_t side(physics::Vec2 a, physics::Vec2 b, physics::Vec2 p) {
+  return (int64_t{b.x} - a.x) * (int64_t{p.y} - a.y) - (int64_t{b.y} - a.y) * (int64_t{p.x} - a.x);
+}
+
+bool insidePolygon(const std::vector<physics::Vec2>& corners, physics::Vec2 p) {
+  for (size_t i = 0; i < corners.size(); ++i)
+    if (side(corners[i], corners[(i + 1) % corners.size()], p) < 0) return false;
+  return true;
+}
+
+double distanceToSegment(physics::Vec2 p, physics::Vec2 a, physics::Vec2 b) {
+  const double dx = double(b.x) - a.x, dy = double(b.y) - a.y;
+  double t = ((double(p.x) - a.x) * dx + (double(p.y) - a.y) * dy) / (dx * dx + dy * dy);
+  t = std::clamp(t, 0.0, 1.0);
+  return std::hypot(a.x + t * dx - p.x, a.y + t * dy - p.y);
+}
+
+std::string pointText(physics::Vec2 p) { return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")"; }
+
+std::vector<physics::Vec2> goalSquare(const Level& level) {
+  const int32_t h = goalHalfSide(level);
+  const physics::Vec2 g = level.goal.position;
+  return {{g.x - h, g.y - h}, {g.x + h, g.y - h}, {g.x + h, g.y + h}, {g.x - h, g.y + h}};
+}
+
+void checkPoint(const Level& level, const Stage& stage, const LevelPoint& p, const char* what) {
+  const SourcePosition at{level.file, p.sourceLine, p.sourceColumn};
+  if (p.face >= static_cast<int>(stage.faceCount()))
+    throw StageError(at, std::string(what) + " face " + std::to_string(p.face) + " does not exist (the stage has " +
+                             std::to_string(stage.faceCount()) + " faces)");
+  const auto& corners = stage.faces[static_cast<size_t>(p.face)].corners;
+  if (!insidePolygon(corners, p.position))
+    throw StageError(at, std::string(what) + " " + pointText(p.position) + " is outside face " + std::to_string(p.face));
+  for (const LevelLine& l : level.faces[static_cast<size_t>(p.face)].lines) {
+    if (l.tag == kTagGoal || l.tag == kTagCheckpoint || (l.tag > kTagSwitch && l.tag < kTagSwitch + 1000)) continue;
+    const double d = distanceToSegment(p.position, l.a, l.b);
+    if (d < kStartClearance)
+      throw StageError(at, std::string(what) + " " + pointText(p.position) + " is inside a wall: " +
+                               std::to_string(static_cast<int>(d)) + " units from the segment on line " +
+                               std::to_string(l.sourceLine) + " (the player needs " + std::to_string(kStartClearance) + ")");
+  }
+}
+
+}  // namespace
+
+bool operator==(const LevelLine& a, const LevelLine& b) {
+  return a.a == b.a && a.b == b.b && a.oneWay == b.oneWay && a.tag == b.tag;
+}
+bool operator==(const LevelPoint& a, const LevelPoint& b) { return a.face == b.face && a.position == b.position; }
+bool operator==(const LevelFace& a, const LevelFace& b) { return a.lines == b.lines && a.gravityQ16 == b.gravityQ16; }
+
+bool operator==(const Level& a, const Level& b) {
+  return a.solid == b.solid && a.mesh == b.mesh && a.start == b.start && a.startMillidegrees == b.startMillidegrees &&
+         a.goal == b.goal && a.size == b.size && a.faces == b.faces;
+}
+
+int32_t goalHalfSide(const Level& level) { return std::min(kGoalHalfSide, level.size / 16); }
+
+std::string writeLevel(const Level& level) {
+  std::ostringstream out;
+  out << (level.solid ? std::string(solidName(*level.solid)) : "MESH " + level.mesh) << "\n";
+  out << level.start.face << " " << level.start.position.x << " " << level.start.position.y;
+  if (level.startMillidegrees != 0) out << " " << decimal(static_cast<double>(level.startMillidegrees) / 1000);
+  out << "\n" << level.goal.face << " " << level.goal.position.x << " " << level.goal.position.y << "\n";
+  out << level.size << "\n";
+  for (size_t f = 0; f < level.faces.size(); ++f) {
+    const LevelFace& face = level.faces[f];
+    out << "%";
+    if (face.gravityQ16)
+      out << " gravity " << decimal(static_cast<double>(face.gravityQ16->x) / 65536) << " "
+          << decimal(static_cast<double>(face.gravityQ16->y) / 65536);
+    out << "  # face " << f << "\n";
+    for (const LevelLine& l : face.lines)
+      out << l.a.x << " " << l.a.y << " " << l.b.x << " " << l.b.y << (l.oneWay ? " oneway" : "") << tagWords(l.tag) << "\n";
+  }
+  return out.str();
+}
+
+void checkLevelOnStage(const Level& level, const Stage& stage) {
+  if (level.faces.size() != stage.faceCount())
+    throw StageError({level.file, level.endLine, 0}, "the stage has " + std::to_string(stage.faceCount()) +
+                                                         " faces; the file describes " + std::to_string(level.faces.size()));
+  for (size_t f = 0; f < level.faces.size(); ++f) {
+    const auto& corners = stage.faces[f].corners;
+    for (const LevelLine& l : level.faces[f].lines)
+      for (const physics::Vec2 p : {l.a, l.b})
+        if (!insidePolygon(corners, p)) {
+          std::string shape;
+          for (const physics::Vec2 c : corners) shape += " " + pointText(c);
+          throw StageError({level.file, l.sourceLine, l.sourceColumn},
+                           "the segment leaves face " + std::to_string(f) + ": " + pointText(p) +
+                               " is outside it (its corners:" + shape + ")");
+        }
+  }
+  checkPoint(level, stage, level.start, "start");
+  checkPoint(level, stage, level.goal, "goal");
+  for (const physics::Vec2 c : goalSquare(level))
+    if (!insidePolygon(stage.faces[static_cast<size_t>(level.goal.face)].corners, c))
+      throw StageError({level.file, level.goal.sourceLine, level.goal.sourceColumn},
+                       "the goal's square (" + std::to_string(2 * goalHalfSide(level)) +
+                           " units wide) reaches over the edge of face " + std::to_string(level.goal.face));
+}
+
+Stage platonicStageOf(const Level& level) {
+  if (!level.solid) throw StageError({level.file, 1, 1}, "a mesh level needs its mesh loaded (the meshes system)");
+  return platonicStage(*level.solid, level.size);
+}
+
+void buildLevel(const Level& level, Stage& stage, physics::World& world, physics::MapPartId firstPart,
+                int64_t defaultGravityQ16) {
+  addStageToWorld(stage, world, firstPart);
+  for (size_t f = 0; f < level.faces.size(); ++f) {
+    physics::MapPart& part = world.mapPart(stage.part(f));
+    const LevelFace& face = level.faces[f];
+    part.setGravity(face.gravityQ16.value_or(physics::Vec2w{0, -defaultGravityQ16}));
+    part.reserve(part.lines().size() + face.lines.size() + 4);
+    for (const LevelLine& l : face.lines) {
+      if (l.oneWay)
+        part.oneWay(l.a, l.b, l.tag);
+      else
+        part.line(l.a, l.b, l.tag);
+    }
+  }
+  const std::vector<physics::Vec2> square = goalSquare(level);
+  physics::MapPart& goalPart = world.mapPart(stage.part(static_cast<size_t>(level.goal.face)));
+  for (size_t i = 0; i < square.size(); ++i) goalPart.line(square[i], square[(i + 1) % square.size()], kTagGoal);
+}
+
+std::string readLevelFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw StageError({path, 0, 0}, "cannot open the level file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+}  // namespace platon::stage

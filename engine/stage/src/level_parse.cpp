@@ -1,0 +1,268 @@
+// parseLevel: the level text, line by line. Every rejection names file:line:column.
+#include <cmath>
+#include <cstdlib>
+
+#include "platon/stage/level.h"
+
+namespace platon::stage {
+namespace {
+
+struct Token {
+  std::string_view text;
+  int column = 0;
+};
+
+struct TextLine {
+  int number = 0;
+  std::vector<Token> tokens;
+};
+
+// Lines with their tokens; comments (# to the end of the line) and blank lines dropped.
+std::vector<TextLine> splitLines(std::string_view text, int& lineCount) {
+  std::vector<TextLine> out;
+  int number = 0;
+  size_t at = 0;
+  while (at < text.size()) {
+    size_t end = text.find('\n', at);
+    if (end == std::string_view::npos) end = text.size();
+    std::string_view line = text.substr(at, end - at);
+    ++number;
+    if (const size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+    TextLine parsed{number, {}};
+    size_t i = 0;
+    while (i < line.size()) {
+      while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
+      const size_t start = i;
+      while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') ++i;
+      if (i > start) parsed.tokens.push_back({line.substr(start, i - start), static_cast<int>(start) + 1});
+    }
+    if (!parsed.tokens.empty()) out.push_back(std::move(parsed));
+    at = end + 1;
+  }
+  lineCount = number;
+  return out;
+}
+
+class Parser {
+ public:
+  Parser(std::string_view text, const std::string& file) : file_(file) { lines_ = splitLines(text, lineCount_); }
+
+  Level parse() {
+    Level level;
+    level.file = file_;
+    level.endLine = lineCount_ + 1;
+    solidLine(level);
+    startLine(level);
+    goalLine(level);
+    sizeLine(level);
+    faces(level);
+    const int faceTotal = static_cast<int>(level.faces.size());
+    if (level.solid && faceTotal != faceCount(*level.solid))
+      fail(level.endLine, 0, std::string(solidName(*level.solid)) + " has " + std::to_string(faceCount(*level.solid)) +
+                                 " faces; the file describes " + std::to_string(faceTotal));
+    checkFaceIndex(level, level.start, "start");
+    checkFaceIndex(level, level.goal, "goal");
+    return level;
+  }
+
+ private:
+  [[noreturn]] void fail(int line, int column, const std::string& reason) const {
+    throw StageError({file_, line, column}, reason);
+  }
+  [[noreturn]] void fail(const TextLine& line, const Token& token, const std::string& reason) const {
+    fail(line.number, token.column, reason);
+  }
+
+  const TextLine& next(const char* what) {
+    if (at_ >= lines_.size()) fail(lineCount_ + 1, 0, std::string("the file ends before the ") + what);
+    return lines_[at_++];
+  }
+
+  void expectCount(const TextLine& line, size_t lo, size_t hi, const char* what) const {
+    if (line.tokens.size() < lo) fail(line.number, 0, std::string(what) + ": too few values");
+    if (line.tokens.size() > hi)
+      fail(line, line.tokens[hi], std::string(what) + ": unexpected '" + std::string(line.tokens[hi].text) + "'");
+  }
+
+  // A decimal number: digits with an optional sign, point and exponent; nothing else.
+  double number(const TextLine& line, const Token& t, double lo, double hi, const char* what) const {
+    const std::string s(t.text);
+    size_t i = 0;
+    if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
+    size_t digits = 0;
+    while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) ++i, ++digits;
+    if (i < s.size() && s[i] == '.') {
+      ++i;
+      while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) ++i, ++digits;
+    }
+    if (digits > 0 && i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
+      ++i;
+      if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
+      size_t exponent = 0;
+      while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) ++i, ++exponent;
+      if (exponent == 0) digits = 0;
+    }
+    if (digits == 0 || i != s.size()) fail(line, t, std::string(what) + ": '" + s + "' is not a number");
+    const double v = std::strtod(s.c_str(), nullptr);
+    if (!(v >= lo && v <= hi))
+      fail(line, t, std::string(what) + ": " + s + " is out of range (" + format(lo) + " to " + format(hi) + ")");
+    return v;
+  }
+
+  static std::string format(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.10g", v);
+    return text;
+  }
+
+  // Coordinates are whole units; a decimal is rounded to the nearest (halves away from zero).
+  int32_t unit(const TextLine& line, const Token& t, const char* what) const {
+    return static_cast<int32_t>(std::lround(number(line, t, -(1 << 29), 1 << 29, what)));
+  }
+
+  int integer(const TextLine& line, const Token& t, int lo, int hi, const char* what) const {
+    const double v = number(line, t, lo, hi, what);
+    if (v != std::floor(v)) fail(line, t, std::string(what) + ": " + std::string(t.text) + " is not a whole number");
+    return static_cast<int>(v);
+  }
+
+  void solidLine(Level& level) {
+    const TextLine& line = next("solid (the first line)");
+    const Token& first = line.tokens[0];
+    if (first.text == "MESH") {
+      if (line.tokens.size() < 2) fail(line.number, 0, "MESH needs a file name");
+      const Token& name = line.tokens[1];
+      expectCount(line, 2, 2, "MESH");
+      const std::string path(name.text);
+      if (path.front() == '/' || path.find("..") != std::string::npos || path.find('\\') != std::string::npos)
+        fail(line, name, "the mesh file must be a path inside the level's folder (no '/' at the start, no '..')");
+      for (const char c : path)
+        if (static_cast<unsigned char>(c) < 0x20) fail(line, name, "the mesh file name has a control character");
+      level.mesh = path;
+      return;
+    }
+    expectCount(line, 1, 1, "solid");
+    level.solid = solidFromName(first.text);
+    if (!level.solid)
+      fail(line, first, "unknown solid '" + std::string(first.text) +
+                            "' (known: TETRAHEDRON, HEXAHEDRON, OCTAHEDRON, DODECAHEDRON, ICOSAHEDRON, or MESH file)");
+  }
+
+  void startLine(Level& level) {
+    const TextLine& line = next("start line (face x y [degrees])");
+    expectCount(line, 3, 4, "start (face x y [degrees])");
+    level.start = {integer(line, line.tokens[0], 0, 9999, "start face"), {unit(line, line.tokens[1], "start x"), unit(line, line.tokens[2], "start y")},
+                   line.number, line.tokens[0].column};
+    if (line.tokens.size() == 4)
+      level.startMillidegrees = std::llround(number(line, line.tokens[3], -360, 360, "start rotation (degrees)") * 1000);
+  }
+
+  void goalLine(Level& level) {
+    const TextLine& line = next("goal line ([face] x y)");
+    expectCount(line, 2, 3, "goal ([face] x y)");
+    const size_t base = line.tokens.size() - 2;
+    const int face = base ? integer(line, line.tokens[0], 0, 9999, "goal face") : level.start.face;
+    level.goal = {face, {unit(line, line.tokens[base], "goal x"), unit(line, line.tokens[base + 1], "goal y")}, line.number,
+                  line.tokens[0].column};
+  }
+
+  void sizeLine(Level& level) {
+    const TextLine& line = next("face size line");
+    expectCount(line, 1, 1, "face size");
+    level.size = integer(line, line.tokens[0], 64, 1 << 24, "face size (units)");
+  }
+
+  void faces(Level& level) {
+    while (at_ < lines_.size()) {
+      const TextLine& line = lines_[at_++];
+      if (line.tokens[0].text == "%") {
+        if (level.solid && static_cast<int>(level.faces.size()) == faceCount(*level.solid))
+          fail(line, line.tokens[0], std::string(solidName(*level.solid)) + " has " +
+                                         std::to_string(faceCount(*level.solid)) + " faces; this '%' starts one more");
+        level.faces.push_back(faceOptions(line));
+        continue;
+      }
+      if (level.faces.empty())
+        fail(line, line.tokens[0], "expected '%', which starts face 0 (after the four header lines)");
+      level.faces.back().lines.push_back(segment(line));
+    }
+  }
+
+  LevelFace faceOptions(const TextLine& line) const {
+    LevelFace face;
+    face.sourceLine = line.number;
+    for (size_t i = 1; i < line.tokens.size();) {
+      const Token& t = line.tokens[i];
+      if (t.text != "gravity") fail(line, t, "unknown face option '" + std::string(t.text) + "' (known: gravity gx gy)");
+      if (face.gravityQ16) fail(line, t, "gravity given twice");
+      if (i + 2 >= line.tokens.size()) fail(line, t, "gravity needs two numbers: gx gy (units per frame per frame)");
+      const double gx = number(line, line.tokens[i + 1], -16384, 16384, "gravity x");
+      const double gy = number(line, line.tokens[i + 2], -16384, 16384, "gravity y");
+      face.gravityQ16 = physics::Vec2w{std::llround(gx * 65536), std::llround(gy * 65536)};
+      i += 3;
+    }
+    return face;
+  }
+
+  LevelLine segment(const TextLine& line) const {
+    if (line.tokens.size() < 4) fail(line.number, 0, "a segment is x0 y0 x1 y1 [oneway] [tag]: too few values");
+    LevelLine out;
+    out.sourceLine = line.number;
+    out.sourceColumn = line.tokens[0].column;
+    out.a = {unit(line, line.tokens[0], "x0"), unit(line, line.tokens[1], "y0")};
+    out.b = {unit(line, line.tokens[2], "x1"), unit(line, line.tokens[3], "y1")};
+    if (out.a == out.b) fail(line, line.tokens[0], "the segment has no length (both ends at one point)");
+    bool tagged = false;
+    for (size_t i = 4; i < line.tokens.size(); ++i) {
+      const Token& t = line.tokens[i];
+      auto setTag = [&](uint32_t tag) {
+        if (tagged) fail(line, t, "a segment has one tag at most");
+        tagged = true;
+        out.tag = tag;
+      };
+      auto numbered = [&](const char* what, int lo, int hi) {
+        if (i + 1 >= line.tokens.size()) fail(line, t, std::string(what) + " needs a number");
+        return static_cast<uint32_t>(integer(line, line.tokens[++i], lo, hi, what));
+      };
+      if (t.text == "oneway") {
+        if (out.oneWay) fail(line, t, "oneway given twice");
+        out.oneWay = true;
+      } else if (t.text == "solid") {
+        setTag(0);
+      } else if (t.text == "hazard") {
+        setTag(kTagHazard);
+      } else if (t.text == "goal") {
+        setTag(kTagGoal);
+      } else if (t.text == "checkpoint") {
+        setTag(kTagCheckpoint);
+      } else if (t.text == "door") {
+        setTag(kTagDoor + numbered("door", 1, 999));
+      } else if (t.text == "switch") {
+        setTag(kTagSwitch + numbered("switch", 1, 999));
+      } else if (t.text == "tag") {
+        setTag(numbered("tag", 0, 2147483647));
+      } else {
+        fail(line, t, "unknown segment word '" + std::string(t.text) +
+                          "' (known: oneway, solid, hazard, goal, checkpoint, door N, switch N, tag N)");
+      }
+    }
+    return out;
+  }
+
+  void checkFaceIndex(const Level& level, const LevelPoint& p, const char* what) const {
+    if (!level.faces.empty() && p.face >= static_cast<int>(level.faces.size()))
+      fail(p.sourceLine, p.sourceColumn, std::string(what) + " face " + std::to_string(p.face) + " does not exist (faces 0 to " +
+                                             std::to_string(level.faces.size() - 1) + ")");
+  }
+
+  std::string file_;
+  std::vector<TextLine> lines_;
+  int lineCount_ = 0;
+  size_t at_ = 0;
+};
+
+}  // namespace
+
+Level parseLevel(std::string_view text, const std::string& file) { return Parser(text, file).parse(); }
+
+}  // namespace platon::stage

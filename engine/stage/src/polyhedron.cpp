@@ -1,0 +1,154 @@
+#include "platon/stage/polyhedron.h"
+
+#include <cmath>
+#include <map>
+#include <utility>
+
+#include "platon/stage/stage_error.h"
+
+namespace platon::stage {
+namespace {
+
+std::string vertexName(const Polyhedron& p, int v) {
+  const Eigen::Vector3d& x = p.vertices[static_cast<size_t>(v)];
+  char text[96];
+  std::snprintf(text, sizeof text, "vertex %d (%.6g, %.6g, %.6g)", v, x.x(), x.y(), x.z());
+  return text;
+}
+
+[[noreturn]] void fail(const std::string& reason) { throw StageError({}, reason); }
+
+Eigen::Vector3d centroidOf(const Polyhedron& p, size_t face) {
+  Eigen::Vector3d c = Eigen::Vector3d::Zero();
+  for (const int v : p.faces[face]) c += p.vertices[static_cast<size_t>(v)];
+  return c / static_cast<double>(p.faces[face].size());
+}
+
+void checkFaceShape(const Polyhedron& p, size_t f, double tolerance) {
+  const auto& cycle = p.faces[f];
+  const std::string name = "face " + std::to_string(f);
+  if (cycle.size() < 3) fail(name + " has " + std::to_string(cycle.size()) + " corners (at least 3)");
+  for (size_t i = 0; i < cycle.size(); ++i) {
+    if (cycle[i] < 0 || static_cast<size_t>(cycle[i]) >= p.vertices.size())
+      fail(name + " names vertex " + std::to_string(cycle[i]) + ", which does not exist");
+    for (size_t j = 0; j < i; ++j)
+      if (cycle[i] == cycle[j]) fail(name + " visits " + vertexName(p, cycle[i]) + " twice");
+  }
+  const Eigen::Vector3d n = faceNormal(p, f);
+  if (!n.allFinite()) fail(name + " is degenerate (no area)");
+  const Eigen::Vector3d c = centroidOf(p, f);
+  for (const int v : cycle) {
+    const double off = std::abs(n.dot(p.vertices[static_cast<size_t>(v)] - c));
+    if (off > tolerance) fail(name + " is not flat: " + vertexName(p, v) + " is " + std::to_string(off) + " off its plane");
+  }
+  for (size_t i = 0; i < cycle.size(); ++i) {
+    const Eigen::Vector3d& a = p.vertices[static_cast<size_t>(cycle[i])];
+    const Eigen::Vector3d& b = p.vertices[static_cast<size_t>(cycle[(i + 1) % cycle.size()])];
+    const Eigen::Vector3d& d = p.vertices[static_cast<size_t>(cycle[(i + 2) % cycle.size()])];
+    const double edge = (b - a).norm();
+    if (edge <= tolerance) fail(name + " has an edge of length " + std::to_string(edge) + " at " + vertexName(p, cycle[i]));
+    // d's distance to the left of the line a -> b: positive for a convex counter-clockwise corner.
+    const double turn = (b - a).cross(d - b).dot(n) / edge;
+    if (turn <= tolerance)
+      fail(name + (turn < -tolerance ? " is not convex" : " has a straight corner") + " at " +
+           vertexName(p, cycle[(i + 1) % cycle.size()]));
+  }
+}
+
+}  // namespace
+
+std::string_view solidName(Solid solid) {
+  switch (solid) {
+    case Solid::Tetrahedron: return "TETRAHEDRON";
+    case Solid::Hexahedron: return "HEXAHEDRON";
+    case Solid::Octahedron: return "OCTAHEDRON";
+    case Solid::Dodecahedron: return "DODECAHEDRON";
+    case Solid::Icosahedron: return "ICOSAHEDRON";
+  }
+  return "?";
+}
+
+std::optional<Solid> solidFromName(std::string_view name) {
+  for (const Solid s : kSolids)
+    if (solidName(s) == name) return s;
+  return std::nullopt;
+}
+
+int faceCount(Solid solid) {
+  switch (solid) {
+    case Solid::Tetrahedron: return 4;
+    case Solid::Hexahedron: return 6;
+    case Solid::Octahedron: return 8;
+    case Solid::Dodecahedron: return 12;
+    case Solid::Icosahedron: return 20;
+  }
+  return 0;
+}
+
+double sizeOf(const Polyhedron& p) {
+  if (p.vertices.empty()) return 0;
+  Eigen::Vector3d lo = p.vertices[0], hi = p.vertices[0];
+  for (const auto& v : p.vertices) {
+    lo = lo.cwiseMin(v);
+    hi = hi.cwiseMax(v);
+  }
+  return (hi - lo).norm();
+}
+
+Eigen::Vector3d faceNormal(const Polyhedron& p, size_t face) {
+  Eigen::Vector3d n = Eigen::Vector3d::Zero();
+  const auto& cycle = p.faces[face];
+  for (size_t i = 0; i < cycle.size(); ++i) {
+    const Eigen::Vector3d& a = p.vertices[static_cast<size_t>(cycle[i])];
+    const Eigen::Vector3d& b = p.vertices[static_cast<size_t>(cycle[(i + 1) % cycle.size()])];
+    n += a.cross(b);
+  }
+  const double length = n.norm();
+  if (!(length > 0)) return Eigen::Vector3d::Constant(std::nan(""));
+  return n / length;
+}
+
+void validatePolyhedron(const Polyhedron& p, double tolerance) {
+  if (p.faces.size() < 4) fail("a solid needs at least 4 faces, this one has " + std::to_string(p.faces.size()));
+  for (size_t v = 0; v < p.vertices.size(); ++v)
+    if (!p.vertices[v].allFinite()) fail("vertex " + std::to_string(v) + " is not a finite point");
+  for (size_t f = 0; f < p.faces.size(); ++f) checkFaceShape(p, f, tolerance);
+
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (size_t f = 0; f < p.faces.size(); ++f) centre += centroidOf(p, f);
+  centre /= static_cast<double>(p.faces.size());
+
+  std::map<std::pair<int, int>, size_t> edgeFace;  // directed edge u -> v: its face
+  for (size_t f = 0; f < p.faces.size(); ++f) {
+    const auto& cycle = p.faces[f];
+    if (faceNormal(p, f).dot(centroidOf(p, f) - centre) <= 0)
+      fail("face " + std::to_string(f) + " faces inward (its corners run clockwise seen from outside)");
+    for (size_t i = 0; i < cycle.size(); ++i) {
+      const std::pair<int, int> e{cycle[i], cycle[(i + 1) % cycle.size()]};
+      const auto [at, added] = edgeFace.emplace(e, f);
+      if (!added)
+        fail("faces " + std::to_string(at->second) + " and " + std::to_string(f) + " both run from " +
+             vertexName(p, e.first) + " to " + vertexName(p, e.second) + " (non-manifold or inconsistent winding)");
+    }
+  }
+  for (const auto& [e, f] : edgeFace) {
+    const auto back = edgeFace.find({e.second, e.first});
+    if (back == edgeFace.end())
+      fail("open solid: the edge from " + vertexName(p, e.first) + " to " + vertexName(p, e.second) +
+           " has face " + std::to_string(f) + " on one side and nothing on the other");
+    const Eigen::Vector3d a = faceNormal(p, f), b = faceNormal(p, back->second);
+    if (a.dot(b) > 1 - 1e-9)
+      fail("faces " + std::to_string(f) + " and " + std::to_string(back->second) + " share an edge and lie in one plane");
+  }
+  for (size_t f = 0; f < p.faces.size(); ++f) {
+    const Eigen::Vector3d n = faceNormal(p, f), c = centroidOf(p, f);
+    for (size_t v = 0; v < p.vertices.size(); ++v) {
+      const double ahead = n.dot(p.vertices[v] - c);
+      if (ahead > tolerance)
+        fail("not convex: " + vertexName(p, static_cast<int>(v)) + " lies " + std::to_string(ahead) +
+             " in front of face " + std::to_string(f));
+    }
+  }
+}
+
+}  // namespace platon::stage

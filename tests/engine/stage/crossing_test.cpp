@@ -1,0 +1,163 @@
+// Bodies crossing the edges of every solid: over every edge in both directions, at several speeds,
+// angles and shapes, and back again to where they started; and thrown at every corner, where three
+// or more faces meet, never leaving the faces.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "platon/stage/stage.h"
+#include "platon/testing/rng.h"
+
+using namespace platon;
+using physics::Vec2;
+
+namespace {
+
+constexpr int64_t kQ16 = 65536;
+
+double length(Vec2 a, Vec2 b) { return std::hypot(double(b.x) - a.x, double(b.y) - a.y); }
+
+struct Built {
+  physics::World world;
+  stage::Stage stage;
+};
+
+std::unique_ptr<Built> build(stage::Solid solid, int32_t edge, int64_t gravityQ16) {
+  auto b = std::make_unique<Built>();
+  b->stage = stage::platonicStage(solid, edge);
+  stage::addStageToWorld(b->stage, b->world, 0);
+  for (size_t f = 0; f < b->stage.faceCount(); ++f) {
+    b->world.mapPart(b->stage.part(f)).setGravity({0, -gravityQ16});
+    b->world.mapPart(b->stage.part(f)).initialize();
+  }
+  return b;
+}
+
+// How far `p` lies outside the convex polygon `corners` (0 inside).
+double outside(const std::vector<Vec2>& corners, Vec2 p) {
+  double worst = 0;
+  for (size_t i = 0; i < corners.size(); ++i) {
+    const Vec2 a = corners[i], b = corners[(i + 1) % corners.size()];
+    const double ex = double(b.x) - a.x, ey = double(b.y) - a.y;
+    const double right = (ex * (double(p.y) - a.y) - ey * (double(p.x) - a.x)) / std::hypot(ex, ey);
+    worst = std::max(worst, -right);  // negative: to the right of a counter-clockwise edge
+  }
+  return worst;
+}
+
+physics::Convex shapeNumber(int k) {
+  return k == 0 ? physics::Convex::regular(12, 60) : physics::Convex::box(50, 80);
+}
+
+// Over every edge of every solid, from both faces (each face's every edge), at speeds 3, 17 and 61
+// units a frame, three headings, two places along the edge, a round body and a box (which meets
+// the edge with a corner first); then the velocity reversed for as many frames: back where it
+// started within 4 units (rounding at each warp: docs/level-format.md).
+TEST(Crossing, EveryEdgeBothWaysAndBack) {
+  int crossings = 0;
+  double worstReturn = 0;
+  for (const stage::Solid solid : stage::kSolids) {
+    auto b = build(solid, 4096, 0);
+    physics::World& world = b->world;
+    for (size_t f = 0; f < b->stage.faceCount(); ++f) {
+      const stage::StageFace& face = b->stage.faces[f];
+      const size_t n = face.corners.size();
+      for (size_t i = 0; i < n; ++i) {
+        const Vec2 a = face.corners[i], c = face.corners[(i + 1) % n];
+        const double ex = double(c.x) - a.x, ey = double(c.y) - a.y, len = std::hypot(ex, ey);
+        const double ox = ey / len, oy = -ex / len;  // outward: right of the counter-clockwise edge
+        for (const double along : {0.35, 0.6})
+          for (const double heading : {-0.7, 0.0, 0.5})
+            for (const int speed : {3, 17, 61})
+              for (int shape = 0; shape < 2; ++shape) {
+                SCOPED_TRACE(std::string(stage::solidName(solid)) + " face " + std::to_string(f) + " edge " +
+                             std::to_string(i) + " along " + std::to_string(along) + " heading " +
+                             std::to_string(heading) + " speed " + std::to_string(speed) + " shape " + std::to_string(shape));
+                const Vec2 start{static_cast<int32_t>(std::lround(a.x + ex * along - ox * 300)),
+                                 static_cast<int32_t>(std::lround(a.y + ey * along - oy * 300))};
+                const physics::EntityId body = world.createEntity(shapeNumber(shape));
+                world.insert(body, b->stage.part(f), start, 0);
+                const double vx = ox * std::cos(heading) - oy * std::sin(heading);
+                const double vy = ox * std::sin(heading) + oy * std::cos(heading);
+                world.setVelocity(body, {std::llround(vx * speed * kQ16), std::llround(vy * speed * kQ16)});
+                const physics::MapPartId target = b->stage.part(size_t(face.neighbours[i].face));
+                int frames = 0;
+                while (frames < 4000 && !(world.entity(body).instanceCount() == 1 && world.entity(body).part() == target)) {
+                  world.solve();
+                  ++frames;
+                  ASSERT_TRUE(world.entity(body).inserted());
+                }
+                ASSERT_EQ(world.entity(body).part(), target) << "did not cross in " << frames << " frames";
+                const physics::Vec2w v = world.entity(body).velocity();
+                world.setVelocity(body, {-v.x, -v.y});
+                for (int k = 0; k < frames; ++k) world.solve();
+                const physics::EntityView e = world.entity(body);
+                ASSERT_EQ(e.part(), b->stage.part(f));
+                const double back = length(e.position(), start);
+                worstReturn = std::max(worstReturn, back);
+                EXPECT_LE(back, 4.0);
+                world.destroyEntity(body);
+                ++crossings;
+              }
+      }
+    }
+  }
+  RecordProperty("crossings", crossings);
+  std::printf("%d crossings, worst return %.2f units\n", crossings, worstReturn);
+}
+
+// Bodies thrown at every corner of every solid from every face that has it (straight at the vertex,
+// then three times more at random headings, speeds, spins and shapes), with and without the
+// faces' gravity, and for 400 frames after: always on the stage, every instance's origin inside its
+// face or within the body's reach of it. (Without the world's corner rule, a body through a vertex
+// left every face at once and flew on outside them all.)
+TEST(Crossing, ThrownAtEveryCornerNeverLeavesTheFaces) {
+  platon::testing::Rng rng{42};
+  for (const stage::Solid solid : stage::kSolids)
+    for (const int64_t gravity : {int64_t{0}, int64_t{20000}}) {
+      auto b = build(solid, 4096, gravity);
+      physics::World& world = b->world;
+      for (size_t f = 0; f < b->stage.faceCount(); ++f) {
+        const stage::StageFace& face = b->stage.faces[f];
+        const size_t n = face.corners.size();
+        for (size_t trial = 0; trial < 4 * n; ++trial) {
+          const size_t k = trial % n;
+          const Vec2 corner = face.corners[k];
+          double cx = 0, cy = 0;
+          for (const Vec2 c : face.corners) cx += c.x / double(n), cy += c.y / double(n);
+          const double dx = cx - corner.x, dy = cy - corner.y, d = std::hypot(dx, dy);
+          const double turn = trial < n ? 0.0 : rng.uniform(-0.15, 0.15);  // first straight at the vertex
+          const int speed = rng.between(4, 50);
+          const int shape = rng.between(0, 1);
+          SCOPED_TRACE(std::string(stage::solidName(solid)) + " face " + std::to_string(f) + " corner " +
+                       std::to_string(k) + " gravity " + std::to_string(gravity) + " speed " + std::to_string(speed));
+          const Vec2 start{static_cast<int32_t>(std::lround(corner.x + dx / d * 500)),
+                           static_cast<int32_t>(std::lround(corner.y + dy / d * 500))};
+          const physics::EntityId body = world.createEntity(shapeNumber(shape));
+          world.insert(body, b->stage.part(f), start, 0);
+          const double vx = -(dx * std::cos(turn) - dy * std::sin(turn)) / d, vy = -(dx * std::sin(turn) + dy * std::cos(turn)) / d;
+          world.setVelocity(body, {std::llround(vx * speed * kQ16), std::llround(vy * speed * kQ16)});
+          world.setAngularVelocity(body, rng.between(-3000000, 3000000));
+          for (int frame = 1; frame <= 400; ++frame) {
+            world.solve();
+            const physics::EntityView e = world.entity(body);
+            ASSERT_TRUE(e.inserted()) << "frame " << frame;
+            const physics::Vec2w v = e.velocity();
+            const double reach = 100 + std::hypot(double(v.x), double(v.y)) / kQ16;
+            std::string all;
+            for (const physics::InstanceView i : e.instances())
+              all += " face " + std::to_string(i.part) + " (" + std::to_string(i.position.x) + ", " + std::to_string(i.position.y) + ")";
+            for (const physics::InstanceView i : e.instances()) {
+              const auto& corners = b->stage.faces[i.part - b->stage.firstPart].corners;
+              ASSERT_LE(outside(corners, i.position), reach)
+                  << "frame " << frame << ": an instance at (" << i.position.x << ", " << i.position.y << ") in face "
+                  << i.part << " is off its face; instances:" << all;
+            }
+          }
+          world.destroyEntity(body);
+        }
+      }
+    }
+}
+
+}  // namespace

@@ -1,0 +1,180 @@
+// The level format: seed files load, every malformed input is refused with file:line:column and
+// a reason, written levels read back the same, and built levels hold what the file says.
+#include "platon/stage/level.h"
+
+#include <gtest/gtest.h>
+
+#include "platon/testing/rng.h"
+
+using namespace platon;
+using physics::Vec2;
+
+namespace {
+
+// A plain seed file: no comments, no tags, no options.
+constexpr const char* kSeedCube =
+    "HEXAHEDRON\n0 600 700 0\n3 2000 2000\n4096\n"
+    "%\n256 512 2600 512\n3000 512 3800 900\n%\n%\n100 100 200 200\n%\n%\n%\n";
+
+std::string errorOf(const std::string& text) {
+  try {
+    const stage::Level level = stage::parseLevel(text, "t.level");
+    const stage::Stage s = stage::platonicStageOf(level);
+    stage::checkLevelOnStage(level, s);
+  } catch (const stage::StageError& e) {
+    return e.what();
+  }
+  return "(accepted)";
+}
+
+TEST(LevelFormat, APlainSeedFileLoads) {
+  const stage::Level level = stage::parseLevel(kSeedCube, "seed.level");
+  EXPECT_EQ(level.solid, stage::Solid::Hexahedron);
+  EXPECT_EQ(level.start.face, 0);
+  EXPECT_EQ(level.start.position, (Vec2{600, 700}));
+  EXPECT_EQ(level.goal.face, 3);
+  EXPECT_EQ(level.size, 4096);
+  ASSERT_EQ(level.faces.size(), 6u);
+  EXPECT_EQ(level.faces[0].lines.size(), 2u);
+  EXPECT_EQ(level.faces[2].lines.size(), 1u);
+  EXPECT_EQ(errorOf(kSeedCube), "(accepted)");
+}
+
+TEST(LevelFormat, CommentsTagsGravityAndDecimals) {
+  const stage::Level level = stage::parseLevel(
+      "# a comment line\n\nTETRAHEDRON   # the solid\n1 500.4 600.5 90.25\n2000 1000\n4096\n"
+      "% gravity 0.5 -0.25\n100 100 900 100 hazard\n100 300 900 300 oneway\n100 500 900 500 oneway door 7\n"
+      "%\n%\t\n% \n200 200 300 300 switch 12\n300 300 400 300 tag 77\n",
+      "t.level");
+  EXPECT_EQ(level.start.position, (Vec2{500, 601}));  // decimals round to the nearest unit
+  EXPECT_EQ(level.startMillidegrees, 90250);
+  EXPECT_EQ(level.goal.face, 1);  // two numbers: on the start face
+  EXPECT_EQ(level.faces[0].gravityQ16, (physics::Vec2w{32768, -16384}));
+  EXPECT_EQ(level.faces[0].lines[0].tag, stage::kTagHazard);
+  EXPECT_TRUE(level.faces[0].lines[1].oneWay);
+  EXPECT_EQ(level.faces[0].lines[2].tag, stage::kTagDoor + 7);
+  EXPECT_EQ(level.faces[3].lines[0].tag, stage::kTagSwitch + 12);
+  EXPECT_EQ(level.faces[3].lines[1].tag, 77u);
+  EXPECT_EQ(level.faces[3].lines[1].sourceLine, 15);
+}
+
+TEST(LevelFormat, EveryMistakeNamesFileLineColumnAndWhy) {
+  const std::string header = "HEXAHEDRON\n0 600 700\n0 2000 2000\n4096\n";
+  const std::string empty6 = "%\n%\n%\n%\n%\n%\n";
+  const struct {
+    std::string text, expected;
+  } cases[] = {
+      {"", "t.level:1: the file ends before the solid (the first line)"},
+      {"CUBE\n", "t.level:1:1: unknown solid 'CUBE' (known: TETRAHEDRON, HEXAHEDRON, OCTAHEDRON, DODECAHEDRON, ICOSAHEDRON, or MESH file)"},
+      {"HEXAHEDRON extra\n", "t.level:1:12: solid: unexpected 'extra'"},
+      {"MESH ../../etc/passwd\n", "t.level:1:6: the mesh file must be a path inside the level's folder (no '/' at the start, no '..')"},
+      {"HEXAHEDRON\n", "t.level:2: the file ends before the start line (face x y [degrees])"},
+      {"HEXAHEDRON\n0 600\n", "t.level:2: start (face x y [degrees]): too few values"},
+      {"HEXAHEDRON\n0 6o0 700\n", "t.level:2:3: start x: '6o0' is not a number"},
+      {"HEXAHEDRON\n0 nan 700\n", "t.level:2:3: start x: 'nan' is not a number"},
+      {"HEXAHEDRON\n0 1e300 700\n", "t.level:2:3: start x: 1e300 is out of range (-536870912 to 536870912)"},
+      {"HEXAHEDRON\n0.5 600 700\n", "t.level:2:1: start face: 0.5 is not a whole number"},
+      {"HEXAHEDRON\n0 600 700\n", "t.level:3: the file ends before the goal line ([face] x y)"},
+      {"HEXAHEDRON\n0 600 700\n1 2 3 4\n", "t.level:3:7: goal ([face] x y): unexpected '4'"},
+      {"HEXAHEDRON\n0 600 700\n0 2000 2000\n", "t.level:4: the file ends before the face size line"},
+      {"HEXAHEDRON\n0 600 700\n0 2000 2000\n10\n", "t.level:4:1: face size (units): 10 is out of range (64 to 16777216)"},
+      {header, "t.level:5: HEXAHEDRON has 6 faces; the file describes 0"},
+      {header + "1 2 3 4\n", "t.level:5:1: expected '%', which starts face 0 (after the four header lines)"},
+      {header + "%\n%\n%\n%\n%\n", "t.level:10: HEXAHEDRON has 6 faces; the file describes 5"},
+      {header + empty6 + "%\n", "t.level:11:1: HEXAHEDRON has 6 faces; this '%' starts one more"},
+      {header + "% spin 1\n", "t.level:5:3: unknown face option 'spin' (known: gravity gx gy)"},
+      {header + "% gravity 1\n", "t.level:5:3: gravity needs two numbers: gx gy (units per frame per frame)"},
+      {header + "%\n1 2 3\n", "t.level:6: a segment is x0 y0 x1 y1 [oneway] [tag]: too few values"},
+      {header + "%\n1 2 1 2\n", "t.level:6:1: the segment has no length (both ends at one point)"},
+      {header + "%\n1 2 3 4 lava\n", "t.level:6:9: unknown segment word 'lava' (known: oneway, solid, hazard, goal, checkpoint, door N, switch N, tag N)"},
+      {header + "%\n1 2 3 4 hazard goal\n", "t.level:6:16: a segment has one tag at most"},
+      {header + "%\n1 2 3 4 door\n", "t.level:6:9: door needs a number"},
+      {header + "%\n1 2 3 4 door 1000\n", "t.level:6:14: door: 1000 is out of range (1 to 999)"},
+      {header + "%\n100 100 5000 100\n%\n%\n%\n%\n%\n",
+       "t.level:6:1: the segment leaves face 0: (5000, 100) is outside it (its corners: (0, 0) (4096, 0) (4096, 4096) (0, 4096))"},
+      {header + "%\n100 650 1000 650\n%\n%\n%\n%\n%\n",
+       "t.level:2:1: start (600, 700) is inside a wall: 50 units from the segment on line 6 (the player needs 100)"},
+      {header + "%\n1950 2000 2050 2000\n%\n%\n%\n%\n%\n",
+       "t.level:3:1: goal (2000, 2000) is inside a wall: 0 units from the segment on line 6 (the player needs 100)"},
+      {"HEXAHEDRON\n7 600 700\n0 2000 2000\n4096\n" + empty6, "t.level:2:1: start face 7 does not exist (faces 0 to 5)"},
+      {"HEXAHEDRON\n0 -600 700\n0 2000 2000\n4096\n" + empty6, "t.level:2:1: start (-600, 700) is outside face 0"},
+      {"HEXAHEDRON\n0 600 700\n0 4000 2000\n4096\n" + empty6,
+       "t.level:3:1: the goal's square (300 units wide) reaches over the edge of face 0"},
+  };
+  for (const auto& c : cases) EXPECT_EQ(errorOf(c.text), c.expected) << c.text;
+}
+
+// A random level on a random solid: segments inside their faces, tags, one-way lines, gravity.
+stage::Level randomLevel(platon::testing::Rng& rng) {
+  stage::Level level;
+  level.file = "r.level";
+  level.solid = stage::kSolids[rng.between(0, 4)];
+  level.size = rng.between(64, 20000);
+  const stage::Stage s = stage::platonicStage(*level.solid, level.size);
+  auto inside = [&](size_t f) {  // a point inside face f: a random mix of its corners
+    const auto& c = s.faces[f].corners;
+    double wx = 0, wy = 0, total = 0;
+    for (const Vec2 p : c) {
+      const double w = rng.uniform(0.1, 1);
+      wx += w * p.x, wy += w * p.y, total += w;
+    }
+    return Vec2{static_cast<int32_t>(wx / total), static_cast<int32_t>(wy / total)};
+  };
+  for (size_t f = 0; f < s.faceCount(); ++f) {
+    stage::LevelFace face;
+    if (rng.between(0, 3) == 0) face.gravityQ16 = physics::Vec2w{rng.between(-90000, 90000), rng.between(-90000, 90000)};
+    const int count = rng.between(0, 6);
+    for (int i = 0; i < count; ++i) {
+      stage::LevelLine l{inside(f), inside(f)};
+      if (l.a == l.b) continue;
+      l.oneWay = rng.between(0, 3) == 0;
+      const uint32_t tags[] = {0, stage::kTagHazard, stage::kTagGoal, stage::kTagCheckpoint, stage::kTagDoor + 5,
+                               stage::kTagSwitch + 999, 4242};
+      l.tag = tags[rng.between(0, 6)];
+      face.lines.push_back(l);
+    }
+    level.faces.push_back(face);
+  }
+  level.start = {rng.between(0, static_cast<int>(s.faceCount()) - 1), {}};
+  level.start.position = inside(static_cast<size_t>(level.start.face));
+  level.startMillidegrees = rng.between(-360000, 360000);
+  level.goal = {rng.between(0, static_cast<int>(s.faceCount()) - 1), {}};
+  level.goal.position = inside(static_cast<size_t>(level.goal.face));
+  return level;
+}
+
+TEST(LevelFormat, WrittenLevelsReadBackTheSame) {
+  platon::testing::Rng rng{7};
+  for (int i = 0; i < 300; ++i) {
+    const stage::Level level = randomLevel(rng);
+    const std::string text = stage::writeLevel(level);
+    const stage::Level back = stage::parseLevel(text, "r.level");
+    ASSERT_EQ(back, level) << text;
+    EXPECT_EQ(stage::writeLevel(back), text);
+  }
+  // And the seed file: parse, write, parse gives the same level.
+  const stage::Level seed = stage::parseLevel(kSeedCube, "seed.level");
+  EXPECT_EQ(stage::parseLevel(stage::writeLevel(seed), "seed.level"), seed);
+}
+
+TEST(LevelFormat, BuildPutsEveryLineGravityAndTheGoalInTheWorld) {
+  const stage::Level level = stage::parseLevel(
+      "OCTAHEDRON\n0 1500 800\n5 1500 1000\n4096\n% gravity 0.25 0\n100 100 3000 100 hazard\n%\n%\n%\n%\n"
+      "%\n1000 300 2000 300 oneway\n%\n%\n",
+      "t.level");
+  stage::Stage s = stage::platonicStageOf(level);
+  stage::checkLevelOnStage(level, s);
+  physics::World world;
+  stage::buildLevel(level, s, world, 0, 22938);
+  const physics::MapPart& f0 = world.mapPart(0);
+  EXPECT_EQ(f0.gravity(), (physics::Vec2w{16384, 0}));
+  EXPECT_EQ(world.mapPart(1).gravity(), (physics::Vec2w{0, -22938}));
+  EXPECT_EQ(f0.lines().size(), 3u + 1u);  // three warp edges, one line
+  EXPECT_EQ(f0.lines()[3].tag, stage::kTagHazard);
+  const physics::MapPart& f5 = world.mapPart(5);
+  ASSERT_EQ(f5.lines().size(), 3u + 1u + 4u);  // edges, the one-way line, the goal's square
+  EXPECT_EQ(f5.lines()[3].kind, physics::LineKind::OneWay);
+  for (size_t i = 4; i < 8; ++i) EXPECT_EQ(f5.lines()[i].tag, stage::kTagGoal);
+}
+
+}  // namespace
