@@ -81,6 +81,10 @@ function scene.build()
   game.progression = load(setup.progression, game) or {}
   game.mods = {}
   for i, path in ipairs(setup.mods) do game.mods[i] = sandboxedModule(load(path, levelApi), path) end
+  if not game.level.start then  -- the level file's start, when the manifest names a level file
+    local face, x, y = world.levelStart()
+    if face then game.level.start = { face = face, x = x, y = y } end
+  end
   if game.level.build then call(game.level.build, levelApi) end
 end
 

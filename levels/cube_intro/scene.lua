@@ -2,7 +2,7 @@
 return {
   name = "Cube: first steps",
   systems = { "scripting", "rendering" },
-  stage = { solid = "cube", edge = 4096 },
+  stage = { level = "cube_intro.level" },
   gravity = 0.35,
   scripts = {
     rules = "scripts/rules/game.lua",

@@ -3,7 +3,7 @@
 return {
   name = "Cube: switches",
   systems = { "scripting", "rendering" },
-  stage = { solid = "cube", edge = 4096 },
+  stage = { level = "cube_switches.level" },
   gravity = 0.35,
   scripts = {
     rules = "scripts/rules/game.lua",

@@ -1,7 +1,7 @@
 // A deliberately forbidden arrow: code built with the stage module's allowed dependencies
 // (physics) that calls into core. The architecture test builds this target and expects the link
 // to fail with an undefined reference; it is never part of a normal build.
-#include "platon/stage/solid_net.h"
+#include "platon/stage/stage.h"
 
 namespace platon::core {
 class FixedStep {

@@ -1,6 +1,6 @@
 -- Cube, lift: ride the lift. Walk right, jump onto the lift while it waits at the bottom, stand
 -- still while it rises 750 units to the ledge's height (no jump gets there), then walk right onto
--- the ledge, over face 0's right edge onto face 5, to the goal.
+-- the ledge, over face 0's right edge onto face 1, to the goal.
 return {
   scene = "levels/cube_lift/scene.lua",
   frames = 720,
@@ -11,7 +11,7 @@ return {
   },
   expect = {
     goal_by = 720, deaths = 0,
-    face = { [240] = 0, [560] = 0, [600] = 5 },
+    face = { [240] = 0, [560] = 0, [600] = 1 },
     inside = {
       { frame = 235, face = 0, box = { 2350, 1340, 2850, 1350 } },  -- standing on the lift, down
       { frame = 320, face = 0, box = { 2350, 1650, 2850, 1750 } },  -- on the way up

@@ -1,5 +1,5 @@
 -- Cube, switches: the whole route. Jump the deadly pit, jump into the switch hanging above the
--- floor (it opens door 1 for 7 s), run over face 0's right edge onto face 5, through the open door
+-- floor (it opens door 1 for 7 s), run over face 0's right edge onto face 1, through the open door
 -- and on to the goal, with no death.
 return {
   scene = "levels/cube_switches/scene.lua",
@@ -11,11 +11,11 @@ return {
   },
   expect = {
     goal_by = 720, deaths = 0,
-    face = { [150] = 0, [410] = 0, [440] = 5, [680] = 5 },
+    face = { [150] = 0, [410] = 0, [440] = 1, [680] = 1 },
     inside = {
       { frame = 190, face = 0, box = { 1950, 1400, 2250, 1550 } },  -- in the air over the pit
       { frame = 290, face = 0, box = { 2900, 1400, 3100, 1550 } },  -- at the jump's top, in the switch
-      { frame = 600, face = 5, box = { 1500, 1250, 2000, 1350 } },  -- past the door on face 5
+      { frame = 600, face = 1, box = { 1500, 1250, 2000, 1350 } },  -- past the door on face 1
     },
   },
 }

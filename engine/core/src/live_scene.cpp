@@ -16,6 +16,7 @@ LiveScene::LiveScene(std::string manifestPath, const SystemRegistry& registry, b
 
 std::vector<std::string> LiveScene::watchedFiles() const {
   std::vector<std::string> files{path_};
+  if (!scene_->manifest().levelFile.empty()) files.push_back(scene_->manifest().levelFile);
   for (size_t i = 0; i < scene_->systemCount(); ++i) scene_->system(i).sourceFiles(files);
   return files;
 }

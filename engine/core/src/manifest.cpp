@@ -272,8 +272,16 @@ SceneManifest loadManifest(const std::string& path) {
     }
   }
   if (const DataValue* stage = root.field("stage")) {
-    if (!stage->table()) fieldError(path, *stage, "'stage' must be a table {solid =, edge =}");
-    checkKeys(path, *stage, {"solid", "edge"});
+    if (!stage->table()) fieldError(path, *stage, "'stage' must be a table {solid =, edge =} or {level =}");
+    checkKeys(path, *stage, {"solid", "edge", "level"});
+    if (const DataValue* level = stage->field("level")) {
+      if (stage->field("solid") || stage->field("edge"))
+        fieldError(path, *level, "a level file gives the solid and its size: no 'solid' or 'edge' beside 'level'");
+      const std::string p = stringField(path, *stage, "level", "");
+      if (p.empty() || p.find("..") != std::string::npos || p[0] == '/')
+        fieldError(path, *level, "'" + p + "': a level file is a path inside the scene's folder (no '..', not absolute)");
+      m.levelFile = m.directory + "/" + p;
+    }
     m.solid = stringField(path, *stage, "solid", m.solid);
     if (!solidOfManifest(m.solid))
       fieldError(path, *stage->field("solid"),

@@ -39,16 +39,35 @@ void Scene::draw(DrawList& out) const {
 
 namespace {
 stage::Solid manifestSolid(const SceneManifest& manifest) { return solidOfManifest(manifest.solid).value_or(stage::Solid::Hexahedron); }
+
+// A mesh level's stage: the mesh file read by the meshes plugin, which the manifest must name.
+stage::Stage meshStage(const stage::Level& level, const SceneManifest& manifest, const SystemRegistry& registry) {
+  (void)registry;
+  if (!manifest.needs("meshes"))
+    throw stage::StageError({level.file, 1, 1}, "the level is drawn on a mesh: the scene's manifest must list \"meshes\" in its systems");
+  throw stage::StageError({level.file, 1, 1}, "mesh stages need the meshes plugin, which this build does not have yet");
+}
 }  // namespace
 
 std::unique_ptr<Scene> loadScene(const std::string& manifestPath, const SystemRegistry& registry) {
   auto scene = std::make_unique<Scene>();
   SceneManifest manifest = loadManifest(manifestPath);
-  stage::Stage solid = stage::platonicStage(manifestSolid(manifest), manifest.edge);
-  stage::addStageToWorld(solid, scene->world(), 0);
-  scene->setStage(std::move(solid));
   const auto gravity = static_cast<int64_t>(manifest.gravity * 65536.0 + 0.5);
-  for (size_t i = 0; i < scene->stage()->faceCount(); ++i) scene->world().mapPart(scene->stage()->part(i)).setGravity({0, -gravity});
+  if (!manifest.levelFile.empty()) {
+    // Parsed and checked whole before anything enters the world: a bad file builds nothing.
+    stage::Level level = stage::parseLevel(stage::readLevelFile(manifest.levelFile), manifest.levelFile);
+    stage::Stage solid = level.solid ? stage::platonicStageOf(level) : meshStage(level, manifest, registry);
+    stage::checkLevelOnStage(level, solid);
+    stage::buildLevel(level, solid, scene->world(), 0, gravity);
+    scene->setStage(std::move(solid));
+    scene->setLevel(std::move(level));
+  } else {
+    stage::Stage solid = stage::platonicStage(manifestSolid(manifest), manifest.edge);
+    stage::addStageToWorld(solid, scene->world(), 0);
+    scene->setStage(std::move(solid));
+    for (size_t i = 0; i < scene->stage()->faceCount(); ++i)
+      scene->world().mapPart(scene->stage()->part(i)).setGravity({0, -gravity});
+  }
   const std::vector<std::string> systems = manifest.systems;
   scene->setManifest(std::move(manifest));
   for (const std::string& name : systems)

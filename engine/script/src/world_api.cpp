@@ -370,8 +370,20 @@ int face(lua_State* L) {
   return 2;
 }
 
+// levelStart() -> face, x, y, degrees of the level file's start; nil without a level file.
+int levelStart(lua_State* L) {
+  const stage::Level* level = contextOf(L).scene->level();
+  if (!level) return 0;
+  lua_pushnumber(L, level->start.face);
+  lua_pushnumber(L, level->start.position.x);
+  lua_pushnumber(L, level->start.position.y);
+  lua_pushnumber(L, static_cast<double>(level->startMillidegrees) / 1000);
+  return 4;
+}
+
 constexpr luaL_Reg kWorld[] = {
     {"createEntity", lua::bound<createEntity>},
+    {"levelStart", lua::bound<levelStart>},
     {"destroyEntity", lua::bound<destroyEntity>},
     {"valid", lua::bound<valid>},
     {"insert", lua::bound<insert>},

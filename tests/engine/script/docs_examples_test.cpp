@@ -91,6 +91,9 @@ TEST(DocsExamples, EveryLuaExampleInScriptingMdRuns) {
     ++counts[e.kind];
     if (e.kind == "manifest") {
       folder.write("m/level.lua", kFloor);
+      // The manifest example names the intro's level file.
+      std::ifstream in(std::string(PLATON_SOURCE_ROOT) + "/levels/cube_intro/cube_intro.level");
+      folder.write("m/cube_intro.level", std::string(std::istreambuf_iterator<char>(in), {}));
       folder.write("m/mod.lua", "return { tick = function(game, frame) end }\n");
       play(folder.write("m/scene.lua", e.code));
     } else if (e.kind == "level") {

@@ -36,7 +36,7 @@ TEST(Manifest, ErrorsNameFileLineColumn) {
   EXPECT_EQ(manifestError("return {\n  name = 'x',\n  gravity = os.time(),\n}"),
             "scene.lua:3:13: 'os': a manifest holds only strings, numbers, booleans and tables");
   EXPECT_EQ(manifestError("return { stage = { solid = 'torus' } }"),
-            "scene.lua:1:28: unknown solid 'torus' (known: tetrahedron, cube)");
+            "scene.lua:1:28: unknown solid 'torus' (known: tetrahedron, cube, octahedron, dodecahedron, icosahedron)");
   EXPECT_EQ(manifestError("return { systems = { 'scripting' }, scripts = { level = '../../etc/passwd.lua' } }"),
             "scene.lua:1:57: '../../etc/passwd.lua': a script is a .lua path inside the level's folder or under "
             "scripts/ (no '..', not absolute)");

@@ -38,6 +38,9 @@ struct SceneManifest {
   std::vector<std::string> systems;  // "scripting", "rendering", "meshes", "audio"
   std::string solid = "cube";        // tetrahedron | cube | octahedron | dodecahedron | icosahedron
   int32_t edge = 4096;               // face edge, units
+  // stage = { level = "x.level" }: a level file (docs/level-format.md), relative to the manifest,
+  // gives the solid, the lines, start and goal instead of solid and edge.
+  std::string levelFile;
   double gravity = 0.35;             // units per frame per frame, along each face's -y
   // Scripts: "scripts/..." names an engine script (trusted); any other path is the level's own,
   // relative to the manifest, and runs sandboxed.

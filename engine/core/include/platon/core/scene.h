@@ -8,6 +8,7 @@
 #include "platon/core/manifest.h"
 #include "platon/core/system.h"
 #include "platon/physics/world.h"
+#include "platon/stage/level.h"
 #include "platon/stage/stage.h"
 
 namespace platon::core {
@@ -20,6 +21,9 @@ class Scene {
   // The solid the level is drawn on, once built into the world.
   void setStage(stage::Stage stage) { stage_ = std::move(stage); }
   const stage::Stage* stage() const { return stage_ ? &*stage_ : nullptr; }
+  // The level file the stage came from, when the manifest names one.
+  void setLevel(stage::Level level) { level_ = std::move(level); }
+  const stage::Level* level() const { return level_ ? &*level_ : nullptr; }
 
   // The manifest the scene was loaded from (empty for scenes built in code).
   const SceneManifest& manifest() const { return manifest_; }
@@ -44,6 +48,7 @@ class Scene {
   SceneManifest manifest_;
   physics::World world_;
   std::optional<stage::Stage> stage_;
+  std::optional<stage::Level> level_;
   std::vector<std::unique_ptr<System>> systems_;
   std::vector<std::string> names_;
 };
