@@ -7,6 +7,7 @@
 #include "platon/core/scene.h"
 #include "play_command.h"
 #include "run_command.h"
+#include "stage_commands.h"
 
 using namespace platon;
 using physics::Vec2;
@@ -57,6 +58,8 @@ int main(int argc, char** argv) {
     return platon::app::runCommand(argc - 1, argv + 1);
   if (argc > 1 && std::strcmp(argv[1], "play") == 0) return platon::app::playCommand(argc - 1, argv + 1);
   if (argc > 1 && std::strcmp(argv[1], "scenario") == 0) return platon::app::scenarioCommand(argc - 1, argv + 1);
+  if (argc > 1 && std::strcmp(argv[1], "check") == 0) return platon::app::checkCommand(argc - 1, argv + 1);
+  if (argc > 1 && std::strcmp(argv[1], "net") == 0) return platon::app::netCommand(argc - 1, argv + 1);
   int frames = 3000;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--frames") == 0 && i + 1 < argc) {
@@ -65,7 +68,10 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "usage: %s [--frames N]      the headless demo\n"
                            "       %s run [-j N] [--junit report.xml] [--record dir] scenario.lua|run.replay...\n"
                            "       %s play scene.lua [--frames N] [--input run.replay] [--record out.replay] [--watch] [--fast]\n"
-                           "       %s scenario run.replay [-o scenario.lua]\n", argv[0], argv[0], argv[0], argv[0]);
+                           "       %s scenario run.replay [-o scenario.lua]\n"
+                           "       %s check level.level...           errors and warnings a level designer wants\n"
+                           "       %s net SOLID|level.level -o net.svg   the faces unfolded, numbered, with their axes\n",
+                           argv[0], argv[0], argv[0], argv[0], argv[0], argv[0]);
       return 2;
     }
   }

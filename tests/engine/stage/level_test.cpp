@@ -2,7 +2,14 @@
 // a reason, written levels read back the same, and built levels hold what the file says.
 #include "platon/stage/level.h"
 
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
 #include <gtest/gtest.h>
+
+#include "platon/stage/level_check.h"
+#include "platon/stage/net.h"
 
 #include "platon/testing/rng.h"
 
@@ -175,6 +182,122 @@ TEST(LevelFormat, BuildPutsEveryLineGravityAndTheGoalInTheWorld) {
   ASSERT_EQ(f5.lines().size(), 3u + 1u + 4u);  // edges, the one-way line, the goal's square
   EXPECT_EQ(f5.lines()[3].kind, physics::LineKind::OneWay);
   for (size_t i = 4; i < 8; ++i) EXPECT_EQ(f5.lines()[i].tag, stage::kTagGoal);
+}
+
+}  // namespace
+
+namespace {
+
+std::string readFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// Every shipped level parses, has no errors in `platon check`'s sense, and writes back the same.
+TEST(LevelFormat, EveryShippedLevelChecksAndRoundTrips) {
+  int count = 0;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(std::string(PLATON_SOURCE_ROOT) + "/levels")) {
+    if (entry.path().extension() != ".level") continue;
+    SCOPED_TRACE(entry.path().string());
+    const stage::Level level = stage::parseLevel(readFile(entry.path()), entry.path());
+    if (!level.solid) continue;  // mesh levels: the mesh plugin's tests
+    const stage::CheckReport report = stage::checkLevel(level, stage::platonicStageOf(level));
+    for (const auto& e : report.errors) ADD_FAILURE() << stage::describe(e.where) << e.message;
+    EXPECT_EQ(stage::parseLevel(stage::writeLevel(level), "again"), level);
+    ++count;
+  }
+  EXPECT_GE(count, 3);
+}
+
+// The nets in docs/level-format.md are what `platon net` draws today.
+TEST(LevelFormat, TheDocumentedNetsAreTheStages) {
+  for (const stage::Solid solid : stage::kSolids) {
+    std::string name(stage::solidName(solid));
+    const stage::Stage s = stage::platonicStage(solid, 1000);
+    const std::string title = name + ": " + std::to_string(s.faceCount()) + " faces";
+    for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    EXPECT_EQ(readFile(std::string(PLATON_SOURCE_ROOT) + "/docs/nets/" + name + ".svg"), stage::netSvg(s, stage::unfold(s), title))
+        << name << ": run `platon net " << stage::solidName(solid) << " -o docs/nets/" << name << ".svg`";
+  }
+}
+
+// Nets never overlap, and every face joins the face it was unfolded from along their shared edge.
+TEST(Net, FacesJoinTheirNeighboursAndNeverOverlap) {
+  for (const stage::Solid solid : stage::kSolids) {
+    const stage::Stage s = stage::platonicStage(solid, 1000);
+    const std::vector<stage::NetFace> net = stage::unfold(s);
+    for (size_t f = 1; f < s.faceCount(); ++f) {
+      const int parent = net[f].attachedTo;
+      ASSERT_GE(parent, 0) << stage::solidName(solid) << " face " << f << " was not unfolded";
+      // Some edge of f lies on an edge of its parent, ends swapped.
+      bool joined = false;
+      const auto& c = s.faces[f].corners;
+      for (size_t j = 0; j < c.size(); ++j) {
+        const auto [g, i] = s.faces[f].neighbours[j];
+        if (g != parent) continue;
+        const auto& pc = s.faces[size_t(g)].corners;
+        const Eigen::Vector2d a = net[f].place(c[j].x, c[j].y);
+        const Eigen::Vector2d b = net[size_t(g)].place(pc[(size_t(i) + 1) % pc.size()].x, pc[(size_t(i) + 1) % pc.size()].y);
+        joined = joined || (a - b).norm() < 2;
+      }
+      EXPECT_TRUE(joined) << stage::solidName(solid) << " face " << f;
+    }
+  }
+}
+
+}  // namespace
+
+namespace {
+
+stage::CheckReport checkText(const std::string& text) {
+  const stage::Level level = stage::parseLevel(text, "c.level");
+  return stage::checkLevel(level, stage::platonicStageOf(level));
+}
+
+// A goal walled in is unreachable; opened by a door it is reachable; the same goal on another face
+// reached over an edge is reachable; a wall along an edge and empty faces are warnings.
+TEST(Check, ReachabilityAndWarnings) {
+  const std::string header = "HEXAHEDRON\n0 600 700\n";
+  const std::string box = "1500 1500 2500 1500\n2500 1500 2500 2500\n2500 2500 1500 2500\n";
+  const stage::CheckReport sealed = checkText(header + "0 2000 2000\n4096\n%\n" + box + "1500 2500 1500 1500\n%\n%\n%\n%\n%\n");
+  ASSERT_EQ(sealed.errors.size(), 1u);
+  EXPECT_EQ(stage::describe(sealed.errors[0].where), "c.level:3:1: ");
+  EXPECT_NE(sealed.errors[0].message.find("no path reaches the goal"), std::string::npos);
+  EXPECT_EQ(checkText(header + "0 2000 2000\n4096\n%\n" + box + "1500 2500 1500 1500 door 1\n%\n%\n%\n%\n%\n").errors.size(), 0u);
+  // Face 0 walled all round: a goal on face 2 cannot be reached; with one side open it can.
+  const std::string walls = "50 50 4046 50\n4046 50 4046 4046\n4046 4046 50 4046\n";
+  EXPECT_EQ(checkText(header + "2 2000 2000\n4096\n%\n" + walls + "50 4046 50 50\n%\n%\n%\n%\n%\n").errors.size(), 1u);
+  const stage::CheckReport open = checkText(header + "2 2000 2000\n4096\n%\n" + walls + "%\n%\n%\n%\n%\n");
+  EXPECT_EQ(open.errors.size(), 0u);
+  EXPECT_EQ(open.warnings.size(), 4u);  // faces 1, 3, 4, 5 are empty (2 holds the goal)
+%
+4096 100 4096 3000
+%
+1\n%
+%
+%
+%
+");
+  (void)edge;
+  const stage::CheckReport along =
+      checkText(header + "0 2000 2000
+4096
+%
+4096 100 4096 3000
+%
+0 0 10 10
+%
+0 0 10 10
+%
+0 0 10 10
+%
+0 0 10 10
+%
+0 0 10 10
+");
+  ASSERT_EQ(along.warnings.size(), 1u);
+  EXPECT_EQ(stage::describe(along.warnings[0].where) + along.warnings[0].message,
+            "c.level:5:1: the segment lies along edge 1 of face 0: it blocks the way to face 1");
 }
 
 }  // namespace

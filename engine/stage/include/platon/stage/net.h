@@ -1,0 +1,32 @@
+// A stage's net: its faces unfolded flat, edge to edge, as a level designer draws on them; and the
+// net as an SVG picture with each face's number, axes and "down" (docs/level-format.md shows one
+// for every solid).
+#pragma once
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "platon/stage/stage.h"
+
+namespace platon::stage {
+
+// Where face i lies in the net: its frame's origin and x axis (a unit vector); its y axis is the
+// x axis turned a quarter left (faces are seen from outside, so none is mirrored).
+struct NetFace {
+  Eigen::Vector2d origin, xAxis;
+  int attachedTo = -1;  // the face it was unfolded from (-1 for face 0)
+
+  Eigen::Vector2d place(double x, double y) const {
+    return origin + x * xAxis + y * Eigen::Vector2d(-xAxis.y(), xAxis.x());
+  }
+};
+
+// Unfolds the faces from face 0 (laid in its own frame), each face joined to the first face in
+// number order that already lies flat and leaves it room. Faces never overlap in the result.
+std::vector<NetFace> unfold(const Stage& stage);
+
+// The net as a self-contained SVG document.
+std::string netSvg(const Stage& stage, const std::vector<NetFace>& net, const std::string& title);
+
+}  // namespace platon::stage

@@ -1,0 +1,151 @@
+#include "platon/stage/net.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace platon::stage {
+namespace {
+
+std::vector<Eigen::Vector2d> outline(const StageFace& face, const NetFace& at) {
+  std::vector<Eigen::Vector2d> out;
+  for (const physics::Vec2 c : face.corners) out.push_back(at.place(c.x, c.y));
+  return out;
+}
+
+// Whether two convex polygons' interiors overlap (separating axis test, with a margin for the
+// shared edges of neighbours).
+bool overlap(const std::vector<Eigen::Vector2d>& a, const std::vector<Eigen::Vector2d>& b, double margin) {
+  for (const auto* poly : {&a, &b})
+    for (size_t i = 0; i < poly->size(); ++i) {
+      const Eigen::Vector2d e = (*poly)[(i + 1) % poly->size()] - (*poly)[i];
+      const Eigen::Vector2d n(-e.y(), e.x());
+      double aLo = INFINITY, aHi = -INFINITY, bLo = INFINITY, bHi = -INFINITY;
+      for (const auto& p : a) aLo = std::min(aLo, n.dot(p)), aHi = std::max(aHi, n.dot(p));
+      for (const auto& p : b) bLo = std::min(bLo, n.dot(p)), bHi = std::max(bHi, n.dot(p));
+      if (aHi <= bLo + margin * n.norm() || bHi <= aLo + margin * n.norm()) return false;
+    }
+  return true;
+}
+
+}  // namespace
+
+std::vector<NetFace> unfold(const Stage& stage) {
+  const size_t count = stage.faceCount();
+  std::vector<NetFace> net(count);
+  std::vector<bool> placed(count, false);
+  net[0] = {Eigen::Vector2d::Zero(), Eigen::Vector2d::UnitX(), -1};
+  placed[0] = true;
+  double size = 0;
+  for (const auto& f : stage.faces)
+    for (const auto& c : f.corners) size = std::max(size, std::hypot(double(c.x), double(c.y)));
+  for (size_t done = 1; done < count; ++done) {
+    bool progress = false;
+    // The lowest-numbered face not yet flat that can join a flat face without overlapping.
+    for (size_t g = 0; g < count && !progress; ++g) {
+      if (placed[g]) continue;
+      const StageFace& face = stage.faces[g];
+      for (size_t j = 0; j < face.neighbours.size() && !progress; ++j) {
+        const auto [f, i] = face.neighbours[j];
+        if (!placed[static_cast<size_t>(f)]) continue;
+        const StageFace& other = stage.faces[static_cast<size_t>(f)];
+        const NetFace& at = net[static_cast<size_t>(f)];
+        // g's edge j (corner j -> j + 1) lies on f's edge i, the other way round.
+        const physics::Vec2 fa = other.corners[static_cast<size_t>(i)];
+        const physics::Vec2 fb = other.corners[(static_cast<size_t>(i) + 1) % other.corners.size()];
+        const Eigen::Vector2d to0 = at.place(fb.x, fb.y), to1 = at.place(fa.x, fa.y);
+        const physics::Vec2 ga = face.corners[j], gb = face.corners[(j + 1) % face.corners.size()];
+        const Eigen::Vector2d local(double(gb.x) - ga.x, double(gb.y) - ga.y);
+        const double turn = std::atan2((to1 - to0).y(), (to1 - to0).x()) - std::atan2(local.y(), local.x());
+        NetFace candidate;
+        candidate.xAxis = Eigen::Vector2d(std::cos(turn), std::sin(turn));
+        candidate.origin = Eigen::Vector2d::Zero();
+        candidate.origin = to0 - candidate.place(ga.x, ga.y);
+        candidate.attachedTo = f;
+        const auto shape = outline(face, candidate);
+        bool free = true;
+        for (size_t k = 0; k < count && free; ++k)
+          if (placed[k] && overlap(shape, outline(stage.faces[k], net[k]), 1e-6 * size)) free = false;
+        if (!free) continue;
+        net[g] = candidate;
+        placed[g] = true;
+        progress = true;
+      }
+    }
+    if (!progress) break;  // no room anywhere: leave the rest where they are (never for a convex solid's net so far)
+  }
+  return net;
+}
+
+std::string netSvg(const Stage& stage, const std::vector<NetFace>& net, const std::string& title) {
+  Eigen::Vector2d lo = Eigen::Vector2d::Constant(INFINITY), hi = -lo;
+  double edge = 0;
+  for (size_t f = 0; f < stage.faceCount(); ++f)
+    for (const auto& p : outline(stage.faces[f], net[f])) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  const auto& c0 = stage.faces[0].corners;
+  edge = std::hypot(double(c0[1].x - c0[0].x), double(c0[1].y - c0[0].y));
+  const double scale = 600.0 / std::max(hi.x() - lo.x(), hi.y() - lo.y());
+  const double pad = 30;
+  const double width = std::max(720.0, (hi.x() - lo.x()) * scale + 2 * pad), height = (hi.y() - lo.y()) * scale + 2 * pad + 24;
+  // SVG's y runs down: flip so that the net reads as the faces' own frames do (y up).
+  auto px = [&](const Eigen::Vector2d& p) {
+    std::ostringstream s;
+    s.precision(1);
+    s << std::fixed << (p.x() - lo.x()) * scale + pad << "," << (hi.y() - p.y()) * scale + pad + 24;
+    return s.str();
+  };
+  std::ostringstream svg;
+  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << int(width) << "\" height=\"" << int(height)
+      << "\" font-family=\"DejaVu Sans, sans-serif\">\n"
+      << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
+      << "<text x=\"" << pad << "\" y=\"20\" font-size=\"15\">" << title << "</text>\n";
+  const double arrow = edge * 0.22;
+  for (size_t f = 0; f < stage.faceCount(); ++f) {
+    const StageFace& face = stage.faces[f];
+    const NetFace& at = net[f];
+    svg << "<polygon fill=\"" << (f == 0 ? "#fff3c4" : "#eef2f7") << "\" stroke=\"#333\" stroke-width=\"1.2\" points=\"";
+    for (const auto& p : outline(face, at)) svg << px(p) << " ";
+    svg << "\"/>\n";
+    // Axes from the origin (corner 0): x red along the floor, y green; "down" is -y.
+    const Eigen::Vector2d o = at.place(0, 0);
+    Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+    for (const auto& p : outline(face, at)) centre += p;
+    centre /= static_cast<double>(face.corners.size());
+    const Eigen::Vector2d inset = o + (centre - o) * 0.22;
+    const Eigen::Vector2d xEnd = inset + (at.place(arrow, 0) - o), yEnd = inset + (at.place(0, arrow) - o);
+    auto line = [&](const Eigen::Vector2d& a, const Eigen::Vector2d& b, const char* colour) {
+      const std::string pa = px(a), pb = px(b);
+      svg << "<line x1=\"" << pa.substr(0, pa.find(',')) << "\" y1=\"" << pa.substr(pa.find(',') + 1) << "\" x2=\""
+          << pb.substr(0, pb.find(',')) << "\" y2=\"" << pb.substr(pb.find(',') + 1) << "\" stroke=\"" << colour
+          << "\" stroke-width=\"2.5\"/>\n";
+    };
+    auto head = [&](const Eigen::Vector2d& from, const Eigen::Vector2d& to, const char* colour) {
+      const Eigen::Vector2d d = (to - from).normalized() * edge * 0.07, n(-d.y(), d.x());
+      svg << "<polygon fill=\"" << colour << "\" points=\"" << px(to) << " " << px(to - d + n * 0.5) << " "
+          << px(to - d - n * 0.5) << "\"/>\n";
+    };
+    line(inset, xEnd, "#d22");
+    head(inset, xEnd, "#d22");
+    line(inset, yEnd, "#1a1");
+    head(inset, yEnd, "#1a1");
+    auto label = [&](const Eigen::Vector2d& p, const std::string& text, int sizePx, const char* colour) {
+      const std::string s = px(p);
+      svg << "<text x=\"" << s.substr(0, s.find(',')) << "\" y=\"" << s.substr(s.find(',') + 1) << "\" font-size=\""
+          << sizePx << "\" fill=\"" << colour << "\" text-anchor=\"middle\" dominant-baseline=\"middle\">" << text << "</text>\n";
+    };
+    label(xEnd + (xEnd - inset).normalized() * edge * 0.07, "x", 11, "#d22");
+    label(yEnd + (yEnd - inset).normalized() * edge * 0.07, "y", 11, "#1a1");
+    label(centre + (at.place(0, edge * 0.1) - o), std::to_string(f), 22, "#000");
+    // "down": an arrow from the centre along -y.
+    const Eigen::Vector2d downEnd = centre + (at.place(0, -edge * 0.14) - o);
+    const Eigen::Vector2d downStart = centre + (at.place(0, -edge * 0.02) - o);
+    line(downStart, downEnd, "#36c");
+    head(downStart, downEnd, "#36c");
+  }
+  svg << "<text x=\"" << pad << "\" y=\"" << int(height - 8)
+      << "\" font-size=\"11\" fill=\"#555\">face number; x (red) and y (green) from each face's origin, corner 0; "
+         "blue: down (-y)</text>\n</svg>\n";
+  return svg.str();
+}
+
+}  // namespace platon::stage
