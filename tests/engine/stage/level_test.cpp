@@ -270,34 +270,12 @@ TEST(Check, ReachabilityAndWarnings) {
   const stage::CheckReport open = checkText(header + "2 2000 2000\n4096\n%\n" + walls + "%\n%\n%\n%\n%\n");
   EXPECT_EQ(open.errors.size(), 0u);
   EXPECT_EQ(open.warnings.size(), 4u);  // faces 1, 3, 4, 5 are empty (2 holds the goal)
-%
-4096 100 4096 3000
-%
-1\n%
-%
-%
-%
-");
-  (void)edge;
-  const stage::CheckReport along =
-      checkText(header + "0 2000 2000
-4096
-%
-4096 100 4096 3000
-%
-0 0 10 10
-%
-0 0 10 10
-%
-0 0 10 10
-%
-0 0 10 10
-%
-0 0 10 10
-");
+  const std::string small = "0 0 10 10\n";
+  const stage::CheckReport along = checkText(header + "0 2000 2000\n4096\n%\n4096 100 4096 3000\n%\n" + small + "%\n" + small +
+                                             "%\n" + small + "%\n" + small + "%\n" + small);
   ASSERT_EQ(along.warnings.size(), 1u);
   EXPECT_EQ(stage::describe(along.warnings[0].where) + along.warnings[0].message,
-            "c.level:5:1: the segment lies along edge 1 of face 0: it blocks the way to face 1");
+            "c.level:6:1: the segment lies along edge 1 of face 0: it blocks the way to face 1");
 }
 
 }  // namespace
