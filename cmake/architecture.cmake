@@ -17,6 +17,7 @@ set(PLATON_ARROWS_platon_core platon_stage platon_physics)
 set(PLATON_ARROWS_platon_script platon_core platon_stage platon_physics)
 # The renderer is a plugin: core's headers only (plain data and interfaces), no engine library.
 set(PLATON_ARROWS_platon_render "")
+set(PLATON_ARROWS_platon_mesh "")
 
 set(PLATON_MODULES "" CACHE INTERNAL "")
 

@@ -5,6 +5,8 @@ set -euo pipefail
 packages=(cmake make g++ pkg-config libgtest-dev libgmock-dev libbenchmark-dev libbox2d-dev libchipmunk-dev
   clang libclang-rt-14-dev
   libluajit-5.1-dev  # the script module (LuaJIT 2.1)
+  libeigen3-dev      # the stage module: solids, face frames (header-only)
+  libassimp-dev      # the meshes plugin: OBJ, glTF, PLY, STL stages
   # the renderer plugin: SDL2 window, GL loader, text, PNG screenshots, the font; Mesa for GL
   # without a GPU (SDL_VIDEODRIVER=offscreen), Xvfb and xdotool for the real-window test
   libsdl2-dev libsdl2-ttf-dev libsdl2-image-dev libepoxy-dev fonts-dejavu-core

@@ -8,8 +8,6 @@
 #include "platon/script/script_system.h"
 
 namespace platon::app {
-namespace {
-
 // Beside the program (an installed tree: <bin>/plugins), then the build tree's plugin folder.
 std::vector<std::string> pluginFolders() {
   std::vector<std::string> folders;
@@ -23,11 +21,10 @@ std::vector<std::string> pluginFolders() {
   return folders;
 }
 
-}  // namespace
-
 core::SystemRegistry engineRegistry(Presentation presentation) {
   core::SystemRegistry registry;
   registry.add("scripting", script::makeScriptSystem);
+  registry.addPlugin("meshes", "platon_meshes", pluginFolders());  // headless too: a mesh stage is physics
   if (presentation == Presentation::Window) registry.addPlugin("rendering", "platon_render", pluginFolders());
   return registry;
 }

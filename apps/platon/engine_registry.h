@@ -1,6 +1,10 @@
-// The systems the platon program offers scenes: scripting (linked in) and, when the program shows
-// a window, rendering (a plugin, loaded only when a scene names it).
+// The systems the platon program offers scenes: scripting (linked in), meshes (a plugin, loaded
+// only for a level drawn on a mesh) and, when the program shows a window, rendering (a plugin,
+// loaded only when a scene names it).
 #pragma once
+#include <string>
+#include <vector>
+
 #include "platon/core/system.h"
 
 namespace platon::app {
@@ -8,5 +12,8 @@ namespace platon::app {
 enum class Presentation { Headless, Window };
 
 core::SystemRegistry engineRegistry(Presentation presentation);
+
+// Where plugins are looked for (after $PLATON_PLUGIN_PATH): beside the program, then the build's.
+std::vector<std::string> pluginFolders();
 
 }  // namespace platon::app

@@ -4,6 +4,8 @@
 // fail. Results print in the order the scenarios were given: the same output at any -j.
 #include "run_command.h"
 
+#include "engine_registry.h"
+
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -136,6 +138,7 @@ int runCommand(int argc, char** argv) {
   double timeout = 600;
   std::string junit;
   script::RunOptions options;
+  options.pluginFolders = pluginFolders();
   std::string recordDir;
   std::vector<std::string> files;
   for (int i = 1; i < argc; ++i) {
@@ -245,7 +248,9 @@ int scenarioCommand(int argc, char** argv) {
   if (replayPath.empty()) return std::fprintf(stderr, "usage: platon scenario run.replay [-o scenario.lua]\n"), 2;
   try {
     const core::Replay replay = core::readReplay(replayPath);
-    const script::ScenarioResult outcome = script::runReplay(replayPath);
+    script::RunOptions options;
+    options.pluginFolders = pluginFolders();
+    const script::ScenarioResult outcome = script::runReplay(replayPath, options);
     if (!outcome.passed) {
       std::fprintf(stderr, "%s: the replay does not reproduce, so it makes no scenario: %s\n", replayPath.c_str(),
                    outcome.message.c_str());

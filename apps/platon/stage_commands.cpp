@@ -5,6 +5,9 @@
 #include <fstream>
 #include <string>
 
+#include "engine_registry.h"
+#include "platon/core/mesh_source.h"
+#include "platon/core/scene.h"
 #include "platon/stage/level_check.h"
 #include "platon/stage/net.h"
 
@@ -16,8 +19,14 @@ std::string where(const stage::SourcePosition& p) {
   return s.empty() ? s : s.substr(0, s.size() - 2);
 }
 
-// The stage a level is drawn on. Mesh levels need the meshes plugin (a later step).
-stage::Stage stageFor(const stage::Level& level) { return stage::platonicStageOf(level); }
+// The stage a level is drawn on; a mesh level's through the meshes plugin.
+stage::Stage stageFor(const stage::Level& level) {
+  if (level.solid) return stage::platonicStageOf(level);
+  core::SystemRegistry registry = engineRegistry(Presentation::Headless);
+  core::Scene scene;
+  const std::unique_ptr<core::System> meshes = registry.create("meshes", scene);
+  return core::meshStageOf(level, *meshes->meshSource());
+}
 
 }  // namespace
 

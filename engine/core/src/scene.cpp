@@ -2,6 +2,9 @@
 
 #include <exception>
 
+#include "platon/core/mesh_source.h"
+#include "platon/stage/mesh.h"
+
 namespace platon::core {
 
 void Scene::addSystem(std::unique_ptr<System> system, std::string name) {
@@ -41,13 +44,37 @@ namespace {
 stage::Solid manifestSolid(const SceneManifest& manifest) { return solidOfManifest(manifest.solid).value_or(stage::Solid::Hexahedron); }
 
 // A mesh level's stage: the mesh file read by the meshes plugin, which the manifest must name.
-stage::Stage meshStage(const stage::Level& level, const SceneManifest& manifest, const SystemRegistry& registry) {
-  (void)registry;
+stage::Stage meshStage(const stage::Level& level, const SceneManifest& manifest, const SystemRegistry& registry,
+                       Scene& scene) {
   if (!manifest.needs("meshes"))
     throw stage::StageError({level.file, 1, 1}, "the level is drawn on a mesh: the scene's manifest must list \"meshes\" in its systems");
-  throw stage::StageError({level.file, 1, 1}, "mesh stages need the meshes plugin, which this build does not have yet");
+  if (!scene.findSystem("meshes")) scene.addSystem(registry.create("meshes", scene), "meshes");
+  MeshSource* source = scene.findSystem("meshes")->meshSource();
+  if (!source) throw stage::StageError({level.file, 1, 1}, "the meshes system reads no meshes");
+  return meshStageOf(level, *source);
 }
+
 }  // namespace
+
+stage::Stage meshStageOf(const stage::Level& level, MeshSource& source) {
+  const std::string folder = level.file.substr(0, level.file.find_last_of('/') + 1);
+  MeshFile file;
+  try {
+    file = source.loadMesh(folder + level.mesh);
+  } catch (const std::runtime_error& e) {
+    throw stage::StageError({level.file, 1, 6}, e.what());
+  }
+  stage::MeshData mesh;
+  for (size_t i = 0; i + 2 < file.positions.size(); i += 3)
+    mesh.positions.emplace_back(file.positions[i], file.positions[i + 1], file.positions[i + 2]);
+  for (size_t i = 0; i + 2 < file.triangles.size(); i += 3)
+    mesh.triangles.push_back({file.triangles[i], file.triangles[i + 1], file.triangles[i + 2]});
+  try {
+    return stage::stageFromPolyhedron(stage::polyhedronFromMesh(mesh, level.size));
+  } catch (const stage::StageError& e) {
+    throw stage::StageError({level.file, 1, 6}, folder + level.mesh + ": " + e.reason());
+  }
+}
 
 std::unique_ptr<Scene> loadScene(const std::string& manifestPath, const SystemRegistry& registry) {
   auto scene = std::make_unique<Scene>();
@@ -56,7 +83,7 @@ std::unique_ptr<Scene> loadScene(const std::string& manifestPath, const SystemRe
   if (!manifest.levelFile.empty()) {
     // Parsed and checked whole before anything enters the world: a bad file builds nothing.
     stage::Level level = stage::parseLevel(stage::readLevelFile(manifest.levelFile), manifest.levelFile);
-    stage::Stage solid = level.solid ? stage::platonicStageOf(level) : meshStage(level, manifest, registry);
+    stage::Stage solid = level.solid ? stage::platonicStageOf(level) : meshStage(level, manifest, registry, *scene);
     stage::checkLevelOnStage(level, solid);
     stage::buildLevel(level, solid, scene->world(), 0, gravity);
     scene->setStage(std::move(solid));
@@ -71,7 +98,7 @@ std::unique_ptr<Scene> loadScene(const std::string& manifestPath, const SystemRe
   const std::vector<std::string> systems = manifest.systems;
   scene->setManifest(std::move(manifest));
   for (const std::string& name : systems)
-    if (registry.has(name)) scene->addSystem(registry.create(name, *scene), name);
+    if (registry.has(name) && !scene->findSystem(name)) scene->addSystem(registry.create(name, *scene), name);
   for (size_t i = 0; i < scene->systemCount(); ++i) scene->system(i).build(*scene);
   for (size_t i = 0; i < scene->stage()->faceCount(); ++i) scene->world().mapPart(scene->stage()->part(i)).initialize();
   for (size_t i = 0; i < scene->systemCount(); ++i) scene->system(i).start(*scene);

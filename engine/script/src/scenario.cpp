@@ -208,6 +208,7 @@ ScenarioResult runPlan(const std::string& path, const std::function<Plan()>& mak
     const Plan plan = makePlan();
     core::SystemRegistry registry;
     registry.add("scripting", makeScriptSystem);
+    registry.addPlugin("meshes", "platon_meshes", options.pluginFolders);
     std::unique_ptr<core::Scene> scene = core::loadScene(plan.scene, registry);
     ScriptSystem* scripts = nullptr;
     for (size_t i = 0; i < scene->systemCount(); ++i)

@@ -146,10 +146,15 @@ CheckReport checkLevel(const Level& level, const Stage& stage) {
     report.errors.push_back({e.where(), e.reason()});
     return report;
   }
+  std::string empty;
+  int firstEmptyLine = 0, emptyCount = 0;
   for (size_t f = 0; f < level.faces.size(); ++f) {
     const LevelFace& face = level.faces[f];
-    if (face.lines.empty() && static_cast<int>(f) != level.start.face && static_cast<int>(f) != level.goal.face)
-      report.warnings.push_back(Finding{SourcePosition{level.file, face.sourceLine, 1}, "face " + std::to_string(f) + " has no lines"});
+    if (face.lines.empty() && static_cast<int>(f) != level.start.face && static_cast<int>(f) != level.goal.face) {
+      empty += (empty.empty() ? "" : ", ") + std::to_string(f);
+      if (!firstEmptyLine) firstEmptyLine = face.sourceLine;
+      ++emptyCount;
+    }
     const auto& corners = stage.faces[f].corners;
     for (const LevelLine& l : face.lines)
       for (size_t k = 0; k < corners.size(); ++k) {
@@ -162,6 +167,9 @@ CheckReport checkLevel(const Level& level, const Stage& stage) {
                                        ": it blocks the way to face " + std::to_string(stage.faces[f].neighbours[k].face)});
       }
   }
+  if (emptyCount)
+    report.warnings.push_back(Finding{SourcePosition{level.file, firstEmptyLine, 1},
+                                      (emptyCount == 1 ? "face " + empty + " has" : "faces " + empty + " have") + " no lines"});
   if (!goalReachable(level, stage))
     report.errors.push_back({{level.file, level.goal.sourceLine, level.goal.sourceColumn},
                              "no path reaches the goal from the start (walls seal it off; see docs/level-format.md, "

@@ -93,7 +93,7 @@ std::vector<size_t> numbering(const Polyhedron& p, const std::vector<Frame>& fra
 
 Stage stageFromPolyhedron(const Polyhedron& p) {
   const double size = sizeOf(p);
-  validatePolyhedron(p, std::max(1e-9 * size, 1e-6));
+  validatePolyhedron(p, 1e-6 * size);  // a mesh file's floats hold about 7 digits
   const size_t count = p.faces.size();
   std::vector<Frame> frames(count);
   for (size_t f = 0; f < count; ++f) frames[f] = frameOf(p, f);

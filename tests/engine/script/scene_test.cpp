@@ -89,6 +89,29 @@ TEST(Systems, AHeadlessScenarioMapsNoGraphicsOrMeshLibraries) {
     EXPECT_EQ(text.str().find(library), std::string::npos) << library << " is mapped in a headless run";
 }
 
+// A process that plays a mesh level maps assimp (through the plugin); one that plays a Platonic
+// level does not (Systems.AHeadlessScenarioMapsNoGraphicsOrMeshLibraries). Each in a fresh process.
+bool mapsAssimpAfter(const std::string& scenario) {
+  script::RunOptions options;
+  options.pluginFolders = {PLATON_PLUGIN_DIR};
+  const script::ScenarioResult r = script::runScenario(scenario, options);
+  if (!r.passed) {
+    std::fprintf(stderr, "%s\n", r.message.c_str());
+    std::exit(2);
+  }
+  std::ifstream maps("/proc/self/maps");
+  std::stringstream text;
+  text << maps.rdbuf();
+  return text.str().find("libassimp") != std::string::npos;
+}
+
+TEST(MeshPlugin, LoadedOnlyForAMeshLevel) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  const std::string root = PLATON_SOURCE_ROOT;
+  EXPECT_EXIT(std::exit(mapsAssimpAfter(root + "/tests/scenarios/prism_walk.lua") ? 0 : 1), ::testing::ExitedWithCode(0), "");
+  EXPECT_EXIT(std::exit(mapsAssimpAfter(root + "/tests/scenarios/cube_intro_walk.lua") ? 0 : 1), ::testing::ExitedWithCode(1), "");
+}
+
 // A level folder with a manifest whose rules, player or level scripts are the test's.
 std::string levelWith(const Folder& folder, const std::string& levelScript, const std::string& rules = "") {
   folder.write("level.lua", levelScript);

@@ -59,4 +59,8 @@ class Scene {
 // file:line:column for a bad manifest and the systems' own errors for the rest.
 std::unique_ptr<Scene> loadScene(const std::string& manifestPath, const SystemRegistry& registry);
 
+// A mesh level's stage: its MESH file (relative to the level file) read by `source`, made a convex
+// solid with the level's size. Throws StageError naming the level file and what is wrong.
+stage::Stage meshStageOf(const stage::Level& level, MeshSource& source);
+
 }  // namespace platon::core

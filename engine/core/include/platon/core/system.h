@@ -14,6 +14,8 @@
 
 namespace platon::core {
 
+class MeshSource;
+
 class Scene;
 class Display;
 
@@ -41,6 +43,8 @@ class System {
 
   // The window this system shows the scene in, for the rendering system (core/display.h).
   virtual Display* display() { return nullptr; }
+  // The mesh reader this system offers, for the meshes system (core/mesh_source.h).
+  virtual MeshSource* meshSource() { return nullptr; }
 };
 
 using SystemFactory = std::function<std::unique_ptr<System>(Scene&)>;

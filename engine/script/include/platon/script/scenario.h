@@ -27,6 +27,9 @@ struct RunOptions {
   uint64_t traceEvery = 0;   // > 0: print the player's face and position to stderr this often
   bool record = false;       // keep the run's input and hashes in ScenarioResult::recorded
   uint64_t hashEvery = 60;   // the recording's hash interval
+  // Where the meshes plugin (libplaton_meshes.so) is looked for, after $PLATON_PLUGIN_PATH: loaded
+  // only for a level drawn on a mesh.
+  std::vector<std::string> pluginFolders;
 };
 
 struct ScenarioResult {

@@ -1,0 +1,24 @@
+// Mesh files as the meshes plugin (engine/mesh, libplaton_meshes.so) reads them: points and
+// triangles, plain data, so that the engine needs no mesh library and the plugin no engine code.
+// stage::polyhedronFromMesh turns them into a solid.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace platon::core {
+
+struct MeshFile {
+  std::vector<double> positions;   // x, y, z of each point
+  std::vector<int32_t> triangles;  // three point indices each, counter-clockwise seen from outside
+};
+
+class MeshSource {
+ public:
+  virtual ~MeshSource() = default;
+  // Reads every mesh in the file, with its nodes' transforms applied. Throws std::runtime_error
+  // "path: reason" for a file that cannot be read or holds no triangles.
+  virtual MeshFile loadMesh(const std::string& path) = 0;
+};
+
+}  // namespace platon::core

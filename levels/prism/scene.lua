@@ -1,0 +1,12 @@
+-- A triangular prism: the level is drawn on a mesh, read by the meshes plugin.
+return {
+  name = "Prism: first steps",
+  systems = { "scripting", "rendering", "meshes" },
+  stage = { level = "prism.level" },
+  gravity = 0.35,
+  scripts = {
+    rules = "scripts/rules/game.lua",
+    player = "scripts/player.lua",
+    progression = "scripts/progression.lua",
+  },
+}

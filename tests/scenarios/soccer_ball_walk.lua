@@ -1,0 +1,7 @@
+-- Walk right from the start of the soccer_ball level until the goal, on the next face.
+return {
+  scene = "levels/soccer_ball/scene.lua",
+  frames = 1500,
+  input = { { hold = "right", from = 1, to = 1500 } },
+  expect = { goal_by = 1500, deaths = 0 },
+}
