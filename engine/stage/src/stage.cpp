@@ -89,6 +89,31 @@ std::vector<size_t> numbering(const Polyhedron& p, const std::vector<Frame>& fra
   return order;
 }
 
+// Rounded to whole units, a face must stay a convex polygon, and the two copies of an edge must
+// stay as long as the physics library accepts for a warp (within 1% or 2 units).
+void checkWholeUnits(const Stage& stage) {
+  for (size_t f = 0; f < stage.faceCount(); ++f) {
+    const auto& c = stage.faces[f].corners;
+    const size_t n = c.size();
+    for (size_t i = 0; i < n; ++i) {
+      const physics::Vec2 a = c[i], b = c[(i + 1) % n], d = c[(i + 2) % n];
+      const int64_t turn = (int64_t{b.x} - a.x) * (int64_t{d.y} - b.y) - (int64_t{b.y} - a.y) * (int64_t{d.x} - b.x);
+      if (turn <= 0)
+        throw StageError({}, "face " + std::to_string(f) + " is too small or too thin to lay out in whole units (corner " +
+                                 std::to_string((i + 1) % n) + " is not convex once rounded): make the stage larger");
+      const auto [g, j] = stage.faces[f].neighbours[i];
+      const auto& o = stage.faces[static_cast<size_t>(g)].corners;
+      const double here = std::hypot(double(b.x) - a.x, double(b.y) - a.y);
+      const physics::Vec2 p = o[static_cast<size_t>(j)], q = o[(static_cast<size_t>(j) + 1) % o.size()];
+      const double there = std::hypot(double(q.x) - p.x, double(q.y) - p.y);
+      if (std::abs(here - there) > std::max(2.0, 0.01 * std::max(here, there)))
+        throw StageError({}, "the edge between faces " + std::to_string(f) + " and " + std::to_string(g) +
+                                 " comes out " + std::to_string(here) + " and " + std::to_string(there) +
+                                 " units long in whole units: make the stage larger");
+    }
+  }
+}
+
 }  // namespace
 
 Stage stageFromPolyhedron(const Polyhedron& p) {
@@ -145,6 +170,7 @@ Stage stageFromPolyhedron(const Polyhedron& p) {
     }();
   }
   stage.centre /= static_cast<double>(count);
+  checkWholeUnits(stage);
   return stage;
 }
 
