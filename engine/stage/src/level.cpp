@@ -141,11 +141,21 @@ void buildLevel(const Level& level, Stage& stage, physics::World& world, physics
     const LevelFace& face = level.faces[f];
     part.setGravity(face.gravityQ16.value_or(physics::Vec2w{0, -defaultGravityQ16}));
     part.reserve(part.lines().size() + face.lines.size() + 4);
-    for (const LevelLine& l : face.lines) {
-      if (l.oneWay)
+    // Runs of solid lines with one tag go in bulk (the physics checks them once, together).
+    std::vector<physics::Segment> run;
+    for (size_t i = 0; i < face.lines.size();) {
+      const LevelLine& l = face.lines[i];
+      if (l.oneWay) {
         part.oneWay(l.a, l.b, l.tag);
-      else
-        part.line(l.a, l.b, l.tag);
+        ++i;
+        continue;
+      }
+      run.clear();
+      size_t j = i;
+      for (; j < face.lines.size() && !face.lines[j].oneWay && face.lines[j].tag == l.tag; ++j)
+        run.push_back({face.lines[j].a, face.lines[j].b});
+      part.lines(run, l.tag);
+      i = j;
     }
   }
   const std::vector<physics::Vec2> square = goalSquare(level);
@@ -154,11 +164,14 @@ void buildLevel(const Level& level, Stage& stage, physics::World& world, physics
 }
 
 std::string readLevelFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) throw StageError({path, 0, 0}, "cannot open the level file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+  const std::streamoff size = in.tellg();
+  if (size < 0 || size > (std::streamoff{1} << 30)) throw StageError({path, 0, 0}, "cannot read the level file (or it is over 1 GB)");
+  std::string text(static_cast<size_t>(size), '\0');
+  in.seekg(0);
+  if (!in.read(text.data(), size)) throw StageError({path, 0, 0}, "cannot read the level file");
+  return text;
 }
 
 }  // namespace platon::stage

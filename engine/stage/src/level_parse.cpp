@@ -1,6 +1,7 @@
 // parseLevel: the level text, line by line. Every rejection names file:line:column.
 #include <cmath>
 #include <cstdlib>
+#include <span>
 
 #include "platon/stage/level.h"
 
@@ -14,48 +15,62 @@ struct Token {
 
 struct TextLine {
   int number = 0;
-  std::vector<Token> tokens;
+  std::span<const Token> tokens;
 };
 
-// Lines with their tokens; comments (# to the end of the line) and blank lines dropped.
-std::vector<TextLine> splitLines(std::string_view text, int& lineCount) {
-  std::vector<TextLine> out;
-  int number = 0;
-  size_t at = 0;
-  while (at < text.size()) {
-    size_t end = text.find('\n', at);
-    if (end == std::string_view::npos) end = text.size();
-    std::string_view line = text.substr(at, end - at);
-    ++number;
-    if (const size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
-    TextLine parsed{number, {}};
-    size_t i = 0;
-    while (i < line.size()) {
-      while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
-      const size_t start = i;
-      while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') ++i;
-      if (i > start) parsed.tokens.push_back({line.substr(start, i - start), static_cast<int>(start) + 1});
+// Reads the text one line at a time (a level of 10^5 segments never holds more than one line's
+// tokens): comments (# to the end of the line) and blank lines are skipped.
+class LineReader {
+ public:
+  explicit LineReader(std::string_view text) : text_(text) {}
+
+  // The next line with values, or nullptr at the end. Valid until the next call.
+  const TextLine* next() {
+    while (at_ < text_.size()) {
+      size_t end = text_.find('\n', at_);
+      if (end == std::string_view::npos) end = text_.size();
+      std::string_view line = text_.substr(at_, end - at_);
+      at_ = end + 1;
+      ++number_;
+      if (const size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+      tokens_.clear();
+      size_t i = 0;
+      while (i < line.size()) {
+        while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
+        const size_t start = i;
+        while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') ++i;
+        if (i > start) tokens_.push_back({line.substr(start, i - start), static_cast<int>(start) + 1});
+      }
+      if (tokens_.empty()) continue;
+      current_ = {number_, tokens_};
+      return &current_;
     }
-    if (!parsed.tokens.empty()) out.push_back(std::move(parsed));
-    at = end + 1;
+    return nullptr;
   }
-  lineCount = number;
-  return out;
-}
+  // Lines read so far (all of them, once next() returned nullptr).
+  int lineCount() const { return number_; }
+
+ private:
+  std::string_view text_;
+  size_t at_ = 0;
+  int number_ = 0;
+  std::vector<Token> tokens_;
+  TextLine current_;
+};
 
 class Parser {
  public:
-  Parser(std::string_view text, const std::string& file) : file_(file) { lines_ = splitLines(text, lineCount_); }
+  Parser(std::string_view text, const std::string& file) : file_(file), reader_(text) {}
 
   Level parse() {
     Level level;
     level.file = file_;
-    level.endLine = lineCount_ + 1;
     solidLine(level);
     startLine(level);
     goalLine(level);
     sizeLine(level);
     faces(level);
+    level.endLine = reader_.lineCount() + 1;
     const int faceTotal = static_cast<int>(level.faces.size());
     if (level.solid && faceTotal != faceCount(*level.solid))
       fail(level.endLine, 0, std::string(solidName(*level.solid)) + " has " + std::to_string(faceCount(*level.solid)) +
@@ -74,8 +89,9 @@ class Parser {
   }
 
   const TextLine& next(const char* what) {
-    if (at_ >= lines_.size()) fail(lineCount_ + 1, 0, std::string("the file ends before the ") + what);
-    return lines_[at_++];
+    const TextLine* line = reader_.next();
+    if (!line) fail(reader_.lineCount() + 1, 0, std::string("the file ends before the ") + what);
+    return *line;
   }
 
   void expectCount(const TextLine& line, size_t lo, size_t hi, const char* what) const {
@@ -86,6 +102,21 @@ class Parser {
 
   // A decimal number: digits with an optional sign, point and exponent; nothing else.
   double number(const TextLine& line, const Token& t, double lo, double hi, const char* what) const {
+    // Most numbers in a level are plain integers: read those directly.
+    const std::string_view text = t.text;
+    if (!text.empty() && text.size() <= 10) {
+      size_t k = text[0] == '-' || text[0] == '+' ? 1 : 0;
+      int64_t value = 0;
+      bool digits = k < text.size();
+      for (; k < text.size() && digits; ++k) {
+        digits = text[k] >= '0' && text[k] <= '9';
+        value = value * 10 + (text[k] - '0');
+      }
+      if (digits) {
+        const double v = static_cast<double>(text[0] == '-' ? -value : value);
+        if (v >= lo && v <= hi) return v;
+      }
+    }
     const std::string s(t.text);
     size_t i = 0;
     if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
@@ -173,8 +204,8 @@ class Parser {
   }
 
   void faces(Level& level) {
-    while (at_ < lines_.size()) {
-      const TextLine& line = lines_[at_++];
+    while (const TextLine* next = reader_.next()) {
+      const TextLine& line = *next;
       if (line.tokens[0].text == "%") {
         if (level.solid && static_cast<int>(level.faces.size()) == faceCount(*level.solid))
           fail(line, line.tokens[0], std::string(solidName(*level.solid)) + " has " +
@@ -256,9 +287,7 @@ class Parser {
   }
 
   std::string file_;
-  std::vector<TextLine> lines_;
-  int lineCount_ = 0;
-  size_t at_ = 0;
+  LineReader reader_;
 };
 
 }  // namespace
