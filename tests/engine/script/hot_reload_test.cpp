@@ -162,6 +162,33 @@ TEST(HotReload, ABrokenEditIsReportedAndTheLastGoodVersionGoesOn) {
   }
 }
 
+// A scene whose stage is a level file: an edit to the file reloads it (the player keeps its place
+// where the new lines allow), a broken edit is reported with file:line:column and the last good
+// version plays on.
+TEST(HotReload, ALevelFileEditReloadsAndABrokenOneIsRefused) {
+  Folder folder("reload_level_file");
+  const std::string floors = "%\n0 512 4096 512\n%\n0 512 4096 512\n%\n%\n%\n%\n";
+  folder.write("l.level", "HEXAHEDRON\n0 600 700\n1 3000 800\n4096\n" + floors);
+  const std::string scene = folder.write(
+      "scene.lua", "return { systems = { 'scripting' }, stage = { level = 'l.level' }, scripts = { player = "
+                   "'scripts/player.lua', progression = 'scripts/progression.lua', rules = 'scripts/rules/game.lua' } }\n");
+  const core::SystemRegistry registry = scriptingOnly();
+  core::LiveScene live(scene, registry, true);
+  run(live, 40, InputFrame::bit(Button::Right));
+  const int32_t x = scriptsOf(live).status().x;
+  folder.write("l.level", "HEXAHEDRON\n0 600 700\n1 3500 800\n4096\n" + floors);  // the goal moved
+  const core::ReloadReport good = awaitReload(live);
+  EXPECT_TRUE(good.ok) << good.error;
+  EXPECT_EQ(live.scene().level()->goal.position, (physics::Vec2{3500, 800}));
+  EXPECT_NEAR(scriptsOf(live).status().x, x, 1);  // the player kept its place
+  folder.write("l.level", "HEXAHEDRON\n0 600 700\n1 3500 800\n4096\n%\n0 512 40q6 512\n");
+  const core::ReloadReport broken = awaitReload(live);
+  EXPECT_FALSE(broken.ok);
+  EXPECT_NE(broken.error.find("l.level:6:7: x1: '40q6' is not a number"), std::string::npos) << broken.error;
+  run(live, 10, InputFrame::bit(Button::Right));
+  EXPECT_GT(scriptsOf(live).status().x, x);  // the last good version plays on
+}
+
 TEST(HotReload, AnErrorWhileRunningIsReportedAndTheFramesGoOn) {
   Folder folder("reload_runtime");
   const std::string scene = folder.write("scene.lua", kManifest);
