@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "platon/stage/mesh.h"
 #include "platon/stage/stage_error.h"
 
 using namespace platon;
@@ -102,6 +103,75 @@ TEST(Stage, EveryEdgeWarpsToItsNeighbourAndBack) {
       }
     }
   }
+}
+
+}  // namespace
+
+namespace {
+
+// A cube as 12 triangles (two per face), counter-clockwise from outside.
+stage::MeshData cubeMesh() {
+  stage::MeshData m;
+  for (int i = 0; i < 8; ++i) m.positions.emplace_back(i & 1, (i >> 1) & 1, (i >> 2) & 1);
+  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (const auto& q : quads) {
+    m.triangles.push_back({q[0], q[1], q[2]});
+    m.triangles.push_back({q[0], q[2], q[3]});
+  }
+  return m;
+}
+
+std::string meshRefusal(const stage::MeshData& m) {
+  try {
+    stage::polyhedronFromMesh(m, 1000);
+  } catch (const stage::StageError& e) {
+    return e.what();
+  }
+  return "(accepted)";
+}
+
+TEST(MeshBuilder, ACubeOfTrianglesBecomesSixSquares) {
+  const stage::Polyhedron p = stage::polyhedronFromMesh(cubeMesh(), 1000);
+  ASSERT_EQ(p.faces.size(), 6u);
+  for (const auto& f : p.faces) EXPECT_EQ(f.size(), 4u);
+  // Turned inside out (every triangle clockwise) it is turned back.
+  stage::MeshData inside = cubeMesh();
+  for (auto& t : inside.triangles) std::swap(t[1], t[2]);
+  EXPECT_EQ(stage::polyhedronFromMesh(inside, 1000).faces.size(), 6u);
+  // STL-style: every triangle with its own three points.
+  stage::MeshData loose;
+  for (const auto& t : cubeMesh().triangles) {
+    const int base = static_cast<int>(loose.positions.size());
+    for (const int v : t) loose.positions.push_back(cubeMesh().positions[size_t(v)]);
+    loose.triangles.push_back({base, base + 1, base + 2});
+  }
+  EXPECT_EQ(stage::polyhedronFromMesh(loose, 1000).faces.size(), 6u);
+}
+
+TEST(MeshBuilder, EveryBrokenMeshSaysWhatIsWrongAndWhere) {
+  stage::MeshData open = cubeMesh();
+  open.triangles.pop_back();
+  EXPECT_NE(meshRefusal(open).find("open mesh: the edge"), std::string::npos) << meshRefusal(open);
+  stage::MeshData flipped = cubeMesh();
+  std::swap(flipped.triangles[3][1], flipped.triangles[3][2]);
+  EXPECT_NE(meshRefusal(flipped).find("run the same way along the edge"), std::string::npos) << meshRefusal(flipped);
+  stage::MeshData threeWay = cubeMesh();
+  threeWay.positions.emplace_back(0.5, 0.5, 2);
+  threeWay.triangles.push_back({4, 5, 8});  // a fin on the top edge 4 -> 5
+  EXPECT_NE(meshRefusal(threeWay).find("non-manifold"), std::string::npos) << meshRefusal(threeWay);
+  stage::MeshData dent = cubeMesh();
+  dent.positions[7] = {0.6, 0.6, 0.6};  // a corner pushed in
+  EXPECT_NE(meshRefusal(dent).find("not convex"), std::string::npos) << meshRefusal(dent);
+  stage::MeshData flat = cubeMesh();
+  flat.triangles[0] = {0, 0, 1};
+  EXPECT_NE(meshRefusal(flat).find("triangle 0 is degenerate"), std::string::npos) << meshRefusal(flat);
+  stage::MeshData missing = cubeMesh();
+  missing.triangles[5][2] = 99;
+  EXPECT_EQ(meshRefusal(missing), "triangle 5 names vertex 99, which does not exist");
+  stage::MeshData nan = cubeMesh();
+  nan.positions[2].x() = std::nan("");
+  EXPECT_EQ(meshRefusal(nan), "vertex 2 is not a finite point of sensible size");
+  EXPECT_EQ(meshRefusal({}), "a closed solid needs at least 4 triangles, the mesh has 0");
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 // system neither loads nor pays for it. Physics is not a system: every scene has a world, and an
 // empty world costs nothing to step.
 #pragma once
+#include <cstdio>
+#include <exception>
 #include <functional>
 #include <memory>
 #include <string>
@@ -54,6 +56,19 @@ using SystemFactory = std::function<std::unique_ptr<System>(Scene&)>;
 // exception crosses it.
 extern "C" using PluginEntry = System*(Scene& scene, char* error, size_t errorSize);
 inline constexpr const char* kPluginEntryName = "platon_create_system";
+
+// A plugin's entry body: creates T, and turns any exception into `error` (none may cross the C entry).
+template <class T>
+System* createPluginSystem(char* error, size_t errorSize) noexcept {
+  try {
+    return new T();
+  } catch (const std::exception& e) {
+    std::snprintf(error, errorSize, "%s", e.what());
+  } catch (...) {
+    std::snprintf(error, errorSize, "unknown error");
+  }
+  return nullptr;
+}
 
 class SystemRegistry {
  public:
