@@ -160,4 +160,49 @@ TEST(Crossing, ThrownAtEveryCornerNeverLeavesTheFaces) {
     }
 }
 
+// Walking: on every solid, each face with a floor a little above its floor edge and gravity down
+// its own frame, bodies kept walking right (or left) for 3,000 frames go over edges, fall onto
+// other faces and walk on; every frame every copy stays on its face (or within the body's reach).
+TEST(Crossing, WalkingAndFallingAcrossEveryShapeStaysOnTheFaces) {
+  platon::testing::Rng rng{9};
+  for (const stage::Solid solid : stage::kSolids) {
+    auto b = std::make_unique<Built>();
+    b->stage = stage::platonicStage(solid, 4096);
+    stage::addStageToWorld(b->stage, b->world, 0);
+    for (size_t f = 0; f < b->stage.faceCount(); ++f) {
+      physics::MapPart& part = b->world.mapPart(b->stage.part(f));
+      // The floor: across the face at y = 400, inside it (a polygon's width there, less 40 units).
+      const auto& c = b->stage.faces[f].corners;
+      double lo = 1e9, hi = -1e9;
+      for (size_t k = 0; k < c.size(); ++k) {
+        const Vec2 p = c[k], q = c[(k + 1) % c.size()];
+        if ((p.y - 400.0) * (q.y - 400.0) > 0 || p.y == q.y) continue;
+        const double x = p.x + (400.0 - p.y) * (q.x - p.x) / (q.y - p.y);
+        lo = std::min(lo, x), hi = std::max(hi, x);
+      }
+      part.line({static_cast<int32_t>(lo + 40), 400}, {static_cast<int32_t>(hi - 40), 400});
+      part.setGravity({0, -22938});
+      part.initialize();
+    }
+    for (int walker = 0; walker < 6; ++walker) {
+      const size_t face = static_cast<size_t>(rng.between(0, static_cast<int>(b->stage.faceCount()) - 1));
+      const int64_t speed = (walker % 2 ? -1 : 1) * rng.between(3, 14) * kQ16;
+      const physics::EntityId body = b->world.createEntity(shapeNumber(walker % 2));
+      b->world.insert(body, b->stage.part(face), {static_cast<int32_t>(b->stage.faces[face].corners[1].x / 2), 600}, 0);
+      SCOPED_TRACE(std::string(stage::solidName(solid)) + " walker " + std::to_string(walker));
+      for (int frame = 1; frame <= 3000; ++frame) {
+        b->world.setVelocity(body, {speed, b->world.entity(body).velocity().y});
+        b->world.solve();
+        const physics::EntityView e = b->world.entity(body);
+        ASSERT_TRUE(e.inserted()) << "frame " << frame;
+        const double reach = 100 + std::hypot(double(e.velocity().x), double(e.velocity().y)) / kQ16;
+        for (const physics::InstanceView i : e.instances())
+          ASSERT_LE(outside(b->stage.faces[i.part].corners, i.position), reach)
+              << "frame " << frame << ": a copy at (" << i.position.x << ", " << i.position.y << ") is off face " << i.part;
+      }
+      b->world.destroyEntity(body);
+    }
+  }
+}
+
 }  // namespace
