@@ -49,15 +49,16 @@ physics::Convex shapeNumber(int k) {
   return k == 0 ? physics::Convex::regular(12, 60) : physics::Convex::box(50, 80);
 }
 
-// Over every edge of every solid, from both faces (each face's every edge), at speeds 3, 17 and 61
+// Over every edge of every solid (faces of 4,096 and of 2^24 units), from both faces (each face's every edge), at speeds 3, 17 and 61
 // units a frame, three headings, two places along the edge, a round body and a box (which meets
 // the edge with a corner first); then the velocity reversed for as many frames: back where it
 // started within 4 units (rounding at each warp: docs/level-format.md).
 TEST(Crossing, EveryEdgeBothWaysAndBack) {
   int crossings = 0;
   double worstReturn = 0;
+  for (const int32_t size : {4096, 1 << 24})  // a small face and the level format's largest
   for (const stage::Solid solid : stage::kSolids) {
-    auto b = build(solid, 4096, 0);
+    auto b = build(solid, size, 0);
     physics::World& world = b->world;
     for (size_t f = 0; f < b->stage.faceCount(); ++f) {
       const stage::StageFace& face = b->stage.faces[f];
@@ -70,7 +71,7 @@ TEST(Crossing, EveryEdgeBothWaysAndBack) {
           for (const double heading : {-0.7, 0.0, 0.5})
             for (const int speed : {3, 17, 61})
               for (int shape = 0; shape < 2; ++shape) {
-                SCOPED_TRACE(std::string(stage::solidName(solid)) + " face " + std::to_string(f) + " edge " +
+                SCOPED_TRACE(std::string(stage::solidName(solid)) + " size " + std::to_string(size) + " face " + std::to_string(f) + " edge " +
                              std::to_string(i) + " along " + std::to_string(along) + " heading " +
                              std::to_string(heading) + " speed " + std::to_string(speed) + " shape " + std::to_string(shape));
                 const Vec2 start{static_cast<int32_t>(std::lround(a.x + ex * along - ox * 300)),

@@ -37,7 +37,7 @@ TEST(Platonic, NamesRoundTrip) {
 // horizontal; neighbours are mutual.
 TEST(Stage, FramesAndNeighbours) {
   for (const stage::Solid solid : stage::kSolids)
-    for (const int32_t edge : {64, 999, 4096, 100000}) {
+    for (const int32_t edge : {64, 999, 4096, 100000, 1 << 24}) {  // the level format's whole range
       SCOPED_TRACE(std::string(stage::solidName(solid)) + " edge " + std::to_string(edge));
       const stage::Stage s = stage::platonicStage(solid, edge);
       ASSERT_EQ(static_cast<int>(s.faceCount()), stage::faceCount(solid));
