@@ -24,8 +24,7 @@ namespace {
 class TriggerRules final : public physics::Rules {
  public:
   bool pierce(physics::EntityId, const physics::LineRef& line) override {
-    return line.kind == physics::LineKind::Warp || line.tag == stage::kTagGoal || line.tag == stage::kTagCheckpoint ||
-           (line.tag > stage::kTagSwitch && line.tag < stage::kTagSwitch + 1000);
+    return line.kind == physics::LineKind::Warp || stage::playerPassesThrough(line.tag);
   }
 };
 

@@ -56,6 +56,15 @@ stage::Stage meshStage(const stage::Level& level, const SceneManifest& manifest,
 
 }  // namespace
 
+stage::MeshData meshDataOf(const MeshFile& file) {
+  stage::MeshData mesh;
+  for (size_t i = 0; i + 2 < file.positions.size(); i += 3)
+    mesh.positions.emplace_back(file.positions[i], file.positions[i + 1], file.positions[i + 2]);
+  for (size_t i = 0; i + 2 < file.triangles.size(); i += 3)
+    mesh.triangles.push_back({file.triangles[i], file.triangles[i + 1], file.triangles[i + 2]});
+  return mesh;
+}
+
 stage::Stage meshStageOf(const stage::Level& level, MeshSource& source) {
   const std::string folder = level.file.substr(0, level.file.find_last_of('/') + 1);
   MeshFile file;
@@ -64,13 +73,8 @@ stage::Stage meshStageOf(const stage::Level& level, MeshSource& source) {
   } catch (const std::runtime_error& e) {
     throw stage::StageError({level.file, 1, 6}, e.what());
   }
-  stage::MeshData mesh;
-  for (size_t i = 0; i + 2 < file.positions.size(); i += 3)
-    mesh.positions.emplace_back(file.positions[i], file.positions[i + 1], file.positions[i + 2]);
-  for (size_t i = 0; i + 2 < file.triangles.size(); i += 3)
-    mesh.triangles.push_back({file.triangles[i], file.triangles[i + 1], file.triangles[i + 2]});
   try {
-    return stage::stageFromPolyhedron(stage::polyhedronFromMesh(mesh, level.size));
+    return stage::stageFromPolyhedron(stage::polyhedronFromMesh(meshDataOf(file), level.size));
   } catch (const stage::StageError& e) {
     throw stage::StageError({level.file, 1, 6}, folder + level.mesh + ": " + e.reason());
   }

@@ -5,6 +5,8 @@
 
 #include "platon/stage/level.h"
 
+#include "face_geometry.h"
+
 namespace platon::stage {
 namespace {
 
@@ -24,24 +26,6 @@ std::string tagWords(uint32_t tag) {
   return " tag " + std::to_string(tag);
 }
 
-// > 0: p left of a -> b; exact in 64 bits for coordinates below 2^30.
-int64_t side(physics::Vec2 a, physics::Vec2 b, physics::Vec2 p) {
-  return (int64_t{b.x} - a.x) * (int64_t{p.y} - a.y) - (int64_t{b.y} - a.y) * (int64_t{p.x} - a.x);
-}
-
-bool insidePolygon(const std::vector<physics::Vec2>& corners, physics::Vec2 p) {
-  for (size_t i = 0; i < corners.size(); ++i)
-    if (side(corners[i], corners[(i + 1) % corners.size()], p) < 0) return false;
-  return true;
-}
-
-double distanceToSegment(physics::Vec2 p, physics::Vec2 a, physics::Vec2 b) {
-  const double dx = double(b.x) - a.x, dy = double(b.y) - a.y;
-  double t = ((double(p.x) - a.x) * dx + (double(p.y) - a.y) * dy) / (dx * dx + dy * dy);
-  t = std::clamp(t, 0.0, 1.0);
-  return std::hypot(a.x + t * dx - p.x, a.y + t * dy - p.y);
-}
-
 std::string pointText(physics::Vec2 p) { return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")"; }
 
 std::vector<physics::Vec2> goalSquare(const Level& level) {
@@ -56,11 +40,11 @@ void checkPoint(const Level& level, const Stage& stage, const LevelPoint& p, con
     throw StageError(at, std::string(what) + " face " + std::to_string(p.face) + " does not exist (the stage has " +
                              std::to_string(stage.faceCount()) + " faces)");
   const auto& corners = stage.faces[static_cast<size_t>(p.face)].corners;
-  if (!insidePolygon(corners, p.position))
+  if (!insidePolygon(corners, p.position.x, p.position.y))
     throw StageError(at, std::string(what) + " " + pointText(p.position) + " is outside face " + std::to_string(p.face));
   for (const LevelLine& l : level.faces[static_cast<size_t>(p.face)].lines) {
-    if (l.tag == kTagGoal || l.tag == kTagCheckpoint || (l.tag > kTagSwitch && l.tag < kTagSwitch + 1000)) continue;
-    const double d = distanceToSegment(p.position, l.a, l.b);
+    if (playerPassesThrough(l.tag)) continue;
+    const double d = distanceToSegment(p.position.x, p.position.y, l.a, l.b);
     if (d < kStartClearance)
       throw StageError(at, std::string(what) + " " + pointText(p.position) + " is inside a wall: " +
                                std::to_string(static_cast<int>(d)) + " units from the segment on line " +
@@ -111,7 +95,7 @@ void checkLevelOnStage(const Level& level, const Stage& stage) {
     const auto& corners = stage.faces[f].corners;
     for (const LevelLine& l : level.faces[f].lines)
       for (const physics::Vec2 p : {l.a, l.b})
-        if (!insidePolygon(corners, p)) {
+        if (!insidePolygon(corners, p.x, p.y)) {
           std::string shape;
           for (const physics::Vec2 c : corners) shape += " " + pointText(c);
           throw StageError({level.file, l.sourceLine, l.sourceColumn},
@@ -122,7 +106,7 @@ void checkLevelOnStage(const Level& level, const Stage& stage) {
   checkPoint(level, stage, level.start, "start");
   checkPoint(level, stage, level.goal, "goal");
   for (const physics::Vec2 c : goalSquare(level))
-    if (!insidePolygon(stage.faces[static_cast<size_t>(level.goal.face)].corners, c))
+    if (!insidePolygon(stage.faces[static_cast<size_t>(level.goal.face)].corners, c.x, c.y))
       throw StageError({level.file, level.goal.sourceLine, level.goal.sourceColumn},
                        "the goal's square (" + std::to_string(2 * goalHalfSide(level)) +
                            " units wide) reaches over the edge of face " + std::to_string(level.goal.face));

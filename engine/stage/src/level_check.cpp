@@ -1,5 +1,7 @@
 #include "platon/stage/level_check.h"
 
+#include "face_geometry.h"
+
 #include <algorithm>
 #include <cmath>
 #include <deque>
@@ -22,22 +24,8 @@ struct Grid {
   double cy(int i) const { return y0 + (i / width + 0.5) * cell; }
 };
 
-double side(physics::Vec2 a, physics::Vec2 b, double x, double y) {
-  return (double(b.x) - a.x) * (y - a.y) - (double(b.y) - a.y) * (x - a.x);
-}
-
-double distanceToSegment(double x, double y, physics::Vec2 a, physics::Vec2 b) {
-  const double dx = double(b.x) - a.x, dy = double(b.y) - a.y;
-  const double t = std::clamp(((x - a.x) * dx + (y - a.y) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
-  return std::hypot(a.x + t * dx - x, a.y + t * dy - y);
-}
-
 bool blocks(const LevelLine& l) {
-  if (l.oneWay) return false;
-  if (l.tag == kTagGoal || l.tag == kTagCheckpoint) return false;
-  if (l.tag > kTagDoor && l.tag < kTagDoor + 1000) return false;
-  if (l.tag > kTagSwitch && l.tag < kTagSwitch + 1000) return false;
-  return true;
+  return !l.oneWay && !playerPassesThrough(l.tag) && !(l.tag > kTagDoor && l.tag < kTagDoor + 1000);  // doors: open
 }
 
 std::vector<Grid> buildGrids(const Level& level, const Stage& stage) {
@@ -54,12 +42,7 @@ std::vector<Grid> buildGrids(const Level& level, const Stage& stage) {
     g.width = static_cast<int>(std::ceil((x1 - g.x0) / cell));
     g.height = static_cast<int>(std::ceil((y1 - g.y0) / cell));
     g.state.assign(static_cast<size_t>(g.width) * static_cast<size_t>(g.height), 0);
-    for (int i = 0; i < g.width * g.height; ++i) {
-      bool inside = true;
-      for (size_t k = 0; k < corners.size() && inside; ++k)
-        inside = side(corners[k], corners[(k + 1) % corners.size()], g.cx(i), g.cy(i)) >= 0;
-      g.state[static_cast<size_t>(i)] = inside ? 1 : 0;
-    }
+    for (int i = 0; i < g.width * g.height; ++i) g.state[static_cast<size_t>(i)] = insidePolygon(corners, g.cx(i), g.cy(i)) ? 1 : 0;
     for (const LevelLine& l : level.faces[f].lines) {
       if (!blocks(l)) continue;
       const double lx = std::min(l.a.x, l.b.x) - reach, hx = std::max(l.a.x, l.b.x) + reach;

@@ -18,12 +18,6 @@ std::string vertexName(const Polyhedron& p, int v) {
 
 [[noreturn]] void fail(const std::string& reason) { throw StageError({}, reason); }
 
-Eigen::Vector3d centroidOf(const Polyhedron& p, size_t face) {
-  Eigen::Vector3d c = Eigen::Vector3d::Zero();
-  for (const int v : p.faces[face]) c += p.vertices[static_cast<size_t>(v)];
-  return c / static_cast<double>(p.faces[face].size());
-}
-
 void checkFaceShape(const Polyhedron& p, size_t f, double tolerance) {
   const auto& cycle = p.faces[f];
   const std::string name = "face " + std::to_string(f);
@@ -36,7 +30,7 @@ void checkFaceShape(const Polyhedron& p, size_t f, double tolerance) {
   }
   const Eigen::Vector3d n = faceNormal(p, f);
   if (!n.allFinite()) fail(name + " is degenerate (no area)");
-  const Eigen::Vector3d c = centroidOf(p, f);
+  const Eigen::Vector3d c = faceCentre(p, f);
   for (const int v : cycle) {
     const double off = std::abs(n.dot(p.vertices[static_cast<size_t>(v)] - c));
     if (off > tolerance) fail(name + " is not flat: " + vertexName(p, v) + " is " + std::to_string(off) + " off its plane");
@@ -95,6 +89,12 @@ double sizeOf(const Polyhedron& p) {
   return (hi - lo).norm();
 }
 
+Eigen::Vector3d faceCentre(const Polyhedron& p, size_t face) {
+  Eigen::Vector3d c = Eigen::Vector3d::Zero();
+  for (const int v : p.faces[face]) c += p.vertices[static_cast<size_t>(v)];
+  return c / static_cast<double>(p.faces[face].size());
+}
+
 Eigen::Vector3d faceNormal(const Polyhedron& p, size_t face) {
   Eigen::Vector3d n = Eigen::Vector3d::Zero();
   const auto& cycle = p.faces[face];
@@ -115,13 +115,13 @@ void validatePolyhedron(const Polyhedron& p, double tolerance) {
   for (size_t f = 0; f < p.faces.size(); ++f) checkFaceShape(p, f, tolerance);
 
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-  for (size_t f = 0; f < p.faces.size(); ++f) centre += centroidOf(p, f);
+  for (size_t f = 0; f < p.faces.size(); ++f) centre += faceCentre(p, f);
   centre /= static_cast<double>(p.faces.size());
 
   std::map<std::pair<int, int>, size_t> edgeFace;  // directed edge u -> v: its face
   for (size_t f = 0; f < p.faces.size(); ++f) {
     const auto& cycle = p.faces[f];
-    if (faceNormal(p, f).dot(centroidOf(p, f) - centre) <= 0)
+    if (faceNormal(p, f).dot(faceCentre(p, f) - centre) <= 0)
       fail("face " + std::to_string(f) + " faces inward (its corners run clockwise seen from outside)");
     for (size_t i = 0; i < cycle.size(); ++i) {
       const std::pair<int, int> e{cycle[i], cycle[(i + 1) % cycle.size()]};
@@ -141,7 +141,7 @@ void validatePolyhedron(const Polyhedron& p, double tolerance) {
       fail("faces " + std::to_string(f) + " and " + std::to_string(back->second) + " share an edge and lie in one plane");
   }
   for (size_t f = 0; f < p.faces.size(); ++f) {
-    const Eigen::Vector3d n = faceNormal(p, f), c = centroidOf(p, f);
+    const Eigen::Vector3d n = faceNormal(p, f), c = faceCentre(p, f);
     for (size_t v = 0; v < p.vertices.size(); ++v) {
       const double ahead = n.dot(p.vertices[v] - c);
       if (ahead > tolerance)

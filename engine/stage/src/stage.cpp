@@ -51,15 +51,10 @@ Frame frameOf(const Polyhedron& p, size_t face) {
 std::vector<size_t> numbering(const Polyhedron& p, const std::vector<Frame>& frames,
                               const std::vector<std::vector<std::pair<size_t, int>>>& across) {
   const size_t count = p.faces.size();
-  auto centreOf = [&](size_t f) {
-    Eigen::Vector3d c = Eigen::Vector3d::Zero();
-    for (size_t i = 0; i < p.faces[f].size(); ++i) c += corner(p, f, i);
-    return Eigen::Vector3d(c / static_cast<double>(p.faces[f].size()));
-  };
   size_t first = 0;
   for (size_t f = 1; f < count; ++f) {
     const double dz = frames[f].normal.z() - frames[first].normal.z();
-    const Eigen::Vector3d a = centreOf(f), b = centreOf(first);
+    const Eigen::Vector3d a = faceCentre(p, f), b = faceCentre(p, first);
     if (dz > 1e-9 || (dz > -1e-9 && (a.y() < b.y() - 1e-9 || (std::abs(a.y() - b.y()) <= 1e-9 && a.x() < b.x() - 1e-9))))
       first = f;
   }
@@ -163,11 +158,7 @@ Stage stageFromPolyhedron(const Polyhedron& p) {
       face.neighbours.push_back({numberOf[g], ((i - gFloor) % gSides + gSides) % gSides});
     }
     stage.faces.push_back(std::move(face));
-    stage.centre += [&] {
-      Eigen::Vector3d c = Eigen::Vector3d::Zero();
-      for (size_t k = 0; k < sides; ++k) c += corner(p, f, k);
-      return Eigen::Vector3d(c / static_cast<double>(sides));
-    }();
+    stage.centre += faceCentre(p, f);
   }
   stage.centre /= static_cast<double>(count);
   checkWholeUnits(stage);

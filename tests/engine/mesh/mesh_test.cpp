@@ -21,13 +21,7 @@ const std::string kData = std::string(PLATON_SOURCE_ROOT) + "/tests/data/meshes/
 
 stage::MeshData read(const std::string& path) {
   mesh::MeshSystem reader;
-  const core::MeshFile file = reader.loadMesh(path);
-  stage::MeshData out;
-  for (size_t i = 0; i + 2 < file.positions.size(); i += 3)
-    out.positions.emplace_back(file.positions[i], file.positions[i + 1], file.positions[i + 2]);
-  for (size_t i = 0; i + 2 < file.triangles.size(); i += 3)
-    out.triangles.push_back({file.triangles[i], file.triangles[i + 1], file.triangles[i + 2]});
-  return out;
+  return core::meshDataOf(reader.loadMesh(path));
 }
 
 std::string refusal(const std::string& path) {

@@ -8,7 +8,9 @@
 #include "platon/core/manifest.h"
 #include "platon/core/system.h"
 #include "platon/physics/world.h"
+#include "platon/core/mesh_source.h"
 #include "platon/stage/level.h"
+#include "platon/stage/mesh.h"
 #include "platon/stage/stage.h"
 
 namespace platon::core {
@@ -62,5 +64,7 @@ std::unique_ptr<Scene> loadScene(const std::string& manifestPath, const SystemRe
 // A mesh level's stage: its MESH file (relative to the level file) read by `source`, made a convex
 // solid with the level's size. Throws StageError naming the level file and what is wrong.
 stage::Stage meshStageOf(const stage::Level& level, MeshSource& source);
+// What the meshes plugin read, as the stage's mesh builder takes it.
+stage::MeshData meshDataOf(const MeshFile& file);
 
 }  // namespace platon::core

@@ -21,6 +21,12 @@ namespace platon::stage {
 // base plus n (n from 1 to 999). Mods may use any other number with "tag N".
 inline constexpr uint32_t kTagHazard = 1, kTagGoal = 2, kTagCheckpoint = 3, kTagDoor = 1000, kTagSwitch = 2000;
 
+// The triggers the game's rules let the player through: the goal, checkpoints, switches (doors
+// depend on their switch). The level checks count every other line as a wall.
+inline bool playerPassesThrough(uint32_t tag) {
+  return tag == kTagGoal || tag == kTagCheckpoint || (tag > kTagSwitch && tag < kTagSwitch + 1000);
+}
+
 struct LevelLine {
   physics::Vec2 a, b;
   bool oneWay = false;  // solid from its left side only (seen from a to b)

@@ -41,5 +41,7 @@ double sizeOf(const Polyhedron& p);
 
 // The faces' outward unit normals (Newell's method: robust for any planar polygon).
 Eigen::Vector3d faceNormal(const Polyhedron& p, size_t face);
+// The mean of a face's corners.
+Eigen::Vector3d faceCentre(const Polyhedron& p, size_t face);
 
 }  // namespace platon::stage
