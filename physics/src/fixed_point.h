@@ -26,6 +26,14 @@ inline Vec2w clampVelocityQ16(Vec2w v) {
   return {std::clamp(v.x, -limit, limit), std::clamp(v.y, -limit, limit)};
 }
 
+// A frame's remaining motion in Q17 held within the largest move per frame the same way: a bounce
+// with a restitution above one can otherwise send the rest of the frame further than any sweep
+// accepts.
+inline Vec2w clampMotionQ17(Vec2w m) {
+  const int64_t limit = int64_t{kMaxMove} << 17;
+  return {std::clamp(m.x, -limit, limit), std::clamp(m.y, -limit, limit)};
+}
+
 // Largest r with r * r <= v: exact integer square root (Newton's method from above).
 inline uint64_t isqrt(u128 v) {
   if (v < 2) return static_cast<uint64_t>(v);
