@@ -13,10 +13,11 @@
 
 set(PLATON_ARROWS_platon_physics "")
 set(PLATON_ARROWS_platon_stage platon_physics)
-set(PLATON_ARROWS_platon_core platon_stage platon_physics)
-set(PLATON_ARROWS_platon_script platon_core platon_stage platon_physics)
+set(PLATON_ARROWS_platon_core platon_stage platon_physics platon_camera)
+set(PLATON_ARROWS_platon_script platon_core platon_stage platon_physics platon_camera)
 # The renderer is a plugin: core's headers only (plain data and interfaces), no engine library.
-set(PLATON_ARROWS_platon_render "")
+set(PLATON_ARROWS_platon_render platon_camera)
+set(PLATON_ARROWS_platon_camera "")
 set(PLATON_ARROWS_platon_mesh "")
 
 set(PLATON_MODULES "" CACHE INTERNAL "")

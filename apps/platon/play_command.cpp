@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "engine_registry.h"
+#include "game_view.h"
 #include "platon/core/display.h"
 #include "platon/core/fixed_step.h"
 #include "platon/core/live_scene.h"
@@ -46,12 +47,16 @@ core::Display* displayOf(core::Scene& scene) {
   return rendering ? rendering->display() : nullptr;
 }
 
-// One picture: the player's face, the scripts' shapes, the heads-up lines and the last error.
-void show(core::Display& display, core::LiveScene& live) {
-  core::Scene& scene = live.scene();
+script::GameStatus statusOf(core::Scene& scene) {
   const script::ScriptSystem* scripts = scriptsOf(scene);
-  const script::GameStatus status = scripts ? scripts->status() : script::GameStatus{};
-  core::View view = core::faceView(scene, status.face);
+  return scripts ? scripts->status() : script::GameStatus{};
+}
+
+// One picture: the stage from the camera, the scripts' shapes, the heads-up lines and the last error.
+void show(core::Display& display, core::LiveScene& live, const GameView& gameView, double alpha) {
+  core::Scene& scene = live.scene();
+  const script::GameStatus status = statusOf(scene);
+  core::View view = gameView.view(scene, alpha);
   const uint64_t seconds = status.time / 60;
   char line[160];
   std::snprintf(line, sizeof line, "%s    %llu:%02llu    deaths %d%s", scene.manifest().name.c_str(),
@@ -124,6 +129,8 @@ int playCommand(int argc, char** argv) {
   if (!recordPath.empty()) recorder.emplace(scenePath, 60);
   core::FixedStep clock(60);
   core::InputEdges edges;
+  GameView gameView;
+  gameView.step(live->scene(), statusOf(live->scene()), 1.0 / clock.hz());
   std::string lastMessage, lastError;
   uint64_t frame = 0;
   bool won = false;
@@ -158,6 +165,7 @@ int playCommand(int argc, char** argv) {
         lastError = *error;
       }
       if (recorder) recorder->frame(held, live->scene().world().stateHash());
+      gameView.step(live->scene(), statusOf(live->scene()), 1.0 / clock.hz());
       script::ScriptSystem* scripts = scriptsOf(live->scene());
       if (!scripts) continue;
       const script::GameStatus status = scripts->status();
@@ -171,7 +179,7 @@ int playCommand(int argc, char** argv) {
                     static_cast<double>(status.time) / 60.0, status.deaths);
       }
     }
-    if (display && (due > 0 || fast)) show(*display, *live);
+    if (display) show(*display, *live, gameView, fast ? 1.0 : clock.alpha());
     std::fflush(stdout);
     if (won && frames == 0 && !watch && !display) break;
     if (!fast && due == 0) std::this_thread::sleep_for(std::chrono::milliseconds(2));
@@ -182,7 +190,7 @@ int playCommand(int argc, char** argv) {
   }
   if (display && !shotPath.empty()) {
     try {
-      show(*display, *live);
+      show(*display, *live, gameView, 1.0);
       display->saveScreenshot(shotPath);
       std::printf("screenshot: %s\n", shotPath.c_str());
     } catch (const std::exception& e) {

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "batch.h"
+#include "stage_renderer.h"
 #include "text.h"
 #include "window.h"
 
@@ -17,23 +18,6 @@ using core::Color;
 using core::Point2;
 
 constexpr Color kBackground{22, 24, 30, 255};
-constexpr Color kFace{50, 56, 70, 255};
-constexpr Color kWarp{80, 150, 170, 255};
-constexpr Color kOneWay{180, 120, 230, 255};
-constexpr float kLineUnits = 20;  // map lines' width, in face units
-
-// The game's tags (scripts/rules/game.lua): 0 solid, 1 hazard, 2 goal, 3 checkpoint, 1000 + n
-// door, 2000 + n switch.
-Color lineColor(const core::ViewLine& line) {
-  if (line.kind == 1) return kWarp;
-  if (line.kind == 2) return kOneWay;
-  if (line.tag == 1) return {235, 70, 60, 255};
-  if (line.tag == 2) return {90, 225, 110, 255};
-  if (line.tag == 3) return {90, 160, 245, 255};
-  if (line.tag >= 1000 && line.tag < 2000) return {245, 160, 60, 255};
-  if (line.tag >= 2000 && line.tag < 3000) return {250, 225, 70, 255};
-  return {225, 225, 230, 255};
-}
 
 std::vector<std::string> splitLines(const std::string& text) {
   std::vector<std::string> out;
@@ -48,30 +32,11 @@ std::vector<std::string> splitLines(const std::string& text) {
   return out;
 }
 
-// Face coordinates (y up) to pixels (y down), the face fitted into the window with a margin.
-struct FaceToScreen {
-  float minX = 0, maxY = 0, scale = 1, left = 0, top = 0;
-  FaceToScreen(const core::View& view, float width, float height, float margin) {
-    float minx = 1e30f, miny = 1e30f, maxx = -1e30f, maxy = -1e30f;
-    auto grow = [&](Point2 p) {
-      minx = std::min(minx, p.x), miny = std::min(miny, p.y), maxx = std::max(maxx, p.x), maxy = std::max(maxy, p.y);
-    };
-    for (Point2 p : view.border) grow(p);
-    if (view.border.empty())
-      for (const core::ViewLine& l : view.lines) grow(l.a), grow(l.b);
-    if (minx > maxx) minx = miny = 0, maxx = maxy = 1;
-    const float w = std::max(maxx - minx, 1.0f), h = std::max(maxy - miny, 1.0f);
-    scale = std::max(std::min((width - 2 * margin) / w, (height - 2 * margin) / h), 1e-6f);
-    minX = minx, maxY = maxy;
-    left = (width - w * scale) / 2, top = (height - h * scale) / 2;
-  }
-  Point2 operator()(Point2 p) const { return {left + (p.x - minX) * scale, top + (maxY - p.y) * scale}; }
-};
-
 }  // namespace
 
 struct RenderSystem::Gl {
   Window window{"Platon", 1280, 720};  // first: the context outlives the objects below
+  StageRenderer stage;
   Batch batch;
   Text text;
 };
@@ -125,23 +90,22 @@ void RenderSystem::paint(const core::View& view, const core::DrawList& draw) {
   glClearColor(kBackground.r / 255.0f, kBackground.g / 255.0f, kBackground.b / 255.0f, 1);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 
-  // The face, its lines, and what the scripts drew on it.
-  const FaceToScreen toScreen(view, width, height, 40 * dpi);
-  std::vector<Point2> border;
-  for (Point2 p : view.border) border.push_back(toScreen(p));
-  g.batch.polygon(border, kFace);
-  for (const core::ViewLine& l : view.lines)
-    g.batch.line(toScreen(l.a), toScreen(l.b), l.kind == 1 ? 2 * dpi : std::max(2 * dpi, kLineUnits * toScreen.scale), lineColor(l));
+  // The stage in 3D, what the scripts drew on its faces, then their text and screen shapes flat.
+  g.stage.draw(view, draw, g.window.pixelWidth(), g.window.pixelHeight());
   const auto points = draw.points();
   for (const core::DrawShape& s : draw.shapes()) {
-    if (!s.place.screen && s.place.face != view.face) continue;  // other faces: with the 3D view
-    auto at = [&](Point2 p) { return s.place.screen ? Point2{p.x * dpi, p.y * dpi} : toScreen(p); };
-    const float scale = s.place.screen ? dpi : toScreen.scale;
+    if (!s.place.screen) {
+      Point2 at;
+      if (s.kind == core::ShapeKind::Text && g.stage.project(s.place.face, s.at, at))
+        g.text.draw(std::string(draw.text(s)), at, std::max(12.0f, s.size) * dpi, s.color);
+      continue;
+    }
+    auto at = [&](Point2 p) { return Point2{p.x * dpi, p.y * dpi}; };
     switch (s.kind) {
-      case core::ShapeKind::Circle: g.batch.circle(at(s.at), s.size * scale, s.color); break;
+      case core::ShapeKind::Circle: g.batch.circle(at(s.at), s.size * dpi, s.color); break;
       case core::ShapeKind::Line:
         for (uint32_t i = 1; i < s.count; ++i)
-          g.batch.line(at(points[s.first + i - 1]), at(points[s.first + i]), std::max(1.0f, s.size * scale), s.color);
+          g.batch.line(at(points[s.first + i - 1]), at(points[s.first + i]), std::max(1.0f, s.size * dpi), s.color);
         break;
       case core::ShapeKind::Polygon: {
         std::vector<Point2> p;
@@ -149,13 +113,26 @@ void RenderSystem::paint(const core::View& view, const core::DrawList& draw) {
         g.batch.polygon(p, s.color);
         break;
       }
-      case core::ShapeKind::Text:
-        g.text.draw(std::string(draw.text(s)), at(s.at), std::max(6.0f, s.size * scale), s.color);
-        break;
+      case core::ShapeKind::Text: g.text.draw(std::string(draw.text(s)), at(s.at), std::max(6.0f, s.size * dpi), s.color); break;
     }
   }
   g.batch.flush(width, height);
   g.text.flush(width, height);
+
+  // Titles and menus: big lines in the middle, on a dark band.
+  if (!view.centreText.empty()) {
+    const float size = 30 * dpi, step = size * 1.5f;
+    const float top = height / 2 - step * static_cast<float>(view.centreText.size()) / 2;
+    g.batch.rectangle({0, top - size}, {width, step * static_cast<float>(view.centreText.size()) + 2 * size}, {0, 0, 0, 170});
+    g.batch.flush(width, height);
+    for (size_t i = 0; i < view.centreText.size(); ++i) {
+      const float lineSize = i == 0 ? size * 1.3f : size;
+      const float w = g.text.width(view.centreText[i], lineSize);
+      g.text.draw(view.centreText[i], {(width - w) / 2, top + static_cast<float>(i) * step}, lineSize,
+                  i == 0 ? Color{255, 220, 120, 255} : Color{235, 235, 240, 255});
+    }
+    g.text.flush(width, height);
+  }
 
   // The heads-up lines, top left.
   const float hudHeight = 18 * dpi, pad = 8 * dpi;

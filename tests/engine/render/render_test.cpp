@@ -32,14 +32,28 @@ class Renderer : public ::testing::Test {
     ASSERT_NE(display, nullptr);
   }
 
-  // A square face 0..1000 with a hazard line along y = 100 and the player's circle at its centre.
+  // A square face 0..1000 in the z = 0 plane (as the top of a cube whose centre is 500 below it)
+  // with a hazard line along y = 100, seen from straight above: the camera 1600 over the face's
+  // centre, looking down with +y up, so a face unit is 720 / (2 tan(22.5 deg) 1600) pixels.
   core::View squareFace() const {
     core::View view;
     view.title = "render test";
-    view.border = {{0, 0}, {1000, 0}, {1000, 1000}, {0, 1000}};
-    view.lines.push_back({{100, 100}, {900, 100}, 1, 0});
+    auto stage = std::make_shared<core::StageView>();
+    core::ViewFace face;
+    face.part = 0;
+    face.corners = {{0, 0}, {1000, 0}, {1000, 1000}, {0, 1000}};
+    face.xAxis = {1, 0, 0}, face.yAxis = {0, 1, 0}, face.normal = {0, 0, 1};
+    face.lines.push_back({{100, 100}, {900, 100}, 1, 0});
+    stage->faces.push_back(face);
+    stage->centre = {500, 500, -500};
+    stage->radius = 866;
+    stage->edge = 1000;
+    view.stage = stage;
+    view.camera.centre = {500, 500, -500};
+    view.camera.distance = 2100;
     return view;
   }
+  static constexpr float kPixelsPerUnit = 720.0f / (2 * 0.41421356f * 1600);
 
   Rgba at(const std::vector<uint8_t>& pixels, int width, int x, int y) const {
     const size_t i = (static_cast<size_t>(y) * width + x) * 4;
@@ -69,15 +83,22 @@ TEST_F(Renderer, DrawsTheFaceItsLinesAndTheScriptsShapes) {
   const std::vector<uint8_t> pixels = display->capture(w, h);
   ASSERT_EQ(w, 1280);
   ASSERT_EQ(h, 720);
-  // The face fills a 640 x 640 square in the middle (40 px margins): centre (640, 360).
-  const float scale = 640.0f / 1000.0f;
-  auto px = [&](float x, float y) { return at(pixels, w, static_cast<int>(320 + x * scale), static_cast<int>(40 + (1000 - y) * scale)); };
-  EXPECT_TRUE(near(px(500, 500), 10, 200, 10)) << "the player's circle: " << show(px(500, 500));
-  EXPECT_TRUE(near(px(500, 100), 235, 70, 60)) << "the hazard line: " << show(px(500, 100));
-  EXPECT_TRUE(near(px(200, 800), 50, 56, 70)) << "the face: " << show(px(200, 800));
+  auto px = [&](float x, float y) {
+    return at(pixels, w, static_cast<int>(640 + (x - 500) * kPixelsPerUnit), static_cast<int>(360 - (y - 500) * kPixelsPerUnit));
+  };
+  // The player's ball: green, lit (brighter or darker than the flat colour, never another hue).
+  const Rgba ball = px(500, 500);
+  EXPECT_TRUE(ball.g > 120 && ball.r < 80 && ball.b < 80) << "the player's ball: " << show(ball);
+  // The hazard wall glows: its own colour exactly, whatever the light.
+  EXPECT_TRUE(near(px(500, 100), 240, 70, 55)) << "the hazard line: " << show(px(500, 100));
+  const Rgba face = px(200, 800);
+  EXPECT_TRUE(face.b > face.r && face.b > 90 && face.b < 200) << "the face: " << show(face);
   EXPECT_TRUE(near(at(pixels, w, 100, 400), 22, 24, 30)) << "outside the face: " << show(at(pixels, w, 100, 400));
   for (int y = 0; y < h; y += 7)
-    for (int x = 0; x < w; x += 7) ASSERT_FALSE(near(at(pixels, w, x, y), 200, 10, 200, 30)) << "another face's shape at " << x << ", " << y;
+    for (int x = 0; x < w; x += 7) {
+      const Rgba p = at(pixels, w, x, y);
+      ASSERT_FALSE(p.r > 120 && p.b > 120 && p.g < 60) << "another face's shape at " << x << ", " << y;
+    }
 }
 
 TEST_F(Renderer, ShowsTheHeadsUpLinesAndTheErrorOverlay) {
@@ -98,7 +119,7 @@ TEST_F(Renderer, ShowsTheHeadsUpLinesAndTheErrorOverlay) {
   const Rgba box = at(shown, w, 1200, h - 20);
   EXPECT_GT(box.r, 90);
   EXPECT_LT(box.g, 40);
-  EXPECT_TRUE(near(at(plain, w, 1200, h - 20), 22, 24, 30));
+  EXPECT_TRUE(near(at(plain, w, 1200, h - 20), 22, 24, 30)) << show(at(plain, w, 1200, h - 20));
   int white = 0;
   for (int y = h - 100; y < h; ++y)
     for (int x = 16; x < 400; ++x) white += near(at(shown, w, x, y), 255, 255, 255, 40);

@@ -1,38 +1,76 @@
 // What a renderer shows and the window it owns: the interface between the loop that plays a scene
 // (apps/platon) and the rendering system, a plugin loaded only when a scene is played in a window
-// (engine/render). Plain data in, so the plugin needs no engine code but this header.
+// (engine/render). Plain data in, so the plugin needs no engine code but this header (and the
+// camera's math).
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "platon/camera/camera.h"
 #include "platon/core/draw_list.h"
 #include "platon/physics/ids.h"
+#include "platon/physics/world.h"
+#include "platon/stage/stage.h"
 
 namespace platon::core {
 
 class Scene;
 
-// A map line of the face on show, in the face's coordinates.
+struct Point3 {
+  float x = 0, y = 0, z = 0;
+};
+
+// A map line of a face, in the face's coordinates.
 struct ViewLine {
   Point2 a, b;
   uint32_t tag = 0;
   uint8_t kind = 0;  // physics::LineKind: 0 solid, 1 warp (a face edge), 2 one-way
 };
 
-// One frame's picture, besides the draw list: the face the player is on, the heads-up lines, and
-// an error laid over everything until it is gone.
+// One face of the stage: its outline and lines in its own 2D frame and where that frame sits in 3D
+// (the point (x, y) is at origin + x * xAxis + y * yAxis; normal points out of the solid).
+struct ViewFace {
+  physics::MapPartId part = 0;
+  std::vector<Point2> corners;  // counter-clockwise seen from outside
+  Point3 origin, xAxis, yAxis, normal;
+  std::vector<ViewLine> lines;
+};
+
+// The stage as the renderer draws it, built once per scene (a reload builds a new one, so the
+// renderer may keep what it made from it for as long as it holds the same pointer).
+struct StageView {
+  std::vector<ViewFace> faces;
+  Point3 centre;
+  float radius = 1;    // the farthest corner from the centre
+  float edge = 1;      // the longest face edge: walls scale with it
+  float faceSize = 1;  // the widest face's diameter: how much the camera shows
+  bool flat = false;   // no solid (a scene built in Lua): only the player's face is drawn, from above
+};
+
+// One frame's picture, besides the draw list: the stage, the camera, the heads-up lines and an
+// error laid over everything until it is gone.
 struct View {
   std::string title;
-  physics::MapPartId face = 0;
-  std::vector<Point2> border;  // the face's corners, counter-clockwise, in its coordinates
-  std::vector<ViewLine> lines;
+  std::shared_ptr<const StageView> stage;  // null: only the heads-up lines and the overlay
+  physics::MapPartId face = 0;             // the player's face (a flat stage shows only this one)
+  camera::CameraPose camera;
+  double verticalFov = 0.785398;
   std::vector<std::string> hud;  // top left, one line each
+  std::vector<std::string> centreText;  // big, in the middle of the screen (titles, menus)
   std::string error;             // "" for none
 };
 
-// The face `face` of the scene's stage with its lines, ready to show.
-View faceView(const Scene& scene, physics::MapPartId face);
+// The scene's stage, ready to show. A scene with no solid shows only the player's part, flat: build
+// it again when the player changes part.
+std::shared_ptr<const StageView> stageView(const Scene& scene, physics::MapPartId playerPart);
+// The same for a stage in a world (the stage's parts hold its faces' lines).
+std::shared_ptr<const StageView> stageView(const stage::Stage& stage, const physics::World& world);
+// What the camera follows when the player stands at (x, y) on map part `face`, whose gravity
+// (any length; zero: the face's -y) gives its down.
+camera::CameraTarget cameraTarget(const StageView& stage, physics::MapPartId face, float x, float y, physics::Vec2w gravity);
+camera::CameraTarget cameraTarget(const StageView& stage, const Scene& scene, physics::MapPartId face, float x, float y);
 
 class Display {
  public:

@@ -1,0 +1,32 @@
+// The picture's state that outlives a frame: the stage as drawn (built again when the scene is
+// reloaded) and the camera, stepped once per simulation step so that it is the same at any frame
+// rate and in any screenshot of frame N; the renderer draws between its last two poses.
+#pragma once
+#include <memory>
+
+#include "platon/camera/camera.h"
+#include "platon/core/display.h"
+#include "platon/core/scene.h"
+#include "platon/script/script_system.h"
+
+namespace platon::app {
+
+class GameView {
+ public:
+  // After each simulation step (and once before the first: it places the camera at once).
+  void step(const core::Scene& scene, const script::GameStatus& status, double stepSeconds);
+  // The frame's view, `alpha` of the way from the previous step's camera to this one's.
+  core::View view(const core::Scene& scene, double alpha) const;
+  const camera::Camera& camera() const { return camera_; }
+
+ private:
+  std::shared_ptr<const core::StageView> stage_;
+  const core::Scene* scene_ = nullptr;  // the scene stage_ was built for (a reload makes another)
+  physics::MapPartId flatPart_ = 0;
+  camera::Camera camera_;
+  camera::CameraPose previous_;
+  physics::MapPartId face_ = 0;
+  bool placed_ = false;
+};
+
+}  // namespace platon::app

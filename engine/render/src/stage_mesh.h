@@ -1,0 +1,57 @@
+// The stage as lit triangles: each face a flat polygon with a dark rim along its edges, each map
+// line a raised wall on its face coloured by its tag, and what the scripts draw on the faces
+// (spheres for circles, flat shapes a little above the face). Positions are in stage space: the
+// solid's centre at the origin, its radius 1, so depth precision never depends on the level's units.
+#pragma once
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "platon/core/display.h"
+
+namespace platon::render {
+
+struct LitVertex {
+  float x, y, z;
+  float nx, ny, nz;
+  uint8_t r, g, b, a;
+};
+
+// Alpha 254 marks a colour drawn unlit (lit.frag): it glows.
+inline constexpr uint8_t kGlow = 254;
+
+class StageMesh {
+ public:
+  explicit StageMesh(const core::StageView& stage);
+
+  // The fixed part: faces, rims and walls.
+  const std::vector<LitVertex>& fixed() const { return fixed_; }
+
+  // The draw list's shapes on faces, appended to `out`. Text is not drawn here.
+  void addShapes(const core::DrawList& draw, physics::MapPartId onlyFace, std::vector<LitVertex>& out) const;
+
+  // A face point in stage space; false when the part is not on the stage.
+  bool toStage(physics::MapPartId part, core::Point2 p, float lift, Eigen::Vector3f& out) const;
+  float scale() const { return scale_; }  // stage units per level unit
+
+ private:
+  struct Frame {
+    physics::MapPartId part;
+    Eigen::Vector3f origin, xAxis, yAxis, normal;  // in stage space (axes scaled too)
+  };
+  const Frame* frameOf(physics::MapPartId part) const;
+  void addFace(const core::ViewFace& face, size_t index);
+  void addWall(const Frame& f, const core::ViewLine& line);
+
+  std::vector<Frame> frames_;
+  std::vector<LitVertex> fixed_;
+  float scale_ = 1;
+  float edge_ = 1;  // the longest edge, in stage units
+  bool flat_ = false;
+};
+
+// Emits triangle a b c wound so that its front faces along `normal`.
+void addTriangle(std::vector<LitVertex>& out, const Eigen::Vector3f& a, const Eigen::Vector3f& b, const Eigen::Vector3f& c,
+                 const Eigen::Vector3f& normal, core::Color color);
+
+}  // namespace platon::render

@@ -1,0 +1,183 @@
+// The camera over every edge of every stage: a ball crosses each edge of each face of the five
+// Platonic solids and the two mesh stages, straight and at an angle, and the camera is checked
+// frame by frame: it never turns faster than its top speed (no jump), never turns its view round
+// (no flip), keeps the ball on the screen, and once the ball stops it settles on the seed's line
+// (centre -> player, up against the face's gravity) without overshooting (no roll left over).
+#include <cmath>
+#include <memory>
+
+#include <gtest/gtest.h>
+
+#include "mesh_system.h"
+#include "platon/camera/camera.h"
+#include "platon/core/display.h"
+#include "platon/core/mesh_source.h"
+#include "platon/core/scene.h"
+#include "platon/stage/mesh.h"
+#include "platon/stage/stage.h"
+
+using namespace platon;
+using physics::Vec2;
+
+namespace {
+
+constexpr double kStep = 1.0 / 60.0;
+
+struct Built {
+  physics::World world;
+  stage::Stage stage;
+  std::shared_ptr<const core::StageView> view;
+};
+
+std::unique_ptr<Built> build(stage::Stage s) {
+  auto b = std::make_unique<Built>();
+  b->stage = std::move(s);
+  stage::addStageToWorld(b->stage, b->world, 0);
+  for (size_t f = 0; f < b->stage.faceCount(); ++f) b->world.mapPart(b->stage.part(f)).initialize();  // no gravity: straight lines
+  b->view = core::stageView(b->stage, b->world);
+  return b;
+}
+
+struct Stats {
+  int crossings = 0;
+  double fastest = 0;  // radians per frame
+  int frames = 0;
+};
+
+// Whether the point shows on a 16:9 screen from this pose.
+bool onScreen(const camera::Camera& cam, const Eigen::Vector3d& p) {
+  const camera::CameraPose& pose = cam.pose();
+  const Eigen::Vector3d v = pose.orientation.conjugate() * (p - pose.eye());
+  if (v.z() >= 0) return false;  // behind the eye
+  const double t = std::tan(cam.settings().verticalFov / 2);
+  return std::fabs(v.y() / -v.z()) < t && std::fabs(v.x() / -v.z()) < t * cam.aspect();
+}
+
+void walkEveryEdge(const std::string& name, stage::Stage s, Stats& stats) {
+  auto b = build(std::move(s));
+  const double edgeLength = b->view->edge;
+  const int32_t radius = static_cast<int32_t>(edgeLength * 0.03);
+  const double maxTurn = camera::CameraSettings{}.topSpeed * kStep * (1 + 1e-9) + 1e-12;
+  for (size_t f = 0; f < b->stage.faceCount(); ++f) {
+    const stage::StageFace& face = b->stage.faces[f];
+    const size_t n = face.corners.size();
+    double cx = 0, cy = 0;
+    for (const Vec2 c : face.corners) cx += c.x / double(n), cy += c.y / double(n);
+    for (size_t k = 0; k < n; ++k)
+      for (const double slant : {0.0, 0.6, -0.6}) {
+        SCOPED_TRACE(name + " face " + std::to_string(f) + " edge " + std::to_string(k) + " slant " + std::to_string(slant));
+        const Vec2 a = face.corners[k], c = face.corners[(k + 1) % n];
+        const double mx = (a.x + c.x) / 2.0, my = (a.y + c.y) / 2.0;
+        // Start halfway between the face's centre and the edge's middle, heading for the edge.
+        const double sx = (cx + mx) / 2, sy = (cy + my) / 2;
+        double dx = mx - sx, dy = my - sy;
+        const double len = std::hypot(dx, dy);
+        dx /= len, dy /= len;
+        const double rx = dx * std::cos(slant) - dy * std::sin(slant), ry = dx * std::sin(slant) + dy * std::cos(slant);
+        const physics::EntityId ball = b->world.createEntity(physics::Convex::regular(16, radius));
+        b->world.insert(ball, b->stage.part(f), {static_cast<int32_t>(sx), static_cast<int32_t>(sy)}, 0);
+        const double speed = edgeLength / 90;  // units a frame: an edge in a second and a half
+        b->world.setVelocity(ball, {static_cast<int64_t>(rx * speed * 65536), static_cast<int64_t>(ry * speed * 65536)});
+
+        camera::Camera cam;
+        auto target = [&] {
+          const physics::EntityView e = b->world.entity(ball);
+          const physics::InstanceView i = e.instance(0);
+          return core::cameraTarget(*b->view, i.part, static_cast<float>(i.position.x), static_cast<float>(i.position.y),
+                                    {0, -1});
+        };
+        cam.set(target(), 1280, 720);
+        const physics::MapPartId startPart = b->stage.part(f);
+        int afterCrossing = -1;
+        for (int frame = 0; frame < 2000; ++frame) {
+          const camera::CameraPose before = cam.pose();
+          if (afterCrossing == 30) b->world.setVelocity(ball, {});  // stop on the new face
+          b->world.solve();
+          const camera::CameraTarget t = target();
+          cam.lerp(t, kStep);
+          const double turn = before.orientation.angularDistance(cam.pose().orientation);
+          stats.fastest = std::max(stats.fastest, turn);
+          ++stats.frames;
+          ASSERT_LE(turn, maxTurn) << "frame " << frame << ": the view jumped";
+          ASSERT_GT(before.forward().dot(cam.pose().forward()), 0.99) << "frame " << frame << ": the view flipped";
+          ASSERT_TRUE(onScreen(cam, t.player)) << "frame " << frame << ": the ball left the screen";
+          if (afterCrossing < 0 && b->world.entity(ball).instance(0).part != startPart &&
+              b->world.entity(ball).instanceCount() == 1)
+            afterCrossing = 0;
+          if (afterCrossing >= 0) ++afterCrossing;
+          if (afterCrossing > 30) {
+            // Standing still: the camera closes on the seed's pose and never swings back.
+            const camera::CameraPose wanted = camera::Camera::wanted(t);
+            const double gap = cam.pose().orientation.angularDistance(wanted.orientation);
+            const double gapBefore = before.orientation.angularDistance(wanted.orientation);
+            ASSERT_LE(gap, gapBefore + 1e-9) << "frame " << frame << ": the view swung back";
+            if (afterCrossing > 30 + 150) {
+              EXPECT_LT(gap, 0.5 * M_PI / 180) << "not settled 2.5 s after stopping";
+              break;
+            }
+          }
+        }
+        ASSERT_GE(afterCrossing, 0) << "the ball never crossed";
+        ++stats.crossings;
+        b->world.destroyEntity(ball);
+      }
+  }
+}
+
+stage::Stage meshStage(const std::string& file, int32_t size) {
+  mesh::MeshSystem reader;
+  return stage::stageFromPolyhedron(stage::polyhedronFromMesh(core::meshDataOf(reader.loadMesh(file)), size));
+}
+
+TEST(Camera, EveryEdgeOfEveryStageTurnsTheViewSmoothly) {
+  Stats stats;
+  const std::pair<const char*, stage::Solid> solids[] = {{"tetrahedron", stage::Solid::Tetrahedron},
+                                                         {"cube", stage::Solid::Hexahedron},
+                                                         {"octahedron", stage::Solid::Octahedron},
+                                                         {"dodecahedron", stage::Solid::Dodecahedron},
+                                                         {"icosahedron", stage::Solid::Icosahedron}};
+  for (const auto& [name, solid] : solids) walkEveryEdge(name, stage::platonicStage(solid, 4096), stats);
+  const std::string root = PLATON_SOURCE_ROOT;
+  walkEveryEdge("prism", meshStage(root + "/levels/prism/prism.obj", 6144), stats);
+  walkEveryEdge("football", meshStage(root + "/levels/soccer_ball/truncated_icosahedron.ply", 2048), stats);
+  // 3 x (4 x 3 + 6 x 4 + 8 x 3 + 12 x 5 + 20 x 3 + 5 faces' 14 edges of the prism + 12 x 5 + 20 x 6)
+  EXPECT_EQ(stats.crossings, 3 * (12 + 24 + 24 + 60 + 60 + 18 + 60 + 120));
+  std::printf("%d crossings, %d frames, fastest turn %.2f degrees a frame\n", stats.crossings, stats.frames,
+              stats.fastest * 180 / M_PI);
+}
+
+// The seed's line: the eye on the ray from the centre through the player, looking at the centre,
+// the player's up (against its down) pointing up on the screen; over random targets.
+TEST(Camera, TheWantedPoseIsOnTheLineFromTheCentreThroughThePlayer) {
+  std::srand(7);
+  auto random = [] { return Eigen::Vector3d::Random(); };
+  for (int i = 0; i < 1000; ++i) {
+    camera::CameraTarget t;
+    t.centre = random() * 100;
+    t.player = t.centre + random().normalized() * (1 + std::rand() % 50);
+    Eigen::Vector3d out = (t.player - t.centre).normalized();
+    t.down = random().cross(out);  // along the face, whatever its length
+    t.viewHeight = 3;
+    const camera::CameraPose p = camera::Camera::wanted(t);
+    const Eigen::Vector3d toEye = (p.eye() - t.centre).normalized();
+    EXPECT_GT(toEye.dot(out), 1 - 1e-9);
+    EXPECT_NEAR((p.eye() - t.player).norm(), 3, 1e-6);
+    EXPECT_GT(p.forward().dot(-out), 1 - 1e-9);
+    EXPECT_GT(p.up().dot(-t.down.normalized()), 1 - 1e-9);  // down lies across the view line: up is exactly against it
+  }
+}
+
+TEST(Camera, TheSameTimeInAnySplitGivesTheSamePose) {
+  // 60 steps of 1/60 s or 240 of 1/240 s: the same pose within a hair (the exponential approach
+  // composes; the speed cap is per second).
+  camera::CameraTarget from, to;
+  from.player = {0, 0, 1}, from.down = {0, -1, 0};
+  to.player = {1, 0, 0}, to.down = {0, 0, -1};
+  camera::Camera a, b;
+  a.set(from, 1280, 720), b.set(from, 1280, 720);
+  for (int i = 0; i < 12; ++i) a.lerp(to, 1.0 / 60);
+  for (int i = 0; i < 48; ++i) b.lerp(to, 1.0 / 240);
+  EXPECT_LT(a.pose().orientation.angularDistance(b.pose().orientation), 0.02);
+}
+
+}  // namespace
