@@ -6,6 +6,7 @@
 // too) and the last good version goes on.
 #include "play_command.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -34,7 +35,7 @@ int usage() {
                "  --fast       do not wait for real time\n"
                "  --headless   no window, even when the scene names \"rendering\"\n"
                "  --shot F     save the last frame shown to F (PNG) at the end\n"
-               "keys in the window: arrows or WASD move, Space jumps, R restarts, F11 fullscreen, Esc quits\n");
+               "keys in the window: arrows or WASD move, Space jumps, R restarts, F3 frame rate, F11 fullscreen, Esc quits\n");
   return 2;
 }
 
@@ -53,7 +54,7 @@ script::GameStatus statusOf(core::Scene& scene) {
 }
 
 // One picture: the stage from the camera, the scripts' shapes, the heads-up lines and the last error.
-void show(core::Display& display, core::LiveScene& live, const GameView& gameView, double alpha) {
+void show(core::Display& display, core::LiveScene& live, const GameView& gameView, double alpha, bool showFps = false) {
   core::Scene& scene = live.scene();
   const script::GameStatus status = statusOf(scene);
   core::View view = gameView.view(scene, alpha);
@@ -65,6 +66,7 @@ void show(core::Display& display, core::LiveScene& live, const GameView& gameVie
   view.hud.push_back(line);
   if (!status.message.empty()) view.hud.push_back(status.message);
   view.error = live.lastError();
+  view.showFps = showFps;
   core::DrawList draw(true);
   scene.draw(draw);
   display.present(view, draw);
@@ -110,9 +112,8 @@ int playCommand(int argc, char** argv) {
   }
   core::Display* display = displayOf(live->scene());
   if (display) {
-    uint8_t ignored = 0;
     try {
-      display->pollEvents(ignored);  // opens the window: no display shows here, in one line
+      display->pollEvents();  // opens the window: no display shows here, in one line
     } catch (const std::exception& e) {
       std::printf("%s: playing headless\n", e.what());
       display = nullptr;
@@ -130,6 +131,7 @@ int playCommand(int argc, char** argv) {
   core::FixedStep clock(60);
   core::InputEdges edges;
   GameView gameView;
+  bool showFps = false;
   gameView.step(live->scene(), statusOf(live->scene()), 1.0 / clock.hz());
   std::string lastMessage, lastError;
   uint64_t frame = 0;
@@ -156,7 +158,13 @@ int playCommand(int argc, char** argv) {
     }
     uint8_t keys = 0;
     display = displayOf(live->scene()) && display ? displayOf(live->scene()) : nullptr;  // a reload replaces it
-    if (display && !display->pollEvents(keys)) break;  // the window was closed
+    if (display) {
+      const core::WindowInput events = display->pollEvents();
+      auto pressed = [&](core::Key k) { return std::find(events.pressed.begin(), events.pressed.end(), k) != events.pressed.end(); };
+      if (events.closed || pressed(core::Key::Escape)) break;
+      if (pressed(core::Key::ShowFps)) showFps = !showFps;
+      keys = events.held;
+    }
     for (int s = 0; s < due && (frames == 0 || frame < frames); ++s) {
       const uint8_t held = inputPath.empty() ? keys : frame < input.held.size() ? input.held[frame] : 0;
       ++frame;
@@ -179,7 +187,7 @@ int playCommand(int argc, char** argv) {
                     static_cast<double>(status.time) / 60.0, status.deaths);
       }
     }
-    if (display) show(*display, *live, gameView, fast ? 1.0 : clock.alpha());
+    if (display) show(*display, *live, gameView, fast ? 1.0 : clock.alpha(), showFps);
     std::fflush(stdout);
     if (won && frames == 0 && !watch && !display) break;
     if (!fast && due == 0) std::this_thread::sleep_for(std::chrono::milliseconds(2));

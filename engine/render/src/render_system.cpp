@@ -4,6 +4,7 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <stdexcept>
 
 #include "batch.h"
@@ -56,9 +57,17 @@ void RenderSystem::carryOver(core::Scene&, core::System& previous) {
   if (old.gl_) gl_ = old.gl_;
 }
 
-bool RenderSystem::pollEvents(uint8_t& held) { return gl().window.pollEvents(held); }
+core::WindowInput RenderSystem::pollEvents() { return gl().window.pollEvents(); }
+
+void RenderSystem::resize(int width, int height) { gl().window.resize(width, height); }
 
 void RenderSystem::present(const core::View& view, const core::DrawList& draw) {
+  const uint64_t now = SDL_GetPerformanceCounter();
+  if (lastPresent_ != 0) {
+    const double seconds = static_cast<double>(now - lastPresent_) / static_cast<double>(SDL_GetPerformanceFrequency());
+    frameSeconds_ = frameSeconds_ == 0 ? seconds : frameSeconds_ + 0.05 * (seconds - frameSeconds_);
+  }
+  lastPresent_ = now;
   paint(view, draw);
   gl().window.swap();
   lastView_ = view;
@@ -144,6 +153,16 @@ void RenderSystem::paint(const core::View& view, const core::DrawList& draw) {
   }
   g.batch.flush(width, height);
   g.text.flush(width, height);
+
+  if (view.showFps && frameSeconds_ > 0) {
+    char text[48];
+    std::snprintf(text, sizeof text, "%.0f fps  %.2f ms", 1 / frameSeconds_, frameSeconds_ * 1000);
+    const float w = g.text.width(text, hudHeight);
+    g.batch.rectangle({width - w - pad - 4 * dpi, pad - 2 * dpi}, {w + 8 * dpi, hudHeight + 8 * dpi}, {0, 0, 0, 150});
+    g.batch.flush(width, height);
+    g.text.draw(text, {width - w - pad, pad}, hudHeight, {180, 240, 180, 255});
+    g.text.flush(width, height);
+  }
 
   // The error overlay: over everything, at the bottom, long lines cut to fit.
   if (!view.error.empty()) {

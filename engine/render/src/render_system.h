@@ -20,7 +20,8 @@ class RenderSystem final : public core::System, public core::Display {
   void carryOver(core::Scene& scene, core::System& previous) override;
   core::Display* display() override { return this; }
 
-  bool pollEvents(uint8_t& held) override;
+  core::WindowInput pollEvents() override;
+  void resize(int width, int height) override;
   void present(const core::View& view, const core::DrawList& draw) override;
   std::vector<uint8_t> capture(int& width, int& height) override;
   void saveScreenshot(const std::string& path) override;
@@ -32,6 +33,8 @@ class RenderSystem final : public core::System, public core::Display {
 
   std::shared_ptr<Gl> gl_;  // shared across a hot reload (carryOver)
   std::optional<core::View> lastView_;
+  uint64_t lastPresent_ = 0;     // SDL's performance counter at the last present
+  double frameSeconds_ = 0;      // smoothed time between presents, for the frame-rate counter
   core::DrawList lastDraw_{true};
 };
 

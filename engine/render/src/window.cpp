@@ -3,6 +3,8 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <cstddef>
+#include <optional>
 #include <stdexcept>
 
 #include "platon/core/input.h"
@@ -53,30 +55,117 @@ Window::Window(const std::string& title, int width, int height) {
     throw std::runtime_error("no OpenGL 3.3 core context: " + reason);
   }
   SDL_GL_SetSwapInterval(1);  // vsync when the driver has it; no error otherwise
+  // Gamepads: those present now arrive as "added" events on the first poll, later ones when
+  // plugged in. No gamepad support (no such subsystem) is not an error.
+  SDL_InitSubSystem(SDL_INIT_GAMECONTROLLER);
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   glEnable(GL_MULTISAMPLE);
 }
 
 Window::~Window() {
+  for (SDL_GameController* pad : pads_) SDL_GameControllerClose(pad);
+  SDL_QuitSubSystem(SDL_INIT_GAMECONTROLLER);
   SDL_GL_DeleteContext(context_);
   SDL_DestroyWindow(window_);
   SDL_QuitSubSystem(SDL_INIT_VIDEO);
 }
 
-bool Window::pollEvents(uint8_t& held) {
+namespace {
+
+std::optional<core::Key> keyOf(SDL_Keycode key) {
+  switch (key) {
+    case SDLK_ESCAPE: return core::Key::Escape;
+    case SDLK_RETURN:
+    case SDLK_KP_ENTER: return core::Key::Enter;
+    case SDLK_UP:
+    case SDLK_w: return core::Key::Up;
+    case SDLK_DOWN:
+    case SDLK_s: return core::Key::Down;
+    case SDLK_LEFT:
+    case SDLK_a: return core::Key::Left;
+    case SDLK_RIGHT:
+    case SDLK_d: return core::Key::Right;
+    case SDLK_r: return core::Key::Restart;
+    case SDLK_F5: return core::Key::Reload;
+    case SDLK_F3: return core::Key::ShowFps;
+    default: return std::nullopt;
+  }
+}
+
+std::optional<core::Key> keyOf(SDL_GameControllerButton button) {
+  switch (button) {
+    case SDL_CONTROLLER_BUTTON_START: return core::Key::Escape;
+    case SDL_CONTROLLER_BUTTON_A: return core::Key::Enter;
+    case SDL_CONTROLLER_BUTTON_DPAD_UP: return core::Key::Up;
+    case SDL_CONTROLLER_BUTTON_DPAD_DOWN: return core::Key::Down;
+    case SDL_CONTROLLER_BUTTON_DPAD_LEFT: return core::Key::Left;
+    case SDL_CONTROLLER_BUTTON_DPAD_RIGHT: return core::Key::Right;
+    case SDL_CONTROLLER_BUTTON_BACK: return core::Key::Restart;
+    default: return std::nullopt;
+  }
+}
+
+// A gamepad's buttons and left stick as the engine's buttons: the stick past a third of its travel.
+uint8_t padButtons(SDL_GameController* pad) {
+  using core::Button;
+  using core::InputFrame;
+  constexpr Sint16 kDead = 11000;
+  const Sint16 x = SDL_GameControllerGetAxis(pad, SDL_CONTROLLER_AXIS_LEFTX);
+  const Sint16 y = SDL_GameControllerGetAxis(pad, SDL_CONTROLLER_AXIS_LEFTY);
+  auto down = [&](SDL_GameControllerButton b) { return SDL_GameControllerGetButton(pad, b) != 0; };
+  uint8_t held = 0;
+  if (x < -kDead || down(SDL_CONTROLLER_BUTTON_DPAD_LEFT)) held |= InputFrame::bit(Button::Left);
+  if (x > kDead || down(SDL_CONTROLLER_BUTTON_DPAD_RIGHT)) held |= InputFrame::bit(Button::Right);
+  if (y < -kDead || down(SDL_CONTROLLER_BUTTON_DPAD_UP)) held |= InputFrame::bit(Button::Up);
+  if (y > kDead || down(SDL_CONTROLLER_BUTTON_DPAD_DOWN)) held |= InputFrame::bit(Button::Down);
+  if (down(SDL_CONTROLLER_BUTTON_A) || down(SDL_CONTROLLER_BUTTON_B)) held |= InputFrame::bit(Button::Jump);
+  if (down(SDL_CONTROLLER_BUTTON_BACK)) held |= InputFrame::bit(Button::Restart);
+  return held;
+}
+
+}  // namespace
+
+core::WindowInput Window::pollEvents() {
+  core::WindowInput input;
   SDL_Event event;
-  bool open = true;
   while (SDL_PollEvent(&event)) {
-    if (event.type == SDL_QUIT) open = false;
-    if (event.type == SDL_KEYDOWN && event.key.keysym.sym == SDLK_ESCAPE) open = false;
-    if (event.type == SDL_KEYDOWN && event.key.keysym.sym == SDLK_F11) {
-      const bool full = SDL_GetWindowFlags(window_) & SDL_WINDOW_FULLSCREEN_DESKTOP;
-      SDL_SetWindowFullscreen(window_, full ? 0 : SDL_WINDOW_FULLSCREEN_DESKTOP);
+    switch (event.type) {
+      case SDL_QUIT: input.closed = true; break;
+      case SDL_KEYDOWN:
+        if (event.key.repeat) break;
+        if (event.key.keysym.sym == SDLK_F11) {
+          const bool full = SDL_GetWindowFlags(window_) & SDL_WINDOW_FULLSCREEN_DESKTOP;
+          SDL_SetWindowFullscreen(window_, full ? 0 : SDL_WINDOW_FULLSCREEN_DESKTOP);
+        } else if (const auto key = keyOf(event.key.keysym.sym)) {
+          input.pressed.push_back(*key);
+        }
+        break;
+      case SDL_CONTROLLERDEVICEADDED:
+        if (SDL_GameController* pad = SDL_GameControllerOpen(event.cdevice.which)) pads_.push_back(pad);
+        break;
+      case SDL_CONTROLLERDEVICEREMOVED:
+        for (size_t i = 0; i < pads_.size(); ++i)
+          if (SDL_JoystickInstanceID(SDL_GameControllerGetJoystick(pads_[i])) == event.cdevice.which) {
+            SDL_GameControllerClose(pads_[i]);
+            pads_.erase(pads_.begin() + static_cast<std::ptrdiff_t>(i));
+            break;
+          }
+        break;
+      case SDL_CONTROLLERBUTTONDOWN:
+        if (const auto key = keyOf(static_cast<SDL_GameControllerButton>(event.cbutton.button))) input.pressed.push_back(*key);
+        break;
+      default: break;
     }
   }
-  held = heldButtons();
-  return open;
+  input.held = heldButtons();
+  for (SDL_GameController* pad : pads_) input.held |= padButtons(pad);
+  return input;
+}
+
+void Window::resize(int width, int height) {
+  SDL_SetWindowSize(window_, width, height);
+  SDL_PumpEvents();
 }
 
 void Window::setTitle(const std::string& title) {

@@ -1,11 +1,13 @@
 // An SDL2 window with an OpenGL 3.3 core context: resizable, high-DPI aware, vsync and 4x
-// multisampling when the driver has them. Keyboard state becomes the engine's buttons.
+// multisampling when the driver has them. Keyboard and gamepad state become the engine's buttons.
 #pragma once
 #include <SDL2/SDL.h>
 
 #include <cstdint>
 #include <string>
 #include <vector>
+
+#include "platon/core/display.h"
 
 namespace platon::render {
 
@@ -17,9 +19,10 @@ class Window {
   Window(const Window&) = delete;
   Window& operator=(const Window&) = delete;
 
-  // Handles pending events; `held` gets the buttons held now. False once the window was closed or
-  // Esc pressed.
-  bool pollEvents(uint8_t& held);
+  // Handles pending events: keys and gamepad buttons pressed, what is held now, a close. Gamepads
+  // come and go while the game runs (SDL's game-controller API).
+  core::WindowInput pollEvents();
+  void resize(int width, int height);
   void setTitle(const std::string& title);
   // The drawable's size in pixels, and pixels per window point (2 on a high-DPI screen).
   int pixelWidth() const;
@@ -32,6 +35,8 @@ class Window {
  private:
   SDL_Window* window_ = nullptr;
   SDL_GLContext context_ = nullptr;
+  std::vector<SDL_GameController*> pads_;
+  uint8_t padHeld_ = 0;
   std::string title_;
 };
 

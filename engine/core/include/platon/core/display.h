@@ -60,6 +60,7 @@ struct View {
   std::vector<std::string> hud;  // top left, one line each
   std::vector<std::string> centreText;  // big, in the middle of the screen (titles, menus)
   std::string error;             // "" for none
+  bool showFps = false;          // the renderer's frame rate in the top right corner
 };
 
 // The scene's stage, ready to show. A scene with no solid shows only the player's part, flat: build
@@ -72,13 +73,25 @@ std::shared_ptr<const StageView> stageView(const stage::Stage& stage, const phys
 camera::CameraTarget cameraTarget(const StageView& stage, physics::MapPartId face, float x, float y, physics::Vec2w gravity);
 camera::CameraTarget cameraTarget(const StageView& stage, const Scene& scene, physics::MapPartId face, float x, float y);
 
+// Keys the game's menus and controls act on once per press (held buttons go to the simulation).
+enum class Key : uint8_t { Escape, Enter, Up, Down, Left, Right, Restart, Reload, ShowFps };
+
+// What the window's devices (keyboard, gamepads) did since the last poll.
+struct WindowInput {
+  uint8_t held = 0;          // InputFrame bits of the buttons held now
+  std::vector<Key> pressed;  // in order
+  bool closed = false;       // the window was closed
+};
+
 class Display {
  public:
   virtual ~Display() = default;
-  // The window's events since the last call: `held` gets the buttons held now (InputFrame bits).
-  // False once the player closed the window or pressed Esc.
-  virtual bool pollEvents(uint8_t& held) = 0;
+  // The window's events since the last call (opens the window on first use; throws
+  // std::runtime_error when there is no display).
+  virtual WindowInput pollEvents() = 0;
   virtual void present(const View& view, const DrawList& draw) = 0;
+  // The drawable's size in pixels (a high-DPI screen has more than the window's points).
+  virtual void resize(int width, int height) = 0;
   // The frame last presented: width x height RGBA pixels, rows from the top. Throws
   // std::runtime_error when nothing was presented yet.
   virtual std::vector<uint8_t> capture(int& width, int& height) = 0;
