@@ -5,7 +5,9 @@
 #include <cstring>
 
 #include "platon/core/scene.h"
+#include "game_command.h"
 #include "play_command.h"
+#include "shot_command.h"
 #include "run_command.h"
 #include "stage_commands.h"
 
@@ -56,6 +58,8 @@ class Roller : public core::System {
 int main(int argc, char** argv) {
   if (argc > 1 && (std::strcmp(argv[1], "run") == 0 || std::strcmp(argv[1], "replay") == 0))
     return platon::app::runCommand(argc - 1, argv + 1);
+  if (argc > 1 && std::strcmp(argv[1], "shot") == 0) return platon::app::shotCommand(argc - 1, argv + 1);
+  if (argc > 1 && std::strcmp(argv[1], "game") == 0) return platon::app::gameCommand(argc - 1, argv + 1);
   if (argc > 1 && std::strcmp(argv[1], "play") == 0) return platon::app::playCommand(argc - 1, argv + 1);
   if (argc > 1 && std::strcmp(argv[1], "scenario") == 0) return platon::app::scenarioCommand(argc - 1, argv + 1);
   if (argc > 1 && std::strcmp(argv[1], "check") == 0) return platon::app::checkCommand(argc - 1, argv + 1);
@@ -66,12 +70,14 @@ int main(int argc, char** argv) {
       frames = std::atoi(argv[++i]);
     } else {
       std::fprintf(stderr, "usage: %s [--frames N]      the headless demo\n"
+                           "       %s game [--campaign levels/campaign.txt]   the game in a window\n"
+                           "       %s shot LEVEL [--frame N] [--size WxH] [--input run.replay] --out file.png\n"
                            "       %s run [-j N] [--junit report.xml] [--record dir] scenario.lua|run.replay...\n"
                            "       %s play scene.lua [--frames N] [--input run.replay] [--record out.replay] [--watch] [--fast]\n"
                            "       %s scenario run.replay [-o scenario.lua]\n"
                            "       %s check level.level...           errors and warnings a level designer wants\n"
                            "       %s net SOLID|level.level -o net.svg   the faces unfolded, numbered, with their axes\n",
-                           argv[0], argv[0], argv[0], argv[0], argv[0], argv[0]);
+                           argv[0], argv[0], argv[0], argv[0], argv[0], argv[0], argv[0], argv[0]);
       return 2;
     }
   }

@@ -1,0 +1,48 @@
+// The campaign (the levels in the order a player meets them, levels/campaign.txt) and the player's
+// progress through it, saved in the user's data folder so the level select shows what is done.
+#pragma once
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace platon::app {
+
+struct CampaignLevel {
+  std::string folder;  // as written in the campaign file: "cube_intro"
+  std::string scene;   // its manifest: <levels>/<folder>/scene.lua
+};
+
+// One level folder per line, relative to the file's own folder; '#' starts a comment. Throws
+// std::runtime_error naming file:line for a folder with no scene.lua, and for an empty campaign.
+std::vector<CampaignLevel> readCampaign(const std::string& path);
+
+struct LevelRecord {
+  uint64_t bestFrames = 0;  // the fastest finish, in frames
+  int fewestDeaths = 0;     // the fewest deaths in a finish
+};
+
+// Finished levels by folder. The file is plain text, one "folder frames deaths" per line; lines
+// it cannot read are skipped (a damaged file costs records, never the game), and it is written
+// whole to a new file and renamed over the old, so a crash mid-save never leaves half a file.
+class Progress {
+ public:
+  // $XDG_DATA_HOME/platon/progress.txt, or ~/.local/share/platon/progress.txt.
+  static std::string defaultPath();
+
+  explicit Progress(std::string path);
+  bool done(const std::string& folder) const { return records_.count(folder) != 0; }
+  const LevelRecord* record(const std::string& folder) const;
+  // Keeps the better time and the fewer deaths; saves at once. False (and the reason in
+  // lastError()) when the file cannot be written: the game goes on.
+  bool finish(const std::string& folder, uint64_t frames, int deaths);
+  const std::string& lastError() const { return lastError_; }
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+  std::map<std::string, LevelRecord> records_;
+  std::string lastError_;
+};
+
+}  // namespace platon::app

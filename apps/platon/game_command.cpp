@@ -1,0 +1,261 @@
+// The game: a title screen with the level select (levels done are ticked, read from the player's
+// progress file), the levels played in a window with a pause menu, and on each finish the record
+// saved and the next level. One window for the whole session: each level's scene takes over the
+// previous one's rendering system (System::carryOver), as a hot reload does.
+#include "game_command.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <string>
+#include <thread>
+
+#include "campaign.h"
+#include "engine_registry.h"
+#include "game_view.h"
+#include "platon/core/display.h"
+#include "platon/core/fixed_step.h"
+#include "platon/core/live_scene.h"
+#include "platon/script/script_system.h"
+
+namespace platon::app {
+namespace {
+
+enum class Screen { Title, Playing, Paused, Complete };
+
+const char* const kPauseItems[] = {"Resume", "Restart the level", "Level select", "Quit"};
+
+std::string clockText(uint64_t frames) {
+  char text[32];
+  const uint64_t seconds = frames / 60;
+  std::snprintf(text, sizeof text, "%llu:%02llu.%02llu", static_cast<unsigned long long>(seconds / 60),
+                static_cast<unsigned long long>(seconds % 60), static_cast<unsigned long long>(frames % 60 * 100 / 60));
+  return text;
+}
+
+class Game {
+ public:
+  Game(std::vector<CampaignLevel> levels, Progress progress)
+      : levels_(std::move(levels)), progress_(std::move(progress)), registry_(engineRegistry(Presentation::Window)) {}
+
+  int run();
+
+ private:
+  bool load(size_t level);
+  core::Display* display() {
+    core::System* rendering = live_ ? live_->scene().findSystem("rendering") : nullptr;
+    return rendering ? rendering->display() : nullptr;
+  }
+  script::GameStatus status() {
+    const auto* scripts = dynamic_cast<const script::ScriptSystem*>(live_->scene().findSystem("scripting"));
+    return scripts ? scripts->status() : script::GameStatus{};
+  }
+  void handle(const core::WindowInput& input);
+  void stepSimulation(int due, uint8_t held);
+  void draw(double alpha);
+  std::vector<std::string> titleLines() const;
+
+  std::vector<CampaignLevel> levels_;
+  Progress progress_;
+  core::SystemRegistry registry_;
+  std::unique_ptr<core::LiveScene> live_;
+  GameView view_;
+  core::FixedStep clock_{60};
+  core::InputEdges edges_;
+  Screen screen_ = Screen::Title;
+  size_t level_ = 0;
+  int menuItem_ = 0;
+  bool quit_ = false;
+  bool showFps_ = false;
+  std::string notice_;  // a line under the heads-up text (a failed save, a refused reload)
+};
+
+bool Game::load(size_t level) {
+  core::System* previous = live_ ? live_->scene().findSystem("rendering") : nullptr;
+  std::unique_ptr<core::LiveScene> next;
+  try {
+    next = std::make_unique<core::LiveScene>(levels_[level].scene, registry_, true);
+  } catch (const std::exception& e) {
+    notice_ = core::errorReport(e);
+    std::fprintf(stderr, "%s\n", notice_.c_str());
+    return false;
+  }
+  core::System* rendering = next->scene().findSystem("rendering");
+  if (!rendering) {
+    notice_ = levels_[level].scene + ": the scene does not name \"rendering\"";
+    return false;
+  }
+  if (previous) rendering->carryOver(next->scene(), *previous);  // the same window
+  live_ = std::move(next);
+  level_ = level;
+  view_ = GameView{};
+  view_.step(live_->scene(), status(), 1.0 / clock_.hz());
+  edges_.reset();
+  return true;
+}
+
+std::vector<std::string> Game::titleLines() const {
+  std::vector<std::string> lines{"PLATON", "a platformer on the faces of the solids", ""};
+  for (size_t i = 0; i < levels_.size(); ++i) {
+    const LevelRecord* r = progress_.record(levels_[i].folder);
+    std::string line = (i == level_ ? "> " : "  ") + std::to_string(i + 1) + ". " + levels_[i].folder;
+    if (r) line += "   done  " + clockText(r->bestFrames) + "  " + std::to_string(r->fewestDeaths) + " deaths";
+    if (i == level_) line += " <";
+    lines.push_back(line);
+  }
+  lines.push_back("");
+  lines.push_back("Up/Down choose, Enter play, Esc quit");
+  return lines;
+}
+
+void Game::handle(const core::WindowInput& input) {
+  if (input.closed) quit_ = true;
+  for (const core::Key key : input.pressed) {
+    if (key == core::Key::ShowFps) showFps_ = !showFps_;
+    switch (screen_) {
+      case Screen::Title:
+        if (key == core::Key::Escape) quit_ = true;
+        if ((key == core::Key::Up || key == core::Key::Down) && levels_.size() > 1) {
+          const size_t next = key == core::Key::Up ? (level_ + levels_.size() - 1) % levels_.size() : (level_ + 1) % levels_.size();
+          load(next);
+        }
+        if (key == core::Key::Enter && load(level_)) {
+          screen_ = Screen::Playing;
+          std::printf("playing %s\n", levels_[level_].folder.c_str());
+          std::fflush(stdout);
+        }
+        break;
+      case Screen::Playing:
+        if (key == core::Key::Escape) screen_ = Screen::Paused, menuItem_ = 0;
+        if (key == core::Key::Reload) {
+          const core::ReloadReport r = live_->reload({"F5"});
+          notice_ = r.ok ? "reloaded" : "reload refused: " + r.error;
+        }
+        break;
+      case Screen::Paused:
+        if (key == core::Key::Escape) screen_ = Screen::Playing;
+        if (key == core::Key::Up) menuItem_ = (menuItem_ + 3) % 4;
+        if (key == core::Key::Down) menuItem_ = (menuItem_ + 1) % 4;
+        if (key == core::Key::Enter) {
+          if (menuItem_ == 0) screen_ = Screen::Playing;
+          if (menuItem_ == 1 && load(level_)) screen_ = Screen::Playing;
+          if (menuItem_ == 2) screen_ = Screen::Title;
+          if (menuItem_ == 3) quit_ = true;
+        }
+        break;
+      case Screen::Complete:
+        if (key == core::Key::Enter || key == core::Key::Escape) {
+          if (level_ + 1 < levels_.size() && key == core::Key::Enter) {
+            if (load(level_ + 1)) screen_ = Screen::Playing;
+          } else {
+            screen_ = Screen::Title;
+          }
+        }
+        break;
+    }
+  }
+}
+
+void Game::stepSimulation(int due, uint8_t held) {
+  for (int s = 0; s < due && screen_ == Screen::Playing; ++s) {
+    if (std::optional<std::string> error = live_->step(edges_.next(held)))
+      std::fprintf(stderr, "frame error (the game goes on):\n%s\n", error->c_str());
+    const script::GameStatus st = status();
+    view_.step(live_->scene(), st, 1.0 / clock_.hz());
+    if (st.won) {
+      std::printf("level complete: %s in %s with %d deaths\n", levels_[level_].folder.c_str(), clockText(st.wonFrame).c_str(), st.deaths);
+      std::fflush(stdout);
+      if (!progress_.finish(levels_[level_].folder, st.wonFrame, st.deaths)) notice_ = progress_.lastError();
+      screen_ = Screen::Complete;
+    }
+  }
+}
+
+void Game::draw(double alpha) {
+  core::Display* d = display();
+  if (!d) return;
+  core::Scene& scene = live_->scene();
+  const script::GameStatus st = status();
+  core::View view = view_.view(scene, alpha);
+  view.showFps = showFps_;
+  view.error = live_->lastError();
+  if (screen_ != Screen::Title) {
+    view.hud.push_back(scene.manifest().name + "    " + clockText(st.time) + "    deaths " + std::to_string(st.deaths));
+    if (!st.message.empty()) view.hud.push_back(st.message);
+  }
+  if (!notice_.empty()) view.hud.push_back(notice_);
+  switch (screen_) {
+    case Screen::Title: view.centreText = titleLines(); break;
+    case Screen::Paused:
+      view.centreText = {"Paused"};
+      for (int i = 0; i < 4; ++i) view.centreText.push_back((i == menuItem_ ? "> " : "  ") + std::string(kPauseItems[i]) + (i == menuItem_ ? " <" : ""));
+      break;
+    case Screen::Complete:
+      view.centreText = {"Level complete!", clockText(st.wonFrame) + "    " + std::to_string(st.deaths) + " deaths",
+                         level_ + 1 < levels_.size() ? "Enter: next level    Esc: level select" : "The campaign is done. Enter: level select"};
+      break;
+    case Screen::Playing: break;
+  }
+  core::DrawList draw(true);
+  scene.draw(draw);
+  d->present(view, draw);
+}
+
+int Game::run() {
+  const size_t firstOpen = static_cast<size_t>(
+      std::find_if(levels_.begin(), levels_.end(), [&](const CampaignLevel& l) { return !progress_.done(l.folder); }) - levels_.begin());
+  if (!load(firstOpen < levels_.size() ? firstOpen : 0)) return 1;
+  try {
+    display()->pollEvents();  // opens the window
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 1;
+  }
+  auto previous = std::chrono::steady_clock::now();
+  while (!quit_) {
+    if (std::optional<core::ReloadReport> r = live_->poll(0)) notice_ = r->ok ? "reloaded" : "reload refused: " + r->error;
+    core::Display* d = display();
+    if (!d) return 1;
+    const core::WindowInput input = d->pollEvents();
+    handle(input);
+    const auto now = std::chrono::steady_clock::now();
+    const int due = clock_.advance(std::chrono::duration_cast<std::chrono::nanoseconds>(now - previous).count());
+    previous = now;
+    stepSimulation(due, input.held);
+    draw(screen_ == Screen::Playing ? clock_.alpha() : 1.0);
+    if (due == 0) std::this_thread::sleep_for(std::chrono::milliseconds(1));  // no vsync: do not spin
+  }
+  const script::GameStatus st = status();
+  std::printf("quit on %s: face %u at (%d, %d), %llu frames played\n", levels_[level_].folder.c_str(), st.face, st.x, st.y,
+              static_cast<unsigned long long>(st.time));
+  return 0;
+}
+
+}  // namespace
+
+int gameCommand(int argc, char** argv) {
+  std::string campaignPath = "levels/campaign.txt";
+  std::string progressPath = Progress::defaultPath();
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--campaign" && i + 1 < argc) campaignPath = argv[++i];
+    else if (a == "--progress" && i + 1 < argc) progressPath = argv[++i];
+    else {
+      std::fprintf(stderr, "usage: platon game [--campaign levels/campaign.txt] [--progress file]\n"
+                           "  keys: arrows or WASD move, Space jumps, R restarts, Esc pauses, F5 reloads,\n"
+                           "        F3 frame rate, F11 fullscreen; a gamepad works too\n");
+      return 2;
+    }
+  }
+  try {
+    Game game(readCampaign(campaignPath), Progress(progressPath));
+    return game.run();
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 1;
+  }
+}
+
+}  // namespace platon::app

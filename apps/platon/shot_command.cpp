@@ -1,0 +1,109 @@
+// `platon shot`: a level's picture after N frames, rendered offscreen (SDL's offscreen video driver
+// unless SDL_VIDEODRIVER says otherwise), so it works with no display. The input is a replay's
+// when given, nothing held otherwise; the camera is stepped with the simulation, so frame N gives
+// the same picture on every run and machine with the same GL driver.
+#include "shot_command.h"
+
+#include <sys/stat.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "engine_registry.h"
+#include "game_view.h"
+#include "platon/core/display.h"
+#include "platon/core/error.h"
+#include "platon/core/live_scene.h"
+#include "platon/core/replay.h"
+#include "platon/script/script_system.h"
+
+namespace platon::app {
+namespace {
+
+int usage() {
+  std::fprintf(stderr,
+               "usage: platon shot LEVEL [--frame N] [--size WxH] [--input run.replay] --out file.png\n"
+               "  LEVEL   a scene.lua, a level folder, or a folder name under levels/ (cube_intro)\n"
+               "  --frame N      the picture after N frames (default 0: the start)\n"
+               "  --size WxH     pixels (default 1280x720)\n"
+               "  --input F      the buttons of a recorded run\n");
+  return 2;
+}
+
+bool exists(const std::string& path) {
+  struct stat st {};
+  return stat(path.c_str(), &st) == 0;
+}
+
+// A scene.lua as given, a folder holding one, or a folder name under levels/.
+std::string scenePathOf(const std::string& level) {
+  if (level.size() > 4 && level.substr(level.size() - 4) == ".lua") return level;
+  for (const std::string& candidate : {level + "/scene.lua", "levels/" + level + "/scene.lua"})
+    if (exists(candidate)) return candidate;
+  return level;
+}
+
+}  // namespace
+
+int shotCommand(int argc, char** argv) {
+  std::string level, out, inputPath;
+  uint64_t frames = 0;
+  int width = 1280, height = 720;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--frame" && i + 1 < argc) frames = std::strtoull(argv[++i], nullptr, 10);
+    else if (a == "--size" && i + 1 < argc) {
+      if (std::sscanf(argv[++i], "%dx%d", &width, &height) != 2 || width < 16 || height < 16 || width > 8192 || height > 8192) {
+        std::fprintf(stderr, "--size %s: want WxH, 16 to 8192 pixels each way\n", argv[i]);
+        return 2;
+      }
+    } else if (a == "--input" && i + 1 < argc) inputPath = argv[++i];
+    else if (a == "--out" && i + 1 < argc) out = argv[++i];
+    else if (level.empty() && !a.empty() && a[0] != '-') level = a;
+    else return usage();
+  }
+  if (level.empty() || out.empty()) return usage();
+  setenv("SDL_VIDEODRIVER", "offscreen", 0);
+  try {
+    core::Replay input;
+    if (!inputPath.empty()) input = core::readReplay(inputPath);
+    const core::SystemRegistry registry = engineRegistry(Presentation::Window);
+    core::LiveScene live(scenePathOf(level), registry, false);
+    core::System* rendering = live.scene().findSystem("rendering");
+    if (!rendering || !rendering->display())
+      throw std::runtime_error(scenePathOf(level) + ": the scene does not name \"rendering\"");
+    core::Display& display = *rendering->display();
+    display.resize(width, height);
+    auto status = [&] {
+      const auto* scripts = dynamic_cast<const script::ScriptSystem*>(live.scene().findSystem("scripting"));
+      return scripts ? scripts->status() : script::GameStatus{};
+    };
+    GameView view;
+    view.step(live.scene(), status(), 1.0 / 60);
+    core::InputEdges edges;
+    for (uint64_t f = 0; f < frames; ++f) {
+      if (std::optional<std::string> error = live.step(edges.next(f < input.held.size() ? input.held[f] : 0)))
+        std::fprintf(stderr, "frame %llu: %s\n", static_cast<unsigned long long>(f + 1), error->c_str());
+      view.step(live.scene(), status(), 1.0 / 60);
+    }
+    core::View v = view.view(live.scene(), 1.0);
+    const script::GameStatus st = status();
+    v.hud.push_back(live.scene().manifest().name);
+    if (!st.message.empty()) v.hud.push_back(st.message);
+    v.error = live.lastError();
+    core::DrawList draw(true);
+    live.scene().draw(draw);
+    display.present(v, draw);
+    display.saveScreenshot(out);
+    int w = 0, h = 0;
+    display.capture(w, h);
+    std::printf("%s: %dx%d, frame %llu of %s\n", out.c_str(), w, h, static_cast<unsigned long long>(frames), scenePathOf(level).c_str());
+    return 0;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s\n", core::errorReport(e).c_str());
+    return 1;
+  }
+}
+
+}  // namespace platon::app
