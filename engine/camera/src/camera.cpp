@@ -6,15 +6,15 @@
 namespace platon::camera {
 namespace {
 
-// The orientation whose forward is `forward` and whose up is `up` made perpendicular to it.
-Eigen::Quaterniond lookAlong(const Eigen::Vector3d& forward, const Eigen::Vector3d& upHint) {
+// The orientation whose forward is `forward` and whose right is `rightHint` made perpendicular to it.
+Eigen::Quaterniond lookAlong(const Eigen::Vector3d& forward, const Eigen::Vector3d& rightHint) {
   const Eigen::Vector3d back = -forward.normalized();
-  Eigen::Vector3d up = upHint - upHint.dot(back) * back;
-  if (up.squaredNorm() < 1e-24) up = back.unitOrthogonal();  // down along the view line: any up
-  up.normalize();
+  Eigen::Vector3d right = rightHint - rightHint.dot(back) * back;
+  if (right.squaredNorm() < 1e-24) right = back.unitOrthogonal();  // walking along the view line: any
+  right.normalize();
   Eigen::Matrix3d axes;
-  axes.col(0) = up.cross(back);
-  axes.col(1) = up;
+  axes.col(0) = right;
+  axes.col(1) = back.cross(right);
   axes.col(2) = back;
   return Eigen::Quaterniond(axes).normalized();
 }
@@ -34,7 +34,7 @@ CameraPose Camera::wanted(const CameraTarget& target) {
   Eigen::Vector3d out = target.player - target.centre;
   const double radial = out.norm();
   if (radial < 1e-12) out = Eigen::Vector3d::UnitZ();
-  p.orientation = lookAlong(-out, -target.down);
+  p.orientation = lookAlong(-out, target.normal.cross(target.down));
   p.centre = target.centre;
   p.distance = radial + target.viewHeight;
   return p;

@@ -104,6 +104,7 @@ camera::CameraTarget cameraTarget(const StageView& stage, physics::MapPartId par
   const Eigen::Vector3d origin = vector3(face->origin), xAxis = vector3(face->xAxis), yAxis = vector3(face->yAxis);
   target.player = origin + double{x} * xAxis + double{y} * yAxis;
   target.down = gx * xAxis + gy * yAxis;
+  target.normal = vector3(face->normal);
   // The eye sits a little less than the widest face's diameter above the player: the face fills
   // most of the screen and its neighbours show round it.
   target.viewHeight = 0.8 * stage.faceSize;

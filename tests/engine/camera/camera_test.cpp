@@ -147,7 +147,8 @@ TEST(Camera, EveryEdgeOfEveryStageTurnsTheViewSmoothly) {
 }
 
 // The seed's line: the eye on the ray from the centre through the player, looking at the centre,
-// the player's up (against its down) pointing up on the screen; over random targets.
+// the way the player walks (normal x down) pointing right on the screen, and so its up (against
+// its down) upward; over random targets, faces seen from straight above or at a slant.
 TEST(Camera, TheWantedPoseIsOnTheLineFromTheCentreThroughThePlayer) {
   std::srand(7);
   auto random = [] { return Eigen::Vector3d::Random(); };
@@ -156,14 +157,20 @@ TEST(Camera, TheWantedPoseIsOnTheLineFromTheCentreThroughThePlayer) {
     t.centre = random() * 100;
     t.player = t.centre + random().normalized() * (1 + std::rand() % 50);
     Eigen::Vector3d out = (t.player - t.centre).normalized();
-    t.down = random().cross(out);  // along the face, whatever its length
+    t.normal = (out + 0.7 * random()).normalized();  // the face, leaning up to ~50 degrees off the view line
+    if (t.normal.dot(out) < 0.3) t.normal = out;
+    t.down = random().cross(t.normal);  // along the face, whatever its length
     t.viewHeight = 3;
     const camera::CameraPose p = camera::Camera::wanted(t);
     const Eigen::Vector3d toEye = (p.eye() - t.centre).normalized();
     EXPECT_GT(toEye.dot(out), 1 - 1e-9);
     EXPECT_NEAR((p.eye() - t.player).norm(), 3, 1e-6);
     EXPECT_GT(p.forward().dot(-out), 1 - 1e-9);
-    EXPECT_GT(p.up().dot(-t.down.normalized()), 1 - 1e-9);  // down lies across the view line: up is exactly against it
+    const Eigen::Vector3d walk = t.normal.cross(t.down).normalized();
+    const Eigen::Vector3d right = p.orientation * Eigen::Vector3d::UnitX();
+    EXPECT_NEAR(right.dot(p.forward()), 0, 1e-9);
+    EXPECT_NEAR(right.dot((walk - walk.dot(p.forward()) * p.forward()).normalized()), 1, 1e-9);  // the floor reads level
+    EXPECT_GT(p.up().dot(-t.down.normalized()), 0);  // and up is against the gravity
   }
 }
 

@@ -1,5 +1,8 @@
 // The seed's camera: on the line from the solid's centre through the player, looking at the centre,
-// its up the player's "up" (against the gravity of the player's face). When the player changes
+// turned so that the player's floor reads level: the screen's right is the way the player walks
+// (along the face, across its gravity), its up then against the gravity. (Seen from the centre's
+// line the face is often oblique, as on a tetrahedron: taking "up" straight from the gravity would
+// show floors tilted.) When the player changes
 // face the wanted orientation turns at once; the camera follows it by quaternion slerp, at a rate
 // set in seconds (so the same at any frame rate) and never faster than a top angular speed, so an
 // edge never flips, jumps or rolls the view.
@@ -17,6 +20,7 @@ struct CameraTarget {
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();  // the solid's centre
   Eigen::Vector3d player = Eigen::Vector3d::UnitZ();  // the player, on a face
   Eigen::Vector3d down = -Eigen::Vector3d::UnitY();   // the player's down (need not be unit length)
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // out of the player's face
   double viewHeight = 1;  // how far above the player the eye sits (see CameraSettings)
 };
 
