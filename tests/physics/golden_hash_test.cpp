@@ -226,10 +226,10 @@ struct Golden {
 };
 
 const Golden kGolden[] = {
-    {"random map 1", [] { return runRandomMap(1, false); }, 0xc7dcfecc3f8dd6e7ull},
-    {"random map 2", [] { return runRandomMap(2, false); }, 0x1aa64e29bd7923ecull},
-    {"random map 3 + rules", [] { return runRandomMap(3, true); }, 0x8326225b3711d6a4ull},
-    {"random map 4 + rules", [] { return runRandomMap(4, true); }, 0xd364dfcca4e0c4b1ull},
+    {"random map 1", [] { return runRandomMap(1, false); }, 0xbc66e49b76b9a8f6ull},
+    {"random map 2", [] { return runRandomMap(2, false); }, 0x33ff356694a748a9ull},
+    {"random map 3 + rules", [] { return runRandomMap(3, true); }, 0x62a5fa87642c095bull},
+    {"random map 4 + rules", [] { return runRandomMap(4, true); }, 0x10a8994a470e870dull},
     {"warp 252 degrees", [] { return runWarpAngle(252, 1); }, 0x6089aa2ccc7fb7e2ull},
     {"warp 120 degrees", [] { return runWarpAngle(120, 2); }, 0x8a58aad7be71fb40ull},
     {"warp 144 degrees", [] { return runWarpAngle(144, 3); }, 0x5d216c0313b1fd89ull},
