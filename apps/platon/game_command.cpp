@@ -53,6 +53,11 @@ class Game {
     return scripts ? scripts->status() : script::GameStatus{};
   }
   void handle(const core::WindowInput& input);
+  void play() {
+    screen_ = Screen::Playing;
+    std::printf("playing %s\n", levels_[level_].folder.c_str());
+    std::fflush(stdout);
+  }
   void stepSimulation(int due, uint8_t held);
   void draw(double alpha);
   std::vector<std::string> titleLines() const;
@@ -121,11 +126,7 @@ void Game::handle(const core::WindowInput& input) {
           const size_t next = key == core::Key::Up ? (level_ + levels_.size() - 1) % levels_.size() : (level_ + 1) % levels_.size();
           load(next);
         }
-        if (key == core::Key::Enter && load(level_)) {
-          screen_ = Screen::Playing;
-          std::printf("playing %s\n", levels_[level_].folder.c_str());
-          std::fflush(stdout);
-        }
+        if (key == core::Key::Enter && load(level_)) play();
         break;
       case Screen::Playing:
         if (key == core::Key::Escape) screen_ = Screen::Paused, menuItem_ = 0;
@@ -140,7 +141,7 @@ void Game::handle(const core::WindowInput& input) {
         if (key == core::Key::Down) menuItem_ = (menuItem_ + 1) % 4;
         if (key == core::Key::Enter) {
           if (menuItem_ == 0) screen_ = Screen::Playing;
-          if (menuItem_ == 1 && load(level_)) screen_ = Screen::Playing;
+          if (menuItem_ == 1 && load(level_)) play();
           if (menuItem_ == 2) screen_ = Screen::Title;
           if (menuItem_ == 3) quit_ = true;
         }
@@ -148,7 +149,7 @@ void Game::handle(const core::WindowInput& input) {
       case Screen::Complete:
         if (key == core::Key::Enter || key == core::Key::Escape) {
           if (level_ + 1 < levels_.size() && key == core::Key::Enter) {
-            if (load(level_ + 1)) screen_ = Screen::Playing;
+            if (load(level_ + 1)) play();
           } else {
             screen_ = Screen::Title;
           }
