@@ -199,9 +199,7 @@ void Game::draw(double alpha) {
       break;
     case Screen::Playing: break;
   }
-  core::DrawList draw(true);
-  scene.draw(draw);
-  d->present(view, draw);
+  d->present(view, view_.drawing(alpha));
 }
 
 int Game::run() {

@@ -1,8 +1,10 @@
 #include "game_view.h"
 
+#include <utility>
+
 namespace platon::app {
 
-void GameView::step(const core::Scene& scene, const script::GameStatus& status, double stepSeconds) {
+void GameView::step(core::Scene& scene, const script::GameStatus& status, double stepSeconds) {
   if (&scene != scene_ || !stage_ || (stage_->flat && status.face != flatPart_)) {
     stage_ = core::stageView(scene, status.face);
     scene_ = &scene;
@@ -15,10 +17,18 @@ void GameView::step(const core::Scene& scene, const script::GameStatus& status, 
   if (!placed_) {
     camera_.set(target, 1280, 720);
     previous_ = camera_.pose();
-    placed_ = true;
   } else {
     camera_.lerp(target, stepSeconds);
   }
+  std::swap(previousDrawing_, drawing_);
+  drawing_.clear();
+  scene.draw(drawing_);
+  if (!placed_) previousDrawing_ = drawing_;
+  placed_ = true;
+}
+
+core::DrawList GameView::drawing(double alpha) const {
+  return core::DrawList::between(previousDrawing_, drawing_, static_cast<float>(alpha));
 }
 
 core::View GameView::view(const core::Scene& scene, double alpha) const {

@@ -14,9 +14,11 @@ namespace platon::app {
 class GameView {
  public:
   // After each simulation step (and once before the first: it places the camera at once).
-  void step(const core::Scene& scene, const script::GameStatus& status, double stepSeconds);
+  void step(core::Scene& scene, const script::GameStatus& status, double stepSeconds);
   // The frame's view, `alpha` of the way from the previous step's camera to this one's.
   core::View view(const core::Scene& scene, double alpha) const;
+  // What the scripts drew, `alpha` of the way from the previous step's picture to this one's.
+  core::DrawList drawing(double alpha) const;
   const camera::Camera& camera() const { return camera_; }
 
  private:
@@ -25,6 +27,7 @@ class GameView {
   physics::MapPartId flatPart_ = 0;
   camera::Camera camera_;
   camera::CameraPose previous_;
+  core::DrawList previousDrawing_{true}, drawing_{true};
   physics::MapPartId face_ = 0;
   bool placed_ = false;
 };

@@ -67,9 +67,7 @@ void show(core::Display& display, core::LiveScene& live, const GameView& gameVie
   if (!status.message.empty()) view.hud.push_back(status.message);
   view.error = live.lastError();
   view.showFps = showFps;
-  core::DrawList draw(true);
-  scene.draw(draw);
-  display.present(view, draw);
+  display.present(view, gameView.drawing(alpha));
 }
 
 }  // namespace

@@ -92,9 +92,7 @@ int shotCommand(int argc, char** argv) {
     v.hud.push_back(live.scene().manifest().name);
     if (!st.message.empty()) v.hud.push_back(st.message);
     v.error = live.lastError();
-    core::DrawList draw(true);
-    live.scene().draw(draw);
-    display.present(v, draw);
+    display.present(v, view.drawing(1.0));
     display.saveScreenshot(out);
     int w = 0, h = 0;
     display.capture(w, h);

@@ -1,5 +1,7 @@
 #include "platon/core/draw_list.h"
 
+#include <algorithm>
+
 namespace platon::core {
 
 void DrawList::circle(Place place, Point2 centre, float radius, Color color) {
@@ -26,6 +28,23 @@ void DrawList::text(Place place, Point2 at, std::string_view s, float height, Co
   shapes_.push_back({ShapeKind::Text, place, color, height, at, static_cast<uint32_t>(text_.size()),
                      static_cast<uint32_t>(s.size())});
   text_.append(s);
+}
+
+DrawList DrawList::between(const DrawList& from, const DrawList& to, float t) {
+  DrawList out = to;
+  const size_t n = std::min(from.shapes_.size(), to.shapes_.size());
+  auto mix = [t](Point2 a, Point2 b) { return Point2{a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t}; };
+  for (size_t i = 0; i < n; ++i) {
+    const DrawShape& a = from.shapes_[i];
+    DrawShape& b = out.shapes_[i];
+    if (a.kind != b.kind || a.place.screen != b.place.screen || a.place.face != b.place.face) continue;
+    if (b.kind != ShapeKind::Text && a.count != b.count) continue;
+    b.at = mix(a.at, b.at);
+    b.size = a.size + (b.size - a.size) * t;
+    if (b.kind == ShapeKind::Polygon || b.kind == ShapeKind::Line)
+      for (uint32_t k = 0; k < b.count; ++k) out.points_[b.first + k] = mix(from.points_[a.first + k], out.points_[b.first + k]);
+  }
+  return out;
 }
 
 void DrawList::clear() {

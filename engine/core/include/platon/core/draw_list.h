@@ -61,6 +61,11 @@ class DrawList {
     return std::string_view(text_).substr(shape.first, shape.count);
   }
 
+  // The picture `t` of the way (0..1) from `from` to `to`, for drawing between two simulation
+  // steps: each shape of `to` whose counterpart in `from` (same index, kind, place and point
+  // count) exists moves that fraction of the way; any other shape is drawn as in `to`.
+  static DrawList between(const DrawList& from, const DrawList& to, float t);
+
  private:
   bool enabled_;
   std::vector<DrawShape> shapes_;
