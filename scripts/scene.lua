@@ -187,6 +187,13 @@ function scene.status()
   if game.player and world.valid(game.player.entity) then
     status.face, status.x, status.y = world.position(game.player.entity)
   end
+  -- The doors the switches hold open (tag 1000 + n), for the renderer.
+  local open = status.openTags or {}
+  for i = #open, 1, -1 do open[i] = nil end
+  for id, on in pairs(game.switches) do
+    if on then open[#open + 1] = 1000 + id end
+  end
+  status.openTags = open
   return status
 end
 

@@ -11,6 +11,7 @@ void GameView::step(core::Scene& scene, const script::GameStatus& status, double
     flatPart_ = status.face;
   }
   face_ = status.face;
+  openTags_ = status.openTags;
   const camera::CameraTarget target =
       core::cameraTarget(*stage_, scene, status.face, static_cast<float>(status.x), static_cast<float>(status.y));
   previous_ = camera_.pose();
@@ -36,6 +37,7 @@ core::View GameView::view(const core::Scene& scene, double alpha) const {
   v.title = scene.manifest().name;
   v.stage = stage_;
   v.face = face_;
+  v.openTags = openTags_;
   v.camera = camera::CameraPose::between(previous_, camera_.pose(), alpha);
   v.verticalFov = camera_.settings().verticalFov;
   return v;

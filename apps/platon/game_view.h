@@ -29,6 +29,7 @@ class GameView {
   camera::CameraPose previous_;
   core::DrawList previousDrawing_{true}, drawing_{true};
   physics::MapPartId face_ = 0;
+  std::vector<uint32_t> openTags_;
   bool placed_ = false;
 };
 

@@ -112,14 +112,25 @@ void StageMesh::addFace(const core::ViewFace& face, size_t index) {
     addTriangle(fixed_, outer[0], outer[k], outer[k + 1], f.normal, kRim);
     addTriangle(fixed_, inner[0], inner[k], inner[k + 1], f.normal, faceColor(index));
   }
-  for (const core::ViewLine& line : face.lines)
-    if (line.kind != 1) addWall(f, line);  // warp lines are the face's own edges: the rim shows them
+  for (const core::ViewLine& line : face.lines) {
+    if (line.kind == 1) continue;  // warp lines are the face's own edges: the rim shows them
+    if (line.tag >= 1000 && line.tag < 2000) doors_.push_back({index, line});
+    else addWall(f, line, fixed_);
+  }
 }
 
-void StageMesh::addWall(const Frame& f, const core::ViewLine& line) {
-  const Color color = wallColor(line);
+void StageMesh::addDoors(std::span<const uint32_t> openTags, std::vector<LitVertex>& out) const {
+  for (const Door& d : doors_) {
+    const bool open = std::find(openTags.begin(), openTags.end(), d.line.tag) != openTags.end();
+    addWall(frames_[d.frame], d.line, out, open ? 0.12f : 1.0f);
+  }
+}
+
+void StageMesh::addWall(const Frame& f, const core::ViewLine& line, std::vector<LitVertex>& out, float heightScale) const {
+  Color color = wallColor(line);
+  if (heightScale < 1) color = {static_cast<uint8_t>(color.r / 2), static_cast<uint8_t>(color.g / 2), static_cast<uint8_t>(color.b / 2), 255};
   const bool oneWay = line.kind == 2;
-  const float height = (oneWay ? 0.008f : 0.02f) * edge_, halfWidth = (oneWay ? 0.004f : 0.006f) * edge_;
+  const float height = (oneWay ? 0.008f : 0.02f) * edge_ * heightScale, halfWidth = (oneWay ? 0.004f : 0.006f) * edge_;
   const Vector3f a = f.origin + line.a.x * f.xAxis + line.a.y * f.yAxis;
   const Vector3f b = f.origin + line.b.x * f.xAxis + line.b.y * f.yAxis;
   Vector3f along = b - a;
@@ -128,11 +139,11 @@ void StageMesh::addWall(const Frame& f, const core::ViewLine& line) {
   const Vector3f side = f.normal.cross(along).normalized() * halfWidth, up = f.normal * height;
   const Vector3f ext = along * halfWidth;  // square ends reach past the endpoints, closing joints
   const Vector3f a0 = a - ext - side, a1 = a - ext + side, b0 = b + ext - side, b1 = b + ext + side;
-  quad(fixed_, a0 + up, b0 + up, b1 + up, a1 + up, f.normal, color);
-  quad(fixed_, a0, b0, b0 + up, a0 + up, -side.normalized(), color);
-  quad(fixed_, a1, b1, b1 + up, a1 + up, side.normalized(), color);
-  quad(fixed_, a0, a1, a1 + up, a0 + up, -along, color);
-  quad(fixed_, b0, b1, b1 + up, b0 + up, along, color);
+  quad(out, a0 + up, b0 + up, b1 + up, a1 + up, f.normal, color);
+  quad(out, a0, b0, b0 + up, a0 + up, -side.normalized(), color);
+  quad(out, a1, b1, b1 + up, a1 + up, side.normalized(), color);
+  quad(out, a0, a1, a1 + up, a0 + up, -along, color);
+  quad(out, b0, b1, b1 + up, b0 + up, along, color);
 }
 
 void StageMesh::addShapes(const core::DrawList& draw, physics::MapPartId onlyFace, std::vector<LitVertex>& out) const {

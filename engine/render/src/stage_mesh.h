@@ -5,6 +5,7 @@
 #pragma once
 #include <Eigen/Core>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "platon/core/display.h"
@@ -27,6 +28,10 @@ class StageMesh {
   // The fixed part: faces, rims and walls.
   const std::vector<LitVertex>& fixed() const { return fixed_; }
 
+  // The doors (lines tagged 1000 + n): raised walls while shut, a low dashed sill while their tag
+  // is in `openTags`. Appended to `out` each frame, since they open and shut.
+  void addDoors(std::span<const uint32_t> openTags, std::vector<LitVertex>& out) const;
+
   // The draw list's shapes on faces, appended to `out`. Text is not drawn here.
   void addShapes(const core::DrawList& draw, physics::MapPartId onlyFace, std::vector<LitVertex>& out) const;
 
@@ -41,7 +46,12 @@ class StageMesh {
   };
   const Frame* frameOf(physics::MapPartId part) const;
   void addFace(const core::ViewFace& face, size_t index);
-  void addWall(const Frame& f, const core::ViewLine& line);
+  void addWall(const Frame& f, const core::ViewLine& line, std::vector<LitVertex>& out, float heightScale = 1) const;
+  struct Door {
+    size_t frame;
+    core::ViewLine line;
+  };
+  std::vector<Door> doors_;
 
   std::vector<Frame> frames_;
   std::vector<LitVertex> fixed_;

@@ -59,6 +59,7 @@ void StageRenderer::draw(const core::View& view, const core::DrawList& draw, int
     upload(fixed_, mesh_->fixed(), GL_STATIC_DRAW);
   }
   scratch_.clear();
+  mesh_->addDoors(view.openTags, scratch_);
   mesh_->addShapes(draw, view.face, scratch_);
   upload(shapes_, scratch_, GL_STREAM_DRAW);
 

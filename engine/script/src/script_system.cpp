@@ -1,5 +1,6 @@
 #include "platon/script/script_system.h"
 
+#include <algorithm>
 #include <cstdlib>
 
 #include "lua_rules.h"
@@ -239,6 +240,16 @@ GameStatus ScriptSystem::status() const {
   s.y = static_cast<int32_t>(number("y"));
   lua_getfield(L, -1, "message");
   if (lua_isstring(L, -1)) s.message = lua_tostring(L, -1);
+  lua_pop(L, 1);
+  lua_getfield(L, -1, "openTags");
+  if (lua_istable(L, -1)) {
+    const size_t n = std::min<size_t>(lua_objlen(L, -1), 4096);
+    for (size_t i = 1; i <= n; ++i) {
+      lua_rawgeti(L, -1, static_cast<int>(i));
+      if (lua_isnumber(L, -1)) s.openTags.push_back(static_cast<uint32_t>(lua_tonumber(L, -1)));
+      lua_pop(L, 1);
+    }
+  }
   return s;
 }
 

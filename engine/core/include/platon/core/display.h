@@ -55,6 +55,7 @@ struct View {
   std::string title;
   std::shared_ptr<const StageView> stage;  // null: only the heads-up lines and the overlay
   physics::MapPartId face = 0;             // the player's face (a flat stage shows only this one)
+  std::vector<uint32_t> openTags;          // doors open now: their lines are drawn open
   camera::CameraPose camera;
   double verticalFov = 0.785398;
   std::vector<std::string> hud;  // top left, one line each

@@ -4,6 +4,7 @@
 #pragma once
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "platon/core/scene.h"
 #include "platon/script/script_error.h"
@@ -19,6 +20,7 @@ struct GameStatus {
   physics::MapPartId face = 0;  // the player's face (its anchor's part)
   int32_t x = 0, y = 0;         // the player's position on it
   std::string message;          // the latest level message
+  std::vector<uint32_t> openTags;  // line tags the game lets the player through now (open doors)
 };
 
 class ScriptSystem final : public core::System {
