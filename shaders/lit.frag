@@ -19,6 +19,6 @@ void main() {
   float facing = max(dot(n, toEye), 0.0);
   vec3 halfway = normalize(lightDirection + toEye);
   float shine = pow(max(dot(n, halfway), 0.0), 32.0) * 0.25;
-  vec3 lit = vertexColor.rgb * (0.22 + 0.48 * diffuse + 0.30 * facing) + vec3(shine);
+  vec3 lit = vertexColor.rgb * (0.30 + 0.40 * diffuse + 0.35 * facing) + vec3(shine);
   fragColor = vec4(lit, vertexColor.a);
 }

@@ -1,0 +1,125 @@
+// Render tests: `platon shot` of a level on each solid and mesh stage, at a frame of its recorded
+// play-through, against a stored picture (tests/data/render/). Mesa's llvmpipe is deterministic
+// on one machine, but drivers and versions round edges differently: a pixel counts as different
+// when a channel is off by more than 40, and a picture passes with at most 1.5% such pixels and a
+// mean difference of at most 3 per channel. A second test shows that the tolerance still tells
+// levels apart. PLATON_UPDATE_RENDER_REFERENCES=1 writes the stored pictures anew.
+#include <SDL2/SDL.h>
+#include <SDL2/SDL_image.h>
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "platon/testing/temp_folder.h"
+
+namespace {
+
+struct Picture {
+  int width = 0, height = 0;
+  std::vector<uint8_t> rgba;
+};
+
+Picture load(const std::string& path) {
+  Picture p;
+  SDL_Surface* loaded = IMG_Load(path.c_str());
+  if (!loaded) return p;
+  SDL_Surface* rgba = SDL_ConvertSurfaceFormat(loaded, SDL_PIXELFORMAT_ABGR8888, 0);
+  SDL_FreeSurface(loaded);
+  if (!rgba) return p;
+  p.width = rgba->w, p.height = rgba->h;
+  for (int y = 0; y < rgba->h; ++y) {
+    const auto* row = static_cast<const uint8_t*>(rgba->pixels) + static_cast<size_t>(y) * rgba->pitch;
+    p.rgba.insert(p.rgba.end(), row, row + static_cast<size_t>(rgba->w) * 4);
+  }
+  SDL_FreeSurface(rgba);
+  return p;
+}
+
+struct Difference {
+  double differentShare = 1;  // of the pixels
+  double meanPerChannel = 255;
+};
+
+Difference compare(const Picture& a, const Picture& b) {
+  Difference d;
+  if (a.width != b.width || a.height != b.height || a.rgba.empty()) return d;
+  size_t different = 0;
+  double total = 0;
+  for (size_t i = 0; i < a.rgba.size(); i += 4) {
+    int worst = 0;
+    for (int c = 0; c < 3; ++c) {
+      const int delta = std::abs(int{a.rgba[i + c]} - int{b.rgba[i + c]});
+      worst = std::max(worst, delta);
+      total += delta;
+    }
+    different += worst > 40;
+  }
+  const double pixels = static_cast<double>(a.rgba.size() / 4);
+  d.differentShare = static_cast<double>(different) / pixels;
+  d.meanPerChannel = total / (pixels * 3);
+  return d;
+}
+
+struct Case {
+  const char* level;
+  const char* replay;
+  int frame;
+};
+
+const Case kCases[] = {
+    {"tetra_underside", "tetra_underside_drop", 1010}, {"cube_switches", "cube_switches_solve", 560},
+    {"octa_ring", "octa_ring_run", 1000},              {"dodeca_trapdoor", "dodeca_trapdoor_solve", 120},
+    {"icosa_drop", "icosa_drop_solve", 640},           {"prism", "prism_walk", 500},
+    {"soccer_ball", "soccer_ball_walk", 500},
+};
+
+class Shots : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() { IMG_Init(IMG_INIT_PNG); }
+  std::string shoot(const Case& c) {
+    const std::string out = folder.path(std::string(c.level) + ".png");
+    const std::string command = std::string("SDL_VIDEODRIVER=offscreen ") + PLATON_EXE + " shot " + c.level + " --input tests/replays/" +
+                                c.replay + ".replay --frame " + std::to_string(c.frame) + " --size 320x180 --out " + out + " > /dev/null";
+    EXPECT_EQ(std::system(command.c_str()), 0) << command;
+    return out;
+  }
+  static std::string reference(const Case& c) { return std::string("tests/data/render/") + c.level + ".png"; }
+  platon::testing::TempFolder folder{"shots"};
+};
+
+TEST_F(Shots, EveryStageLooksAsStored) {
+  const bool update = std::getenv("PLATON_UPDATE_RENDER_REFERENCES") != nullptr;
+  for (const Case& c : kCases) {
+    SCOPED_TRACE(c.level);
+    const std::string shot = shoot(c);
+    if (update) std::system(("cp " + shot + " " + reference(c)).c_str());
+    const Picture now = load(shot), stored = load(reference(c));
+    ASSERT_FALSE(now.rgba.empty()) << "no picture at " << shot << ": " << IMG_GetError();
+    ASSERT_FALSE(stored.rgba.empty()) << "no stored picture " << reference(c) << " (PLATON_UPDATE_RENDER_REFERENCES=1 writes it)";
+    const Difference d = compare(now, stored);
+    EXPECT_LE(d.differentShare, 0.015) << "pixels off by more than 40: " << d.differentShare * 100 << "%";
+    EXPECT_LE(d.meanPerChannel, 3.0) << "mean difference per channel";
+  }
+}
+
+// The tolerance is not so wide that any picture passes: each stage against every other's stored
+// picture fails it, and so does the same stage a second later.
+TEST_F(Shots, TheToleranceTellsStagesAndMomentsApart) {
+  std::vector<Picture> stored;
+  for (const Case& c : kCases) stored.push_back(load(reference(c)));
+  for (size_t i = 0; i < stored.size(); ++i)
+    for (size_t j = 0; j < stored.size(); ++j) {
+      if (i == j) continue;
+      const Difference d = compare(stored[i], stored[j]);
+      EXPECT_TRUE(d.differentShare > 0.015 || d.meanPerChannel > 3.0) << kCases[i].level << " passes as " << kCases[j].level;
+    }
+  Case later = kCases[0];
+  later.frame += 60;
+  const Difference d = compare(load(shoot(later)), stored[0]);
+  EXPECT_TRUE(d.differentShare > 0.015 || d.meanPerChannel > 3.0) << "a second later passes as the stored moment";
+}
+
+}  // namespace
