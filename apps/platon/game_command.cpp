@@ -40,7 +40,7 @@ class Game {
   Game(std::vector<CampaignLevel> levels, Progress progress)
       : levels_(std::move(levels)), progress_(std::move(progress)), registry_(engineRegistry(Presentation::Window)) {}
 
-  int run();
+  int run(bool quitAfterFirstFrame = false);
 
  private:
   bool load(size_t level);
@@ -202,7 +202,7 @@ void Game::draw(double alpha) {
   d->present(view, view_.drawing(alpha));
 }
 
-int Game::run() {
+int Game::run(bool quitAfterFirstFrame) {
   const size_t firstOpen = static_cast<size_t>(
       std::find_if(levels_.begin(), levels_.end(), [&](const CampaignLevel& l) { return !progress_.done(l.folder); }) - levels_.begin());
   if (!load(firstOpen < levels_.size() ? firstOpen : 0)) return 1;
@@ -224,6 +224,7 @@ int Game::run() {
     previous = now;
     stepSimulation(due, input.held);
     draw(screen_ == Screen::Playing ? clock_.alpha() : 1.0);
+    if (quitAfterFirstFrame) break;
     if (due == 0) std::this_thread::sleep_for(std::chrono::milliseconds(1));  // no vsync: do not spin
   }
   const script::GameStatus st = status();
@@ -237,10 +238,12 @@ int Game::run() {
 int gameCommand(int argc, char** argv) {
   std::string campaignPath = "levels/campaign.txt";
   std::string progressPath = Progress::defaultPath();
+  bool quitAfterFirstFrame = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--campaign" && i + 1 < argc) campaignPath = argv[++i];
     else if (a == "--progress" && i + 1 < argc) progressPath = argv[++i];
+    else if (a == "--quit-after-first-frame") quitAfterFirstFrame = true;  // for start-up benchmarks
     else {
       std::fprintf(stderr, "usage: platon game [--campaign levels/campaign.txt] [--progress file]\n"
                            "  keys: arrows or WASD move, Space jumps, R restarts, Esc pauses, F5 reloads,\n"
@@ -250,7 +253,7 @@ int gameCommand(int argc, char** argv) {
   }
   try {
     Game game(readCampaign(campaignPath), Progress(progressPath));
-    return game.run();
+    return game.run(quitAfterFirstFrame);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s\n", e.what());
     return 1;

@@ -3,6 +3,8 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <cstdlib>
+#include <cstring>
 #include <cstddef>
 #include <optional>
 #include <stdexcept>
@@ -40,7 +42,11 @@ Window::Window(const std::string& title, int width, int height) {
   SDL_GL_SetAttribute(SDL_GL_DOUBLEBUFFER, 1);
   SDL_GL_SetAttribute(SDL_GL_DEPTH_SIZE, 24);
   const Uint32 flags = SDL_WINDOW_OPENGL | SDL_WINDOW_RESIZABLE | SDL_WINDOW_ALLOW_HIGHDPI;
-  for (const int samples : {4, 0}) {  // multisampling where the driver has it
+  // Multisampling where the driver has it: 4 samples unless PLATON_MULTISAMPLE says how many (0:
+  // none, e.g. on a software rasterizer, where it costs several times the frame).
+  const char* wanted = std::getenv("PLATON_MULTISAMPLE");
+  const int first = wanted ? std::clamp(std::atoi(wanted), 0, 16) : 4;
+  for (const int samples : {first, 0}) {
     SDL_GL_SetAttribute(SDL_GL_MULTISAMPLEBUFFERS, samples > 0);
     SDL_GL_SetAttribute(SDL_GL_MULTISAMPLESAMPLES, samples);
     window_ = SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, width, height, flags);
@@ -53,6 +59,24 @@ Window::Window(const std::string& title, int width, int height) {
     const std::string reason = SDL_GetError();
     SDL_QuitSubSystem(SDL_INIT_VIDEO);
     throw std::runtime_error("no OpenGL 3.3 core context: " + reason);
+  }
+  // A software rasterizer (Mesa's llvmpipe) has multisampling but pays for it on every pixel, about
+  // twice the frame: without a say from PLATON_MULTISAMPLE, such a context is made again without it.
+  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  const bool software = renderer && (std::strstr(renderer, "llvmpipe") || std::strstr(renderer, "softpipe") || std::strstr(renderer, "swrast"));
+  if (software && !wanted && first > 0) {
+    SDL_GL_DeleteContext(context_);
+    SDL_DestroyWindow(window_);
+    SDL_GL_SetAttribute(SDL_GL_MULTISAMPLEBUFFERS, 0);
+    SDL_GL_SetAttribute(SDL_GL_MULTISAMPLESAMPLES, 0);
+    window_ = SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, width, height, flags);
+    context_ = window_ ? SDL_GL_CreateContext(window_) : nullptr;
+    if (!context_) {
+      const std::string reason = SDL_GetError();
+      if (window_) SDL_DestroyWindow(window_);
+      SDL_QuitSubSystem(SDL_INIT_VIDEO);
+      throw std::runtime_error("no OpenGL 3.3 core context: " + reason);
+    }
   }
   SDL_GL_SetSwapInterval(1);  // vsync when the driver has it; no error otherwise
   // Gamepads: those present now arrive as "added" events on the first poll, later ones when
