@@ -15,3 +15,10 @@ shot dodeca_trapdoor dodeca_trapdoor_solve 230
 shot icosa_drop icosa_drop_solve 640
 shot prism prism_walk 500
 shot soccer_ball soccer_ball_walk 500
+# The title screen, with two levels done (a progress file of its own, not the user's).
+data=$(mktemp -d)
+mkdir -p "$data/platon"
+printf 'cube_intro 1057 0\ntetra_around 988 1\n' > "$data/platon/progress.txt"
+XDG_DATA_HOME="$data" SDL_VIDEODRIVER=${SDL_VIDEODRIVER:-offscreen} build/apps/platon game --first-frame-shot docs/screenshots/title.png > /dev/null
+rm -rf "$data"
+echo "docs/screenshots/title.png: the title screen"

@@ -18,6 +18,7 @@
 #include "platon/core/display.h"
 #include "platon/core/fixed_step.h"
 #include "platon/core/live_scene.h"
+#include "platon/core/manifest.h"
 #include "platon/script/script_system.h"
 
 namespace platon::app {
@@ -38,9 +39,18 @@ std::string clockText(uint64_t frames) {
 class Game {
  public:
   Game(std::vector<CampaignLevel> levels, Progress progress)
-      : levels_(std::move(levels)), progress_(std::move(progress)), registry_(engineRegistry(Presentation::Window)) {}
+      : levels_(std::move(levels)), progress_(std::move(progress)), registry_(engineRegistry(Presentation::Window)) {
+    for (const CampaignLevel& l : levels_) {  // the names players see; a broken manifest shows its folder
+      try {
+        names_.push_back(core::loadManifest(l.scene).name);
+      } catch (const std::exception&) {
+        names_.push_back(l.folder);
+      }
+      if (names_.back().empty()) names_.back() = l.folder;
+    }
+  }
 
-  int run(bool quitAfterFirstFrame = false);
+  int run(bool quitAfterFirstFrame = false, const std::string& firstFrameShot = "");
 
  private:
   bool load(size_t level);
@@ -63,6 +73,7 @@ class Game {
   std::vector<std::string> titleLines() const;
 
   std::vector<CampaignLevel> levels_;
+  std::vector<std::string> names_;
   Progress progress_;
   core::SystemRegistry registry_;
   std::unique_ptr<core::LiveScene> live_;
@@ -105,8 +116,8 @@ std::vector<std::string> Game::titleLines() const {
   std::vector<std::string> lines{"PLATON", "a platformer on the faces of the solids", ""};
   for (size_t i = 0; i < levels_.size(); ++i) {
     const LevelRecord* r = progress_.record(levels_[i].folder);
-    std::string line = (i == level_ ? "> " : "  ") + std::to_string(i + 1) + ". " + levels_[i].folder;
-    if (r) line += "   done  " + clockText(r->bestFrames) + "  " + std::to_string(r->fewestDeaths) + " deaths";
+    std::string line = (i == level_ ? "> " : "  ") + std::to_string(i + 1) + ". " + names_[i];
+    if (r) line += "   done " + clockText(r->bestFrames) + ", " + std::to_string(r->fewestDeaths) + (r->fewestDeaths == 1 ? " death" : " deaths");
     if (i == level_) line += " <";
     lines.push_back(line);
   }
@@ -202,7 +213,7 @@ void Game::draw(double alpha) {
   d->present(view, view_.drawing(alpha));
 }
 
-int Game::run(bool quitAfterFirstFrame) {
+int Game::run(bool quitAfterFirstFrame, const std::string& firstFrameShot) {
   const size_t firstOpen = static_cast<size_t>(
       std::find_if(levels_.begin(), levels_.end(), [&](const CampaignLevel& l) { return !progress_.done(l.folder); }) - levels_.begin());
   if (!load(firstOpen < levels_.size() ? firstOpen : 0)) return 1;
@@ -224,6 +235,14 @@ int Game::run(bool quitAfterFirstFrame) {
     previous = now;
     stepSimulation(due, input.held);
     draw(screen_ == Screen::Playing ? clock_.alpha() : 1.0);
+    if (!firstFrameShot.empty()) {
+      try {
+        d->saveScreenshot(firstFrameShot);
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "%s\n", e.what());
+        return 1;
+      }
+    }
     if (quitAfterFirstFrame) break;
     if (due == 0) std::this_thread::sleep_for(std::chrono::milliseconds(1));  // no vsync: do not spin
   }
@@ -239,11 +258,13 @@ int gameCommand(int argc, char** argv) {
   std::string campaignPath = "levels/campaign.txt";
   std::string progressPath = Progress::defaultPath();
   bool quitAfterFirstFrame = false;
+  std::string firstFrameShot;  // the title screen as a PNG, then quit (docs, tests)
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--campaign" && i + 1 < argc) campaignPath = argv[++i];
     else if (a == "--progress" && i + 1 < argc) progressPath = argv[++i];
     else if (a == "--quit-after-first-frame") quitAfterFirstFrame = true;  // for start-up benchmarks
+    else if (a == "--first-frame-shot" && i + 1 < argc) firstFrameShot = argv[++i], quitAfterFirstFrame = true;
     else {
       std::fprintf(stderr, "usage: platon game [--campaign levels/campaign.txt] [--progress file]\n"
                            "  keys: arrows or WASD move, Space jumps, R restarts, Esc pauses, F5 reloads,\n"
@@ -253,7 +274,7 @@ int gameCommand(int argc, char** argv) {
   }
   try {
     Game game(readCampaign(campaignPath), Progress(progressPath));
-    return game.run(quitAfterFirstFrame);
+    return game.run(quitAfterFirstFrame, firstFrameShot);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s\n", e.what());
     return 1;

@@ -130,7 +130,9 @@ void RenderSystem::paint(const core::View& view, const core::DrawList& draw) {
 
   // Titles and menus: big lines in the middle, on a dark band.
   if (!view.centreText.empty()) {
-    const float size = 30 * dpi, step = size * 1.5f;
+    // As big as fits: a long level list shrinks to stay on the screen.
+    const float lines = static_cast<float>(view.centreText.size()) + 1.5f;
+    const float size = std::min(30 * dpi, height * 0.9f / (lines * 1.4f)), step = size * 1.4f;
     const float top = height / 2 - step * static_cast<float>(view.centreText.size()) / 2;
     g.batch.rectangle({0, top - size}, {width, step * static_cast<float>(view.centreText.size()) + 2 * size}, {0, 0, 0, 170});
     g.batch.flush(width, height);

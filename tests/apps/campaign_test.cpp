@@ -1,0 +1,102 @@
+// The campaign file and the progress file: a campaign names levels that exist, or says which line
+// does not; progress survives a damaged file (the lines it cannot read are dropped, the rest kept),
+// keeps the best time and fewest deaths, lives in the XDG data folder, and a failed save leaves
+// the old file whole and the game going.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "campaign.h"
+#include "platon/testing/temp_folder.h"
+
+using namespace platon::app;
+
+namespace {
+
+std::string read(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(Campaign, ListsItsLevelsInOrder) {
+  platon::testing::TempFolder folder("campaign");
+  folder.write("a/scene.lua", "return {}");
+  folder.write("b/scene.lua", "return {}");
+  const auto levels = readCampaign(folder.write("campaign.txt", "# the order\nb   # second in the file\n\na\n"));
+  ASSERT_EQ(levels.size(), 2u);
+  EXPECT_EQ(levels[0].folder, "b");
+  EXPECT_EQ(levels[0].scene, folder.path("b/scene.lua"));
+  EXPECT_EQ(levels[1].folder, "a");
+}
+
+TEST(Campaign, AMissingLevelIsNamedWithItsLine) {
+  platon::testing::TempFolder folder("campaign");
+  folder.write("a/scene.lua", "return {}");
+  const std::string path = folder.write("campaign.txt", "a\n\nnowhere\n");
+  try {
+    readCampaign(path);
+    FAIL() << "accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(path + ":3:1: level 'nowhere' has no "), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(readCampaign(folder.write("empty.txt", "# nothing\n")), std::runtime_error);
+  EXPECT_THROW(readCampaign(folder.path("no_such_file.txt")), std::runtime_error);
+}
+
+TEST(Progress, KeepsTheBestAndSurvivesADamagedFile) {
+  platon::testing::TempFolder folder("progress");
+  const std::string path = folder.path("deep/er/progress.txt");  // folders made on the first save
+  {
+    Progress p(path);
+    EXPECT_FALSE(p.done("cube_intro"));
+    EXPECT_TRUE(p.finish("cube_intro", 1200, 2));
+    EXPECT_TRUE(p.finish("cube_intro", 1500, 0));  // slower, fewer deaths: each record kept apart
+  }
+  Progress again(path);
+  ASSERT_TRUE(again.done("cube_intro"));
+  EXPECT_EQ(again.record("cube_intro")->bestFrames, 1200u);
+  EXPECT_EQ(again.record("cube_intro")->fewestDeaths, 0);
+  // Damage: garbage, a negative count, a half line. The good line survives; the rest is dropped.
+  std::ofstream(path, std::ios::app) << "\x01\x02 garbage\nprism -5 x\nsoccer_ball 77\nocta_ring 900 1\n";
+  Progress damaged(path);
+  EXPECT_TRUE(damaged.done("cube_intro"));
+  EXPECT_TRUE(damaged.done("octa_ring"));
+  EXPECT_FALSE(damaged.done("prism"));
+  EXPECT_FALSE(damaged.done("soccer_ball"));
+}
+
+TEST(Progress, AFailedSaveSaysWhyAndKeepsTheOldFile) {
+  platon::testing::TempFolder folder("progress");
+  const std::string path = folder.path("progress.txt");
+  Progress p(path);
+  ASSERT_TRUE(p.finish("a", 100, 0));
+  const std::string before = read(path);
+  // The save's new file cannot be made (a folder stands where it goes; root cannot write that
+  // either): the save fails, says so, and the old file is as it was.
+  std::filesystem::create_directories(path + ".new");
+  EXPECT_FALSE(p.finish("b", 50, 0));
+  EXPECT_NE(p.lastError().find("cannot write the progress file"), std::string::npos) << p.lastError();
+  EXPECT_EQ(read(path), before);
+  // Nor can a progress file live under a file.
+  folder.write("plain_file", "x");
+  Progress under(folder.path("plain_file/progress.txt"));
+  EXPECT_FALSE(under.finish("a", 1, 0));
+  EXPECT_FALSE(under.lastError().empty());
+}
+
+TEST(Progress, LivesInTheXdgDataFolder) {
+  setenv("XDG_DATA_HOME", "/tmp/xdg_here", 1);
+  EXPECT_EQ(Progress::defaultPath(), "/tmp/xdg_here/platon/progress.txt");
+  setenv("XDG_DATA_HOME", "relative/is/ignored", 1);  // the spec: only absolute paths count
+  setenv("HOME", "/home/someone", 1);
+  EXPECT_EQ(Progress::defaultPath(), "/home/someone/.local/share/platon/progress.txt");
+  unsetenv("XDG_DATA_HOME");
+  EXPECT_EQ(Progress::defaultPath(), "/home/someone/.local/share/platon/progress.txt");
+}
+
+}  // namespace

@@ -1,0 +1,78 @@
+// Gamepads through SDL's game-controller API, plugged in while the game runs: SDL's virtual
+// joystick stands in for a real pad. Once attached, the window picks it up (no restart), its A
+// button is a press of Enter for the menus and holds Jump for the player, the stick moves, Start
+// pauses; unplugged, it is let go and nothing stays held.
+#include <SDL2/SDL.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+
+#include "platon/core/display.h"
+#include "platon/core/input.h"
+#include "platon/core/scene.h"
+#include "platon/testing/temp_folder.h"
+
+using namespace platon;
+
+namespace {
+
+bool has(const core::WindowInput& in, core::Key k) { return std::find(in.pressed.begin(), in.pressed.end(), k) != in.pressed.end(); }
+
+TEST(Gamepad, PluggedInWhileRunningItDrivesTheMenusAndThePlayer) {
+  setenv("SDL_VIDEODRIVER", "offscreen", 1);
+  // SDL drops pad input while no window has the focus (right for the game); an offscreen window
+  // never has it.
+  setenv("SDL_JOYSTICK_ALLOW_BACKGROUND_EVENTS", "1", 1);
+  platon::testing::TempFolder folder("gamepad");
+  core::SystemRegistry registry;
+  registry.addPlugin("rendering", "platon_render", {PLATON_PLUGIN_DIR});
+  auto scene = core::loadScene(folder.write("scene.lua", "return { name = 'pad', systems = { 'rendering' } }"), registry);
+  core::Display& display = *scene->findSystem("rendering")->display();
+  display.pollEvents();  // the window is open, no pad yet
+  ASSERT_EQ(SDL_InitSubSystem(SDL_INIT_JOYSTICK), 0) << SDL_GetError();
+
+  SDL_VirtualJoystickDesc desc{};
+  desc.version = SDL_VIRTUAL_JOYSTICK_DESC_VERSION;
+  desc.type = SDL_JOYSTICK_TYPE_GAMECONTROLLER;
+  desc.naxes = SDL_CONTROLLER_AXIS_MAX;
+  desc.nbuttons = 15;  // A .. DPAD_RIGHT
+  desc.button_mask = (1u << 15) - 1;  // virtual button i is controller button i
+  desc.axis_mask = (1u << SDL_CONTROLLER_AXIS_MAX) - 1;
+  desc.name = "test pad";
+  const int device = SDL_JoystickAttachVirtualEx(&desc);
+  ASSERT_GE(device, 0) << SDL_GetError();
+  ASSERT_TRUE(SDL_IsGameController(device)) << "the virtual pad has no controller mapping";
+  SDL_Joystick* pad = SDL_JoystickOpen(device);
+  ASSERT_NE(pad, nullptr) << SDL_GetError();
+  display.pollEvents();  // the "added" event: the window opens the pad
+  ASSERT_NE(SDL_GameControllerFromInstanceID(SDL_JoystickInstanceID(pad)), nullptr) << "the window did not open the pad";
+
+  SDL_JoystickSetVirtualButton(pad, SDL_CONTROLLER_BUTTON_A, 1);
+  SDL_JoystickSetVirtualAxis(pad, SDL_CONTROLLER_AXIS_LEFTX, 30000);  // the stick right
+  SDL_JoystickUpdate();
+  core::WindowInput in = display.pollEvents();
+  EXPECT_TRUE(has(in, core::Key::Enter)) << "A is Enter in the menus";
+  EXPECT_TRUE(in.held & core::InputFrame::bit(core::Button::Jump)) << "A held is Jump";
+  EXPECT_TRUE(in.held & core::InputFrame::bit(core::Button::Right)) << "the stick right is Right";
+  EXPECT_FALSE(in.held & core::InputFrame::bit(core::Button::Left));
+
+  SDL_JoystickSetVirtualButton(pad, SDL_CONTROLLER_BUTTON_A, 0);
+  SDL_JoystickSetVirtualButton(pad, SDL_CONTROLLER_BUTTON_START, 1);
+  SDL_JoystickSetVirtualAxis(pad, SDL_CONTROLLER_AXIS_LEFTX, 0);
+  SDL_JoystickUpdate();
+  in = display.pollEvents();
+  EXPECT_TRUE(has(in, core::Key::Escape)) << "Start pauses";
+  EXPECT_FALSE(in.held & core::InputFrame::bit(core::Button::Jump));
+  EXPECT_FALSE(in.held & core::InputFrame::bit(core::Button::Right)) << "the stick back in the middle";
+
+  // Unplugged while Start is down: let go, nothing held.
+  SDL_JoystickSetVirtualButton(pad, SDL_CONTROLLER_BUTTON_DPAD_LEFT, 1);
+  SDL_JoystickUpdate();
+  SDL_JoystickClose(pad);
+  ASSERT_EQ(SDL_JoystickDetachVirtual(device), 0) << SDL_GetError();
+  in = display.pollEvents();
+  EXPECT_EQ(in.held, 0) << "an unplugged pad holds nothing";
+}
+
+}  // namespace
