@@ -5,9 +5,7 @@ return {
   stage = { level = "icosa_strip.level" },
   gravity = 0.35,
   scripts = {
-    rules = "scripts/rules/game.lua",
-    player = "scripts/player.lua",
-    progression = "scripts/progression.lua",
+    preset = "game",  -- the game's rules, player and progression (docs/scripting.md)
     level = "level.lua",
   },
 }

@@ -5,8 +5,6 @@ return {
   stage = { level = "soccer_ball.level" },
   gravity = 0.35,
   scripts = {
-    rules = "scripts/rules/game.lua",
-    player = "scripts/player.lua",
-    progression = "scripts/progression.lua",
+    preset = "game",  -- the game's rules, player and progression (docs/scripting.md)
   },
 }

@@ -292,7 +292,7 @@ SceneManifest loadManifest(const std::string& path) {
   m.seed = static_cast<uint32_t>(numberField(path, root, "seed", m.seed, 0, 4294967295.0));
   if (const DataValue* scripts = root.field("scripts")) {
     if (!scripts->table()) fieldError(path, *scripts, "'scripts' must be a table");
-    checkKeys(path, *scripts, {"rules", "player", "progression", "level", "mods"});
+    checkKeys(path, *scripts, {"preset", "rules", "player", "progression", "level", "mods"});
     auto script = [&](const char* key) {
       std::string p = stringField(path, *scripts, key, "");
       if (p.empty()) return p;
@@ -305,6 +305,15 @@ SceneManifest loadManifest(const std::string& path) {
     m.rules = script("rules");
     m.player = script("player");
     m.progression = script("progression");
+    // preset = "game": the game's own rules, player and progression, for any of the three the
+    // manifest does not name itself (every campaign level uses them).
+    if (const DataValue* preset = scripts->field("preset")) {
+      if (!preset->string() || *preset->string() != "game")
+        fieldError(path, *preset, "unknown script preset (known: \"game\")");
+      if (m.rules.empty()) m.rules = "scripts/rules/game.lua";
+      if (m.player.empty()) m.player = "scripts/player.lua";
+      if (m.progression.empty()) m.progression = "scripts/progression.lua";
+    }
     m.level = script("level");
     if (const DataValue* mods = scripts->field("mods")) {
       if (!mods->table()) fieldError(path, *mods, "'mods' must be a list of paths");

@@ -63,6 +63,21 @@ TEST(Manifest, AcceptsCommentsAndListsSystems) {
   EXPECT_EQ(m.level, m.directory + "/l.lua");
 }
 
+// preset = "game" fills in the game's rules, player and progression; a script the manifest names
+// itself wins; an unknown preset is an error at its place.
+TEST(Manifest, TheGamePresetFillsInWhatIsNotNamed) {
+  Folder folder("manifest_preset");
+  const core::SceneManifest m = core::loadManifest(folder.write(
+      "scene.lua", "return { systems = { 'scripting' }, scripts = { preset = 'game', player = 'my_player.lua' } }"));
+  EXPECT_EQ(m.rules, "scripts/rules/game.lua");
+  EXPECT_EQ(m.progression, "scripts/progression.lua");
+  EXPECT_EQ(m.player, m.directory + "/my_player.lua");
+  EXPECT_EQ(manifestError("return { systems = { 'scripting' }, scripts = { preset = 'arcade' } }"),
+            "scene.lua:1:58: unknown script preset (known: \"game\")");
+  EXPECT_EQ(manifestError("return { scripts = { preset = 'game' } }"),
+            "scene.lua:1:20: the scene has scripts but does not list \"scripting\" in its systems");
+}
+
 TEST(Systems, ASceneWithoutScriptsCreatesNoLuaState) {
   Folder folder("no_scripts");
   const std::string path = folder.write("scene.lua", "return { name = 'bare', stage = { solid = 'cube' } }");
