@@ -1,6 +1,8 @@
 #include "campaign.h"
 
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -40,6 +42,8 @@ std::vector<CampaignLevel> readCampaign(const std::string& path) {
   for (int number = 1; std::getline(in, line); ++number) {
     const std::string folder = trim(line.substr(0, line.find('#')));
     if (folder.empty()) continue;
+    if (folder.find_first_of(" \t") != std::string::npos)
+      throw std::runtime_error(path + ":" + std::to_string(number) + ":1: '" + folder + "': one folder a line, no spaces in its name");
     const std::string scene = base + folder + "/scene.lua";
     if (!isFile(scene))
       throw std::runtime_error(path + ":" + std::to_string(number) + ":1: level '" + folder + "' has no " + scene);
@@ -59,11 +63,18 @@ std::string Progress::defaultPath() {
 Progress::Progress(std::string path) : path_(std::move(path)) {
   std::ifstream in(path_);
   std::string line;
+  auto count = [](const std::string& word, uint64_t limit, uint64_t& out) {  // digits only: no sign, no wrap
+    if (word.empty() || word.size() > 18 || word.find_first_not_of("0123456789") != std::string::npos) return false;
+    out = std::stoull(word);
+    return out <= limit;
+  };
   while (std::getline(in, line)) {
     std::istringstream fields(line);
-    std::string folder;
-    LevelRecord r;
-    if (fields >> folder >> r.bestFrames >> r.fewestDeaths && r.fewestDeaths >= 0 && folder[0] != '#') records_[folder] = r;
+    std::string folder, frames, deaths, extra;
+    uint64_t f = 0, d = 0;
+    if (!(fields >> folder >> frames >> deaths) || (fields >> extra) || folder[0] == '#') continue;
+    if (!count(frames, uint64_t{1} << 53, f) || !count(deaths, 1u << 30, d)) continue;
+    records_[folder] = {f, static_cast<int>(d)};
   }
 }
 
@@ -81,16 +92,23 @@ bool Progress::finish(const std::string& folder, uint64_t frames, int deaths) {
   const size_t slash = path_.find_last_of('/');
   if (slash != std::string::npos) makeFolders(path_.substr(0, slash));
   const std::string temporary = path_ + ".new";
-  {
-    std::ofstream out(temporary, std::ios::trunc);
-    out << "# Platon progress: level, best time in frames (60 a second), fewest deaths\n";
-    for (const auto& [name, r] : records_) out << name << " " << r.bestFrames << " " << r.fewestDeaths << "\n";
-    out.flush();
-    if (!out) {
-      lastError_ = temporary + ": cannot write the progress file";
-      std::remove(temporary.c_str());
-      return false;
-    }
+  std::string text = "# Platon progress: level, best time in frames (60 a second), fewest deaths\n";
+  for (const auto& [name, r] : records_) text += name + " " + std::to_string(r.bestFrames) + " " + std::to_string(r.fewestDeaths) + "\n";
+  // Written whole and flushed to the disk before the rename, so that even a power cut leaves the
+  // old file or the new one.
+  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  bool written = fd >= 0;
+  for (size_t done = 0; written && done < text.size();) {
+    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if (n <= 0) written = false;
+    else done += static_cast<size_t>(n);
+  }
+  written = written && ::fsync(fd) == 0;
+  if (fd >= 0) ::close(fd);
+  if (!written) {
+    lastError_ = temporary + ": cannot write the progress file";
+    if (fd >= 0) std::remove(temporary.c_str());
+    return false;
   }
   if (std::rename(temporary.c_str(), path_.c_str()) != 0) {
     lastError_ = path_ + ": cannot replace the progress file";

@@ -81,7 +81,9 @@ class Game {
   core::FixedStep clock_{60};
   core::InputEdges edges_;
   Screen screen_ = Screen::Title;
-  size_t level_ = 0;
+  size_t level_ = 0;     // the level loaded (playing, or shown behind the title)
+  size_t selected_ = 0;  // the title screen's cursor
+  bool loaded_ = false;  // a load happened this loop: its time is not play time
   int menuItem_ = 0;
   bool quit_ = false;
   bool showFps_ = false;
@@ -106,6 +108,8 @@ bool Game::load(size_t level) {
   if (previous) rendering->carryOver(next->scene(), *previous);  // the same window
   live_ = std::move(next);
   level_ = level;
+  loaded_ = true;
+  notice_.clear();
   view_ = GameView{};
   view_.step(live_->scene(), status(), 1.0 / clock_.hz());
   edges_.reset();
@@ -116,9 +120,9 @@ std::vector<std::string> Game::titleLines() const {
   std::vector<std::string> lines{"PLATON", "a platformer on the faces of the solids", ""};
   for (size_t i = 0; i < levels_.size(); ++i) {
     const LevelRecord* r = progress_.record(levels_[i].folder);
-    std::string line = (i == level_ ? "> " : "  ") + std::to_string(i + 1) + ". " + names_[i];
+    std::string line = (i == selected_ ? "> " : "  ") + std::to_string(i + 1) + ". " + names_[i];
     if (r) line += "   done " + clockText(r->bestFrames) + ", " + std::to_string(r->fewestDeaths) + (r->fewestDeaths == 1 ? " death" : " deaths");
-    if (i == level_) line += " <";
+    if (i == selected_) line += " <";
     lines.push_back(line);
   }
   lines.push_back("");
@@ -134,10 +138,12 @@ void Game::handle(const core::WindowInput& input) {
       case Screen::Title:
         if (key == core::Key::Escape) quit_ = true;
         if ((key == core::Key::Up || key == core::Key::Down) && levels_.size() > 1) {
-          const size_t next = key == core::Key::Up ? (level_ + levels_.size() - 1) % levels_.size() : (level_ + 1) % levels_.size();
-          load(next);
+          // The cursor moves whether or not the level loads (a broken one says why on the HUD);
+          // behind the title, the chosen level's stage when it does.
+          selected_ = key == core::Key::Up ? (selected_ + levels_.size() - 1) % levels_.size() : (selected_ + 1) % levels_.size();
+          load(selected_);
         }
-        if (key == core::Key::Enter && load(level_)) play();
+        if (key == core::Key::Enter && load(selected_)) play();
         break;
       case Screen::Playing:
         if (key == core::Key::Escape) screen_ = Screen::Paused, menuItem_ = 0;
@@ -153,7 +159,7 @@ void Game::handle(const core::WindowInput& input) {
         if (key == core::Key::Enter) {
           if (menuItem_ == 0) screen_ = Screen::Playing;
           if (menuItem_ == 1 && load(level_)) play();
-          if (menuItem_ == 2) screen_ = Screen::Title;
+          if (menuItem_ == 2) screen_ = Screen::Title, selected_ = level_;
           if (menuItem_ == 3) quit_ = true;
         }
         break;
@@ -163,6 +169,7 @@ void Game::handle(const core::WindowInput& input) {
             if (load(level_ + 1)) play();
           } else {
             screen_ = Screen::Title;
+            selected_ = level_;
           }
         }
         break;
@@ -216,7 +223,11 @@ void Game::draw(double alpha) {
 int Game::run(bool quitAfterFirstFrame, const std::string& firstFrameShot) {
   const size_t firstOpen = static_cast<size_t>(
       std::find_if(levels_.begin(), levels_.end(), [&](const CampaignLevel& l) { return !progress_.done(l.folder); }) - levels_.begin());
-  if (!load(firstOpen < levels_.size() ? firstOpen : 0)) return 1;
+  // The first level not done yet behind the title; if it will not load, the next that does.
+  selected_ = firstOpen < levels_.size() ? firstOpen : 0;
+  bool any = false;
+  for (size_t k = 0; k < levels_.size() && !any; ++k) any = load((selected_ + k) % levels_.size());
+  if (!any) return 1;
   try {
     display()->pollEvents();  // opens the window
   } catch (const std::exception& e) {
@@ -229,7 +240,12 @@ int Game::run(bool quitAfterFirstFrame, const std::string& firstFrameShot) {
     core::Display* d = display();
     if (!d) return 1;
     const core::WindowInput input = d->pollEvents();
+    loaded_ = false;
     handle(input);
+    if (quit_) break;
+    d = display();  // a load in handle() replaced the scene, and with it the rendering system
+    if (!d) return 1;
+    if (loaded_) previous = std::chrono::steady_clock::now();  // loading is not play time
     const auto now = std::chrono::steady_clock::now();
     const int due = clock_.advance(std::chrono::duration_cast<std::chrono::nanoseconds>(now - previous).count());
     previous = now;

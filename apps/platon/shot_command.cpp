@@ -52,7 +52,14 @@ int shotCommand(int argc, char** argv) {
   int width = 1280, height = 720;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--frame" && i + 1 < argc) frames = std::strtoull(argv[++i], nullptr, 10);
+    if (a == "--frame" && i + 1 < argc) {
+      const std::string n = argv[++i];
+      if (n.empty() || n.size() > 9 || n.find_first_not_of("0123456789") != std::string::npos) {
+        std::fprintf(stderr, "--frame %s: want a frame number, 0 to 999999999\n", n.c_str());
+        return 2;
+      }
+      frames = std::stoull(n);
+    }
     else if (a == "--size" && i + 1 < argc) {
       if (std::sscanf(argv[++i], "%dx%d", &width, &height) != 2 || width < 16 || height < 16 || width > 8192 || height > 8192) {
         std::fprintf(stderr, "--size %s: want WxH, 16 to 8192 pixels each way\n", argv[i]);
@@ -93,9 +100,12 @@ int shotCommand(int argc, char** argv) {
     if (!st.message.empty()) v.hud.push_back(st.message);
     v.error = live.lastError();
     display.present(v, view.drawing(1.0));
-    display.saveScreenshot(out);
     int w = 0, h = 0;
     display.capture(w, h);
+    if (w != width || h != height)
+      throw std::runtime_error(out + ": the window came out " + std::to_string(w) + "x" + std::to_string(h) + ", not " +
+                               std::to_string(width) + "x" + std::to_string(height));
+    display.saveScreenshot(out);
     std::printf("%s: %dx%d, frame %llu of %s\n", out.c_str(), w, h, static_cast<unsigned long long>(frames), scenePathOf(level).c_str());
     return 0;
   } catch (const std::exception& e) {

@@ -45,6 +45,13 @@ TEST(Campaign, AMissingLevelIsNamedWithItsLine) {
     EXPECT_NE(std::string(e.what()).find(path + ":3:1: level 'nowhere' has no "), std::string::npos) << e.what();
   }
   EXPECT_THROW(readCampaign(folder.write("empty.txt", "# nothing\n")), std::runtime_error);
+  folder.write("my level/scene.lua", "return {}");
+  try {
+    readCampaign(folder.write("spaces.txt", "a\nmy level\n"));
+    FAIL() << "a folder with a space accepted (the progress file could not hold it)";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("spaces.txt:2:1: 'my level': one folder a line, no spaces"), std::string::npos) << e.what();
+  }
   EXPECT_THROW(readCampaign(folder.path("no_such_file.txt")), std::runtime_error);
 }
 
@@ -62,12 +69,15 @@ TEST(Progress, KeepsTheBestAndSurvivesADamagedFile) {
   EXPECT_EQ(again.record("cube_intro")->bestFrames, 1200u);
   EXPECT_EQ(again.record("cube_intro")->fewestDeaths, 0);
   // Damage: garbage, a negative count, a half line. The good line survives; the rest is dropped.
-  std::ofstream(path, std::ios::app) << "\x01\x02 garbage\nprism -5 x\nsoccer_ball 77\nocta_ring 900 1\n";
+  std::ofstream(path, std::ios::app) << "\x01\x02 garbage\nprism -5 0\nicosa_drop 18446744073709551615 0\nsoccer_ball 77\n"
+                                          "cube_lift 5 0 extra\nocta_ring 900 1\n";
   Progress damaged(path);
   EXPECT_TRUE(damaged.done("cube_intro"));
   EXPECT_TRUE(damaged.done("octa_ring"));
-  EXPECT_FALSE(damaged.done("prism"));
-  EXPECT_FALSE(damaged.done("soccer_ball"));
+  EXPECT_FALSE(damaged.done("prism"));        // a negative time: no wrap to 2^64 - 5
+  EXPECT_FALSE(damaged.done("icosa_drop"));   // a time past any game
+  EXPECT_FALSE(damaged.done("soccer_ball"));  // half a line
+  EXPECT_FALSE(damaged.done("cube_lift"));    // one field too many
 }
 
 TEST(Progress, AFailedSaveSaysWhyAndKeepsTheOldFile) {
@@ -90,6 +100,7 @@ TEST(Progress, AFailedSaveSaysWhyAndKeepsTheOldFile) {
 }
 
 TEST(Progress, LivesInTheXdgDataFolder) {
+  const std::string home = std::getenv("HOME") ? std::getenv("HOME") : "";
   setenv("XDG_DATA_HOME", "/tmp/xdg_here", 1);
   EXPECT_EQ(Progress::defaultPath(), "/tmp/xdg_here/platon/progress.txt");
   setenv("XDG_DATA_HOME", "relative/is/ignored", 1);  // the spec: only absolute paths count
@@ -97,6 +108,7 @@ TEST(Progress, LivesInTheXdgDataFolder) {
   EXPECT_EQ(Progress::defaultPath(), "/home/someone/.local/share/platon/progress.txt");
   unsetenv("XDG_DATA_HOME");
   EXPECT_EQ(Progress::defaultPath(), "/home/someone/.local/share/platon/progress.txt");
+  setenv("HOME", home.c_str(), 1);
 }
 
 }  // namespace

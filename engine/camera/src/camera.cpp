@@ -50,16 +50,18 @@ void Camera::resize(int width, int height) {
 }
 
 void Camera::lerp(const CameraTarget& target, double seconds) {
+  if (!(seconds > 0)) return;  // no time (or NaN): nowhere to go
   const CameraPose goal = wanted(target);
   // Exponential approach, the same after any split of the time; then capped at the top speed.
-  double t = 1 - std::exp(-std::max(seconds, 0.0) / settings_.settleSeconds);
+  double t = 1 - std::exp(-seconds / std::max(settings_.settleSeconds, 1e-9));
   Eigen::Quaterniond from = pose_.orientation;
   if (from.dot(goal.orientation) < 0) from.coeffs() = -from.coeffs();  // the short way round
   const double gap = from.angularDistance(goal.orientation);
-  if (gap * t > settings_.topSpeed * seconds) t = settings_.topSpeed * seconds / gap;
+  const double reach = std::max(settings_.topSpeed, 0.0) * seconds;
+  if (gap * t > reach) t = reach / gap;  // gap > 0 here
   pose_.orientation = from.slerp(t, goal.orientation).normalized();
   pose_.centre = goal.centre;
-  const double z = 1 - std::exp(-std::max(seconds, 0.0) / settings_.zoomSeconds);
+  const double z = 1 - std::exp(-seconds / std::max(settings_.zoomSeconds, 1e-9));
   pose_.distance += z * (goal.distance - pose_.distance);
 }
 

@@ -36,7 +36,8 @@ std::vector<std::string> splitLines(const std::string& text) {
 }  // namespace
 
 struct RenderSystem::Gl {
-  Window window{"Platon", 1280, 720};  // first: the context outlives the objects below
+  Gl(int width, int height) : window("Platon", width, height) {}
+  Window window;  // first: the context outlives the objects below
   StageRenderer stage;
   Batch batch;
   Text text;
@@ -46,7 +47,7 @@ RenderSystem::RenderSystem() = default;
 RenderSystem::~RenderSystem() = default;
 
 RenderSystem::Gl& RenderSystem::gl() {
-  if (!gl_) gl_ = std::make_shared<Gl>();
+  if (!gl_) gl_ = std::make_shared<Gl>(firstWidth_, firstHeight_);
   return *gl_;
 }
 
@@ -59,7 +60,13 @@ void RenderSystem::carryOver(core::Scene&, core::System& previous) {
 
 core::WindowInput RenderSystem::pollEvents() { return gl().window.pollEvents(); }
 
-void RenderSystem::resize(int width, int height) { gl().window.resize(width, height); }
+void RenderSystem::resize(int width, int height) {
+  if (!gl_) {  // not open yet: open at that size (an offscreen surface cannot grow later)
+    firstWidth_ = width, firstHeight_ = height;
+    return;
+  }
+  gl_->window.resize(width, height);
+}
 
 void RenderSystem::present(const core::View& view, const core::DrawList& draw) {
   const uint64_t now = SDL_GetPerformanceCounter();
@@ -105,8 +112,9 @@ void RenderSystem::paint(const core::View& view, const core::DrawList& draw) {
   for (const core::DrawShape& s : draw.shapes()) {
     if (!s.place.screen) {
       Point2 at;
-      if (s.kind == core::ShapeKind::Text && g.stage.project(s.place.face, s.at, at))
-        g.text.draw(std::string(draw.text(s)), at, std::max(12.0f, s.size) * dpi, s.color);
+      float pixels = 0;  // the text's height on the screen, as far away as its face is
+      if (s.kind == core::ShapeKind::Text && g.stage.project(s.place.face, s.at, s.size, at, pixels))
+        g.text.draw(std::string(draw.text(s)), at, std::max(6.0f, pixels), s.color);
       continue;
     }
     auto at = [&](Point2 p) { return Point2{p.x * dpi, p.y * dpi}; };

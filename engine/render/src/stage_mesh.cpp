@@ -86,6 +86,13 @@ bool StageMesh::toStage(physics::MapPartId part, core::Point2 p, float lift, Vec
   return true;
 }
 
+bool StageMesh::normalOf(physics::MapPartId part, Vector3f& out) const {
+  const Frame* f = frameOf(part);
+  if (!f) return false;
+  out = f->normal;
+  return true;
+}
+
 void StageMesh::addFace(const core::ViewFace& face, size_t index) {
   const Frame& f = frames_[index];
   auto at = [&](core::Point2 p, float lift) { return Vector3f(f.origin + p.x * f.xAxis + p.y * f.yAxis + lift * edge_ * f.normal); };
@@ -148,8 +155,9 @@ void StageMesh::addWall(const Frame& f, const core::ViewLine& line, std::vector<
 
 void StageMesh::addShapes(const core::DrawList& draw, physics::MapPartId onlyFace, std::vector<LitVertex>& out) const {
   const auto points = draw.points();
-  for (const core::DrawShape& s : draw.shapes()) {
+  for (core::DrawShape s : draw.shapes()) {
     if (s.place.screen || s.kind == core::ShapeKind::Text) continue;
+    if (s.color.a == kGlow) s.color.a = 255;  // the glow marker is the stage's own, not the scripts'
     if (flat_ && s.place.face != onlyFace) continue;
     const Frame* f = frameOf(s.place.face);
     if (!f) continue;

@@ -37,6 +37,7 @@ class StageMesh {
 
   // A face point in stage space; false when the part is not on the stage.
   bool toStage(physics::MapPartId part, core::Point2 p, float lift, Eigen::Vector3f& out) const;
+  bool normalOf(physics::MapPartId part, Eigen::Vector3f& out) const;
   float scale() const { return scale_; }  // stage units per level unit
 
  private:

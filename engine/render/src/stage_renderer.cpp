@@ -1,5 +1,6 @@
 #include "stage_renderer.h"
 
+#include <cmath>
 #include <cstddef>
 
 #include "shaders.h"
@@ -52,7 +53,11 @@ void StageRenderer::drawBuffer(const Buffer& buffer) {
 
 void StageRenderer::draw(const core::View& view, const core::DrawList& draw, int width, int height) {
   width_ = width, height_ = height;
-  if (!view.stage) return;
+  if (!view.stage) {  // nothing to draw, and nothing to project onto
+    stage_.reset();
+    mesh_.reset();
+    return;
+  }
   if (view.stage != stage_) {
     stage_ = view.stage;
     mesh_.emplace(*stage_);
@@ -73,6 +78,7 @@ void StageRenderer::draw(const core::View& view, const core::DrawList& draw, int
   // Everything drawn lies within the solid's radius plus the tallest thing on a face.
   viewProjectionMatrix_ = camera::projectionMatrix(pose, view.verticalFov, aspect, 1.3) * camera::viewMatrix(pose);
   const Eigen::Vector3f eye = pose.eye().cast<float>();
+  eyePosition_ = eye;
   const Eigen::Vector3f light =
       (pose.orientation * Eigen::Vector3d(-0.35, 0.6, 1.0)).normalized().cast<float>();  // over the left shoulder
 
@@ -91,13 +97,22 @@ void StageRenderer::draw(const core::View& view, const core::DrawList& draw, int
   glDisable(GL_DEPTH_TEST);
 }
 
-bool StageRenderer::project(physics::MapPartId part, core::Point2 p, core::Point2& pixel) const {
-  Eigen::Vector3f at;
-  if (!mesh_ || !mesh_->toStage(part, p, 0.01f, at)) return false;
-  const Eigen::Vector4f clip = viewProjectionMatrix_ * Eigen::Vector4f(at.x(), at.y(), at.z(), 1);
-  if (clip.w() <= 1e-6f) return false;
-  pixel = {(clip.x() / clip.w() * 0.5f + 0.5f) * static_cast<float>(width_),
+bool StageRenderer::project(physics::MapPartId part, core::Point2 p, float height, core::Point2& pixel, float& pixels) const {
+  Eigen::Vector3f at, above, normal;
+  if (!mesh_ || !mesh_->toStage(part, p, 0.01f, at) || !mesh_->toStage(part, {p.x, p.y + height}, 0.01f, above) ||
+      !mesh_->normalOf(part, normal))
+    return false;
+  if (normal.dot(eyePosition_ - at) <= 0) return false;  // on a face turned away: hidden behind the solid
+  auto toPixels = [&](const Eigen::Vector3f& q, core::Point2& out) {
+    const Eigen::Vector4f clip = viewProjectionMatrix_ * Eigen::Vector4f(q.x(), q.y(), q.z(), 1);
+    if (clip.w() <= 1e-6f) return false;
+    out = {(clip.x() / clip.w() * 0.5f + 0.5f) * static_cast<float>(width_),
            (0.5f - clip.y() / clip.w() * 0.5f) * static_cast<float>(height_)};
+    return true;
+  };
+  core::Point2 top;
+  if (!toPixels(at, pixel) || !toPixels(above, top)) return false;
+  pixels = std::hypot(top.x - pixel.x, top.y - pixel.y);
   return true;
 }
 

@@ -19,9 +19,10 @@ class StageRenderer {
   StageRenderer& operator=(const StageRenderer&) = delete;
 
   void draw(const core::View& view, const core::DrawList& draw, int width, int height);
-  // Where a face point shows on the screen, in pixels from the top left, after draw(); false
-  // behind the eye or off the stage.
-  bool project(physics::MapPartId part, core::Point2 p, core::Point2& pixel) const;
+  // Where a face point shows on the screen, in pixels from the top left, after draw(), and how
+  // many pixels `height` face units above it span there; false on a face turned away from the
+  // eye, behind it, or off the stage.
+  bool project(physics::MapPartId part, core::Point2 p, float height, core::Point2& pixel, float& pixels) const;
 
  private:
   struct Buffer {
@@ -38,6 +39,7 @@ class StageRenderer {
   std::optional<StageMesh> mesh_;
   std::vector<LitVertex> scratch_;
   Eigen::Matrix4f viewProjectionMatrix_ = Eigen::Matrix4f::Identity();
+  Eigen::Vector3f eyePosition_ = Eigen::Vector3f::Zero();  // stage space, for project()
   int width_ = 1, height_ = 1;
 };
 

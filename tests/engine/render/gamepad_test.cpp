@@ -66,13 +66,18 @@ TEST(Gamepad, PluggedInWhileRunningItDrivesTheMenusAndThePlayer) {
   EXPECT_FALSE(in.held & core::InputFrame::bit(core::Button::Jump));
   EXPECT_FALSE(in.held & core::InputFrame::bit(core::Button::Right)) << "the stick back in the middle";
 
-  // Unplugged while Start is down: let go, nothing held.
+  // The d-pad, then unplugged: the window lets the pad go (its handle closed), nothing held.
+  SDL_JoystickSetVirtualButton(pad, SDL_CONTROLLER_BUTTON_START, 0);
   SDL_JoystickSetVirtualButton(pad, SDL_CONTROLLER_BUTTON_DPAD_LEFT, 1);
   SDL_JoystickUpdate();
+  in = display.pollEvents();
+  EXPECT_TRUE(in.held & core::InputFrame::bit(core::Button::Left)) << "the d-pad left is Left";
+  const SDL_JoystickID id = SDL_JoystickInstanceID(pad);
   SDL_JoystickClose(pad);
   ASSERT_EQ(SDL_JoystickDetachVirtual(device), 0) << SDL_GetError();
   in = display.pollEvents();
   EXPECT_EQ(in.held, 0) << "an unplugged pad holds nothing";
+  EXPECT_EQ(SDL_GameControllerFromInstanceID(id), nullptr) << "the window did not close the unplugged pad";
 }
 
 }  // namespace

@@ -45,6 +45,12 @@ class Renderer : public ::testing::Test {
     face.xAxis = {1, 0, 0}, face.yAxis = {0, 1, 0}, face.normal = {0, 0, 1};
     face.lines.push_back({{100, 100}, {900, 100}, 1, 0});
     stage->faces.push_back(face);
+    // Face 3: the cube's bottom, 1000 below, facing down: away from the camera.
+    core::ViewFace bottom;
+    bottom.part = 3;
+    bottom.corners = face.corners;
+    bottom.origin = {0, 1000, -1000}, bottom.xAxis = {1, 0, 0}, bottom.yAxis = {0, -1, 0}, bottom.normal = {0, 0, -1};
+    stage->faces.push_back(bottom);
     stage->centre = {500, 500, -500};
     stage->radius = 866;
     stage->edge = 1000;
@@ -77,7 +83,8 @@ std::string show(Rgba p) {
 TEST_F(Renderer, DrawsTheFaceItsLinesAndTheScriptsShapes) {
   core::DrawList draw(true);
   draw.circle(core::Place::onFace(0), {500, 500}, 50, {10, 200, 10, 255});
-  draw.circle(core::Place::onFace(3), {500, 500}, 400, {200, 10, 200, 255});  // another face: not shown
+  draw.circle(core::Place::onFace(3), {500, 500}, 400, {200, 10, 200, 255});  // on the far side: hidden by the solid
+  draw.text(core::Place::onFace(3), {100, 900}, "far side", 300, {200, 10, 200, 255});
   display->present(squareFace(), draw);
   int w = 0, h = 0;
   const std::vector<uint8_t> pixels = display->capture(w, h);
@@ -97,7 +104,7 @@ TEST_F(Renderer, DrawsTheFaceItsLinesAndTheScriptsShapes) {
   for (int y = 0; y < h; y += 7)
     for (int x = 0; x < w; x += 7) {
       const Rgba p = at(pixels, w, x, y);
-      ASSERT_FALSE(p.r > 120 && p.b > 120 && p.g < 60) << "another face's shape at " << x << ", " << y;
+      ASSERT_FALSE(p.r > 120 && p.b > 120 && p.g < 60) << "the far side's shape or text shows at " << x << ", " << y;
     }
 }
 

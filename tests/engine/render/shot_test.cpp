@@ -109,7 +109,12 @@ TEST_F(Shots, EveryStageLooksAsStored) {
 // picture fails it, and so does the same stage a second later.
 TEST_F(Shots, TheToleranceTellsStagesAndMomentsApart) {
   std::vector<Picture> stored;
-  for (const Case& c : kCases) stored.push_back(load(reference(c)));
+  for (const Case& c : kCases) {
+    stored.push_back(load(reference(c)));
+    ASSERT_FALSE(stored.back().rgba.empty()) << "no stored picture " << reference(c);
+    ASSERT_EQ(stored.back().width, stored.front().width);
+    ASSERT_EQ(stored.back().height, stored.front().height);
+  }
   for (size_t i = 0; i < stored.size(); ++i)
     for (size_t j = 0; j < stored.size(); ++j) {
       if (i == j) continue;
@@ -118,7 +123,10 @@ TEST_F(Shots, TheToleranceTellsStagesAndMomentsApart) {
     }
   Case later = kCases[0];
   later.frame += 60;
-  const Difference d = compare(load(shoot(later)), stored[0]);
+  const Picture moved = load(shoot(later));
+  ASSERT_EQ(moved.width, stored[0].width);
+  ASSERT_EQ(moved.height, stored[0].height);
+  const Difference d = compare(moved, stored[0]);
   EXPECT_TRUE(d.differentShare > 0.015 || d.meanPerChannel > 3.0) << "a second later passes as the stored moment";
 }
 

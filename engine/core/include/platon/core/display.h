@@ -91,7 +91,8 @@ class Display {
   // std::runtime_error when there is no display).
   virtual WindowInput pollEvents() = 0;
   virtual void present(const View& view, const DrawList& draw) = 0;
-  // The drawable's size in pixels (a high-DPI screen has more than the window's points).
+  // The window's size; before the window opens, the size it opens at (the only way to size an
+  // offscreen surface). On a high-DPI screen the drawable has more pixels than these points.
   virtual void resize(int width, int height) = 0;
   // The frame last presented: width x height RGBA pixels, rows from the top. Throws
   // std::runtime_error when nothing was presented yet.
