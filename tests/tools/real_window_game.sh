@@ -21,10 +21,10 @@ done
 xdotool windowactivate --sync "$window" 2>/dev/null || xdotool windowfocus "$window"
 sleep 0.3
 xdotool key Return
-for _ in $(seq 50); do grep -q "^playing cube_intro" "$log" && break; sleep 0.1; done
+for _ in $(seq 200); do grep -q "^playing cube_intro" "$log" && break; sleep 0.1; done
 grep -q "^playing cube_intro" "$log" || fail "Enter on the title screen did not start the first level"
 xdotool keydown Right
-for _ in $(seq 600); do  # up to 60 s of play: the walk takes about 18
+for _ in $(seq 1500); do  # up to 150 s of play (a slow machine drops steps): the walk takes about 18
   grep -q "^level complete: cube_intro" "$log" && break
   kill -0 "$pid" 2>/dev/null || fail "the game ended"
   sleep 0.1
@@ -32,7 +32,7 @@ done
 xdotool keyup Right
 grep -q "^level complete: cube_intro" "$log" || fail "holding Right did not finish the first level"
 xdotool key Return
-for _ in $(seq 50); do grep -q "^playing tetra_around" "$log" && break; sleep 0.1; done
+for _ in $(seq 200); do grep -q "^playing tetra_around" "$log" && break; sleep 0.1; done
 grep -q "^playing tetra_around" "$log" || fail "Enter after the level did not start the next one"
 xdotool key Escape
 sleep 0.3
