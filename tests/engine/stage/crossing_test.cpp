@@ -207,3 +207,48 @@ TEST(Crossing, WalkingAndFallingAcrossEveryShapeStaysOnTheFaces) {
 }
 
 }  // namespace
+
+// KNOWN DEFECT, disabled so the suite stays green; enable it to work on it. A body pushed into a
+// cube's vertex (falling fast while it walks right, into the bottom right corner of a face with no
+// floor there) can freeze: each frame its motion carries it out past the vertex, where no face is,
+// the corner rule (keepOnFace) puts it back on the same face beside the same corner, and its
+// velocity keeps growing with gravity (about 4 in 600 such bodies; found in the 2026-11-22
+// session). Putting it back on the neighbour it went into most (its copy there) did not help: the
+// copies are gone by the time the corner rule runs.
+TEST(Crossing, DISABLED_ABodyPushedIntoACubeVertexNeverFreezes) {
+  platon::testing::Rng rng(7);
+  int frozen = 0;
+  for (int trial = 0; trial < 600; ++trial) {
+    auto b = std::make_unique<Built>();
+    b->stage = stage::platonicStage(stage::Solid::Hexahedron, 4096);
+    stage::addStageToWorld(b->stage, b->world, 0);
+    const double lean = rng.between(5, 70) * M_PI / 180;
+    const int foot = rng.between(1500, 3500);
+    for (size_t f = 0; f < b->stage.faceCount(); ++f) {
+      physics::MapPart& p = b->world.mapPart(b->stage.part(f));
+      if (f == 0) p.line({foot, 0}, {foot + static_cast<int32_t>(3000 * std::sin(lean)), static_cast<int32_t>(3000 * std::cos(lean))});
+      p.setGravity({0, -int64_t{rng.between(15000, 40000)}});
+      p.initialize();
+    }
+    const physics::EntityId e = b->world.createEntity(physics::Convex::regular(rng.between(8, 24), rng.between(40, 160)));
+    const int h = rng.between(1200, 2400);
+    try {
+      b->world.insert(e, 0, {foot + static_cast<int32_t>(h * std::tan(lean)) - 400, h}, 0);
+    } catch (const physics::Error&) {
+      continue;
+    }
+    b->world.setVelocity(e, {int64_t{rng.between(2, 20)} * kQ16, -int64_t{rng.between(10, 60)} * kQ16});
+    int still = 0;
+    Vec2 last{};
+    for (int f = 0; f < 400; ++f) {
+      const physics::Vec2w v = b->world.entity(e).velocity();
+      b->world.setVelocity(e, {std::min<int64_t>(v.x + kQ16 / 2, 9 * kQ16), v.y});  // walking right, as the player does
+      b->world.solve();
+      const Vec2 p = b->world.entity(e).position();
+      still = p == last && b->world.entity(e).contacts().empty() ? still + 1 : 0;
+      last = p;
+    }
+    frozen += still > 50;
+  }
+  EXPECT_EQ(frozen, 0);
+}
