@@ -54,14 +54,8 @@ class Game {
 
  private:
   bool load(size_t level);
-  core::Display* display() {
-    core::System* rendering = live_ ? live_->scene().findSystem("rendering") : nullptr;
-    return rendering ? rendering->display() : nullptr;
-  }
-  script::GameStatus status() {
-    const auto* scripts = dynamic_cast<const script::ScriptSystem*>(live_->scene().findSystem("scripting"));
-    return scripts ? scripts->status() : script::GameStatus{};
-  }
+  core::Display* display() { return live_ ? displayOf(live_->scene()) : nullptr; }
+  script::GameStatus status() { return statusOf(live_->scene()); }
   void handle(const core::WindowInput& input);
   void play() {
     screen_ = Screen::Playing;

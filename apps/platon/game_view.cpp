@@ -4,6 +4,16 @@
 
 namespace platon::app {
 
+script::GameStatus statusOf(core::Scene& scene) {
+  const auto* scripts = dynamic_cast<const script::ScriptSystem*>(scene.findSystem("scripting"));
+  return scripts ? scripts->status() : script::GameStatus{};
+}
+
+core::Display* displayOf(core::Scene& scene) {
+  core::System* rendering = scene.findSystem("rendering");
+  return rendering ? rendering->display() : nullptr;
+}
+
 void GameView::step(core::Scene& scene, const script::GameStatus& status, double stepSeconds) {
   if (&scene != scene_ || !stage_ || (stage_->flat && status.face != flatPart_)) {
     stage_ = core::stageView(scene, status.face);

@@ -11,6 +11,11 @@
 
 namespace platon::app {
 
+// The scene's scripting status (the default when it has no scripts) and its display (null when
+// it is not shown in a window).
+script::GameStatus statusOf(core::Scene& scene);
+core::Display* displayOf(core::Scene& scene);
+
 class GameView {
  public:
   // After each simulation step (and once before the first: it places the camera at once).

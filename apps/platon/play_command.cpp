@@ -43,16 +43,6 @@ script::ScriptSystem* scriptsOf(core::Scene& scene) {
   return dynamic_cast<script::ScriptSystem*>(scene.findSystem("scripting"));
 }
 
-core::Display* displayOf(core::Scene& scene) {
-  core::System* rendering = scene.findSystem("rendering");
-  return rendering ? rendering->display() : nullptr;
-}
-
-script::GameStatus statusOf(core::Scene& scene) {
-  const script::ScriptSystem* scripts = scriptsOf(scene);
-  return scripts ? scripts->status() : script::GameStatus{};
-}
-
 // One picture: the stage from the camera, the scripts' shapes, the heads-up lines and the last error.
 void show(core::Display& display, core::LiveScene& live, const GameView& gameView, double alpha, bool showFps = false) {
   core::Scene& scene = live.scene();
@@ -130,7 +120,7 @@ int playCommand(int argc, char** argv) {
   core::InputEdges edges;
   GameView gameView;
   bool showFps = false;
-  gameView.step(live->scene(), statusOf(live->scene()), 1.0 / clock.hz());
+  if (display) gameView.step(live->scene(), statusOf(live->scene()), 1.0 / clock.hz());  // headless: no picture to keep
   std::string lastMessage, lastError;
   uint64_t frame = 0;
   bool won = false;
@@ -171,7 +161,7 @@ int playCommand(int argc, char** argv) {
         lastError = *error;
       }
       if (recorder) recorder->frame(held, live->scene().world().stateHash());
-      gameView.step(live->scene(), statusOf(live->scene()), 1.0 / clock.hz());
+      if (display) gameView.step(live->scene(), statusOf(live->scene()), 1.0 / clock.hz());
       script::ScriptSystem* scripts = scriptsOf(live->scene());
       if (!scripts) continue;
       const script::GameStatus status = scripts->status();

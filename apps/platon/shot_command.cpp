@@ -77,15 +77,10 @@ int shotCommand(int argc, char** argv) {
     if (!inputPath.empty()) input = core::readReplay(inputPath);
     const core::SystemRegistry registry = engineRegistry(Presentation::Window);
     core::LiveScene live(scenePathOf(level), registry, false);
-    core::System* rendering = live.scene().findSystem("rendering");
-    if (!rendering || !rendering->display())
-      throw std::runtime_error(scenePathOf(level) + ": the scene does not name \"rendering\"");
-    core::Display& display = *rendering->display();
+    if (!displayOf(live.scene())) throw std::runtime_error(scenePathOf(level) + ": the scene does not name \"rendering\"");
+    core::Display& display = *displayOf(live.scene());
     display.resize(width, height);
-    auto status = [&] {
-      const auto* scripts = dynamic_cast<const script::ScriptSystem*>(live.scene().findSystem("scripting"));
-      return scripts ? scripts->status() : script::GameStatus{};
-    };
+    auto status = [&] { return statusOf(live.scene()); };
     GameView view;
     view.step(live.scene(), status(), 1.0 / 60);
     core::InputEdges edges;

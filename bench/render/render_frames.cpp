@@ -32,6 +32,7 @@
 #include "platon/script/script_system.h"
 #include "spread.h"
 #include "stage_mesh.h"
+#include "stage_renderer.h"
 
 using namespace platon;
 using Clock = std::chrono::steady_clock;
@@ -89,13 +90,7 @@ struct Floor {
     glGenBuffers(1, &vbo);
     glBindVertexArray(vao);
     glBindBuffer(GL_ARRAY_BUFFER, vbo);
-    using V = render::LitVertex;
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(V), reinterpret_cast<void*>(offsetof(V, x)));
-    glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(V), reinterpret_cast<void*>(offsetof(V, nx)));
-    glEnableVertexAttribArray(2);
-    glVertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(V), reinterpret_cast<void*>(offsetof(V, r)));
+    render::describeLitVertices();
     glBindVertexArray(0);
   }
   void upload(const std::vector<render::LitVertex>& v) {
@@ -186,11 +181,7 @@ Frames measureLevel(const std::string& scenePath, const std::string& replayPath,
     mesh.addShapes(draw, s.face, triangles);
     floor->upload(triangles);
     out.triangles = triangles.size() / 3;
-    camera::CameraPose pose = view.camera;
-    const Eigen::Vector3d centre(stage->centre.x, stage->centre.y, stage->centre.z);
-    pose.centre = (pose.centre - centre) * mesh.scale();
-    pose.distance *= mesh.scale();
-    const Eigen::Matrix4f vp = camera::projectionMatrix(pose, view.verticalFov, 1280.0 / 720.0, 1.3) * camera::viewMatrix(pose);
+    const Eigen::Matrix4f vp = mesh.viewProjection(view.camera, view.verticalFov, 1280.0 / 720.0);
     t0 = Clock::now();
     floor->draw(vp);
     if (f == frames / 2) {  // the floor draws the scene: some pixels are not the clear colour

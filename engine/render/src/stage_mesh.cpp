@@ -65,6 +65,7 @@ void addTriangle(std::vector<LitVertex>& out, const Vector3f& a, const Vector3f&
 
 StageMesh::StageMesh(const core::StageView& stage) : flat_(stage.flat) {
   scale_ = 1.0f / std::max(stage.radius, 1e-6f);
+  centre_ = {stage.centre.x, stage.centre.y, stage.centre.z};
   edge_ = stage.edge * scale_;
   const Vector3f centre = vec(stage.centre);
   for (const core::ViewFace& f : stage.faces)
@@ -84,6 +85,18 @@ bool StageMesh::toStage(physics::MapPartId part, core::Point2 p, float lift, Vec
   if (!f) return false;
   out = f->origin + p.x * f->xAxis + p.y * f->yAxis + lift * edge_ * f->normal;
   return true;
+}
+
+camera::CameraPose StageMesh::toStage(const camera::CameraPose& pose) const {
+  camera::CameraPose p = pose;
+  p.centre = (pose.centre - centre_) * scale_;
+  p.distance *= scale_;
+  return p;
+}
+
+Eigen::Matrix4f StageMesh::viewProjection(const camera::CameraPose& pose, double verticalFov, double aspect) const {
+  const camera::CameraPose p = toStage(pose);
+  return camera::projectionMatrix(p, verticalFov, aspect, 1.3) * camera::viewMatrix(p);
 }
 
 bool StageMesh::normalOf(physics::MapPartId part, Vector3f& out) const {

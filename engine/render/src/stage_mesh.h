@@ -38,6 +38,11 @@ class StageMesh {
   // A face point in stage space; false when the part is not on the stage.
   bool toStage(physics::MapPartId part, core::Point2 p, float lift, Eigen::Vector3f& out) const;
   bool normalOf(physics::MapPartId part, Eigen::Vector3f& out) const;
+  // A camera pose (level units) in stage space: centred on the solid, scaled by its radius.
+  camera::CameraPose toStage(const camera::CameraPose& pose) const;
+  // The view-projection matrix of a pose (level units) for this mesh; everything drawn lies within
+  // the solid's radius plus the tallest thing on a face.
+  Eigen::Matrix4f viewProjection(const camera::CameraPose& pose, double verticalFov, double aspect) const;
   float scale() const { return scale_; }  // stage units per level unit
 
  private:
@@ -57,6 +62,7 @@ class StageMesh {
   std::vector<Frame> frames_;
   std::vector<LitVertex> fixed_;
   float scale_ = 1;
+  Eigen::Vector3d centre_ = Eigen::Vector3d::Zero();  // the solid's centre, level units
   float edge_ = 1;  // the longest edge, in stage units
   bool flat_ = false;
 };

@@ -7,6 +7,15 @@
 
 namespace platon::render {
 
+void describeLitVertices() {
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(LitVertex), reinterpret_cast<void*>(offsetof(LitVertex, x)));
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(LitVertex), reinterpret_cast<void*>(offsetof(LitVertex, nx)));
+  glEnableVertexAttribArray(2);
+  glVertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(LitVertex), reinterpret_cast<void*>(offsetof(LitVertex, r)));
+}
+
 StageRenderer::StageRenderer() : program_(shaders::lit_vert, shaders::lit_frag, "lit") {
   viewProjection_ = program_.uniform("viewProjection");
   lightDirection_ = program_.uniform("lightDirection");
@@ -16,12 +25,7 @@ StageRenderer::StageRenderer() : program_(shaders::lit_vert, shaders::lit_frag, 
     glGenBuffers(1, &b->vbo);
     glBindVertexArray(b->vao);
     glBindBuffer(GL_ARRAY_BUFFER, b->vbo);
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(LitVertex), reinterpret_cast<void*>(offsetof(LitVertex, x)));
-    glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(LitVertex), reinterpret_cast<void*>(offsetof(LitVertex, nx)));
-    glEnableVertexAttribArray(2);
-    glVertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(LitVertex), reinterpret_cast<void*>(offsetof(LitVertex, r)));
+    describeLitVertices();
   }
   glBindVertexArray(0);
 }
@@ -68,15 +72,9 @@ void StageRenderer::draw(const core::View& view, const core::DrawList& draw, int
   mesh_->addShapes(draw, view.face, scratch_);
   upload(shapes_, scratch_, GL_STREAM_DRAW);
 
-  // The camera in stage space: centred on the solid, scaled by its radius.
-  const float scale = mesh_->scale();
-  camera::CameraPose pose = view.camera;
-  const Eigen::Vector3d centre(stage_->centre.x, stage_->centre.y, stage_->centre.z);
-  pose.centre = (pose.centre - centre) * scale;
-  pose.distance *= scale;
   const double aspect = height > 0 ? static_cast<double>(width) / height : 1.0;
-  // Everything drawn lies within the solid's radius plus the tallest thing on a face.
-  viewProjectionMatrix_ = camera::projectionMatrix(pose, view.verticalFov, aspect, 1.3) * camera::viewMatrix(pose);
+  viewProjectionMatrix_ = mesh_->viewProjection(view.camera, view.verticalFov, aspect);
+  const camera::CameraPose pose = mesh_->toStage(view.camera);
   const Eigen::Vector3f eye = pose.eye().cast<float>();
   eyePosition_ = eye;
   const Eigen::Vector3f light =

@@ -11,6 +11,10 @@
 
 namespace platon::render {
 
+// Describes LitVertex (position, normal, colour: attributes 0, 1, 2) for the bound vertex array
+// and buffer.
+void describeLitVertices();
+
 class StageRenderer {
  public:
   StageRenderer();
