@@ -6,12 +6,12 @@
 
 namespace platon::physics {
 
-Contact WorldImpl::makeContact(const Entity& e, const Instance& inst, LineIndex line, Fraction t, Vec2w normal,
+Contact WorldImpl::makeContact(const Entity& e, MapPartId partId, LineIndex line, Fraction t, Vec2w normal,
                                ContactPoints points) const {
   Contact c;
   c.entity = e.id;
-  c.part = inst.part;
-  c.line.part = inst.part;
+  c.part = partId;
+  c.line.part = partId;
   c.line.index = line;
   if (isPlatformLine(line)) {
     const uint32_t slot = (line & ~kPlatformLineBit) >> 16;
@@ -20,8 +20,8 @@ Contact WorldImpl::makeContact(const Entity& e, const Instance& inst, LineIndex 
     c.line.platform = {slot, platforms[slot].generation};
     c.line.tag = l.tag;
     c.line.kind = l.kind;
-  } else if (line < part(inst.part).lines().size()) {
-    const Line& l = part(inst.part).lines()[line];
+  } else if (line < part(partId).lines().size()) {
+    const Line& l = part(partId).lines()[line];
     c.line.tag = l.tag;
     c.line.kind = l.kind;
   }

@@ -2,6 +2,7 @@
 // sweeps every instance, moves all of them to the earliest contact, fires the events along the
 // way, and projects the rest of the motion along the line it met.
 #include <algorithm>
+#include <array>
 
 #include "bounce.h"
 #include "bounds.h"
@@ -294,8 +295,52 @@ class SubMove {
     t_ = hit_.t;
     for (int attempt = 0;; ++attempt) {
       if (attempt == 3) t_ = Fraction::zero();
-      if (tryStepsAt(attempt)) return;
+      if (tryStepsAt(attempt)) break;
     }
+    const bool nothingMoved = std::all_of(steps_.begin(), steps_.end(), [](Vec2w s) { return s == Vec2w{}; });
+    if (pulledBack() && nothingMoved && (hit_.kind == HitKind::None || hit_.kind == HitKind::Warp)) {
+      const Fraction pulled = t_;
+      t_ = hit_.t;
+      if (tryOtherRoundings()) return;
+      t_ = pulled;
+      steps_.assign(n_, Vec2w{});
+    }
+  }
+
+  // The steps rounded toward zero kept meeting a line the exact path clears by less than a unit
+  // (the end of a wall it passes, a wall just beside a warp edge), and were pulled back until
+  // nothing moved. With no contact to answer, the same sub-move would come again, and the frame
+  // would end with the body where it was and its velocity growing: frozen. So each instance takes,
+  // nearest first, the other whole-unit steps around its exact one that are free.
+  bool tryOtherRoundings() {
+    bool moved = false;
+    for (size_t i = 0; i < n_; ++i) {
+      const Vec2w m = moves_[i];
+      const i128 qx = i128{t_.num} * m.x, qy = i128{t_.num} * m.y;
+      const int64_t x0 = static_cast<int64_t>(floorDiv(qx, t_.den)), y0 = static_cast<int64_t>(floorDiv(qy, t_.den));
+      // Fractions of a unit past the floor, to order the four candidates by distance.
+      const i128 fx = qx - i128{x0} * t_.den, fy = qy - i128{y0} * t_.den;
+      std::array<Vec2w, 4> candidates{Vec2w{x0, y0}, Vec2w{x0 + 1, y0}, Vec2w{x0, y0 + 1}, Vec2w{x0 + 1, y0 + 1}};
+      auto distance = [&](Vec2w c) {
+        const i128 dx = (c.x - x0) * i128{t_.den} - fx, dy = (c.y - y0) * i128{t_.den} - fy;
+        return dx * dx + dy * dy;
+      };
+      std::sort(candidates.begin(), candidates.end(), [&](Vec2w a, Vec2w b) {
+        const i128 da = distance(a), db = distance(b);
+        return da != db ? da < db : (a.x != b.x ? a.x < b.x : a.y < b.y);
+      });
+      // Standing still is the last resort, and only for a copy: the instance that met the hit
+      // must move.
+      steps_[i] = Vec2w{};
+      for (const Vec2w c : candidates) {
+        if (c == Vec2w{} || w_.firstBlock(e_, e_.instances[i], verts_[i], c) < Fraction::one()) continue;
+        steps_[i] = c;
+        break;
+      }
+      if (steps_[i] == Vec2w{} && i == hit_.instance) return false;
+      moved = moved || steps_[i] != Vec2w{};
+    }
+    return moved;
   }
 
   // 4. Commit; then each copy closes its gap to its ideal position where that path is free.
@@ -315,6 +360,8 @@ class SubMove {
   void afterMove() {
     w_.updatePierceState(e_, {verts_, steps_, pierceNear_});
     hitPart_ = e_.instances[hit_.instance].part;
+    hitRotation_ = e_.instances[hit_.instance].rotation;
+    anchorPart_ = e_.instances.front().part;
     hitMove_ = moves_[hit_.instance];
     if (hit_.kind == HitKind::Warp && !pulledBack()) crossWarp();
     if (!e_.links.empty()) w_.updateLinks(move_);
@@ -341,20 +388,26 @@ class SubMove {
   //    goes again, into the room it made); else slide along the line or the entity.
   After respondToContact(int& pushes) {
     ++w_.report.hits;
+    // The copy that met the line can be gone already: a copy that only touches its warp edge, while
+    // the anchor only touches it too, is erased by the links. The line still holds the body (a
+    // wall just over an edge): it is met all the same, through the copy's frame as it was. (Ending
+    // the slide there left the velocity driving the body into that wall frame after frame, and
+    // nothing moved: frozen.) Only an anchor changed meanwhile leaves no frame to answer in.
     const Instance* inst = e_.instanceIn(hitPart_);
-    if (!inst) return After::Stop;
+    if (!inst && e_.instances.front().part != anchorPart_) return After::Stop;
+    const Rotation rotation = inst ? inst->rotation : hitRotation_;
     const Vec2w partNormal = -hit_.axis.c;
     ContactPoints points;
     if (hit_.kind == HitKind::Solid)
       points = contactPoints(verts_[hit_.instance], hitMove_, w_.segmentOf(w_.part(hitPart_), hit_.line), hit_.sweep);
     const bool withEntity = hit_.kind == HitKind::Entity;
-    Contact contact = w_.makeContact(e_, *inst, withEntity ? kNoLine : hit_.line, hit_.t, partNormal, points);
+    Contact contact = w_.makeContact(e_, hitPart_, withEntity ? kNoLine : hit_.line, hit_.t, partNormal, points);
     if (withEntity) contact.other = w_.slots[hit_.otherSlot].entity->id;
     e_.contacts.push_back(contact);
     ContactResponse response;
     w_.callRules([&](Rules& r) { r.contact(contact, response); });
-    const Vec2w normal = shortDirection(rotateWideInverse(inst->rotation, shortDirection(partNormal)));
-    if (withEntity && pushes < 4 && tryPush(*inst, normal)) {
+    const Vec2w normal = shortDirection(rotateWideInverse(rotation, shortDirection(partNormal)));
+    if (withEntity && inst && pushes < 4 && tryPush(*inst, normal)) {
       ++pushes;
       return After::Again;
     }
@@ -563,6 +616,8 @@ class SubMove {
   Vec2w subMotion_;  // the anchor's motion at the start of this sub-move, entity frame
   Fraction t_;
   MapPartId hitPart_ = 0;
+  Rotation hitRotation_;      // the hit instance's frame, kept in case the links erase it
+  MapPartId anchorPart_ = 0;  // the anchor's part when the hit was met
   Vec2w hitMove_;
 };
 

@@ -234,6 +234,35 @@ bool insideFace(const MapPart& part, Vec2 p) {
   return true;
 }
 
+// The loop index of the face's corner nearest `p`: the corner where loop[k] starts.
+size_t nearestCorner(const MapPart& face, Vec2 p) {
+  const auto loop = face.faceLoop();
+  size_t corner = 0;
+  i128 best = -1;
+  for (size_t k = 0; k < loop.size(); ++k) {
+    const Vec2w d = face.segments()[loop[k]].a - p;
+    const i128 d2 = i128{d.x} * d.x + i128{d.y} * d.y;
+    if (best < 0 || d2 < best) best = d2, corner = k;
+  }
+  return corner;
+}
+
+// How far from corner k along either of its edges a point must lie to be `clearance` units from
+// the other edge's line: clearance / sin(angle), or just clearance where the corner is obtuse
+// (the vertex itself is then the nearest point of the other edge).
+int64_t alongForClearance(const MapPart& face, size_t k, int64_t clearance) {
+  const auto loop = face.faceLoop();
+  const Segment out = face.segments()[loop[k]];
+  const Segment in = face.segments()[loop[(k + loop.size() - 1) % loop.size()]];
+  const Vec2w a = in.b - in.a, b = out.b - out.a;
+  const i128 dot = i128{a.x} * b.x + i128{a.y} * b.y;
+  const i128 cross = i128{a.x} * b.y - i128{a.y} * b.x;
+  if (dot >= 0 || cross <= 0) return clearance;
+  const i128 lengths = static_cast<i128>(isqrt(static_cast<u128>(i128{a.x} * a.x + i128{a.y} * a.y))) *
+                       static_cast<i128>(isqrt(static_cast<u128>(i128{b.x} * b.x + i128{b.y} * b.y)));
+  return static_cast<int64_t>(std::min<i128>((i128{clearance} * lengths + cross - 1) / cross, INT64_MAX));
+}
+
 }  // namespace
 
 // Copies hold together through warp links; near a vertex a copy can be linked only to a copy
@@ -305,13 +334,7 @@ void WorldImpl::keepOnFace(Move& move) {
   const Vec2 at = e.instances[0].position;
   const auto loop = face.faceLoop();
   // The corner nearest the origin, and its two edges: `in` ends there, `out` starts there.
-  size_t corner = 0;
-  i128 best = -1;
-  for (size_t k = 0; k < loop.size(); ++k) {
-    const Vec2w d = face.segments()[loop[k]].a - at;
-    const i128 d2 = i128{d.x} * d.x + i128{d.y} * d.y;
-    if (best < 0 || d2 < best) best = d2, corner = k;
-  }
+  const size_t corner = nearestCorner(face, at);
   const Segment out = face.segments()[loop[corner]];
   const Segment in = face.segments()[loop[(corner + loop.size() - 1) % loop.size()]];
   const Vec2 vertex = out.a;
@@ -333,21 +356,58 @@ void WorldImpl::keepOnFace(Move& move) {
   // along >= 4 + 2 * (velocity toward the vertex) / (velocity out across the edge).
   const i128 towardVertex = -(i128{v.x} * away.x + i128{v.y} * away.y);
   const i128 across = -(i128{v.x} * inward.x + i128{v.y} * inward.y);
-  int64_t along = 4;
-  if (towardVertex > 0 && across > 0) along += static_cast<int64_t>(std::min<i128>(towardVertex * 2 / across + 1, length / 4));
-  along = std::min<int64_t>(along, length / 2);
+  int64_t meet = 4;
+  if (towardVertex > 0 && across > 0) meet += static_cast<int64_t>(std::min<i128>(towardVertex * 2 / across + 1, length / 4));
+  // And far enough that the next frame's motion (at most this speed and its gravity) ends within
+  // this face or the neighbour across the edge, clear of their other edges at the vertex: a body
+  // put back closer goes through the same vertex again and is put back at the same place every
+  // frame, frozen while its velocity grows.
+  const Vec2w g = face.gravity();
+  const int64_t reach = static_cast<int64_t>((isqrt(static_cast<u128>(i128{v.x} * v.x + i128{v.y} * v.y)) +
+                                              isqrt(static_cast<u128>(i128{g.x} * g.x + i128{g.y} * g.y))) / kQ16) + 8;
+  int64_t clear = alongForClearance(face, corner, reach);
+  const Line& crossed = face.lines()[loop[byOut ? corner : (corner + loop.size() - 1) % loop.size()]];
+  if (crossed.kind == LineKind::Warp) {
+    const Warp& w = face.warps()[crossed.warp];
+    const MapPart& neighbour = part(w.target);
+    if (!neighbour.faceLoop().empty()) {
+      const Vec2 image = byOut ? w.targetSegment.a : w.targetSegment.b;
+      clear = std::max(clear, alongForClearance(neighbour, nearestCorner(neighbour, image), reach));
+    }
+  }
+  // Where a wall stands there, nearer: half, a quarter of the way, then as near as the edge is met.
   Instance& anchor = e.instances[0];
   const Vec2 was = anchor.position;
-  anchor.position = {vertex.x + static_cast<int32_t>(roundDiv(i128{away.x} * along + i128{inward.x} * 2, length)),
-                     vertex.y + static_cast<int32_t>(roundDiv(i128{away.y} * along + i128{inward.y} * 2, length))};
   std::vector<Vec2>& verts = scratch.probe;
-  worldVertices(anchor, verts);
-  if (!insideFace(face, anchor.position) || !isFree(e, anchor, verts)) {
+  const int64_t far = std::max(meet, clear);
+  const std::array<int64_t, 4> candidates{far, std::max(meet, far / 2), std::max(meet, far / 4), meet};
+  int64_t along = -1;
+  for (size_t k = 0; k < candidates.size(); ++k) {
+    if (k > 0 && candidates[k] == candidates[k - 1]) continue;
+    along = std::min<int64_t>(candidates[k], length / 2);
+    anchor.position = {vertex.x + static_cast<int32_t>(roundDiv(i128{away.x} * along + i128{inward.x} * 2, length)),
+                       vertex.y + static_cast<int32_t>(roundDiv(i128{away.y} * along + i128{inward.y} * 2, length))};
+    worldVertices(anchor, verts);
+    coverMotion(anchor, {});  // the lines around the new place, for the walls there and the warps to cross
+    if (insideFace(face, anchor.position) && isFree(e, anchor, verts)) break;
+    along = -1;
+  }
+  if (along < 0) {
     anchor.position = was;  // a wall right at the corner: leave it (it cannot go far that way)
+    coverMotion(anchor, {});
     return;
   }
+  // Nearer than the next frame's motion (walls about the vertex), it would go out through the same
+  // vertex again: its motion toward the vertex along the edge stops there, as against a wall, and
+  // it goes on over the edge.
+  if (along < std::min<int64_t>(clear, length / 2)) e.velocityQ16 = removeInto(e.velocityQ16, away);
   while (e.instances.size() > 1) eraseInstance(move, e.instances.size() - 1);
   anchor.idealQ30 = q30FromPoint(anchor.position);
+  // What it overlaps where it now is, as at insert: the lines it left end, the lines it now
+  // overlaps begin, and the warp edges it straddles get their copies now. (With the overlaps of
+  // the place it left, it went over the next edge with no copy and out past the face again.)
+  updatePierceState(e, {});
+  createOverlappedWarps(e);
   ++report.cornerReturns;
 }
 

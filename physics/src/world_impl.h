@@ -215,8 +215,11 @@ struct WorldImpl {
   // pierce_events.cpp
   void updatePierceState(Entity& e, const Path& path);
   void fireOverContacts();
+  Contact makeContact(const Entity& e, MapPartId part, LineIndex line, Fraction t, Vec2w normal, ContactPoints points) const;
   Contact makeContact(const Entity& e, const Instance& inst, LineIndex line, Fraction t, Vec2w normal,
-                      ContactPoints points) const;
+                      ContactPoints points) const {
+    return makeContact(e, inst.part, line, t, normal, points);
+  }
   // A restitution a callback left in its ContactResponse, or zero (and an Error for solve() to
   // throw at the end of the frame) when it is not a fraction num/den with num >= 0 and den > 0.
   Fraction checkedRestitution(Fraction r) {

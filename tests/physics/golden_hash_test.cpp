@@ -236,9 +236,11 @@ const Golden kGolden[] = {
     {"warp 90 degrees", [] { return runWarpAngle(90, 4); }, 0x801a192b2fb8d98full},
     {"warp 37 degrees", [] { return runWarpAngle(37, 5); }, 0x5ca955a1c2aa8548ull},
     // Recorded again when the world learnt faces (closed warp loops): bodies that went through a
-    // cube's corners had left every face (0x62ed7e2e04d5b99e, 0x2ef9d555a1dc3f68 before).
-    {"cube 1", [] { return runCube(1); }, 0x76ef9fb9be77e6c7ull},
-    {"cube 2", [] { return runCube(2); }, 0xf9d3916b9c36e9caull},
+    // cube's corners had left every face (0x62ed7e2e04d5b99e, 0x2ef9d555a1dc3f68 before). Again
+    // when a body put back by a corner got the overlaps of its new place and room for the next
+    // frame's motion (0x76ef9fb9be77e6c7, 0xf9d3916b9c36e9ca before; 221 corner returns, now 7).
+    {"cube 1", [] { return runCube(1); }, 0x5eb35441f09d6beaull},
+    {"cube 2", [] { return runCube(2); }, 0x77acff1a747cb45dull},
 };
 
 }  // namespace
