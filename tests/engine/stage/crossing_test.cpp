@@ -388,12 +388,12 @@ TEST(Crossing, BodiesDrivenIntoAnyVertexNeverFreeze) {
 
 // KNOWN DEFECT, disabled so the suite stays green (run it with --gtest_also_run_disabled_tests).
 // Over a larger sample (3 seeds x 60 layouts, 34,108 bodies), 10 bodies have a copy stepped into
-// a wall (and may then sit stuck there: of the 2 bodies that froze in that sample, the one looked
-// at, seed 3, was stuck so): with walls across the corners on both
-// faces of an edge near a vertex, a copy whose hit the seam lift (liftAtSeam) passed over takes
-// an "exact, so free" step into the wall, and closing its gap goes on into it (the sweep of a
-// polygon already inside a line finds no entry). Found in the 2026-11-22
-// session; present before that session's corner-rule changes.
+// a wall, and may then sit stuck there (of the 2 bodies that froze in that sample, the one looked
+// at, seed 3's, was stuck so). With walls across the corners on both faces of an edge near a
+// vertex, a copy whose hit the seam lift (liftAtSeam) passed over takes an "exact, so free" step
+// into the wall, and closing its gap goes on into it (the sweep of a polygon already inside a line
+// finds no entry). Found in the 2026-11-22 session; present before that session's corner-rule
+// changes.
 TEST(Crossing, DISABLED_CopiesNearAVertexWithWallsNeverEnterAWall) {
   for (const uint64_t seed : {1, 2, 3}) {
     const VertexRuns r = driveBodiesIntoVertices(seed, 60);
