@@ -284,7 +284,19 @@ class SubMove {
     }
     const bool lifted = i > 0 ? w_.liftCopy(e_, inst, liftAlong, moves_[i]) : liftEntity(liftAlong);
     if (lifted) ++w_.report.copiesReplaced;
+    if (!lifted && i == 0) replan();
     return lifted;
+  }
+
+  // The lifts tried are sub-moves of their own in the same scratch buffers: when none was free,
+  // this sub-move's motions, vertices and regions are planned again (its hit stays). Going on with
+  // theirs, a copy took the last lift's motion as its own, unchecked, into a wall.
+  void replan() {
+    const Hit kept = hit_;
+    hit_ = Hit{};
+    planMotions();
+    findFirstEvent();
+    hit_ = kept;
   }
 
   // 3. Every instance's step to the event's time, rounded to the safe side. A step that is exactly on

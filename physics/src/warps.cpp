@@ -397,10 +397,14 @@ void WorldImpl::keepOnFace(Move& move) {
     coverMotion(anchor, {});
     return;
   }
-  // Nearer than the next frame's motion (walls about the vertex), it would go out through the same
-  // vertex again: its motion toward the vertex along the edge stops there, as against a wall, and
-  // it goes on over the edge.
-  if (along < std::min<int64_t>(clear, length / 2)) e.velocityQ16 = removeInto(e.velocityQ16, away);
+  // Nearer than the next frame's motion (walls about the vertex leave no room further off), it
+  // would go out past the same vertex again and be put back here frame after frame with its
+  // velocity unchanged: the vertex stops it there, as a wall would, and gravity or its own push
+  // takes it on from rest.
+  if (along < std::min<int64_t>(clear, length / 2)) {
+    e.velocityQ16 = {};
+    e.subunitQ17 = {};
+  }
   while (e.instances.size() > 1) eraseInstance(move, e.instances.size() - 1);
   anchor.idealQ30 = q30FromPoint(anchor.position);
   // What it overlaps where it now is, as at insert: the lines it left end, the lines it now
