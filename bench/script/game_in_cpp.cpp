@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,22 +21,12 @@ struct Place {
 
 class Game final : public core::System, public physics::Rules {
  public:
-  // levels/cube_intro/level.lua: build()
-  void build(core::Scene& scene) override {
-    physics::World& world = scene.world();
-    for (size_t i = 0; i < scene.stage()->faceCount(); ++i) {
-      const physics::MapPartId face = scene.stage()->part(i);
-      world.mapPart(face).line({256, 512}, {2600, 512}, 0);
-      world.mapPart(face).line({3000, 512}, {3800, 900}, 0);
-      world.mapPart(face).line({1200, 1800}, {2400, 1800}, 0);
-    }
-    world.mapPart(3).line({3600, 200}, {3600, 3900}, kGoal);
-  }
-
   // scripts/progression.lua: start(); scripts/scene.lua: start() sets the rules.
   void start(core::Scene& scene) override {
     world_ = &scene.world();
     world_->setRules(this);
+    const stage::LevelPoint& start = scene.level()->start;  // world.levelStart()
+    start_ = Place{static_cast<physics::MapPartId>(start.face), start.position.x, start.position.y};
     spawn(spawnPoint());
   }
 
@@ -92,7 +83,7 @@ class Game final : public core::System, public physics::Rules {
   }
 
  private:
-  Place spawnPoint() const { return checkpoint_.value_or(Place{0, 600, 700}); }
+  Place spawnPoint() const { return checkpoint_.value_or(start_); }
 
   void spawn(Place at) {
     player_ = world_->createEntity(physics::Convex::regular(16, 96));
@@ -153,6 +144,7 @@ class Game final : public core::System, public physics::Rules {
   bool grounded_ = false;
   std::map<uint32_t, bool> switches_;
   std::vector<uint32_t> pendingToggles_;
+  Place start_{};
   std::optional<Place> checkpoint_;
   bool reachedGoal_ = false, touchedCheckpoint_ = false, killed_ = false, won_ = false, pressedRestart_ = false;
   int deaths_ = 0;
@@ -163,17 +155,11 @@ class Game final : public core::System, public physics::Rules {
 }  // namespace
 
 std::unique_ptr<core::Scene> cubeIntroInCpp() {
-  auto scene = std::make_unique<core::Scene>();
-  stage::Stage cube = stage::platonicStage(stage::Solid::Hexahedron, 4096);
-  stage::addStageToWorld(cube, scene->world(), 0);
-  scene->setStage(std::move(cube));
-  const auto gravity = static_cast<int64_t>(0.35 * 65536.0 + 0.5);  // as loadScene converts the manifest's
-  for (size_t i = 0; i < scene->stage()->faceCount(); ++i) scene->world().mapPart(scene->stage()->part(i)).setGravity({0, -gravity});
-  scene->addSystem(std::make_unique<Game>(), "game");
-  scene->system(0).build(*scene);
-  for (size_t i = 0; i < scene->stage()->faceCount(); ++i) scene->world().mapPart(scene->stage()->part(i)).initialize();
-  scene->system(0).start(*scene);
-  return scene;
+  // The scene as the engine loads it (the level file's stage, lines, gravity and goal), with this
+  // game standing in for the scripts.
+  core::SystemRegistry registry;
+  registry.add("scripting", [](core::Scene&) { return std::make_unique<Game>(); });
+  return core::loadScene(std::string(PLATON_SOURCE_ROOT) + "/levels/cube_intro/scene.lua", registry);
 }
 
 }  // namespace platon::bench

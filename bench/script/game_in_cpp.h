@@ -1,7 +1,8 @@
 // The first level's game written in C++: the same player (scripts/player.lua), rules
-// (scripts/rules/game.lua), progression (scripts/progression.lua) and level (levels/cube_intro),
-// line for line, so the benchmark can set the Lua engine beside what a C++ game would cost. The
-// same input gives the same state hash in both: the comparison runs the same frames.
+// (scripts/rules/game.lua), progression (scripts/progression.lua) and level script
+// (levels/cube_intro/level.lua), line for line, on the same scene loaded from its manifest and
+// level file, so the benchmark can set the Lua engine beside what a C++ game would cost. The same
+// input gives the same state hash in both: the comparison runs the same frames.
 #pragma once
 #include <memory>
 
