@@ -143,7 +143,7 @@ TEST(Camera, EveryEdgeOfEveryStageTurnsTheViewSmoothly) {
   const std::string root = PLATON_SOURCE_ROOT;
   for (const bool turned : {false, true}) {
     for (const auto& [name, solid] : solids) walkEveryEdge(name, stage::platonicStage(solid, 4096), stats, turned);
-    walkEveryEdge("prism", meshStage(root + "/levels/prism/prism.obj", 6144), stats, turned);
+    walkEveryEdge("prism", meshStage(root + "/levels/prism/prism.ply", 6144), stats, turned);
     walkEveryEdge("football", meshStage(root + "/levels/soccer_ball/truncated_icosahedron.ply", 2048), stats, turned);
   }
   // 2 downs x 3 angles x (4 x 3 + 6 x 4 + 8 x 3 + 12 x 5 + 20 x 3 + the prism's 18 + 12 x 5 + 20 x 6)
