@@ -27,12 +27,12 @@ class Game final : public core::System, public physics::Rules {
     world_->setRules(this);
     const stage::LevelPoint& start = scene.level()->start;  // world.levelStart()
     start_ = Place{static_cast<physics::MapPartId>(start.face), start.position.x, start.position.y};
+    message_ = "walk right: every edge turns the cube";  // levels/cube_intro/level.lua: build()
     spawn(spawnPoint());
   }
 
   void beforeStep(core::Scene&, const core::InputFrame& input) override {
     tick(input);
-    if (time_ + 1 == 1) message_ = "walk right: every edge turns the cube";
     pressedRestart_ = input.wasPressed(core::Button::Restart);
   }
 

@@ -1,8 +1,8 @@
 -- Icosahedron, drop: the lines, start and goal are in icosa_drop.level; this script talks.
 local level = {}
 
-function level.tick(game, frame)
-  if frame == 1 then game.message("the wall is shut: look down") end
+function level.build(game)  -- said once, as the level starts: no per-frame tick to pay for
+  game.message("the wall is shut: look down")
 end
 
 return level

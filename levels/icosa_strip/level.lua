@@ -1,8 +1,8 @@
 -- Icosahedron, strip: the lines, start and goal are in icosa_strip.level; this script talks.
 local level = {}
 
-function level.tick(game, frame)
-  if frame == 1 then game.message("small faces, quick turns: mind the red floors") end
+function level.build(game)  -- said once, as the level starts: no per-frame tick to pay for
+  game.message("small faces, quick turns: mind the red floors")
 end
 
 return level

@@ -1,8 +1,8 @@
 -- Octahedron, underneath: the lines, start and goal are in octa_under.level; this script talks.
 local level = {}
 
-function level.tick(game, frame)
-  if frame == 1 then game.message("the goal is below this floor: look for a gap") end
+function level.build(game)  -- said once, as the level starts: no per-frame tick to pay for
+  game.message("the goal is below this floor: look for a gap")
 end
 
 return level
