@@ -23,6 +23,9 @@ struct Instance {
   Vec2w idealQ30;
   std::vector<Vec2> shape;              // vertices relative to position: the entity shape turned by angle + frame
   Vec2 low, high;                       // the shape's bounding box, relative to position (setShape keeps it)
+  // A point inside the shape, relative to position: the mean of its vertices, rounded. Which face
+  // an instance is on is decided by this point, not by the origin, which a shape need not contain.
+  Vec2 centre;
   std::vector<LineIndex> overlapping;   // pierceable lines whose interior this instance overlaps
   std::vector<LineIndex> blockedWarps;  // warps that could not be crossed this frame (act solid)
   Region region;
@@ -36,6 +39,18 @@ inline void setShape(Instance& inst, std::vector<Vec2> shape) {
     inst.low = {std::min(inst.low.x, v.x), std::min(inst.low.y, v.y)};
     inst.high = {std::max(inst.high.x, v.x), std::max(inst.high.y, v.y)};
   }
+  int64_t sx = 0, sy = 0;
+  for (const Vec2 v : inst.shape) sx += v.x, sy += v.y;
+  const auto n = static_cast<int64_t>(inst.shape.size());
+  auto meanOf = [n](int64_t sum) {  // rounded to nearest, halves away from zero
+    return static_cast<int32_t>(sum >= 0 ? (2 * sum + n) / (2 * n) : -((-2 * sum + n) / (2 * n)));
+  };
+  inst.centre = {meanOf(sx), meanOf(sy)};
+}
+
+// The instance's centre in its part's coordinates (see Instance::centre).
+inline Vec2 centreOf(const Instance& inst) {
+  return {inst.position.x + inst.centre.x, inst.position.y + inst.centre.y};
 }
 
 // Whether the instance's bounding box meets the closed box [x0, x1] x [y0, y1].

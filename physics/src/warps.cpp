@@ -125,6 +125,25 @@ void WorldImpl::createOverlappedWarps(Entity& e) {
   }
 }
 
+// Whether the instance may move by `gap` (a few units) outside the slide: the way is free, it
+// overlaps the same lines after as before (no trigger entered or left without its events) and
+// touches no warp edge it did not touch (none straddled without its copy).
+bool WorldImpl::snapKeepsTouches(const Entity& e, Instance& inst, Vec2w gap) {
+  std::vector<Vec2>& before = scratch.probe;
+  worldVertices(inst, before);
+  coverMotion(inst, gap);
+  if (firstBlock(e, inst, before, gap) < Fraction::one()) return false;
+  std::vector<Vec2> after(before);
+  for (Vec2& v : after) v = {static_cast<int32_t>(v.x + gap.x), static_cast<int32_t>(v.y + gap.y)};
+  const MapPart& p = part(inst.part);
+  for (const LineIndex line : inst.region.lines()) {
+    const Segment s = p.segments()[line];
+    if (overlapsInterior(before, s) != overlapsInterior(after, s)) return false;
+    if (p.lines()[line].kind == LineKind::Warp && !touchesOrOverlaps(before, s) && touchesOrOverlaps(after, s)) return false;
+  }
+  return true;
+}
+
 void WorldImpl::rebase(Move& move, size_t k) {
   Entity& e = move.entity;
   const Angle theta = e.instances[k].frame;
@@ -135,6 +154,13 @@ void WorldImpl::rebase(Move& move, size_t k) {
     inst.rotation = rotationOf(inst.frame);
   }
   Instance& anchor = e.instances[0];
+  // The new anchor was a copy, which may sit a unit or three off its exact place (placed where
+  // rounding left room, or lifted off a floor at a seam). As the anchor it defines the entity's
+  // place from now on, so it goes to that exact place where the way there is free: otherwise each
+  // crossing would keep its copy's offset and a path retraced would not come back to its start.
+  const Vec2 ideal = pointFromQ30(anchor.idealQ30);
+  const Vec2w gap{int64_t{ideal.x} - anchor.position.x, int64_t{ideal.y} - anchor.position.y};
+  if (gap != Vec2w{} && snapKeepsTouches(e, anchor, gap)) anchor.position = ideal;
   anchor.idealQ30 = q30FromPoint(anchor.position);
   e.angle = static_cast<Angle>(e.angle + theta);
   const Rotation r = rotationOf(theta);
@@ -293,7 +319,7 @@ void WorldImpl::eraseUnlinkedCopies(Move& move) {
   if (!anyOutside) return;
   auto onFace = [&](size_t i) {
     const MapPart& p = part(e.instances[i].part);
-    return !p.faceLoop().empty() && insideFace(p, e.instances[i].position);
+    return !p.faceLoop().empty() && insideFace(p, centreOf(e.instances[i]));
   };
   bool keptOnFace = false;
   for (size_t i = 0; i < n; ++i) keptOnFace = keptOnFace || (root(i) == keep && onFace(i));
@@ -328,12 +354,12 @@ void WorldImpl::keepOnFace(Move& move) {
   if (e.instances.size() > 1) eraseUnlinkedCopies(move);
   for (const Instance& inst : e.instances) {
     const MapPart& p = part(inst.part);
-    if (p.faceLoop().empty() || insideFace(p, inst.position)) return;  // on a face: the warp links decide
+    if (p.faceLoop().empty() || insideFace(p, centreOf(inst))) return;  // on a face: the warp links decide
   }
   const MapPart& face = part(e.instances[0].part);
-  const Vec2 at = e.instances[0].position;
+  const Vec2 at = centreOf(e.instances[0]);
   const auto loop = face.faceLoop();
-  // The corner nearest the origin, and its two edges: `in` ends there, `out` starts there.
+  // The corner nearest the centre, and its two edges: `in` ends there, `out` starts there.
   const size_t corner = nearestCorner(face, at);
   const Segment out = face.segments()[loop[corner]];
   const Segment in = face.segments()[loop[(corner + loop.size() - 1) % loop.size()]];
@@ -385,11 +411,12 @@ void WorldImpl::keepOnFace(Move& move) {
   for (size_t k = 0; k < candidates.size(); ++k) {
     if (k > 0 && candidates[k] == candidates[k - 1]) continue;
     along = std::min<int64_t>(candidates[k], length / 2);
-    anchor.position = {vertex.x + static_cast<int32_t>(roundDiv(i128{away.x} * along + i128{inward.x} * 2, length)),
-                       vertex.y + static_cast<int32_t>(roundDiv(i128{away.y} * along + i128{inward.y} * 2, length))};
+    // The centre goes there (the origin may lie outside the shape).
+    anchor.position = {vertex.x - anchor.centre.x + static_cast<int32_t>(roundDiv(i128{away.x} * along + i128{inward.x} * 2, length)),
+                       vertex.y - anchor.centre.y + static_cast<int32_t>(roundDiv(i128{away.y} * along + i128{inward.y} * 2, length))};
     worldVertices(anchor, verts);
     coverMotion(anchor, {});  // the lines around the new place, for the walls there and the warps to cross
-    if (insideFace(face, anchor.position) && isFree(e, anchor, verts)) break;
+    if (insideFace(face, centreOf(anchor)) && isFree(e, anchor, verts)) break;
     along = -1;
   }
   if (along < 0) {

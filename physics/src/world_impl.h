@@ -203,6 +203,7 @@ struct WorldImpl {
   bool liftCopy(const Entity& e, Instance& copy, Vec2w direction, Vec2w move);
   // Makes instance k the anchor: the frame, velocity, remainder and motion turn with it.
   void rebase(Move& move, size_t k);
+  bool snapKeepsTouches(const Entity& e, Instance& inst, Vec2w gap);
   // Turns what is left of a frame's move into a frame turned by theta (the anchor changed).
   void turnMove(Move& move, Angle theta);
   void updateLinks(Move& move);
