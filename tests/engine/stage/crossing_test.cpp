@@ -6,7 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include "platon/stage/mesh.h"
 #include "platon/stage/stage.h"
+#include "platon/stage/stage_error.h"
 #include "platon/testing/rng.h"
 
 using namespace platon;
@@ -166,9 +168,8 @@ struct ReturnFigures {
 // only ever touched the two faces and its centre kept farther than its reach plus a frame's motion
 // from every vertex (near a vertex the corner rule decides, docs/level-format.md); clean crossings
 // must come back within `bound` units and never meet the corner rule.
-ReturnFigures retraceRandomCrossings(stage::Solid solid, int32_t size, int trials, uint64_t seed, double bound) {
+ReturnFigures retraceRandomCrossings(Built* b, int trials, uint64_t seed, double bound) {
   platon::testing::Rng rng{seed};
-  auto b = build(solid, size, 0);
   physics::World& world = b->world;
   ReturnFigures out;
   while (out.trials < trials) {
@@ -257,7 +258,7 @@ ReturnFigures retraceRandomCrossings(stage::Solid solid, int32_t size, int trial
 TEST(Crossing, RandomBodiesOverRandomEdgesComeBack) {
   for (const int32_t size : {4096, 1 << 24})
     for (const stage::Solid solid : stage::kSolids) {
-      const ReturnFigures r = retraceRandomCrossings(solid, size, size == 4096 ? 1500 : 300, 77 + static_cast<uint64_t>(solid), 5.0);
+      const ReturnFigures r = retraceRandomCrossings(build(solid, size, 0).get(), size == 4096 ? 1500 : 300, 77 + static_cast<uint64_t>(solid), 5.0);
       SCOPED_TRACE(std::string(stage::solidName(solid)) + " size " + std::to_string(size) + ", worst: " + r.worstCase);
       std::printf("%s, faces of %d: %d trials, %d clean crossings, worst return %.2f units\n", stage::solidName(solid).data(), size,
                   r.trials, r.clean, r.worst);
@@ -265,6 +266,68 @@ TEST(Crossing, RandomBodiesOverRandomEdgesComeBack) {
       EXPECT_EQ(r.overBound, 0);
       EXPECT_EQ(r.cornerReturnsWhenClean, 0);
     }
+}
+
+namespace {
+
+// A convex solid that is not Platonic, as a mesh file would give it: an n-sided prism or
+// bipyramid of random proportions, turned at random.
+stage::MeshData randomConvexMesh(platon::testing::Rng& rng) {
+  stage::MeshData m;
+  const int n = rng.between(3, 10);
+  const bool prism = rng.between(0, 1) == 1;
+  const double h = rng.uniform(0.3, 3.0);
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * M_PI * i / n;
+    m.positions.push_back({std::cos(a), prism ? -h / 2 : 0.0, std::sin(a)});
+    if (prism) m.positions.push_back({std::cos(a), h / 2, std::sin(a)});
+  }
+  const int low = static_cast<int>(m.positions.size()), high = low + 1;
+  m.positions.push_back({0, prism ? -h / 2 : -h, 0});
+  m.positions.push_back({0, prism ? h / 2 : h, 0});
+  auto ring = [&](int i, int level) { return prism ? 2 * (i % n) + level : i % n; };
+  for (int i = 0; i < n; ++i) {
+    m.triangles.push_back({low, ring(i, 0), ring(i + 1, 0)});
+    m.triangles.push_back({high, ring(i + 1, 1), ring(i, 1)});
+    if (prism) {
+      m.triangles.push_back({ring(i, 0), ring(i, 1), ring(i + 1, 1)});
+      m.triangles.push_back({ring(i, 0), ring(i + 1, 1), ring(i + 1, 0)});
+    }
+  }
+  // The winding above may run either way: the builder turns a mesh wound clockwise throughout over.
+  Eigen::Quaterniond q(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
+  q.normalize();
+  for (Eigen::Vector3d& p : m.positions) p = q.toRotationMatrix() * p;
+  return m;
+}
+
+}  // namespace
+
+// The same over stages that are not Platonic: random prisms and bipyramids (faces of 3 to 10
+// sides meeting at many angles), built from meshes as a mesh file would give them.
+TEST(Crossing, RandomBodiesOverRandomMeshStagesComeBack) {
+  platon::testing::Rng rng{2027};
+  int stages = 0;
+  for (int k = 0; k < 12; ++k) {
+    auto b = std::make_unique<Built>();
+    try {
+      b->stage = stage::stageFromPolyhedron(stage::polyhedronFromMesh(randomConvexMesh(rng), 4096));
+    } catch (const stage::StageError& e) {
+      ADD_FAILURE() << "a convex mesh was refused: " << e.what();
+      continue;
+    }
+    stage::addStageToWorld(b->stage, b->world, 0);
+    for (size_t f = 0; f < b->stage.faceCount(); ++f) b->world.mapPart(b->stage.part(f)).initialize();
+    const ReturnFigures r = retraceRandomCrossings(b.get(), 400, 500 + static_cast<uint64_t>(k), 5.0);
+    SCOPED_TRACE("mesh stage " + std::to_string(k) + " (" + std::to_string(b->stage.faceCount()) + " faces), worst: " + r.worstCase);
+    std::printf("mesh stage %d, %zu faces: %d trials, %d clean crossings, worst return %.2f units\n", k, b->stage.faceCount(), r.trials,
+                r.clean, r.worst);
+    EXPECT_GT(r.clean, r.trials / 3);
+    EXPECT_EQ(r.overBound, 0);
+    EXPECT_EQ(r.cornerReturnsWhenClean, 0);
+    ++stages;
+  }
+  EXPECT_EQ(stages, 12);
 }
 
 // Bodies thrown at every corner of every solid from every face that has it (straight at the vertex,
@@ -324,45 +387,69 @@ TEST(Crossing, ThrownAtEveryCornerNeverLeavesTheFaces) {
 // Walking: on every solid, each face with a floor a little above its floor edge and gravity down
 // its own frame, bodies kept walking right (or left) for 3,000 frames go over edges, fall onto
 // other faces and walk on; every frame every copy stays on its face (or within the body's reach).
+// Each face gets a floor across it a little above its lowest point (its floor edge, y = 0) and
+// gravity down its own frame; six bodies kept walking right or left for 3,000 frames go over
+// edges, fall onto other faces and walk on; every frame every copy stays on its face (or within
+// the body's reach).
+void walkAcross(Built& b, platon::testing::Rng& rng, const std::string& label) {
+  for (size_t f = 0; f < b.stage.faceCount(); ++f) {
+    physics::MapPart& part = b.world.mapPart(b.stage.part(f));
+    const auto& c = b.stage.faces[f].corners;
+    double top = 0;
+    for (const Vec2 p : c) top = std::max(top, double(p.y));
+    const double y = std::min(400.0, top / 4);
+    double lo = 1e9, hi = -1e9;  // the polygon's width at y, less 40 units each side
+    for (size_t k = 0; k < c.size(); ++k) {
+      const Vec2 p = c[k], q = c[(k + 1) % c.size()];
+      if ((p.y - y) * (q.y - y) > 0 || p.y == q.y) continue;
+      const double x = p.x + (y - p.y) * (q.x - p.x) / (q.y - p.y);
+      lo = std::min(lo, x), hi = std::max(hi, x);
+    }
+    if (hi - lo > 200) part.line({static_cast<int32_t>(lo + 40), static_cast<int32_t>(y)}, {static_cast<int32_t>(hi - 40), static_cast<int32_t>(y)});
+    part.setGravity({0, -22938});
+    part.initialize();
+  }
+  for (int walker = 0; walker < 6; ++walker) {
+    const size_t face = static_cast<size_t>(rng.between(0, static_cast<int>(b.stage.faceCount()) - 1));
+    const int64_t speed = (walker % 2 ? -1 : 1) * rng.between(3, 14) * kQ16;
+    const physics::EntityId body = b.world.createEntity(shapeNumber(walker % 2));
+    double cx = 0, cy = 0;
+    for (const Vec2 p : b.stage.faces[face].corners) cx += p.x, cy += p.y;
+    cx /= double(b.stage.faces[face].corners.size()), cy /= double(b.stage.faces[face].corners.size());
+    try {
+      b.world.insert(body, b.stage.part(face), {static_cast<int32_t>(cx), static_cast<int32_t>(cy)}, 0);
+    } catch (const physics::Error&) {
+      b.world.destroyEntity(body);  // a face too small for the body here
+      continue;
+    }
+    SCOPED_TRACE(label + " walker " + std::to_string(walker));
+    for (int frame = 1; frame <= 3000; ++frame) {
+      b.world.setVelocity(body, {speed, b.world.entity(body).velocity().y});
+      b.world.solve();
+      const physics::EntityView e = b.world.entity(body);
+      ASSERT_TRUE(e.inserted()) << "frame " << frame;
+      const double reach = 100 + std::hypot(double(e.velocity().x), double(e.velocity().y)) / kQ16;
+      for (const physics::InstanceView i : e.instances())
+        ASSERT_LE(outside(b.stage.faces[i.part - b.stage.firstPart].corners, i.position), reach)
+            << "frame " << frame << ": a copy at (" << i.position.x << ", " << i.position.y << ") is off face " << i.part;
+    }
+    b.world.destroyEntity(body);
+  }
+}
+
 TEST(Crossing, WalkingAndFallingAcrossEveryShapeStaysOnTheFaces) {
   platon::testing::Rng rng{9};
   for (const stage::Solid solid : stage::kSolids) {
     auto b = std::make_unique<Built>();
     b->stage = stage::platonicStage(solid, 4096);
     stage::addStageToWorld(b->stage, b->world, 0);
-    for (size_t f = 0; f < b->stage.faceCount(); ++f) {
-      physics::MapPart& part = b->world.mapPart(b->stage.part(f));
-      // The floor: across the face at y = 400, inside it (a polygon's width there, less 40 units).
-      const auto& c = b->stage.faces[f].corners;
-      double lo = 1e9, hi = -1e9;
-      for (size_t k = 0; k < c.size(); ++k) {
-        const Vec2 p = c[k], q = c[(k + 1) % c.size()];
-        if ((p.y - 400.0) * (q.y - 400.0) > 0 || p.y == q.y) continue;
-        const double x = p.x + (400.0 - p.y) * (q.x - p.x) / (q.y - p.y);
-        lo = std::min(lo, x), hi = std::max(hi, x);
-      }
-      part.line({static_cast<int32_t>(lo + 40), 400}, {static_cast<int32_t>(hi - 40), 400});
-      part.setGravity({0, -22938});
-      part.initialize();
-    }
-    for (int walker = 0; walker < 6; ++walker) {
-      const size_t face = static_cast<size_t>(rng.between(0, static_cast<int>(b->stage.faceCount()) - 1));
-      const int64_t speed = (walker % 2 ? -1 : 1) * rng.between(3, 14) * kQ16;
-      const physics::EntityId body = b->world.createEntity(shapeNumber(walker % 2));
-      b->world.insert(body, b->stage.part(face), {static_cast<int32_t>(b->stage.faces[face].corners[1].x / 2), 600}, 0);
-      SCOPED_TRACE(std::string(stage::solidName(solid)) + " walker " + std::to_string(walker));
-      for (int frame = 1; frame <= 3000; ++frame) {
-        b->world.setVelocity(body, {speed, b->world.entity(body).velocity().y});
-        b->world.solve();
-        const physics::EntityView e = b->world.entity(body);
-        ASSERT_TRUE(e.inserted()) << "frame " << frame;
-        const double reach = 100 + std::hypot(double(e.velocity().x), double(e.velocity().y)) / kQ16;
-        for (const physics::InstanceView i : e.instances())
-          ASSERT_LE(outside(b->stage.faces[i.part].corners, i.position), reach)
-              << "frame " << frame << ": a copy at (" << i.position.x << ", " << i.position.y << ") is off face " << i.part;
-      }
-      b->world.destroyEntity(body);
-    }
+    walkAcross(*b, rng, std::string(stage::solidName(solid)));
+  }
+  for (int k = 0; k < 12; ++k) {  // and random prisms and bipyramids
+    auto b = std::make_unique<Built>();
+    b->stage = stage::stageFromPolyhedron(stage::polyhedronFromMesh(randomConvexMesh(rng), 4096));
+    stage::addStageToWorld(b->stage, b->world, 0);
+    walkAcross(*b, rng, "mesh stage " + std::to_string(k));
   }
 }
 
