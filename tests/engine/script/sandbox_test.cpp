@@ -76,7 +76,12 @@ INSTANTIATE_TEST_SUITE_P(
                     Refusal{"platon.x = 1", "platon is read-only (tried to set x)"},
                     Refusal{"string.find(string.rep('a', 5000), '.-.-.-b')", "pattern too costly"},
                     Refusal{"for w in string.gmatch(string.rep('a', 20000), 'a*a*b') do end", "pattern too costly"},
-                    Refusal{"module('x')", "attempt to call global 'module' (a nil value)"}));
+                    Refusal{"module('x')", "attempt to call global 'module' (a nil value)"},
+                    // The string methods are the sandbox's too: no dump, and counted patterns.
+                    Refusal{"local dump = ('').dump; dump(print)", "attempt to call local 'dump' (a nil value)"},
+                    Refusal{"local s = string.rep('a', 40) local r = s:find('.-.-.-.-.-.-.-.-.-.-b')", "pattern too costly"},
+                    Refusal{"for k in pairs({ [print] = 1 }) do end", "pairs over function keys has no fixed order"},
+                    Refusal{"local t = {} for i = 1, 1000001 do t[i] = i end table.sort(t)", "table.sort: at most 1000000 items"}));
 
 TEST(Sandbox, ChangesToTheSharedLibrariesStayInTheSandbox) {
   LuaHost host;
@@ -89,6 +94,23 @@ TEST(Sandbox, ChangesToTheSharedLibrariesStayInTheSandbox) {
   host.call(0, 2);
   EXPECT_STREQ(lua_tostring(host.state(), -2), "A");
   lua_pop(host.state(), 2);
+}
+
+// Every string's methods are the counted pattern functions and have no dump, for trusted code too;
+// trusted code's global string keeps LuaJIT's own (and dump).
+TEST(Sandbox, StringMethodsAreTheSandboxsForEveryone) {
+  LuaHost host;
+  host.loadString("return ('').dump == nil, string.dump ~= nil, ('').find ~= string.find, ('').sub == string.sub, "
+                  "getmetatable('')",
+                  "=trusted", Trust::Trusted);
+  host.call(0, 5);
+  lua_State* L = host.state();
+  EXPECT_TRUE(lua_toboolean(L, -5));
+  EXPECT_TRUE(lua_toboolean(L, -4));
+  EXPECT_TRUE(lua_toboolean(L, -3));
+  EXPECT_TRUE(lua_toboolean(L, -2));
+  EXPECT_STREQ(lua_tostring(L, -1), "locked");
+  lua_pop(L, 5);
 }
 
 TEST(Sandbox, GlobalsOfOneSandboxAreNotAnothers) {
