@@ -2,8 +2,13 @@
 -- Velocities are in units per frame; the face's gravity gives "down", so when the player crosses
 -- onto another face (and the world turns its velocity into that face's frame), down turns too.
 local game = ...
-local world = platon.world
-local sqrt = math.sqrt
+-- Private copies: nothing a script does to a table can swap what this file calls.
+local world, draw = platon.world, platon.draw
+local createEntity, insert, destroyEntity = world.createEntity, world.insert, world.destroyEntity
+local position, gravity, contactCount, contact = world.position, world.gravity, world.contactCount, world.contact
+local velocity, setVelocity, instanceCount, instance = world.velocity, world.setVelocity, world.instanceCount, world.instance
+local drawEnabled, drawCircle = draw.enabled, draw.circle
+local sqrt, min, max, pcall, error, setmetatable = math.sqrt, math.min, math.max, pcall, error, setmetatable
 
 local Player = {}
 Player.__index = Player
@@ -21,38 +26,38 @@ Player.GROUND_COS = 0.64    -- a contact whose normal is within ~50 degrees of u
 
 -- Errors (leaving nothing behind) when the place is taken by a wall or the face does not exist.
 function Player.spawn(_, face, x, y)
-  local e = world.createEntity { circle = Player.RADIUS, sides = 16 }
-  local ok, err = pcall(world.insert, e, face, x, y, 0)
+  local e = createEntity { circle = Player.RADIUS, sides = 16 }
+  local ok, err = pcall(insert, e, face, x, y, 0)
   if not ok then
-    world.destroyEntity(e)
+    destroyEntity(e)
     error(err, 2)
   end
   return setmetatable({ entity = e, coyote = 0, buffer = 0, grounded = false }, Player)
 end
 
 local function approach(value, target, step)
-  if value < target then return math.min(value + step, target) end
-  return math.max(value - step, target)
+  if value < target then return min(value + step, target) end
+  return max(value - step, target)
 end
 
 function Player.tick(self, input)
   local e = self.entity
-  local part = world.position(e)
-  local gx, gy = world.gravity(part)
+  local part = position(e)
+  local gx, gy = gravity(part)
   local g = sqrt(gx * gx + gy * gy)
   local dx, dy = 0, -1  -- down
   if g > 0 then dx, dy = gx / g, gy / g end
   local rx, ry = -dy, dx  -- right
 
   self.grounded = false
-  for i = 1, world.contactCount(e) do
-    local nx, ny = world.contact(e, i)
+  for i = 1, contactCount(e) do
+    local nx, ny = contact(e, i)
     if -(nx * dx + ny * dy) > Player.GROUND_COS then self.grounded = true end
   end
   if self.grounded then self.coyote = Player.COYOTE_FRAMES elseif self.coyote > 0 then self.coyote = self.coyote - 1 end
   if input.pressed.jump then self.buffer = Player.BUFFER_FRAMES elseif self.buffer > 0 then self.buffer = self.buffer - 1 end
 
-  local vx, vy = world.velocity(e)
+  local vx, vy = velocity(e)
   local along = vx * rx + vy * ry
   local fall = vx * dx + vy * dy  -- > 0: falling
 
@@ -71,14 +76,15 @@ function Player.tick(self, input)
     fall = -Player.JUMP_CUT
   end
 
-  world.setVelocity(e, rx * along + dx * fall, ry * along + dy * fall)
+  setVelocity(e, rx * along + dx * fall, ry * along + dy * fall)
 end
 
-function Player.draw(self, draw)
-  if not draw.enabled() then return end
-  for i = 1, world.instanceCount(self.entity) do
-    local part, x, y = world.instance(self.entity, i)
-    draw.circle(part, x, y, Player.RADIUS, 0xf2c14e)
+-- The engine passes platon.draw; the copies taken above are what is called.
+function Player.draw(self)
+  if not drawEnabled() then return end
+  for i = 1, instanceCount(self.entity) do
+    local part, x, y = instance(self.entity, i)
+    drawCircle(part, x, y, Player.RADIUS, 0xf2c14e)
   end
 end
 

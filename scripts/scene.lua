@@ -2,31 +2,30 @@
 -- and status; this file loads the manifest's scripts and passes them the shared `game` state.
 --   rules        returns a table of contact callbacks (docs/scripting.md, "Rules")
 --   player       returns the Player module: spawn(game, face, x, y), tick(self, input), draw(self, draw)
---   progression  returns {start(game), afterStep(game)}: spawning, goal, deaths, checkpoints
+--   progression  returns {start(game), afterStep(game), respawn(game)}: spawning, goal, deaths, checkpoints
 --   level        returns {build(level), start = {face, x, y}, tick(level, frame), ...} (sandboxed)
 --   mods         sandboxed scripts that may return {tick(level, frame)}
+-- Which of them are trusted the manifest decided (setup.trusted), from what it wrote: only
+-- "scripts/..." names an engine script.
 local engine, setup = ...
-local world = platon.world
-local band = bit.band
+-- Private copies: nothing a script does to a table can swap what this file calls.
+local world, drawApi = platon.world, platon.draw
+local valid, position, velocity, angle, setVelocity = world.valid, world.position, world.velocity, world.angle, world.setVelocity
+local destroyEntity, levelStart, faceCount, faceOf = world.destroyEntity, world.levelStart, world.faceCount, world.face
+local band, floor, type, tostring, error, pairs, ipairs, rawget, pcall =
+      bit.band, math.floor, type, tostring, error, pairs, ipairs, rawget, pcall
+local call, invoke, readonly, disabled, protect = engine.call, engine.invoke, engine.readonly, engine.disabled, engine.protect
 
-local function trusted(path) return path:sub(1, 8) == "scripts/" end
-
-local function load(path, ...)
-  if path == nil or path == "" then return nil end
-  return engine.load(path, trusted(path), ...)
-end
-
--- Level scripts and mods are sandboxed: their functions run with the JIT off (so the time budget's
--- hook can stop any loop). Trusted code calls them through engine.call, a C function: LuaJIT
--- stitches the trusted code's traces around it instead of giving up on them. Their tables are read
--- raw, once, so no metamethod of theirs ever runs outside a sandboxed call.
-local call = engine.call
+-- Level scripts and mods are sandboxed: their functions run with the JIT off (so the hooks can
+-- stop any loop), each call through engine.call, a C function with its own error boundary and the
+-- frame's time budget (LuaJIT stitches the trusted code's traces around it). Their tables are
+-- read raw, once, so no metamethod of theirs ever runs outside a sandboxed call.
 local HOOKS = { "build", "tick", "draw", "save", "onReload" }
 
-local function sandboxedModule(t, path)
-  if t == nil then return {} end
+local function sandboxedModule(t, path, id)
+  if t == nil then return { id = id, name = path } end
   if type(t) ~= "table" then error(path .. ": a level script or mod returns a table", 0) end
-  local m = {}
+  local m = { id = id, name = path }
   for _, name in ipairs(HOOKS) do
     local f = rawget(t, name)
     if type(f) == "function" then m[name] = f end
@@ -36,6 +35,41 @@ local function sandboxedModule(t, path)
     m.start = { face = tonumber(rawget(start, "face")), x = tonumber(rawget(start, "x")), y = tonumber(rawget(start, "y")) }
   end
   return m
+end
+
+-- A module's hook, behind its own error boundary: a failing module does not stop the others (its
+-- error is reported with the frame's), and one a limit stopped is dropped for good.
+local function run(m, hook, ...)
+  local f = m[hook]
+  if f == nil then return nil end
+  local ok, result = call(m.id, f, ...)
+  if ok then return result end
+  if disabled(m.id) then
+    for _, name in ipairs(HOOKS) do m[name] = nil end
+  end
+  return nil
+end
+
+-- A level's own player or progression script (sandboxed) is the game's logic, so it gets the game
+-- state; its functions run as sandboxed code (engine.invoke: the budget and the memory limit, and
+-- their errors raised as if called directly).
+local function sandboxedFunctions(t, id)
+  if type(t) ~= "table" then return t end
+  local wrapped = {}
+  for k, v in pairs(t) do
+    if type(v) == "function" then
+      local f = v
+      wrapped[k] = function(...) return invoke(id, f, ...) end
+    else
+      wrapped[k] = v
+    end
+  end
+  return wrapped
+end
+
+local function load(path, trusted, ...)
+  if path == nil or path == "" then return nil end
+  return engine.load(path, trusted, ...)
 end
 
 -- The buttons, by their InputFrame bits (core/input.h): left 1, right 2, up 4, down 8, jump 16,
@@ -51,6 +85,7 @@ local game = {
   won = false, wonFrame = 0, deaths = 0, message = "",
   time = 0,            -- frames played on this level (kept across hot reloads, unlike world.frame())
   switches = {},       -- switch id -> true when on
+  openSwitches = {},   -- the ids of the switches on, increasing (progression keeps it)
   pendingToggles = {}, -- switch ids toggled during the frame, applied after it
   killed = false,
   input = { pressed = { left = false, right = false, up = false, down = false, jump = false, restart = false,
@@ -59,56 +94,154 @@ local game = {
             reload = false },
 }
 
--- What level scripts and mods see (a read-only view inside their sandbox).
+-- What level scripts and mods may do to the game, checked here: a bad value is an error at the
+-- script's own line, never a broken game later.
+local MESSAGE_BYTES = 200
+local COORDINATE = 2 ^ 30 - 1
+
+local function shown(v)
+  if type(v) == "number" then return tostring(v) end
+  if type(v) == "string" then return string.format("%q", v:sub(1, 40)) end
+  return "a " .. type(v)
+end
+
+local function checkSwitch(what, id)
+  if type(id) ~= "number" or id ~= floor(id) or id < 0 or id > 999 then
+    error(what .. ": expected a switch id, an integer 0..999, got " .. shown(id), 3)
+  end
+end
+
+local faces  -- the stage's face ids, as a set (read once, when a checkpoint is first set)
+local function checkCoordinate(what, name, v)
+  if type(v) ~= "number" or v ~= floor(v) or v < -COORDINATE or v > COORDINATE then
+    error(what .. ": " .. name .. ": expected an integer within +-(2^30 - 1), got " .. shown(v), 3)
+  end
+end
+
 local levelApi = {
-  world = world,
-  message = function(text) game.message = tostring(text) end,
-  switchOn = function(id) return game.switches[id] == true end,
-  toggle = function(id) game.pendingToggles[#game.pendingToggles + 1] = id end,
+  message = function(text)
+    text = tostring(text)
+    if #text > MESSAGE_BYTES then  -- cut at a character boundary (UTF-8)
+      local cut = MESSAGE_BYTES
+      while cut > 0 and band(text:byte(cut + 1), 0xC0) == 0x80 do cut = cut - 1 end
+      text = text:sub(1, cut) .. "..."
+    end
+    game.message = text
+  end,
+  switchOn = function(id)
+    checkSwitch("switchOn", id)
+    return game.switches[id] == true
+  end,
+  toggle = function(id)
+    checkSwitch("toggle", id)
+    game.pendingToggles[#game.pendingToggles + 1] = id
+  end,
   kill = function() game.killed = true end,
-  checkpoint = function(face, x, y) game.checkpoint = { face = face, x = x, y = y } end,
+  checkpoint = function(face, x, y)
+    if not faces then
+      faces = {}
+      for i = 1, faceCount() do faces[(faceOf(i))] = true end
+    end
+    if type(face) ~= "number" or not faces[face] then
+      error("checkpoint: face: expected a face of this stage, got " .. shown(face), 2)
+    end
+    checkCoordinate("checkpoint", "x", x)
+    checkCoordinate("checkpoint", "y", y)
+    game.checkpoint = { face = face, x = x, y = y }
+  end,
   frame = function() return game.time end,  -- frames played: kept across hot reloads
   player = function() return game.player and game.player.entity end,
   won = function() return game.won end,
 }
 game.levelApi = levelApi
 
+-- The sandboxes' views: read-only, the world's too (platon.world as every sandbox sees it).
+local worldView = readonly(world, "game.world")
+levelApi.world = worldView
+local levelView = readonly(levelApi, "game")
+-- A sandboxed rules script: the same, and what the game's own rules do to the game.
+local rulesApi = {}
+for k, v in pairs(levelApi) do rulesApi[k] = v end
+rulesApi.reachGoal = function() game.reachedGoal = true end
+rulesApi.touchCheckpoint = function() game.touchedCheckpoint = true end
+local rulesView = readonly(rulesApi, "game")
+local drawView = readonly(drawApi, "draw")
+
+-- The player's entity is the game's: a sandbox may not destroy or erase it (world_api.cpp).
+local protected
+local function protectPlayer()
+  local e = game.player and game.player.entity
+  if e ~= protected then
+    protect(e)
+    protected = e
+  end
+end
+
 local scene = {}
 
 function scene.build()
-  game.level = sandboxedModule(load(setup.level, levelApi), setup.level)
-  game.Player = load(setup.player, game)
-  game.progression = load(setup.progression, game) or {}
+  local level, levelId = load(setup.level, setup.trusted.level, levelView)
+  if setup.trusted.level then game.level = sandboxedModule(level, setup.level, nil) -- an engine script as the level
+  else game.level = sandboxedModule(level, setup.level, levelId) end
+  local Player, playerId = load(setup.player, setup.trusted.player, game)
+  game.Player = setup.trusted.player and Player or sandboxedFunctions(Player, playerId)
+  local progression, progressionId = load(setup.progression, setup.trusted.progression, game)
+  game.progression = (setup.trusted.progression and progression or sandboxedFunctions(progression, progressionId)) or {}
   game.mods = {}
-  for i, path in ipairs(setup.mods) do game.mods[i] = sandboxedModule(load(path, levelApi), path) end
+  for i, path in ipairs(setup.mods) do
+    local mod, id = load(path, false, levelView)
+    game.mods[i] = sandboxedModule(mod, path, id)
+  end
   if not game.level.start then  -- the level file's start, when the manifest names a level file
-    local face, x, y = world.levelStart()
+    local face, x, y = levelStart()
     if face then game.level.start = { face = face, x = x, y = y } end
   end
-  if game.level.build then call(game.level.build, levelApi) end
+  if game.level.id then run(game.level, "build", levelView)
+  elseif game.level.build then game.level.build(levelView) end
 end
 
 function scene.start()
-  local rules = load(setup.rules, game)
-  if rules then engine.setRules(rules, not trusted(setup.rules)) end
+  if setup.trusted.rules then
+    local rules = load(setup.rules, true, game)
+    if rules then engine.setRules(rules) end
+  else
+    local rules, id = load(setup.rules, false, rulesView)
+    if rules then engine.setRules(rules, id) end
+  end
   if game.progression.start then game.progression.start(game) end
+  protectPlayer()
+end
+
+local function tickLevel(m, frame)
+  if m.id then return run(m, "tick", levelView, frame) end
+  return m.tick(levelView, frame)
 end
 
 function scene.beforeStep(held, pressed)
   local input = game.input
   decode(input, held)
   decode(input.pressed, pressed)
+  local p = game.player
+  if p and not valid(p.entity) and game.progression.respawn then
+    -- Lost (nothing a sandbox may do destroys it): once, back at the last checkpoint.
+    game.player = nil
+    game.progression.respawn(game)
+    game.message = game.player and "the player was lost: back at the last checkpoint" or "the player was lost"
+    protectPlayer()
+  end
   if game.player and game.Player then game.Player.tick(game.player, input) end
   local frame = game.time + 1
-  if game.level.tick then call(game.level.tick, levelApi, frame) end
-  for i = 1, #game.mods do
-    if game.mods[i].tick then call(game.mods[i].tick, levelApi, frame) end
+  if game.level.tick then tickLevel(game.level, frame) end
+  local mods = game.mods
+  for i = 1, #mods do
+    if mods[i].tick then run(mods[i], "tick", levelView, frame) end
   end
 end
 
 function scene.afterStep()
   game.time = game.time + 1
   if game.progression.afterStep then game.progression.afterStep(game) end
+  if (game.player and game.player.entity) ~= protected then protectPlayer() end
 end
 
 -- Hot reload: the old version's save() is copied as plain data into the new version's restore().
@@ -123,20 +256,23 @@ local function plainFields(t)
   return out
 end
 
+local function moduleHook(m, hook, ...)
+  if m.id then return run(m, hook, ...) end
+  if m[hook] then return m[hook](...) end
+end
+
 function scene.save()
   local saved = { game = {}, mods = {} }
   for _, key in ipairs(KEPT) do saved.game[key] = game[key] end
   local p = game.player
-  if p and world.valid(p.entity) then
-    local face, x, y = world.position(p.entity)
-    local vx, vy = world.velocity(p.entity)
-    saved.player = { face = face, x = x, y = y, vx = vx, vy = vy, angle = world.angle(p.entity),
+  if p and valid(p.entity) then
+    local face, x, y = position(p.entity)
+    local vx, vy = velocity(p.entity)
+    saved.player = { face = face, x = x, y = y, vx = vx, vy = vy, angle = angle(p.entity),
                      state = game.Player.save and game.Player.save(p) or plainFields(p) }
   end
-  if game.level.save then saved.level = call(game.level.save, levelApi) end
-  for i = 1, #game.mods do
-    if game.mods[i].save then saved.mods[i] = call(game.mods[i].save, levelApi) end
-  end
+  saved.level = moduleHook(game.level, "save", levelView)
+  for i = 1, #game.mods do saved.mods[i] = run(game.mods[i], "save", levelView) end
   return saved
 end
 
@@ -145,16 +281,11 @@ end
 local function restorePlayer(saved)
   if not saved or not game.player then return false end
   local old = game.player
-  world.destroyEntity(old.entity)
   local ok, player = pcall(game.Player.spawn, game, saved.face, saved.x, saved.y)
-  if not ok then
-    local start = game.level.start or { face = 0, x = 0, y = 0 }
-    if game.progression.spawnPoint then game.player = game.Player.spawn(game, game.progression.spawnPoint())
-    else game.player = game.Player.spawn(game, start.face, start.x, start.y) end
-    return false
-  end
+  if not ok then return false end
+  destroyEntity(old.entity)  -- only now: the new one is in the world
   game.player = player
-  world.setVelocity(player.entity, saved.vx, saved.vy)
+  setVelocity(player.entity, saved.vx, saved.vy)
   if game.Player.onReload then game.Player.onReload(player, saved.state)
   else
     for k, v in pairs(saved.state or {}) do if k ~= "entity" and type(player[k]) == type(v) then player[k] = v end end
@@ -162,37 +293,37 @@ local function restorePlayer(saved)
   return true
 end
 
-function scene.restore(saved)
+-- note: why the level's and mods' saved state did not cross (too large, say), or nil.
+function scene.restore(saved, note)
   for _, key in ipairs(KEPT) do
     if saved.game[key] ~= nil then game[key] = saved.game[key] end
   end
   if game.progression.onReload then game.progression.onReload(game) end
   game.restoredPlayer = restorePlayer(saved.player)
   if not game.restoredPlayer and saved.player then game.message = "reloaded: the player's place is gone, back to the start" end
-  if game.level.onReload then call(game.level.onReload, levelApi, saved.level) end
-  for i = 1, #game.mods do
-    if game.mods[i].onReload then call(game.mods[i].onReload, levelApi, saved.mods[i]) end
-  end
+  protectPlayer()
+  moduleHook(game.level, "onReload", levelView, saved.level)
+  for i = 1, #game.mods do run(game.mods[i], "onReload", levelView, saved.mods[i]) end
+  if note then levelApi.message(note) end
 end
 
 function scene.draw()
-  if game.player and game.Player and game.Player.draw then game.Player.draw(game.player, platon.draw) end
-  if game.level.draw then call(game.level.draw, levelApi, platon.draw) end
+  if game.player and game.Player and game.Player.draw then game.Player.draw(game.player, drawApi) end
+  if game.level.draw then moduleHook(game.level, "draw", levelView, drawView) end
 end
 
 local status = {}
 function scene.status()
   status.won, status.wonFrame, status.deaths, status.message = game.won, game.wonFrame, game.deaths, game.message
   status.time = game.time
-  if game.player and world.valid(game.player.entity) then
-    status.face, status.x, status.y = world.position(game.player.entity)
+  if game.player and valid(game.player.entity) then
+    status.face, status.x, status.y = position(game.player.entity)
   end
-  -- The doors the switches hold open (tag 1000 + n), for the renderer.
+  -- The doors the switches hold open (tag 1000 + n), for the renderer, in increasing order.
   local open = status.openTags or {}
   for i = #open, 1, -1 do open[i] = nil end
-  for id, on in pairs(game.switches) do
-    if on then open[#open + 1] = 1000 + id end
-  end
+  local on = game.openSwitches
+  for i = 1, #on do open[i] = 1000 + on[i] end
   status.openTags = open
   return status
 end

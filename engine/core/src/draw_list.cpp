@@ -4,30 +4,38 @@
 
 namespace platon::core {
 
-void DrawList::circle(Place place, Point2 centre, float radius, Color color) {
-  if (!enabled_) return;
+bool DrawList::circle(Place place, Point2 centre, float radius, Color color) {
+  if (!enabled_) return true;
+  if (shapes_.size() >= kMaxShapes) return false;
   shapes_.push_back({ShapeKind::Circle, place, color, radius, centre, 0, 0});
+  return true;
 }
 
-void DrawList::polygon(Place place, std::span<const Point2> points, Color color) {
-  if (!enabled_ || points.size() < 3) return;
+bool DrawList::polygon(Place place, std::span<const Point2> points, Color color) {
+  if (!enabled_ || points.size() < 3) return true;
+  if (shapes_.size() >= kMaxShapes || points_.size() + points.size() > kMaxPoints) return false;
   shapes_.push_back({ShapeKind::Polygon, place, color, 0, points[0], static_cast<uint32_t>(points_.size()),
                      static_cast<uint32_t>(points.size())});
   points_.insert(points_.end(), points.begin(), points.end());
+  return true;
 }
 
-void DrawList::line(Place place, Point2 a, Point2 b, float width, Color color) {
-  if (!enabled_) return;
+bool DrawList::line(Place place, Point2 a, Point2 b, float width, Color color) {
+  if (!enabled_) return true;
+  if (shapes_.size() >= kMaxShapes || points_.size() + 2 > kMaxPoints) return false;
   shapes_.push_back({ShapeKind::Line, place, color, width, a, static_cast<uint32_t>(points_.size()), 2});
   points_.push_back(a);
   points_.push_back(b);
+  return true;
 }
 
-void DrawList::text(Place place, Point2 at, std::string_view s, float height, Color color) {
-  if (!enabled_) return;
+bool DrawList::text(Place place, Point2 at, std::string_view s, float height, Color color) {
+  if (!enabled_) return true;
+  if (shapes_.size() >= kMaxShapes || text_.size() + s.size() > kMaxTextBytes) return false;
   shapes_.push_back({ShapeKind::Text, place, color, height, at, static_cast<uint32_t>(text_.size()),
                      static_cast<uint32_t>(s.size())});
   text_.append(s);
+  return true;
 }
 
 DrawList DrawList::between(const DrawList& from, const DrawList& to, float t) {

@@ -1,5 +1,8 @@
 #include "platon/core/manifest.h"
 
+#include <limits.h>
+#include <stdlib.h>
+
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -236,6 +239,25 @@ void checkKeys(const std::string& file, const DataValue& table, std::initializer
   }
 }
 
+std::string realPath(const std::string& path) {
+  char resolved[PATH_MAX];
+  return ::realpath(path.c_str(), resolved) ? std::string(resolved) : std::string();
+}
+
+// A level's own file: `p` (no "..", not absolute: checked by the caller) inside the manifest's
+// folder, with every link resolved, and refused when a link leads out of the folder. A file that
+// does not exist (yet) is the folder's real path joined with p: loading it says it is missing.
+std::string insideFolder(const std::string& manifest, const std::string& folder, const DataValue& where,
+                         const std::string& p) {
+  const std::string realFolder = realPath(folder);
+  if (realFolder.empty()) fieldError(manifest, where, "'" + folder + "': the scene's folder cannot be resolved");
+  const std::string file = realPath(folder + "/" + p);
+  if (file.empty()) return realFolder + "/" + p;
+  if (file.rfind(realFolder + "/", 0) != 0)
+    fieldError(manifest, where, "'" + p + "' leads to " + file + ", outside the scene's folder (a link?)");
+  return file;
+}
+
 }  // namespace
 
 DataValue parseDataFile(std::string_view text, const std::string& fileName) { return DataReader(text, fileName).file(); }
@@ -280,7 +302,7 @@ SceneManifest loadManifest(const std::string& path) {
       const std::string p = stringField(path, *stage, "level", "");
       if (p.empty() || p.find("..") != std::string::npos || p[0] == '/')
         fieldError(path, *level, "'" + p + "': a level file is a path inside the scene's folder (no '..', not absolute)");
-      m.levelFile = m.directory + "/" + p;
+      m.levelFile = insideFolder(path, m.directory, *level, p);
     }
     m.solid = stringField(path, *stage, "solid", m.solid);
     if (!solidOfManifest(m.solid))
@@ -293,34 +315,40 @@ SceneManifest loadManifest(const std::string& path) {
   if (const DataValue* scripts = root.field("scripts")) {
     if (!scripts->table()) fieldError(path, *scripts, "'scripts' must be a table");
     checkKeys(path, *scripts, {"preset", "rules", "player", "progression", "level", "mods"});
-    auto script = [&](const char* key) {
+    // Trust is decided here, once, from what the manifest wrote: "scripts/..." names an engine
+    // script (trusted; the script system finds it under the engine's root), anything else is the
+    // level's own (sandboxed), resolved inside the manifest's folder.
+    auto script = [&](const char* key, bool& trusted) {
       std::string p = stringField(path, *scripts, key, "");
+      trusted = false;
       if (p.empty()) return p;
       const bool engine = p.rfind("scripts/", 0) == 0;
       if (p.find("..") != std::string::npos || p[0] == '/' || p.size() < 5 || p.substr(p.size() - 4) != ".lua")
         fieldError(path, *scripts->field(key),
                    "'" + p + "': a script is a .lua path inside the level's folder or under scripts/ (no '..', not absolute)");
-      return engine ? p : m.directory + "/" + p;
+      trusted = engine;
+      return engine ? p : insideFolder(path, m.directory, *scripts->field(key), p);
     };
-    m.rules = script("rules");
-    m.player = script("player");
-    m.progression = script("progression");
+    m.rules = script("rules", m.rulesTrusted);
+    m.player = script("player", m.playerTrusted);
+    m.progression = script("progression", m.progressionTrusted);
     // preset = "game": the game's own rules, player and progression, for any of the three the
     // manifest does not name itself (every campaign level uses them).
     if (const DataValue* preset = scripts->field("preset")) {
       if (!preset->string() || *preset->string() != "game")
         fieldError(path, *preset, "unknown script preset (known: \"game\")");
-      if (m.rules.empty()) m.rules = "scripts/rules/game.lua";
-      if (m.player.empty()) m.player = "scripts/player.lua";
-      if (m.progression.empty()) m.progression = "scripts/progression.lua";
+      if (m.rules.empty()) m.rules = "scripts/rules/game.lua", m.rulesTrusted = true;
+      if (m.player.empty()) m.player = "scripts/player.lua", m.playerTrusted = true;
+      if (m.progression.empty()) m.progression = "scripts/progression.lua", m.progressionTrusted = true;
     }
-    m.level = script("level");
+    m.level = script("level", m.levelTrusted);
     if (const DataValue* mods = scripts->field("mods")) {
       if (!mods->table()) fieldError(path, *mods, "'mods' must be a list of paths");
       for (const auto& [key, v] : *mods->table()) {
-        if (!v.string() || v.string()->find("..") != std::string::npos || v.string()->rfind("scripts/", 0) == 0)
+        if (!v.string() || v.string()->empty() || v.string()->find("..") != std::string::npos ||
+            v.string()->rfind("scripts/", 0) == 0 || (*v.string())[0] == '/')
           fieldError(path, v, "a mod is a .lua path inside the level's folder");
-        m.mods.push_back(m.directory + "/" + *v.string());
+        m.mods.push_back(insideFolder(path, m.directory, v, *v.string()));
       }
     }
     if (!m.rules.empty() || !m.player.empty() || !m.progression.empty() || !m.level.empty() || !m.mods.empty())

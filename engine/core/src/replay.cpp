@@ -1,5 +1,6 @@
 #include "platon/core/replay.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -76,6 +77,15 @@ class LineReader {
 
 }  // namespace
 
+bool hasParentStep(const std::string& path) {
+  for (size_t start = 0; start <= path.size();) {
+    const size_t end = std::min(path.find('/', start), path.size());
+    if (path.compare(start, end - start, "..") == 0) return true;
+    start = end + 1;
+  }
+  return false;
+}
+
 Replay parseReplay(const std::string& text, const std::string& fileName) {
   LineReader in(text, fileName);
   std::vector<Word> w;
@@ -92,6 +102,8 @@ Replay parseReplay(const std::string& text, const std::string& fileName) {
   r.scene = w[1].text;
   if (!w[1].quoted) in.fail(w[1].column, "the scene path is written in double quotes");
   if (r.scene.empty()) in.fail(w[1].column, "empty scene path");
+  if (hasParentStep(r.scene))
+    in.fail(w[1].column, "'" + r.scene + "': a replay's scene path may not contain '..' (replays are shared: it names the scene's own path)");
   line("frames N");
   in.expect(w, "frames", 2, "frames N");
   const uint64_t frames = in.number(w[1], kMaxFrames, "frames");

@@ -22,11 +22,22 @@ core::Color checkColor(lua_State* L, int index) {
 
 float checkFloat(lua_State* L, int index) { return static_cast<float>(lua::checkNumber(L, index)); }
 
+// A shape the frame's list had no room for (DrawList's limits): the first of a frame is an error
+// at the script's line, the rest are dropped quietly.
+void dropped(lua_State* L) {
+  ScriptContext& context = contextOf(L);
+  if (context.drawOverflowReported) return;
+  context.drawOverflowReported = true;
+  throw lua::ArgError("draw: this frame's picture is full (at most " + std::to_string(core::DrawList::kMaxShapes) +
+                      " shapes, " + std::to_string(core::DrawList::kMaxPoints) + " points and " +
+                      std::to_string(core::DrawList::kMaxTextBytes / 1024) + " KB of text); the rest of it is dropped");
+}
+
 // circle(place, x, y, radius, colour [, alpha])
 int circle(lua_State* L) {
   core::DrawList* out = contextOf(L).draw;
   if (!out) return 0;
-  out->circle(checkPlace(L, 1), {checkFloat(L, 2), checkFloat(L, 3)}, checkFloat(L, 4), checkColor(L, 5));
+  if (!out->circle(checkPlace(L, 1), {checkFloat(L, 2), checkFloat(L, 3)}, checkFloat(L, 4), checkColor(L, 5))) dropped(L);
   return 0;
 }
 
@@ -34,8 +45,9 @@ int circle(lua_State* L) {
 int line(lua_State* L) {
   core::DrawList* out = contextOf(L).draw;
   if (!out) return 0;
-  out->line(checkPlace(L, 1), {checkFloat(L, 2), checkFloat(L, 3)}, {checkFloat(L, 4), checkFloat(L, 5)},
-            checkFloat(L, 6), checkColor(L, 7));
+  if (!out->line(checkPlace(L, 1), {checkFloat(L, 2), checkFloat(L, 3)}, {checkFloat(L, 4), checkFloat(L, 5)},
+                 checkFloat(L, 6), checkColor(L, 7)))
+    dropped(L);
   return 0;
 }
 
@@ -54,7 +66,7 @@ int polygon(lua_State* L) {
     points.push_back({checkFloat(L, -2), checkFloat(L, -1)});
     lua_pop(L, 2);
   }
-  out->polygon(place, points, checkColor(L, 3));
+  if (!out->polygon(place, points, checkColor(L, 3))) dropped(L);
   return 0;
 }
 
@@ -64,7 +76,7 @@ int text(lua_State* L) {
   if (!out) return 0;
   const std::string_view s = lua::checkString(L, 4);
   if (s.size() > 4096) throw lua::ArgError("text: at most 4096 bytes");
-  out->text(checkPlace(L, 1), {checkFloat(L, 2), checkFloat(L, 3)}, s, checkFloat(L, 5), checkColor(L, 6));
+  if (!out->text(checkPlace(L, 1), {checkFloat(L, 2), checkFloat(L, 3)}, s, checkFloat(L, 5), checkColor(L, 6))) dropped(L);
   return 0;
 }
 

@@ -1,37 +1,182 @@
 #include "lua_host.h"
 
 #include <luajit.h>
+#include <signal.h>
+#include <time.h>
+#include <unistd.h>
 
+#include <atomic>
 #include <cstdio>
 #include <cstdlib>
-#include <ctime>
+#include <cstring>
+#include <mutex>
 
+#include "lua_pattern.h"
 #include "sandbox.h"
 
 namespace platon::script {
 
-// The allocator's and the hook's view of the host: reached through lua_getallocf's user data, so
-// neither needs a global.
+namespace {
+
+struct Sandbox {
+  std::string name;    // the chunk's file, as messages name it
+  std::string source;  // its chunk name ("@file"): the frames of its functions carry it
+  lua::Ref env;
+  bool disabled = false;
+  int64_t spent = 0;  // nanoseconds of this frame's budget
+};
+
+}  // namespace
+
+// The allocator's, the hook's and the timer's view of the host: reached through lua_getallocf's
+// user data (and the timer's signal value), so none of them needs a global.
 struct LuaHost::Shared {
   LuaLimits limits;
+  lua_State* L = nullptr;
   size_t used = 0;
-  bool memoryRefused = false;  // the allocator said no since the outermost call began
-  // The time budget: set by call() at depth 0, read by the hook.
+  int current = kNoSandbox;  // the sandbox whose code runs now (through callSandboxed)
+  int handler = 0;           // > 0 while the message handler or a stop's message is built: the reserve is open
+  // Memory: the sandbox whose allocation was refused during the running sandboxed call.
+  int memoryStop = kNoSandbox;
+  // Time. frameSpent counts the frame's sandboxed calls (outermost ones) that have returned;
+  // enteredAt is when the running one began.
+  int64_t frameSpent = 0;
+  int64_t enteredAt = 0;
+  bool expired = false;      // the budget is spent: the hook raises on every instruction until the call returns
+  bool skipNoted = false;    // a skipped call was reported this frame
+  bool stopNoted = false;    // a stop was reported this frame (it says the rest is skipped)
+  int hog = kNoSandbox;      // the sandbox that spent the most of the frame when the budget ran out
+  std::string stopMessage;   // what the hook raises once a limit stopped the call
+  bool collectSoon = false;  // a disabled sandbox left garbage
+  volatile sig_atomic_t inSandbox = 0;
+  volatile sig_atomic_t timerArmed = 0;
+  volatile sig_atomic_t hookFast = 0;  // the hook runs on every instruction
+  // The fallback for trusted code: the count hook times each outermost call from its first run.
   bool inCall = false;
-  int64_t callStart = 0;  // 0 until the hook first runs inside a call
-  bool expired = false;
+  int64_t callStart = 0;
+  bool trustedExpired = false;
+  // The deadline's timer, made on (and aimed at) the thread that runs the calls.
+  bool timerMade = false;
+  timer_t timer{};
+  pid_t timerThread = 0;
+  uint64_t gameFrame = 0;
+  std::vector<Sandbox> sandboxes;
   std::function<void(std::string_view, std::string_view)> print;
+
+  size_t sandboxLimit() const { return limits.memoryBytes - limits.memoryBytes / kTrustedReserveDivisor; }
 };
 
 namespace {
 
 constexpr int kHookInstructions = 100000;
 
-int64_t monotonicNanoseconds() {
+int64_t nowNanoseconds() {
   timespec t{};
   clock_gettime(CLOCK_MONOTONIC, &t);
   return int64_t{t.tv_sec} * 1'000'000'000 + t.tv_nsec;
 }
+
+// The same clock read at its last tick (a few ms of resolution, a third of the cost): what the
+// per-call bookkeeping of sandboxed calls reads. Over many short calls its errors cancel out.
+int64_t coarseNanoseconds() {
+  timespec t{};
+  clock_gettime(CLOCK_MONOTONIC_COARSE, &t);
+  return int64_t{t.tv_sec} * 1'000'000'000 + t.tv_nsec;
+}
+
+LuaHost::Shared& sharedOf(lua_State* L) {
+  void* ud = nullptr;
+  lua_getallocf(L, &ud);
+  return *static_cast<LuaHost::Shared*>(ud);
+}
+
+void budgetHook(lua_State* L, lua_Debug*);
+
+void hookEveryInstruction(LuaHost::Shared& s) {
+  s.hookFast = 1;
+  lua_sethook(s.L, budgetHook, LUA_MASKCOUNT, 1);
+}
+
+void hookAtNormalRate(LuaHost::Shared& s) {
+  s.hookFast = 0;
+  lua_sethook(s.L, budgetHook, LUA_MASKCOUNT, kHookInstructions);
+}
+
+// --- the deadline's timer ---
+
+int timerSignal() { return SIGRTMIN + 2; }
+
+// The hosts alive in this process: the signal handler only touches one it finds here (a signal
+// may be queued when its host is destroyed).
+constexpr int kMaxHosts = 256;
+std::atomic<LuaHost::Shared*> gHosts[kMaxHosts];
+
+void onTimer(int, siginfo_t* info, void*) {
+  auto* target = static_cast<LuaHost::Shared*>(info->si_value.sival_ptr);
+  if (!target) return;
+  for (auto& slot : gHosts) {
+    if (slot.load(std::memory_order_acquire) != target) continue;
+    target->timerArmed = 0;
+    // Outside a sandboxed call nothing is due (the call returned first); inside, the hook looks
+    // at the next instruction. lua_sethook is async-signal-safe (LuaJIT's own CLI interrupts
+    // scripts this way).
+    if (target->inSandbox) {
+      target->hookFast = 1;
+      lua_sethook(target->L, budgetHook, LUA_MASKCOUNT, 1);
+    }
+    return;
+  }
+}
+
+void registerHost(LuaHost::Shared* shared) {
+  static std::once_flag installed;
+  std::call_once(installed, [] {
+    struct sigaction action {};
+    action.sa_sigaction = onTimer;
+    action.sa_flags = SA_SIGINFO | SA_RESTART;
+    sigemptyset(&action.sa_mask);
+    sigaction(timerSignal(), &action, nullptr);
+  });
+  for (auto& slot : gHosts) {
+    LuaHost::Shared* empty = nullptr;
+    if (slot.compare_exchange_strong(empty, shared)) return;
+  }
+  // More than kMaxHosts states at once: this one goes without the timer (the count hook remains).
+}
+
+void unregisterHost(LuaHost::Shared* shared) {
+  for (auto& slot : gHosts) {
+    LuaHost::Shared* mine = shared;
+    if (slot.compare_exchange_strong(mine, nullptr)) break;
+  }
+  if (shared->timerMade) timer_delete(shared->timer);
+}
+
+// Arms the timer to fire in `nanoseconds` on this thread. Without a timer (none could be made),
+// the count hook still stops the call, later.
+void armTimer(LuaHost::Shared& s, int64_t nanoseconds) {
+  const pid_t thread = gettid();
+  if (!s.timerMade || s.timerThread != thread) {  // another thread, or a forked child
+    if (s.timerMade) timer_delete(s.timer);
+    s.timerMade = false;
+    sigevent event{};
+    event.sigev_notify = SIGEV_THREAD_ID;
+    event.sigev_signo = timerSignal();
+    event.sigev_value.sival_ptr = &s;
+    event._sigev_un._tid = thread;  // sigev_notify_thread_id (glibc 2.36 has no name for it)
+    if (timer_create(CLOCK_MONOTONIC, &event, &s.timer) != 0) return;
+    s.timerMade = true;
+    s.timerThread = thread;
+  }
+  if (nanoseconds < 100'000) nanoseconds = 100'000;
+  itimerspec when{};
+  when.it_value.tv_sec = static_cast<time_t>(nanoseconds / 1'000'000'000);
+  when.it_value.tv_nsec = static_cast<long>(nanoseconds % 1'000'000'000);
+  s.timerArmed = 1;
+  if (timer_settime(s.timer, 0, &when, nullptr) != 0) s.timerArmed = 0;
+}
+
+// --- memory ---
 
 void* limitedAlloc(void* ud, void* ptr, size_t oldSize, size_t newSize) {
   auto* shared = static_cast<LuaHost::Shared*>(ud);
@@ -41,9 +186,22 @@ void* limitedAlloc(void* ud, void* ptr, size_t oldSize, size_t newSize) {
     shared->used -= old;
     return nullptr;
   }
-  if (newSize > old && shared->used - old + newSize > shared->limits.memoryBytes) {
-    shared->memoryRefused = true;
-    return nullptr;
+  if (newSize > old) {
+    const size_t after = shared->used - old + newSize;
+    if (shared->current != kNoSandbox && shared->handler == 0 && after > shared->sandboxLimit()) {
+      // A sandbox past its share. The allocator cannot tell where the script is (it is called from
+      // inside the VM); the hook can, at the sandbox's next instruction, and stops it there with
+      // its file:line. So the first allocation past the share is granted from the engine's
+      // reserve (when it fits), and the sandbox's later ones are refused.
+      const bool first = shared->memoryStop == kNoSandbox;
+      if (first) {
+        shared->memoryStop = shared->current;
+        hookEveryInstruction(*shared);
+      }
+      if (!first || after > shared->limits.memoryBytes) return nullptr;
+    } else if (after > shared->limits.memoryBytes) {
+      return nullptr;  // LuaJIT raises "not enough memory"
+    }
   }
   void* grown = std::realloc(ptr, newSize);
   if (!grown) return nullptr;
@@ -51,52 +209,148 @@ void* limitedAlloc(void* ud, void* ptr, size_t oldSize, size_t newSize) {
   return grown;
 }
 
-LuaHost::Shared& sharedOf(lua_State* L) {
-  void* ud = nullptr;
-  lua_getallocf(L, &ud);
-  return *static_cast<LuaHost::Shared*>(ud);
+// --- messages ---
+
+// The message handler's and the stops' reserve: memory refused to sandboxes is open to them.
+struct OpenReserve {
+  LuaHost::Shared& s;
+  explicit OpenReserve(LuaHost::Shared& shared) : s(shared) { ++s.handler; }
+  ~OpenReserve() { --s.handler; }
+};
+
+// "file:line: " of the innermost frame of a script file: of the running sandbox's own file when
+// it is on the stack, else of any script file; "" when there is none.
+std::string where(lua_State* L, const LuaHost::Shared& s) {
+  const std::string* own = s.current != kNoSandbox ? &s.sandboxes[s.current].source : nullptr;
+  lua_Debug ar{};
+  std::string any;
+  for (int level = 0; lua_getstack(L, level, &ar); ++level) {
+    if (!lua_getinfo(L, "Sl", &ar) || ar.currentline <= 0 || ar.source[0] != '@') continue;
+    std::string here = std::string(ar.short_src) + ":" + std::to_string(ar.currentline) + ": ";
+    if (!own || *own == ar.source) return here;
+    if (any.empty()) any = here;
+  }
+  return any;
 }
 
-// Runs every kHookInstructions interpreted instructions. Once the budget is spent it fires on every
-// instruction and raises each time, so a script cannot catch the error with pcall and go on: every
-// Lua frame up to C++ fails in turn.
+// Whether a message already starts with "place:line: " (on its first line).
+bool located(const char* message) {
+  for (const char* p = message; *p && *p != '\n'; ++p) {
+    if (*p != ':' || !(p[1] >= '0' && p[1] <= '9')) continue;
+    const char* q = p + 1;
+    while (*q >= '0' && *q <= '9') ++q;
+    if (*q == ':') return true;
+  }
+  return false;
+}
+
+std::string milliseconds(int64_t nanoseconds) { return std::to_string((nanoseconds + 500'000) / 1'000'000) + " ms"; }
+
+std::string memoryStopText(const LuaHost::Shared& s) {
+  return "script stopped: the sandboxes reached their memory limit of " + std::to_string(s.sandboxLimit() >> 20) +
+         " MB (of the Lua state's " + std::to_string(s.limits.memoryBytes >> 20) + " MB; the rest is kept for the engine)";
+}
+
+// Raises the stop the hook decided on (the same message at every instruction until the sandboxed
+// call has returned: pcall cannot swallow it).
+[[noreturn]] void raiseStop(lua_State* L, LuaHost::Shared& s) {
+  ++s.handler;  // not a guard object: lua_error leaves this frame
+  lua_pushlstring(L, s.stopMessage.data(), s.stopMessage.size());
+  --s.handler;
+  lua_error(L);
+  std::abort();  // unreachable: lua_error does not return
+}
+
+// Runs every kHookInstructions interpreted instructions, and on every one once the timer fired,
+// memory was refused or a stop was decided.
 void budgetHook(lua_State* L, lua_Debug*) {
-  LuaHost::Shared& shared = sharedOf(L);
-  if (!shared.inCall) return;
-  if (!shared.expired) {
-    const int64_t now = monotonicNanoseconds();
-    if (shared.callStart == 0) {
-      shared.callStart = now;
+  LuaHost::Shared& s = sharedOf(L);
+  if (s.current != kNoSandbox) {
+    if (s.expired) raiseStop(L, s);
+    if (s.memoryStop != kNoSandbox) {
+      {
+        OpenReserve reserve(s);
+        s.expired = true;
+        std::string at = where(L, s);
+        if (at.empty()) at = s.sandboxes[s.memoryStop].name + ": ";
+        s.stopMessage = at + memoryStopText(s);
+      }
+      raiseStop(L, s);
+    }
+    const int64_t spent = s.frameSpent + (coarseNanoseconds() - s.enteredAt);  // the clock enteredAt was read with
+    if (spent < s.limits.callNanoseconds) {  // early: a timer armed for an earlier frame, or the count hook
+      if (s.hookFast) hookAtNormalRate(s);
+      if (!s.timerArmed) armTimer(s, s.limits.callNanoseconds - spent);
       return;
     }
-    if (now - shared.callStart <= shared.limits.callNanoseconds) return;
-    shared.expired = true;
-    lua_sethook(L, budgetHook, LUA_MASKCOUNT, 1);
-  }
-  // Name the innermost line of a script file (engine chunks are named "=platon/...").
-  lua_Debug where{};
-  bool named = false;
-  for (int level = 0; !named && lua_getstack(L, level, &where); ++level) {
-    if (lua_getinfo(L, "Sl", &where) && where.currentline > 0 && where.source[0] == '@') {
-      lua_pushfstring(L, "%s:%d: ", where.short_src, where.currentline);
-      named = true;
+    {
+      OpenReserve reserve(s);
+      s.expired = true;
+      hookEveryInstruction(s);
+      // Who spent the frame: the running call counts what it has run so far.
+      s.sandboxes[s.current].spent += coarseNanoseconds() - s.enteredAt;
+      s.enteredAt = coarseNanoseconds();
+      int hog = s.current;
+      for (size_t i = 0; i < s.sandboxes.size(); ++i)
+        if (s.sandboxes[i].spent > s.sandboxes[hog].spent) hog = static_cast<int>(i);
+      s.hog = hog;
+      std::string at = where(L, s);
+      if (at.empty()) at = s.sandboxes[s.current].name + ": ";
+      const std::string budget = milliseconds(s.limits.callNanoseconds);
+      if (hog == s.current) {
+        s.stopMessage = at + "script stopped: it ran longer than the frame's script budget of " + budget +
+                        " (an endless loop?)";
+      } else {
+        s.stopMessage = at + "script stopped: the frame's script budget of " + budget + " is spent (" +
+                        s.sandboxes[hog].name + " ran " + milliseconds(s.sandboxes[hog].spent) + " of it)";
+      }
     }
+    raiseStop(L, s);
   }
-  if (!named) lua_pushliteral(L, "");
-  lua_pushfstring(L, "script stopped: it ran longer than its budget of %d ms in one call (an endless loop?)",
-                  static_cast<int>(shared.limits.callNanoseconds / 1'000'000));
-  lua_concat(L, 2);
-  lua_error(L);
+  // Trusted code. A timer's signal that came as a sandboxed call returned: nothing is due.
+  if (s.hookFast && !s.trustedExpired) {
+    hookAtNormalRate(s);
+    return;
+  }
+  if (!s.inCall) return;
+  const int64_t limit = 2 * s.limits.callNanoseconds;  // its own time and the sandboxes' it waited for
+  if (!s.trustedExpired) {
+    const int64_t now = nowNanoseconds();
+    if (s.callStart == 0) {
+      s.callStart = now;
+      return;
+    }
+    if (now - s.callStart <= limit) return;
+    s.trustedExpired = true;
+    hookEveryInstruction(s);
+  }
+  {
+    OpenReserve reserve(s);
+    s.stopMessage = where(L, s) + "script stopped: one call from the engine ran longer than " + milliseconds(limit) +
+                    " (an endless loop?)";
+  }
+  raiseStop(L, s);
 }
 
-// The message handler of every call: the message (file:line already in front for errors raised by
-// Lua code) and the traceback, separated by a newline the C++ side splits at.
-// Runs where the error was raised. It calls no metamethod of a non-string error object: for the
-// time budget's error that point is inside the hook, where no hook fires, and a script's
-// __tostring could loop there for ever.
+// The message handler of every call: the message (file:line in front: Lua puts it there for errors
+// raised by Lua code, this adds it for the others) and the traceback, separated by a newline the
+// C++ side splits at. Runs where the error was raised. It calls no metamethod of a non-string error
+// object: for a stop that point is inside the hook, where no hook fires, and a script's __tostring
+// could loop there for ever.
 int tracebackHandler(lua_State* L) {
+  LuaHost::Shared& s = sharedOf(L);
+  OpenReserve reserve(s);
+  // Room first: after a stack overflow LuaJIT leaves a little (a push without it fails in here).
+  if (!lua_checkstack(L, 8)) return 1;
   const char* message = lua_tostring(L, 1);
   if (!message) message = lua_pushfstring(L, "(error object is a %s value)", luaL_typename(L, 1));
+  if (!located(message) && (s.current != kNoSandbox || !lua_isstring(L, 1) || std::strstr(message, "stack overflow"))) {
+    const std::string at = where(L, s);
+    lua_pushlstring(L, at.data(), at.size());
+    lua_pushstring(L, message);
+    lua_concat(L, 2);
+    message = lua_tostring(L, -1);
+  }
   luaL_traceback(L, L, message, 1);
   return 1;
 }
@@ -114,9 +368,15 @@ int printToSink(lua_State* L) {
   return 0;
 }
 
+// The game clock, in frames: what a sandbox's os.time, os.clock and os.date read.
+int gameFrames(lua_State* L) {
+  lua_pushnumber(L, static_cast<double>(sharedOf(L).gameFrame));
+  return 1;
+}
+
 ScriptError errorFromStack(lua_State* L, int status, const LuaHost::Shared& shared) {
   std::string text = lua_isstring(L, -1) ? lua_tostring(L, -1) : "(error object is not a string)";
-  if (status == LUA_ERRMEM || shared.memoryRefused) {
+  if (status == LUA_ERRMEM) {
     return ScriptError("script stopped: its Lua state reached the memory limit of " +
                            std::to_string(shared.limits.memoryBytes >> 20) + " MB (" + text + ")",
                        "");
@@ -132,10 +392,14 @@ LuaHost::LuaHost(LuaLimits limits) : shared_(std::make_unique<Shared>()) {
   shared_->limits = limits;
   L_ = lua_newstate(limitedAlloc, shared_.get());
   if (!L_) throw ScriptError("cannot create a Lua state (LuaJIT refused the allocator)", "");
+  shared_->L = L_;
+  registerHost(shared_.get());
   openTrusted();
 }
 
 LuaHost::~LuaHost() {
+  unregisterHost(shared_.get());
+  shared_->sandboxes.clear();  // their references go before the state
   if (L_) lua_close(L_);
 }
 
@@ -150,25 +414,48 @@ void LuaHost::openTrusted() {
   if (lua_gettop(L_) != kTracebackSlot) throw ScriptError("the Lua state did not start with an empty stack", "");
   lua_newtable(L_);
   lua_setfield(L_, LUA_REGISTRYINDEX, "platon.api");
-  // The sandbox factory: trusted Lua, run once (sandbox.cpp).
+  // The sandbox factory: trusted Lua, run once (sandbox.cpp). It gets the C functions it hands on.
   loadString(sandboxPrelude(), "=platon/sandbox", Trust::Trusted);
+  lua_newtable(L_);
   lua_pushcfunction(L_, printToSink);
-  call(1, 1);
+  lua_setfield(L_, -2, "print");
+  lua_pushcfunction(L_, gameFrames);
+  lua_setfield(L_, -2, "frames");
+  lua_pushcfunction(L_, orderedKeys);
+  lua_setfield(L_, -2, "orderedKeys");
+  setPatternFunctions(L_, -1);
+  call(1, 2);
+  lua_setfield(L_, LUA_REGISTRYINDEX, "platon.readonly");
   lua_setfield(L_, LUA_REGISTRYINDEX, "platon.newSandbox");
 }
 
 void LuaHost::pushApi() { lua_getfield(L_, LUA_REGISTRYINDEX, "platon.api"); }
 
-void LuaHost::newSandbox(std::string_view name) {
+void LuaHost::pushReadOnly(int index, std::string_view name) {
+  if (index < 0 && index > LUA_REGISTRYINDEX) index = lua_gettop(L_) + 1 + index;
+  lua_getfield(L_, LUA_REGISTRYINDEX, "platon.readonly");
+  lua_pushvalue(L_, index);
+  lua_pushlstring(L_, name.data(), name.size());
+  call(2, 1);
+}
+
+int LuaHost::newSandbox(const std::string& chunkName) {
+  const std::string name = chunkName.size() > 1 && (chunkName[0] == '@' || chunkName[0] == '=') ? chunkName.substr(1)
+                                                                                                 : chunkName;
   lua_getfield(L_, LUA_REGISTRYINDEX, "platon.newSandbox");
   lua_pushlstring(L_, name.data(), name.size());
   pushApi();
   call(2, 1);
+  Sandbox box;
+  box.name = name;
+  box.source = chunkName;
+  box.env = lua::Ref(L_, -1);
+  shared_->sandboxes.push_back(std::move(box));
+  return static_cast<int>(shared_->sandboxes.size() - 1);
 }
 
-void LuaHost::loadString(std::string_view code, const std::string& chunkName, Trust trust, int sandbox) {
+int LuaHost::loadString(std::string_view code, const std::string& chunkName, Trust trust) {
   const int top = lua_gettop(L_);
-  if (sandbox < 0 && sandbox > LUA_REGISTRYINDEX) sandbox = top + 1 + sandbox;
   if (trust == Trust::Sandboxed && !code.empty() && code[0] == '\x1b')
     throw ScriptError(chunkName.substr(chunkName[0] == '@' || chunkName[0] == '=' ? 1 : 0) +
                           ": a compiled (bytecode) chunk: sandboxed scripts load from text only",
@@ -180,18 +467,15 @@ void LuaHost::loadString(std::string_view code, const std::string& chunkName, Tr
     lua_settop(L_, top);
     throw error;
   }
-  if (trust == Trust::Trusted) return;
-  // No compiled traces for untrusted code: the count hook must see every loop.
+  if (trust == Trust::Trusted) return kNoSandbox;
+  // No compiled traces for untrusted code: the hooks must see every loop.
   luaJIT_setmode(L_, -1, LUAJIT_MODE_ALLFUNC | LUAJIT_MODE_OFF);
-  if (sandbox == 0) {
-    newSandbox(chunkName.size() > 1 ? std::string_view(chunkName).substr(1) : std::string_view("sandbox"));
-  } else {
-    lua_pushvalue(L_, sandbox);
-  }
+  const int id = newSandbox(chunkName);
   lua_setfenv(L_, -2);
+  return id;
 }
 
-void LuaHost::loadFile(const std::string& path, Trust trust, int sandbox) {
+int LuaHost::loadFile(const std::string& path, Trust trust) {
   std::FILE* file = std::fopen(path.c_str(), "rb");
   if (!file) throw ScriptError(path + ": cannot open the script", "");
   std::string code;
@@ -199,8 +483,7 @@ void LuaHost::loadFile(const std::string& path, Trust trust, int sandbox) {
   size_t n = 0;
   while ((n = std::fread(buffer, 1, sizeof buffer, file)) > 0) code.append(buffer, n);
   std::fclose(file);
-  if (sandbox < 0 && sandbox > LUA_REGISTRYINDEX) sandbox = lua_gettop(L_) + 1 + sandbox;
-  loadString(code, "@" + path, trust, sandbox);
+  return loadString(code, "@" + path, trust);
 }
 
 void LuaHost::call(int nargs, int nresults) {
@@ -211,40 +494,222 @@ void LuaHost::call(int nargs, int nresults) {
   Shared& shared = *shared_;
   shared.inCall = true;
   shared.callStart = 0;
-  shared.expired = false;
-  shared.memoryRefused = false;
+  shared.trustedExpired = false;
   depth_ = 1;
   const int status = lua_pcall(L_, nargs, nresults, kTracebackSlot);
   depth_ = 0;
   shared.inCall = false;
-  if (status != 0 || shared.expired) [[unlikely]] afterFailedCall(status, lua_gettop(L_) - 1);
+  if (status != 0 || shared.trustedExpired) [[unlikely]] afterFailedCall(status, lua_gettop(L_) - 1);
 }
 
 void LuaHost::callNested(int nargs, int nresults) {
+  int below = 0;
+  const int status = protectedCall(nargs, nresults, below);
+  if (status != 0) {
+    ScriptError error = errorFromStack(L_, status, *shared_);
+    lua_settop(L_, below);
+    throw error;
+  }
+}
+
+// A nested call with the handler below the function; on success the handler is removed and the
+// results stay. `below` is the stack top below the function.
+int LuaHost::protectedCall(int nargs, int nresults, int& below) {
   const int handler = lua_gettop(L_) - nargs;  // the function's slot, where the handler goes
+  below = handler - 1;
   lua_rawgeti(L_, LUA_REGISTRYINDEX, tracebackRef_);
   lua_insert(L_, handler);
   ++depth_;
   const int status = lua_pcall(L_, nargs, nresults, handler);
   --depth_;
-  if (status != 0) {
-    ScriptError error = errorFromStack(L_, status, *shared_);
-    lua_settop(L_, handler - 1);
-    throw error;
-  }
-  lua_remove(L_, handler);
+  if (status == 0) lua_remove(L_, handler);
+  return status;
 }
 
 // The outermost call's slow path: the budget's hook set back to its normal rate if it was spent,
 // and on an error the message popped (leaving the stack as before the function was pushed), the
 // garbage of a stopped script collected, and the error thrown.
 void LuaHost::afterFailedCall(int status, int below) {
-  if (shared_->expired) lua_sethook(L_, budgetHook, LUA_MASKCOUNT, kHookInstructions);
+  if (shared_->trustedExpired) {
+    hookAtNormalRate(*shared_);
+    shared_->trustedExpired = false;
+  }
   if (status == 0) return;
   ScriptError error = errorFromStack(L_, status, *shared_);
   lua_settop(L_, below);
-  if (shared_->memoryRefused || shared_->expired) lua_gc(L_, LUA_GCCOLLECT, 0);
+  if (status == LUA_ERRMEM) lua_gc(L_, LUA_GCCOLLECT, 0);
   throw error;
+}
+
+bool LuaHost::callSandboxed(int sandbox, int nargs, int nresults) {
+  Shared& s = *shared_;
+  if (sandbox < 0 || sandbox >= static_cast<int>(s.sandboxes.size())) {
+    lua_pop(L_, nargs + 1);
+    throw ScriptError("callSandboxed: no sandbox " + std::to_string(sandbox), "");
+  }
+  Sandbox& box = s.sandboxes[static_cast<size_t>(sandbox)];
+  if (box.disabled) {
+    lua_pop(L_, nargs + 1);
+    return false;
+  }
+  const int outer = s.current;
+  if (outer == kNoSandbox) {
+    if (s.frameSpent >= s.limits.callNanoseconds) {  // the frame's budget is spent: skipped
+      lua_pop(L_, nargs + 1);
+      if (!s.skipNoted && !s.stopNoted)
+        keepError(ScriptError(box.name + ": skipped: the frame's script budget of " + milliseconds(s.limits.callNanoseconds) +
+                                 " is spent (the level's scripts and mods share it; their other calls this frame are skipped)",
+                             ""));
+      s.skipNoted = true;
+      return false;
+    }
+    s.enteredAt = coarseNanoseconds();
+    s.inSandbox = 1;
+    if (!s.timerArmed) armTimer(s, s.limits.callNanoseconds - s.frameSpent);
+  }
+  s.current = sandbox;
+  int below = 0;
+  int status = 0;
+  if (depth_ == 0) {  // from C++ with no Lua running: the handler waits in the first slot
+    below = lua_gettop(L_) - nargs - 1;
+    depth_ = 1;
+    status = lua_pcall(L_, nargs, nresults, kTracebackSlot);
+    depth_ = 0;
+  } else {
+    status = protectedCall(nargs, nresults, below);
+  }
+  s.current = outer;
+  if (outer != kNoSandbox) {
+    if (status != 0) {
+      ScriptError error = errorFromStack(L_, status, s);
+      lua_settop(L_, below);
+      throw error;
+    }
+    return true;
+  }
+  // The outermost sandboxed call returned: its time goes to the frame.
+  const int64_t elapsed = coarseNanoseconds() - s.enteredAt;
+  s.frameSpent += elapsed;
+  box.spent += elapsed;
+  s.inSandbox = 0;
+  const bool stopped = s.expired || s.memoryStop != kNoSandbox;
+  if (s.hookFast) hookAtNormalRate(s);
+  if (status == 0 && !stopped) [[likely]] return true;
+  // An error, or a stop. A stop disables the sandbox that ran over: the one whose allocation was
+  // refused, or the one that spent the most of the frame's time.
+  std::string message, traceback;
+  if (status != 0) {
+    ScriptError error = errorFromStack(L_, status, s);
+    message = error.what();
+    traceback = error.traceback();
+    lua_settop(L_, below);
+    if (message.find("stack overflow") != std::string::npos || status == LUA_ERRERR) {
+      // LuaJIT may not run the handler after an overflow in a metamethod (it says "stack
+      // overflow", with no place and no traceback), and leaves the stack grown: a collection
+      // shrinks it back.
+      if (!located(message.c_str())) message = box.name + ": " + message + " (a function or metamethod that calls itself without end?)";
+      lua_gc(L_, LUA_GCCOLLECT, 0);
+    } else if (!located(message.c_str())) {
+      message = box.name + ": " + message;
+    }
+  } else {
+    lua_settop(L_, below);  // its results: a stopped sandbox's call gives none
+    message = s.stopMessage;
+  }
+  // A refusal that unwound the sandbox before it ran another instruction: no place is known.
+  if (s.memoryStop != kNoSandbox && (status == LUA_ERRMEM || message.empty()))
+    message = s.sandboxes[static_cast<size_t>(s.memoryStop)].name + ": " + memoryStopText(s);
+  int off = kNoSandbox;
+  if (s.memoryStop != kNoSandbox) off = s.memoryStop;
+  else if (s.expired) off = s.hog != kNoSandbox ? s.hog : sandbox;
+  if (s.expired && s.memoryStop == kNoSandbox) {
+    s.frameSpent = s.limits.callNanoseconds;  // the rest of the frame's sandboxed calls are skipped
+    s.stopNoted = true;
+  }
+  s.expired = false;
+  s.memoryStop = kNoSandbox;
+  s.hog = kNoSandbox;
+  s.stopMessage.clear();
+  if (off != kNoSandbox) {
+    Sandbox& gone = s.sandboxes[static_cast<size_t>(off)];
+    gone.disabled = true;
+    // Its globals go, so what it holds can be collected once the engine drops its functions.
+    gone.env.push();
+    if (lua_istable(L_, -1)) {
+      lua_pushnil(L_);
+      while (lua_next(L_, -2)) {
+        lua_pop(L_, 1);
+        lua_pushvalue(L_, -1);
+        lua_pushnil(L_);
+        lua_rawset(L_, -4);
+      }
+    }
+    lua_pop(L_, 1);
+    // What it held is garbage now (its functions too, once the engine drops them: again then).
+    lua_gc(L_, LUA_GCCOLLECT, 0);
+    s.collectSoon = true;
+    message += "; " + gone.name + " disabled: fix it and save to reload";
+    if (s.stopNoted && off == sandbox) message += " (the frame's other sandboxed calls are skipped)";
+  }
+  throw ScriptError(message, traceback);
+}
+
+int LuaHost::luaCallSandboxed(lua_State* L) {
+  auto* host = static_cast<LuaHost*>(lua_touserdata(L, lua_upvalueindex(1)));
+  const int sandbox = static_cast<int>(luaL_checkinteger(L, 1));
+  luaL_checktype(L, 2, LUA_TFUNCTION);
+  if (sandbox < 0 || sandbox >= static_cast<int>(host->shared_->sandboxes.size())) luaL_argerror(L, 1, "no such sandbox");
+  lua_remove(L, 1);
+  bool ran = false;
+  try {
+    ran = host->callSandboxed(sandbox, lua_gettop(L) - 1, LUA_MULTRET);
+  } catch (ScriptError& e) {
+    host->keepError(std::move(e));
+  }
+  if (!ran) {
+    lua_settop(L, 0);
+    lua_pushboolean(L, 0);
+    return 1;
+  }
+  lua_pushboolean(L, 1);
+  lua_insert(L, 1);
+  return lua_gettop(L);
+}
+
+void LuaHost::pushCallFunction() {
+  lua_pushlightuserdata(L_, this);
+  lua_pushcclosure(L_, luaCallSandboxed, 1);
+}
+
+void LuaHost::beginFrame() {
+  Shared& s = *shared_;
+  s.frameSpent = 0;
+  s.skipNoted = false;
+  s.stopNoted = false;
+  for (Sandbox& box : s.sandboxes) box.spent = 0;
+}
+
+void LuaHost::setGameFrame(uint64_t frame) { shared_->gameFrame = frame; }
+
+bool LuaHost::disabled(int sandbox) const {
+  return sandbox >= 0 && sandbox < static_cast<int>(shared_->sandboxes.size()) &&
+         shared_->sandboxes[static_cast<size_t>(sandbox)].disabled;
+}
+
+const std::string& LuaHost::sandboxName(int sandbox) const { return shared_->sandboxes.at(static_cast<size_t>(sandbox)).name; }
+
+int LuaHost::runningSandbox() const { return shared_->current; }
+
+void LuaHost::keepError(ScriptError error) {
+  for (const ScriptError& kept : errors_)
+    if (std::strcmp(kept.what(), error.what()) == 0) return;  // said already
+  if (errors_.size() < kMaxKeptErrors) errors_.push_back(std::move(error));
+}
+
+std::vector<ScriptError> LuaHost::takeErrors() {
+  std::vector<ScriptError> out;
+  out.swap(errors_);
+  return out;
 }
 
 void LuaHost::setPrintSink(std::function<void(std::string_view, std::string_view)> sink) {
@@ -254,6 +719,12 @@ void LuaHost::setPrintSink(std::function<void(std::string_view, std::string_view
 size_t LuaHost::memoryUsed() const { return shared_->used; }
 const LuaLimits& LuaHost::limits() const { return shared_->limits; }
 void LuaHost::setLimits(const LuaLimits& limits) { shared_->limits = limits; }
-void LuaHost::collectGarbage() { lua_gc(L_, LUA_GCCOLLECT, 0); }
+void LuaHost::collectGarbage() {
+  shared_->collectSoon = false;
+  lua_gc(L_, LUA_GCCOLLECT, 0);
+}
+void LuaHost::collectIfNeeded() {
+  if (shared_->collectSoon) collectGarbage();
+}
 
 }  // namespace platon::script

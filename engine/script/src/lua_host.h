@@ -1,24 +1,36 @@
-// One LuaJIT state with the limits the engine puts on it: a memory ceiling (a counting
-// allocator), a time budget per call from C++ (a count hook that reads the clock), a traceback on
-// every error, and two kinds of code:
+// One LuaJIT state with the limits the engine puts on it, a traceback on every error, and two
+// kinds of code:
 //
-//  - trusted: the engine's own scripts (scripts/) and scenarios. All of LuaJIT's libraries,
-//    the JIT on. A trusted endless loop that the JIT compiled cannot be stopped from inside the
+//  - trusted: the engine's own scripts (scripts/) and scenarios. All of LuaJIT's libraries, the
+//    JIT on. A trusted endless loop that the JIT compiled cannot be stopped from inside the
 //    process (LuaJIT runs no hooks in compiled traces); the scenario runner's worker processes
-//    are killed from outside after their wall-clock limit instead.
-//  - sandboxed: level scripts and mods. Each runs in an environment of its own with the safe
-//    part of the standard library (see sandbox.cpp), loaded from text only, and with the JIT
-//    off for every function the chunk defines, so the count hook fires inside every loop and the
-//    time budget always holds.
+//    are killed from outside after their wall-clock limit instead. An interpreted one is stopped
+//    by the count hook after twice the frame budget.
+//  - sandboxed: level scripts, mods and a level's own rules. Each loaded chunk is a sandbox with
+//    an id, its own globals (the safe part of the standard library, see sandbox.cpp), loaded from
+//    text only, with the JIT off for every function it defines (so hooks fire inside its loops).
+//
+// Sandboxed code runs only through callSandboxed() (engine.call from Lua), which enforces:
+//  - time: every sandboxed call of a frame shares one budget (limits.callNanoseconds, counted
+//    from beginFrame()). A POSIX timer fires at the deadline on the calling thread and its signal
+//    handler sets a hook on every instruction (lua_sethook is async-signal-safe), so a stop does
+//    not wait for an instruction count; the count hook stays as a fallback. After the budget is
+//    spent, the frame's further sandboxed calls are skipped.
+//  - memory: sandboxed allocations are refused past limits.memoryBytes minus a reserve
+//    (kTrustedReserve of it), so the engine's own scripts can still run; after a refusal, the
+//    sandbox is stopped at its next instruction with its file:line and traceback.
+//  - policy: a sandbox stopped by either limit is disabled (its later calls are skipped, its
+//    globals cleared so its memory can be collected), with one error naming it.
 //
 // Errors come back as ScriptError with "file:line: message" and the Lua traceback. Calls nest
-// (a callback from C++ inside a call from Lua); the budget runs from the outermost one.
+// (a callback from C++ inside a call from Lua).
 #pragma once
 #include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "lua_stack.h"
 #include "platon/script/script_error.h"
@@ -27,10 +39,12 @@ namespace platon::script {
 
 struct LuaLimits {
   size_t memoryBytes = size_t{128} << 20;  // the whole state: every script and its data
-  int64_t callNanoseconds = 250'000'000;   // one call from C++ into Lua, nested calls included
+  int64_t callNanoseconds = 250'000'000;   // all sandboxed calls of one frame together
 };
 
 enum class Trust { Trusted, Sandboxed };
+
+inline constexpr int kNoSandbox = -1;
 
 class LuaHost {
  public:
@@ -42,23 +56,51 @@ class LuaHost {
   lua_State* state() const { return L_; }
 
   // Compiles a file or a string and pushes the chunk as a function; throws ScriptError with the
-  // syntax error's file:line. Sandboxed: text only (bytecode is refused), the chunk's environment
-  // is the sandbox table at stack index `sandbox` (0: a fresh one from newSandbox()), and the JIT
-  // is off for the chunk and every function inside it.
-  void loadFile(const std::string& path, Trust trust, int sandbox = 0);
-  void loadString(std::string_view code, const std::string& chunkName, Trust trust, int sandbox = 0);
-
-  // Pushes a new sandbox environment: the safe globals, a read-only `platon` table (the API
-  // registered with exposeToSandboxes), and `print` that goes to the print sink tagged `name`.
-  void newSandbox(std::string_view name);
+  // syntax error's file:line. Sandboxed: text only (bytecode is refused), the chunk gets a new
+  // sandbox (its environment) named after the chunk, the JIT is off for the chunk and every
+  // function inside it, and the sandbox's id is returned (kNoSandbox for trusted code). Run the
+  // chunk with callSandboxed(id, ...).
+  int loadFile(const std::string& path, Trust trust);
+  int loadString(std::string_view code, const std::string& chunkName, Trust trust);
 
   // The table of functions sandboxes see as `platon` (read-only for them). Pushes it.
   void pushApi();
+  // Pushes readonly(t, name) of the prelude: a read-only view of the table at `index` (nested
+  // tables are views too), for the engine's tables that sandboxes are handed.
+  void pushReadOnly(int index, std::string_view name);
 
   // Calls the function at -(nargs + 1) with the nargs values above it; leaves nresults results.
   // Any Lua error, time budget or memory limit throws ScriptError and leaves the stack as it was
   // before the function was pushed.
   void call(int nargs, int nresults);
+
+  // The same for sandbox `sandbox`'s code, under the frame's budget and the sandboxes' memory
+  // limit. Returns false, with the function and its arguments popped and nothing pushed, when the
+  // call was skipped: the sandbox is disabled, or the frame's budget is spent. Throws ScriptError
+  // for its errors (a limit's stop names the sandbox and says it is now disabled).
+  bool callSandboxed(int sandbox, int nargs, int nresults);
+
+  // A new frame: the sandboxes' shared time budget starts again.
+  void beginFrame();
+  // The game clock sandboxes read through os.time/os.clock/os.date (frames, 60 a second).
+  void setGameFrame(uint64_t frame);
+
+  bool disabled(int sandbox) const;
+  // The sandbox whose code runs now, or kNoSandbox (trusted code, or nothing).
+  int runningSandbox() const;
+  const std::string& sandboxName(int sandbox) const;
+  // Where sandboxed calls that Lua made through engine.call (pushCallFunction) failed: the errors
+  // kept for the caller to report, oldest first, and cleared.
+  std::vector<ScriptError> takeErrors();
+  bool hasErrors() const { return !errors_.empty(); }
+  // Keeps an error for takeErrors() (at most kMaxKeptErrors between two looks: a rules callback
+  // that fails on every contact says it a few times, not a million).
+  void keepError(ScriptError error);
+  static constexpr size_t kMaxKeptErrors = 8;
+  // Pushes engine.call(sandbox, f, ...) -> true, f's results | false: a C function that calls f
+  // as sandbox `sandbox`'s code behind its own error boundary. An error is kept (takeErrors) and
+  // the caller goes on; a disabled sandbox or a spent budget skips the call.
+  void pushCallFunction();
 
   // Where print() goes: the script's name and its text. Default: stderr.
   void setPrintSink(std::function<void(std::string_view name, std::string_view text)> sink);
@@ -67,20 +109,29 @@ class LuaHost {
   const LuaLimits& limits() const;
   void setLimits(const LuaLimits& limits);
 
-  // Full garbage collection (after a script was dropped, say).
+  // Full garbage collection (after a script was dropped, say); also when a disabled sandbox left
+  // memory behind.
   void collectGarbage();
+  void collectIfNeeded();
 
-  struct Shared;  // what the allocator and the hook reach through the state
+  // The part of memoryBytes sandboxes may not use: kept for trusted code.
+  static constexpr size_t kTrustedReserveDivisor = 4;
+
+  struct Shared;  // what the allocator, the hook and the timer reach through the state
 
  private:
   std::unique_ptr<Shared> shared_;
   lua_State* L_ = nullptr;
   int depth_ = 0;
   int tracebackRef_ = LUA_NOREF;
+  std::vector<ScriptError> errors_;
   static constexpr int kTracebackSlot = 1;
   void openTrusted();
+  int newSandbox(const std::string& chunkName);
   void callNested(int nargs, int nresults);
+  int protectedCall(int nargs, int nresults, int& below);
   [[gnu::cold]] void afterFailedCall(int status, int below);
+  static int luaCallSandboxed(lua_State* L);
 };
 
 }  // namespace platon::script

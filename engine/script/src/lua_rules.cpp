@@ -61,7 +61,7 @@ return out
 
 }  // namespace
 
-LuaRules::LuaRules(LuaHost& host, int index, Call how) : host_(host) {
+LuaRules::LuaRules(LuaHost& host, int index, Call how, int sandbox) : host_(host), sandbox_(sandbox) {
   lua_State* L = host.state();
   lua::StackGuard guard(L);
   if (index < 0 && index > LUA_REGISTRYINDEX) index = lua_gettop(L) + 1 + index;
@@ -152,29 +152,44 @@ inline int LuaRules::pushNormal(const physics::Vec2w& normal) {
   return 2;
 }
 
+void LuaRules::fail(const std::string& message) {
+  ScriptError error(sandbox_ == kNoSandbox ? message : host_.sandboxName(sandbox_) + ": " + message, "");
+  if (sandbox_ == kNoSandbox) throw error;
+  host_.keepError(std::move(error));
+}
+
+bool LuaRules::invokeSandboxed(int n, int results) {
+  try {
+    return host_.callSandboxed(sandbox_, n, results);
+  } catch (ScriptError& e) {
+    host_.keepError(std::move(e));
+    return false;
+  }
+}
+
 bool LuaRules::pierce(physics::EntityId entity, const physics::LineRef& line) {
-  if (!callbacks_[kPierce].isSet()) return Rules::pierce(entity, line);
+  if (!callbacks_[kPierce].isSet() || skipped()) return Rules::pierce(entity, line);
   lua_State* L = host_.state();
   const int top = lua_gettop(L);
   callbacks_[kPierce].push();
-  host_.call(pushArguments(top, [&] { return pushLine(entity, line); }), 1);
+  if (!invoke(pushArguments(top, [&] { return pushLine(entity, line); }), 1)) return Rules::pierce(entity, line);
   const bool passes = lua_toboolean(L, -1) != 0;
   lua_pop(L, 1);
   return passes;
 }
 
 void LuaRules::event(Callback which, const physics::Contact& c) {
-  if (!callbacks_[which].isSet()) return;
+  if (!callbacks_[which].isSet() || skipped()) return;
   const int top = lua_gettop(host_.state());
   callbacks_[which].push();
-  host_.call(pushArguments(top, [&] {
+  invoke(pushArguments(top, [&] {
     const int n = pushLine(c.entity, c.line);  // in this order: the arguments' order
     return n + pushOther(c.other);
   }), 0);
 }
 
 void LuaRules::contact(const physics::Contact& c, physics::ContactResponse& response) {
-  if (!callbacks_[kContact].isSet()) return;
+  if (!callbacks_[kContact].isSet() || skipped()) return;
   lua_State* L = host_.state();
   const int top = lua_gettop(L);
   callbacks_[kContact].push();
@@ -183,7 +198,7 @@ void LuaRules::contact(const physics::Contact& c, physics::ContactResponse& resp
     pushed += pushNormal(c.normal);
     return pushed + pushOther(c.other);
   });
-  host_.call(n, 1);
+  if (!invoke(n, 1)) return;
   const int type = lua_type(L, -1);
   if (type == LUA_TNIL) {
     lua_pop(L, 1);
@@ -196,9 +211,9 @@ void LuaRules::contact(const physics::Contact& c, physics::ContactResponse& resp
   }
   if (type != LUA_TTABLE) {
     lua_pop(L, 1);
-    throw ScriptError("rules: contact() returned a " + std::string(lua_typename(L, type)) +
-                          "; return nothing, false, or {slide =, keepVelocity =, restitution =}",
-                      "");
+    fail("rules: contact() returned a " + std::string(lua_typename(L, type)) +
+         "; return nothing, false, or {slide =, keepVelocity =, restitution =}");
+    return;
   }
   // Raw reads: the table may be a sandboxed script's, and its metamethods must not run out here.
   lua_pushliteral(L, "slide");
@@ -213,7 +228,8 @@ void LuaRules::contact(const physics::Contact& c, physics::ContactResponse& resp
     const double r = lua_tonumber(L, -1);
     if (lua_type(L, -1) != LUA_TNUMBER || !(r >= 0 && r <= 1)) {
       lua_pop(L, 4);
-      throw ScriptError("rules: contact() returned restitution outside [0, 1]", "");
+      fail("rules: contact() returned restitution outside [0, 1]");
+      return;
     }
     response.restitution = {std::llround(r * 65536), 65536};
   }

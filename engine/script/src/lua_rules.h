@@ -11,7 +11,8 @@
 //         restitution = 0..1}
 // kind is "solid", "warp", "oneway" or "entity"; line is the line's index in its part (nil for an
 // entity); nx, ny the unit normal from the line towards the entity; other the other entity or nil.
-// A Lua error inside a callback throws ScriptError; the world finishes the frame and rethrows it.
+// A trusted script's Lua error inside a callback throws ScriptError; the world finishes the frame
+// and rethrows it. A sandboxed script's is kept for the frame's report, and the default applies.
 //
 // Two ways to make the call, the same arguments either way. Classic: every argument pushed through
 // the C API (eight pushes for contact()). FFI (trusted states with the ffi library): the contact's
@@ -34,8 +35,10 @@ class LuaRules final : public physics::Rules {
   // leaving its FFI reads to the interpreter (320 ns a call), and calling them through
   // lua::callThrough to keep the trace measured 46 ns against the classic path's 44.
   enum class Call { Classic, Ffi };
-  // Reads the callbacks of the table at `index`.
-  LuaRules(LuaHost& host, int index, Call how = Call::Classic);
+  // Reads the callbacks of the table at `index`. `sandbox`: the sandbox whose script it is (its
+  // callbacks run under the frame's budget, and answer with the defaults when it is spent or the
+  // sandbox is disabled), or kNoSandbox for trusted rules.
+  LuaRules(LuaHost& host, int index, Call how = Call::Classic, int sandbox = kNoSandbox);
 
   bool pierce(physics::EntityId entity, const physics::LineRef& line) override;
   void beginContact(const physics::Contact& c) override { event(kBegin, c); }
@@ -65,6 +68,21 @@ class LuaRules final : public physics::Rules {
     }
   }
   void makeTrampolines(int index);
+  // Calls the pushed callback with its n arguments; false: it was skipped (the defaults apply).
+  // A sandboxed script's error is kept for the frame's report (LuaHost::keepError) and its
+  // callback answers with the default: nothing of a level's rules can fail the engine's own calls
+  // into the world (a spawn's insert, say).
+  bool invoke(int n, int results) {
+    if (sandbox_ == kNoSandbox) [[likely]] {
+      host_.call(n, results);
+      return true;
+    }
+    return invokeSandboxed(n, results);
+  }
+  bool invokeSandboxed(int n, int results);
+  // A bad answer: thrown for trusted rules, kept (named after the script) for sandboxed ones.
+  void fail(const std::string& message);
+  bool skipped() const { return sandbox_ != kNoSandbox && host_.disabled(sandbox_); }
 
   // What the FFI trampolines read (doubles only: the same numbers the classic path pushes, but the
   // normal as the world gives it; -1 for "no line" and "no other entity", which they turn into nil).
@@ -76,6 +94,7 @@ class LuaRules final : public physics::Rules {
   std::array<lua::Ref, kCount> callbacks_;  // the script's functions, or their FFI trampolines
   std::array<lua::Ref, 4> kindNames_;       // solid, warp, oneway, entity: interned once
   std::unique_ptr<Slot> slot_;              // set for Call::Ffi; Lua holds its address
+  int sandbox_ = kNoSandbox;
 };
 
 }  // namespace platon::script

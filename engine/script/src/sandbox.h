@@ -1,10 +1,19 @@
 // The sandbox's environment factory, written in Lua and run once per state as trusted code.
 #pragma once
+#include <lua.hpp>
+
 #include <string_view>
 
 namespace platon::script {
 
-// A chunk that takes the C print function and returns newSandbox(name, api) -> environment table.
+// A chunk that takes a table of C functions (print, frames, orderedKeys and the pattern functions)
+// and returns newSandbox(name, api) -> environment table, and readonly(t, name) -> a read-only view.
 std::string_view sandboxPrelude();
+
+// orderedKeys(t) -> the keys of t in a fixed order (the array part 1..n, then the other numbers
+// increasing, strings in byte order, false, true), or nil and why there is none (a key of another
+// type, or more than kMaxOrderedKeys keys). What a sandbox's pairs and next walk.
+int orderedKeys(lua_State* L);
+inline constexpr size_t kMaxOrderedKeys = 1'000'000;
 
 }  // namespace platon::script

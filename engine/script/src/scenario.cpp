@@ -70,6 +70,7 @@ Plan readPlan(LuaHost& host, const std::string& path) {
   if (!lua_isstring(L, -1)) planError(path, "'scene' (the manifest's path) is missing");
   plan.scene = lua_tostring(L, -1);
   lua_pop(L, 1);
+  if (core::hasParentStep(plan.scene)) planError(path, "'scene' may not contain '..' (" + plan.scene + ")");
   const double frames = numberAt(L, t, "frames", path, "scenario");
   if (frames < 1 || frames > 1e8) planError(path, "'frames' must be within 1..10^8");
   plan.frames = static_cast<uint64_t>(frames);
@@ -230,6 +231,9 @@ ScenarioResult runPlan(const std::string& path, const std::function<Plan()>& mak
     result.hash = hex(scene->world().stateHash());
     if (scripts) result.status = scripts->status();
     if (!failure.empty()) return finish(false, failure);
+    // An error the last frame's checks met (status() keeps its errors for the next frame).
+    if (scripts)
+      if (std::optional<std::string> error = scripts->takeError()) return finish(false, *error);
     if (scripts) {
       const GameStatus& s = *result.status;
       if (plan.goalBy && (!s.won || s.wonFrame > *plan.goalBy))

@@ -1,7 +1,12 @@
 #include "platon/script/script_system.h"
 
+#include <limits.h>
+#include <stdlib.h>
+
 #include <algorithm>
 #include <cstdlib>
+#include <optional>
+#include <unordered_map>
 
 #include "lua_rules.h"
 #include "script_context.h"
@@ -24,6 +29,10 @@ struct ScriptSystem::State {
   }
 
   lua::Ref beforeStep, afterStep;  // driver.beforeStep and driver.afterStep: called every frame
+  GameStatus lastStatus;            // the last status() that worked
+  // Errors of status() and draw(), which never throw (the game loop calls them outside a frame):
+  // reported with the next frame's errors.
+  std::vector<ScriptError> deferred;
 
   // Pushes driver[name] and calls it with nargs arguments already pushed after it.
   void callDriver(const char* name, int nargs, int nresults) {
@@ -34,6 +43,19 @@ struct ScriptSystem::State {
     if (nargs > 0) lua_insert(L, -(nargs + 1));
     host.call(nargs, nresults);
   }
+
+  // The errors kept since the last look (sandboxed calls behind engine.call, and deferred ones),
+  // thrown as one: the first one's message and traceback, then the others'.
+  void throwKeptErrors() {
+    if (!host.hasErrors() && deferred.empty()) [[likely]] return;
+    std::vector<ScriptError> all = std::move(deferred);
+    deferred.clear();
+    for (ScriptError& e : host.takeErrors()) all.push_back(std::move(e));
+    if (all.size() == 1) throw all.front();
+    std::string details = all.front().traceback();
+    for (size_t i = 1; i < all.size(); ++i) details += (details.empty() ? "" : "\n") + all[i].report();
+    throw ScriptError(all.front().what(), details);
+  }
 };
 
 namespace {
@@ -42,62 +64,134 @@ ScriptSystem::State& stateOf(lua_State* L) {
   return *static_cast<ScriptSystem::State*>(lua_touserdata(L, lua_upvalueindex(1)));
 }
 
-// engine.load(path, trusted, ...) -> the chunk's results. Trusted only for paths under scripts/.
+std::string realPath(const std::string& path) {
+  char resolved[PATH_MAX];
+  return ::realpath(path.c_str(), resolved) ? std::string(resolved) : std::string();
+}
+
+// An engine script's file: `path` ("scripts/...", as the manifest wrote it) under the engine's
+// root, with every link resolved, and still under the root's scripts/ folder.
+std::string engineScript(const std::string& root, const std::string& path) {
+  if (path.rfind("scripts/", 0) != 0) throw lua::ArgError("'" + path + "': an engine script is a path under scripts/");
+  const std::string folder = realPath(root + "/scripts");
+  const std::string file = realPath(root + "/" + path);
+  if (folder.empty() || file.empty()) throw ScriptError(root + "/" + path + ": cannot open the script", "");
+  if (file.rfind(folder + "/", 0) != 0)
+    throw lua::ArgError("'" + path + "' is " + file + ", outside the engine's scripts (" + folder + "/)");
+  return file;
+}
+
+// engine.load(path, trusted, ...) -> the chunk's result (and, sandboxed, its sandbox's id). Trust
+// is what the manifest decided from what it wrote (setup.trusted): a trusted path is an engine
+// script (scripts/..., resolved under the engine's root); any other was resolved and checked by
+// the manifest (inside the level's folder) and runs sandboxed.
 int engineLoad(lua_State* L) {
   ScriptSystem::State& state = stateOf(L);
   const std::string path(lua::checkString(L, 1));
   const bool trusted = lua::checkBoolean(L, 2);
   const int nargs = lua_gettop(L) - 2;
-  const std::string file = trusted ? state.root + "/" + path : path;
+  const std::string file = trusted ? engineScript(state.root, path) : path;
   state.files.push_back(file);
-  state.host.loadFile(file, trusted ? Trust::Trusted : Trust::Sandboxed);
+  const int sandbox = state.host.loadFile(file, trusted ? Trust::Trusted : Trust::Sandboxed);
   lua_insert(L, 3);
-  state.host.call(nargs, 1);
-  return 1;
+  if (trusted) {
+    state.host.call(nargs, 1);
+    return 1;
+  }
+  if (!state.host.callSandboxed(sandbox, nargs, 1)) lua_pushnil(L);
+  lua_pushinteger(L, sandbox);
+  return 2;
 }
 
-// engine.setRules(rules, sandboxed): rules is a table of callbacks or nil (the C++ defaults);
-// sandboxed says its functions run with the JIT off.
+// engine.setRules(rules [, sandbox]): rules is a table of callbacks or nil (the C++ defaults);
+// sandbox the id of the sandbox that made it (its functions run with the JIT off, under the
+// frame's budget), nil for trusted rules.
 int engineSetRules(lua_State* L) {
   ScriptSystem::State& state = stateOf(L);
-  const bool sandboxed = lua_toboolean(L, 2) != 0;
+  const int sandbox = lua_isnoneornil(L, 2) ? kNoSandbox : static_cast<int>(lua::checkInteger(L, 2, 0, INT_MAX));
   state.scene->world().setRules(nullptr);
   state.rules.reset();
   if (!lua_isnil(L, 1)) {
-    const LuaRules::Call how = state.ffi && !sandboxed ? LuaRules::Call::Ffi : LuaRules::Call::Classic;
-    state.rules = std::make_unique<LuaRules>(state.host, 1, how);
+    const LuaRules::Call how = state.ffi && sandbox == kNoSandbox ? LuaRules::Call::Ffi : LuaRules::Call::Classic;
+    state.rules = std::make_unique<LuaRules>(state.host, 1, how, sandbox);
     state.scene->world().setRules(state.rules.get());
   }
   return 0;
 }
 
-int engineNewSandbox(lua_State* L) {
+// engine.readonly(t, name) -> a read-only view of t (nested tables are views too).
+int engineReadOnly(lua_State* L) {
   ScriptSystem::State& state = stateOf(L);
-  state.host.newSandbox(lua::checkString(L, 1));
+  lua::checkTable(L, 1);
+  state.host.pushReadOnly(1, lua::checkString(L, 2));
   return 1;
 }
 
+// engine.disabled(sandbox) -> whether a limit stopped it for good.
+int engineDisabled(lua_State* L) {
+  lua_pushboolean(L, stateOf(L).host.disabled(static_cast<int>(lua::checkInteger(L, 1, 0, INT_MAX))));
+  return 1;
+}
+
+// engine.protect(entity | nil): the player's entity, which no sandbox may destroy or erase.
+int engineProtect(lua_State* L) {
+  ScriptSystem::State& state = stateOf(L);
+  state.context.protectedEntity = {};
+  if (const std::optional<lua::HandleBits> bits = lua::toHandle(L, 1))
+    state.context.protectedEntity = {bits->index, bits->generation};
+  return 0;
+}
+
+// engine.invoke(sandbox, f, ...) -> f's results: f called as that sandbox's code, under its limits,
+// its errors raised to the caller as if it had called f itself. For the functions of a level's own
+// player or progression script, which trusted code calls.
+int engineInvoke(lua_State* L) {
+  ScriptSystem::State& state = stateOf(L);
+  const int sandbox = static_cast<int>(lua::checkInteger(L, 1, 0, INT_MAX));
+  lua::checkFunction(L, 2);
+  lua_remove(L, 1);
+  if (!state.host.callSandboxed(sandbox, lua_gettop(L) - 1, LUA_MULTRET))
+    throw ScriptError(state.host.sandboxName(sandbox) + ": not run: it is disabled, or the frame's script budget is spent", "");
+  return lua_gettop(L);
+}
+
 constexpr luaL_Reg kEngine[] = {
-    {"call", lua::callThrough},
     {"load", lua::bound<engineLoad>},
     {"setRules", lua::bound<engineSetRules>},
-    {"newSandbox", lua::bound<engineNewSandbox>},
+    {"readonly", lua::bound<engineReadOnly>},
+    {"disabled", lua::bound<engineDisabled>},
+    {"protect", lua::bound<engineProtect>},
+    {"invoke", lua::bound<engineInvoke>},
     {nullptr, nullptr},
 };
 
 // Copies plain data from one Lua state to another: nil, booleans, numbers, strings, and tables of
-// them keyed by strings or numbers. Functions, userdata, coroutines and anything nested deeper
-// than kMaxDepth (a cycle, say) are left out. Runs inside a protected call of the destination, so
-// running out of its memory is an error there, not a panic.
-constexpr int kMaxDepth = 24;
+// them keyed by strings or numbers. Functions, userdata and coroutines are left out. A table met
+// twice (shared, or a cycle) is copied once and shared (or cyclic) the same way in the copy; at most
+// kMaxCopiedEntries entries in all (a bigger save is refused: the copy runs in C, where no hook
+// runs). Runs inside a protected call of the destination, so running out of its memory is an
+// error there, not a panic.
+constexpr int kMaxDepth = 200;
+constexpr size_t kMaxCopiedEntries = 100'000;
 
 struct PlainCopy {
   lua_State* from;
   int index;
+  int copies = 0;  // `to`'s stack slot of the table: source table -> its copy
+  size_t entries = 0;
+  bool tooBig = false;
+  bool tooDeep = false;
 };
 
-void copyPlain(lua_State* from, int index, lua_State* to, int depth) {
-  if (!lua_checkstack(to, 3) || !lua_checkstack(from, 3)) luaL_error(to, "data too deeply nested to carry over");
+// Pushes the copy of `from`'s value at `index` onto `to` (nil for what is not plain data).
+// Errors are flagged in the job and nil pushed (no Lua error unwinds this C++ frame).
+void copyPlain(PlainCopy& job, int index, lua_State* to, int depth) {
+  lua_State* from = job.from;
+  if (job.tooBig || job.tooDeep) return lua_pushnil(to);
+  if (depth > kMaxDepth || !lua_checkstack(to, 4) || !lua_checkstack(from, 4)) {
+    job.tooDeep = true;
+    return lua_pushnil(to);
+  }
   switch (lua_type(from, index)) {
     case LUA_TBOOLEAN: return lua_pushboolean(to, lua_toboolean(from, index));
     case LUA_TNUMBER: return lua_pushnumber(to, lua_tonumber(from, index));
@@ -106,27 +200,47 @@ void copyPlain(lua_State* from, int index, lua_State* to, int depth) {
       const char* text = lua_tolstring(from, index, &n);
       return lua_pushlstring(to, text, n);
     }
-    case LUA_TTABLE:
-      if (depth < kMaxDepth) break;
-      [[fallthrough]];
+    case LUA_TTABLE: break;
     default: return lua_pushnil(to);
   }
   const int source = index < 0 ? lua_gettop(from) + index + 1 : index;
+  // Copied already (shared, or a cycle back up): the same copy.
+  lua_pushlightuserdata(to, const_cast<void*>(lua_topointer(from, source)));
+  lua_rawget(to, job.copies);
+  if (!lua_isnil(to, -1)) return;
+  lua_pop(to, 1);
   lua_newtable(to);
+  lua_pushlightuserdata(to, const_cast<void*>(lua_topointer(from, source)));
+  lua_pushvalue(to, -2);
+  lua_rawset(to, job.copies);
   for (lua_pushnil(from); lua_next(from, source); lua_pop(from, 1)) {
+    if (++job.entries > kMaxCopiedEntries) {
+      job.tooBig = true;
+      lua_pop(from, 2);
+      return;
+    }
     const int keyType = lua_type(from, -2);
     if (keyType != LUA_TSTRING && keyType != LUA_TNUMBER) continue;
-    copyPlain(from, -2, to, depth + 1);
-    copyPlain(from, lua_gettop(from), to, depth + 1);
+    copyPlain(job, -2, to, depth + 1);
+    copyPlain(job, lua_gettop(from), to, depth + 1);
     if (lua_isnil(to, -1)) lua_pop(to, 2);
     else lua_rawset(to, -3);
+    if (job.tooBig || job.tooDeep) {
+      lua_pop(from, 2);
+      return;
+    }
   }
 }
 
 int copyPlainProtected(lua_State* to) {
-  const auto* job = static_cast<const PlainCopy*>(lua_touserdata(to, 1));
+  auto* job = static_cast<PlainCopy*>(lua_touserdata(to, 1));
   lua_pop(to, 1);
-  copyPlain(job->from, job->index, to, 0);
+  lua_newtable(to);  // source table -> copy
+  job->copies = lua_gettop(to);
+  copyPlain(*job, job->index, to, 0);
+  if (job->tooBig)
+    return luaL_error(to, "save(): data too large to carry over (more than %d table entries)", static_cast<int>(kMaxCopiedEntries));
+  if (job->tooDeep) return luaL_error(to, "save(): data nested more than %d tables deep to carry over", kMaxDepth);
   return 1;
 }
 
@@ -134,9 +248,10 @@ int copyPlainProtected(lua_State* to) {
 
 ScriptSystem::ScriptSystem(core::Scene& scene, std::string root) {
   const core::SceneManifest& m = scene.manifest();
+  // A level's manifest may lower the engine's limits, never raise them.
   LuaLimits limits;
-  limits.memoryBytes = m.memoryMegabytes << 20;
-  limits.callNanoseconds = static_cast<int64_t>(m.callMilliseconds * 1e6);
+  limits.memoryBytes = std::min(limits.memoryBytes, m.memoryMegabytes << 20);
+  limits.callNanoseconds = std::min(limits.callNanoseconds, static_cast<int64_t>(m.callMilliseconds * 1e6));
   state_ = std::make_unique<State>(scene, std::move(root), limits);
   registerWorldApi(state_->host, state_->context);
   if (state_->ffi) registerWorldFfi(state_->host, state_->context);
@@ -163,6 +278,8 @@ void ScriptSystem::build(core::Scene& scene) {
     lua_setfield(L, -3, f->name);
   }
   lua_pop(L, 1);
+  state_->host.pushCallFunction();
+  lua_setfield(L, -2, "call");
   lua_newtable(L);  // setup: the manifest's scripts and numbers
   auto field = [&](const char* key, const std::string& value) {
     lua_pushlstring(L, value.data(), value.size());
@@ -173,6 +290,16 @@ void ScriptSystem::build(core::Scene& scene) {
   field("progression", m.progression);
   field("level", m.level);
   field("name", m.name);
+  lua_newtable(L);  // trusted: which scripts are the engine's, as the manifest decided
+  auto trusted = [&](const char* key, bool value) {
+    lua_pushboolean(L, value);
+    lua_setfield(L, -2, key);
+  };
+  trusted("rules", m.rulesTrusted);
+  trusted("player", m.playerTrusted);
+  trusted("progression", m.progressionTrusted);
+  trusted("level", m.levelTrusted);
+  lua_setfield(L, -2, "trusted");
   lua_newtable(L);
   for (size_t i = 0; i < m.mods.size(); ++i) {
     lua_pushlstring(L, m.mods[i].data(), m.mods[i].size());
@@ -188,36 +315,95 @@ void ScriptSystem::build(core::Scene& scene) {
   lua_getfield(L, -2, "afterStep");
   state_->afterStep = lua::Ref(L, -1);
   lua_pop(L, 3);
+  state_->host.beginFrame();
   state_->callDriver("build", 0, 0);
+  state_->throwKeptErrors();
 }
 
-void ScriptSystem::start(core::Scene&) { state_->callDriver("start", 0, 0); }
+void ScriptSystem::start(core::Scene&) {
+  state_->host.beginFrame();
+  state_->callDriver("start", 0, 0);
+  state_->throwKeptErrors();
+}
 
-void ScriptSystem::beforeStep(core::Scene&, const core::InputFrame& input) {
-  lua_State* L = state_->host.state();
-  state_->beforeStep.push();
+void ScriptSystem::beforeStep(core::Scene& scene, const core::InputFrame& input) {
+  State& state = *state_;
+  lua_State* L = state.host.state();
+  state.host.beginFrame();
+  state.host.setGameFrame(scene.world().frame());
+  state.beforeStep.push();
   lua_pushnumber(L, input.held);
   lua_pushnumber(L, input.pressed);
-  state_->host.call(2, 0);
+  try {
+    state.host.call(2, 0);
+  } catch (ScriptError& e) {
+    state.deferred.insert(state.deferred.begin(), std::move(e));
+  }
+  state.throwKeptErrors();
 }
 
 void ScriptSystem::afterStep(core::Scene&) {
-  state_->afterStep.push();
-  state_->host.call(0, 0);
-}
-
-void ScriptSystem::draw(const core::Scene&, core::DrawList& out) const {
-  state_->context.draw = &out;
+  State& state = *state_;
+  state.afterStep.push();
   try {
-    state_->callDriver("draw", 0, 0);
-  } catch (...) {
-    state_->context.draw = nullptr;
-    throw;
+    state.host.call(0, 0);
+  } catch (ScriptError& e) {
+    state.deferred.insert(state.deferred.begin(), std::move(e));
   }
-  state_->context.draw = nullptr;
+  state.host.collectIfNeeded();
+  state.throwKeptErrors();
 }
 
+// Never throws (the game loop calls it outside any frame): an error is reported with the next
+// frame's, and the picture shows nothing the scripts drew.
+void ScriptSystem::draw(const core::Scene&, core::DrawList& out) const {
+  State& state = *state_;
+  state.context.draw = &out;
+  state.context.drawOverflowReported = false;
+  lua::StackGuard guard(state.host.state());
+  try {
+    state.callDriver("draw", 0, 0);
+    if (state.host.hasErrors()) {
+      for (ScriptError& e : state.host.takeErrors()) state.deferred.push_back(std::move(e));
+      out.clear();
+    }
+  } catch (const ScriptError& e) {
+    state.deferred.push_back(e);
+    out.clear();
+  } catch (const std::exception& e) {  // std::bad_alloc, say
+    state.deferred.emplace_back(std::string("draw: ") + e.what(), "");
+    out.clear();
+  }
+  state.context.draw = nullptr;
+}
+
+// Never throws either: on an error, the last status that worked (the error is reported with the
+// next frame's).
 GameStatus ScriptSystem::status() const {
+  State& state = *state_;
+  try {
+    GameStatus s = readStatus();
+    if (state.host.hasErrors())
+      for (ScriptError& e : state.host.takeErrors()) state.deferred.push_back(std::move(e));
+    state.lastStatus = s;
+  } catch (const ScriptError& e) {
+    state.deferred.push_back(e);
+  } catch (const std::exception& e) {
+    state.deferred.emplace_back(std::string("status: ") + e.what(), "");
+  }
+  return state.lastStatus;
+}
+
+std::optional<std::string> ScriptSystem::takeError() {
+  try {
+    state_->throwKeptErrors();
+  } catch (const ScriptError& e) {
+    return e.report();
+  }
+  return std::nullopt;
+}
+
+GameStatus ScriptSystem::readStatus() const {
   lua_State* L = state_->host.state();
   lua::StackGuard guard(L);
   state_->callDriver("status", 0, 1);
@@ -281,16 +467,41 @@ void ScriptSystem::carryOver(core::Scene&, core::System& previous) {
   lua::StackGuard guardFrom(from), guardTo(to);
   // The old version's save() may itself be what the edit fixes: if it fails, the new version
   // starts from the level start rather than refusing the fix.
+  old->state_->host.beginFrame();
   try {
     old->state_->callDriver("save", 0, 1);
   } catch (const ScriptError&) {
+    old->state_->host.takeErrors();
     return;
   }
+  old->state_->host.takeErrors();  // a level's or mod's failing save(): that part starts afresh
   PlainCopy job{from, lua_gettop(from)};
   lua_pushcfunction(to, copyPlainProtected);
   lua_pushlightuserdata(to, &job);
-  state_->host.call(1, 1);
-  state_->callDriver("restore", 1, 0);
+  std::string note;
+  try {
+    state_->host.call(1, 1);
+  } catch (const ScriptError& e) {
+    // Too much (or too deep) to carry over: the game's own state crosses without what the level
+    // script and mods saved, and the message says why.
+    note = std::string("reloaded without the level's saved state: ") + e.what();
+    lua_pushnil(from);
+    lua_setfield(from, job.index, "level");
+    lua_newtable(from);
+    lua_setfield(from, job.index, "mods");
+    PlainCopy again{from, job.index};
+    lua_pushcfunction(to, copyPlainProtected);
+    lua_pushlightuserdata(to, &again);
+    state_->host.call(1, 1);
+  }
+  state_->host.beginFrame();
+  if (note.empty()) {
+    state_->callDriver("restore", 1, 0);
+  } else {
+    lua_pushlstring(to, note.data(), note.size());
+    state_->callDriver("restore", 2, 0);
+  }
+  state_->throwKeptErrors();
 }
 
 size_t ScriptSystem::luaMemoryBytes() const { return state_->host.memoryUsed(); }

@@ -4,6 +4,7 @@
 // angles: 2^32 per turn, rounded to nearest).
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <vector>
 
 #include "script_context.h"
@@ -23,6 +24,12 @@ World& worldOf(lua_State* L) { return contextOf(L).scene->world(); }
 
 using lua::pushEntity;
 
+// What the world holds from Lua at most: C++ memory the Lua state's limit does not see.
+constexpr size_t kMaxEntities = 10'000;
+constexpr size_t kMaxPlatforms = 1'000;
+constexpr size_t kMaxPlatformLines = 1'000;
+constexpr size_t kMaxPartLines = 100'000;
+
 EntityId checkEntity(lua_State* L, int index) {
   const lua::HandleBits bits = lua::checkHandle(L, index, "an entity");
   const EntityId id{bits.index, bits.generation};
@@ -36,10 +43,13 @@ physics::PlatformId checkPlatform(lua_State* L, int index) {
   return {bits.index, bits.generation};
 }
 
-int64_t toQ16(lua_State* L, int index) {
-  const double value = checkNumber(L, index) * kQ16;
-  if (std::fabs(value) > 4.6e18) lua::argError(L, index, "a velocity within +-2^46 units per frame");
-  return std::llround(value);
+// The world's largest move per frame, and largest gravity per frame: 2^30 units (2^46 in Q16).
+constexpr double kMaxPerFrame = 1073741824.0;
+
+int64_t toQ16(lua_State* L, int index, const char* what) {
+  const double value = checkNumber(L, index);
+  if (std::fabs(value) > kMaxPerFrame) lua::argError(L, index, what);
+  return std::llround(value * kQ16);
 }
 
 physics::Angle toAngle(lua_State* L, int index) {
@@ -65,43 +75,72 @@ const char* kindName(physics::LineKind kind) {
   return "solid";
 }
 
-// Reads the integers of t[1..n] (a flat list x0, y0, x1, y1, ...).
-std::vector<int32_t> intList(lua_State* L, int index) {
-  lua::checkTable(L, index);
+// t[key], read raw: no metamethod of a script's table runs from here.
+void rawField(lua_State* L, int table, const char* key) {
+  lua_pushstring(L, key);
+  lua_rawget(L, table);
+}
+
+// Reads the integers of t[1..n] (a flat list x0, y0, x1, y1, ...), at most `most` of them; `what`
+// names the list in errors ("createEntity: polygon", "createPlatform: argument 2").
+std::vector<int32_t> intList(lua_State* L, int index, const std::string& what, size_t most) {
+  if (lua_type(L, index) != LUA_TTABLE) throw lua::ArgError(what + ": expected a table, got " + lua::typeName(L, index));
   const size_t n = lua_objlen(L, index);
+  if (n > most) throw lua::ArgError(what + ": at most " + std::to_string(most) + " numbers, got " + std::to_string(n));
   std::vector<int32_t> out;
   out.reserve(n);
   for (size_t i = 1; i <= n; ++i) {
     lua_rawgeti(L, index, static_cast<int>(i));
     if (lua_type(L, -1) != LUA_TNUMBER || lua_tonumber(L, -1) != std::floor(lua_tonumber(L, -1)) ||
         std::fabs(lua_tonumber(L, -1)) > 1073741823.0)
-      throw lua::ArgError("argument " + std::to_string(index) + ": item " + std::to_string(i) +
-                          " is not an integer coordinate within +-(2^30 - 1)");
+      throw lua::ArgError(what + ": item " + std::to_string(i) + " is not an integer coordinate within +-(2^30 - 1)");
     out.push_back(static_cast<int32_t>(lua_tonumber(L, -1)));
     lua_pop(L, 1);
   }
   return out;
 }
 
+// An optional integer field of an option table, read raw; errors name the function and the field.
+std::optional<int64_t> integerField(lua_State* L, int table, const char* function, const char* key, int64_t low,
+                                    int64_t high) {
+  rawField(L, table, key);
+  if (lua_isnil(L, -1)) {
+    lua_pop(L, 1);
+    return std::nullopt;
+  }
+  const double value = lua_type(L, -1) == LUA_TNUMBER ? lua_tonumber(L, -1) : 0.5;
+  if (value != std::floor(value) || value < static_cast<double>(low) || value > static_cast<double>(high))
+    throw lua::ArgError(std::string(function) + ": " + key + ": expected an integer in [" + std::to_string(low) + ", " +
+                        std::to_string(high) + "], got " +
+                        (lua_type(L, -1) == LUA_TNUMBER ? std::to_string(lua_tonumber(L, -1)) : lua::typeName(L, -1)));
+  lua_pop(L, 1);
+  return static_cast<int64_t>(value);
+}
+
 // createEntity{circle = r [, sides = 16]} | {box = {halfWidth, halfHeight}} | {polygon = {x0, y0, ...}}
 int createEntity(lua_State* L) {
   lua::checkTable(L, 1);
-  lua_getfield(L, 1, "circle");
-  lua_getfield(L, 1, "box");
-  lua_getfield(L, 1, "polygon");
+  if (worldOf(L).entityCount() >= kMaxEntities)
+    throw lua::ArgError("createEntity: the world holds " + std::to_string(kMaxEntities) +
+                        " entities, the most scripts may make (destroy some first)");
+  rawField(L, 1, "circle");
+  rawField(L, 1, "box");
+  rawField(L, 1, "polygon");
   std::optional<physics::Convex> shape;
   if (!lua_isnil(L, -3)) {
-    const int32_t radius = checkInt32(L, -3, 1, 1 << 28);
-    lua_getfield(L, 1, "sides");
-    const int sides = lua_isnil(L, -1) ? 16 : checkInt32(L, -1, 3, 64);
+    lua_pop(L, 2);
+    const auto radius = static_cast<int32_t>(*integerField(L, 1, "createEntity", "circle", 1, 1 << 28));
+    const auto sides = static_cast<int>(integerField(L, 1, "createEntity", "sides", 3, 64).value_or(16));
     shape = physics::Convex::regular(sides, radius);
   } else if (!lua_isnil(L, -2)) {
-    const std::vector<int32_t> half = intList(L, lua_gettop(L) - 1);
-    if (half.size() != 2 || half[0] <= 0 || half[1] <= 0) throw lua::ArgError("box = {halfWidth, halfHeight}, both > 0");
+    const std::vector<int32_t> half = intList(L, lua_gettop(L) - 1, "createEntity: box", 2);
+    if (half.size() != 2 || half[0] <= 0 || half[1] <= 0) throw lua::ArgError("createEntity: box = {halfWidth, halfHeight}, both > 0");
     shape = physics::Convex::box(half[0], half[1]);
   } else if (!lua_isnil(L, -1)) {
-    const std::vector<int32_t> xy = intList(L, lua_gettop(L));
-    if (xy.size() < 6 || xy.size() % 2) throw lua::ArgError("polygon = {x0, y0, x1, y1, x2, y2, ...}: 3 or more points");
+    const std::vector<int32_t> xy = intList(L, lua_gettop(L), "createEntity: polygon", 2 * physics::kMaxConvexVertices);
+    if (xy.size() < 6 || xy.size() % 2)
+      throw lua::ArgError("createEntity: polygon = {x0, y0, x1, y1, x2, y2, ...}: 3 to " +
+                          std::to_string(physics::kMaxConvexVertices) + " points");
     std::vector<physics::Vec2> points;
     for (size_t i = 0; i < xy.size(); i += 2) points.push_back({xy[i], xy[i + 1]});
     shape.emplace(std::move(points));  // the Convex constructor checks convexity and order
@@ -112,8 +151,19 @@ int createEntity(lua_State* L) {
   return 1;
 }
 
+// The player's entity is the game's (scripts/scene.lua names it with engine.protect): a sandbox
+// may not destroy or erase it.
+void checkNotProtected(lua_State* L, EntityId id, const char* function) {
+  const ScriptContext& context = contextOf(L);
+  if (id == context.protectedEntity && context.host->runningSandbox() != kNoSandbox)
+    throw lua::ArgError(std::string(function) + ": the player's entity belongs to the game (a level script or mod may not " +
+                        (std::string(function) == "erase" ? "erase" : "destroy") + " it)");
+}
+
 int destroyEntity(lua_State* L) {
-  worldOf(L).destroyEntity(checkEntity(L, 1));
+  const EntityId id = checkEntity(L, 1);
+  checkNotProtected(L, id, "destroyEntity");
+  worldOf(L).destroyEntity(id);
   return 0;
 }
 
@@ -133,7 +183,9 @@ int insert(lua_State* L) {
 }
 
 int erase(lua_State* L) {
-  worldOf(L).erase(checkEntity(L, 1), checkPart(L, 2));
+  const EntityId id = checkEntity(L, 1);
+  checkNotProtected(L, id, "erase");
+  worldOf(L).erase(id, checkPart(L, 2));
   return 0;
 }
 
@@ -161,7 +213,8 @@ int velocity(lua_State* L) {
 
 int setVelocity(lua_State* L) {
   const EntityId e = checkEntity(L, 1);
-  worldOf(L).setVelocity(e, {toQ16(L, 2), toQ16(L, 3)});
+  constexpr const char* kVelocity = "a velocity within +-2^30 units per frame";
+  worldOf(L).setVelocity(e, {toQ16(L, 2, kVelocity), toQ16(L, 3, kVelocity)});
   return 0;
 }
 
@@ -180,10 +233,7 @@ int setGravityEnabled(lua_State* L) {
 }
 
 uint32_t optionalBits(lua_State* L, int table, const char* field) {
-  lua_getfield(L, table, field);
-  const uint32_t value = lua_isnil(L, -1) ? 0 : checkUint32(L, -1);
-  lua_pop(L, 1);
-  return value;
+  return static_cast<uint32_t>(integerField(L, table, "setFilter", field, 0, UINT32_MAX).value_or(0));
 }
 
 // setFilter(e, {category =, solidWith =, overlapWith =, pushable =})
@@ -194,7 +244,7 @@ int setFilter(lua_State* L) {
   filter.category = optionalBits(L, 2, "category");
   filter.solidWith = optionalBits(L, 2, "solidWith");
   filter.overlapWith = optionalBits(L, 2, "overlapWith");
-  lua_getfield(L, 2, "pushable");
+  rawField(L, 2, "pushable");
   filter.pushable = lua_toboolean(L, -1) != 0;
   worldOf(L).setFilter(e, filter);
   return 0;
@@ -251,7 +301,8 @@ int gravity(lua_State* L) {
 
 int setGravity(lua_State* L) {
   const physics::MapPartId part = checkPart(L, 1);
-  worldOf(L).mapPart(part).setGravity({toQ16(L, 2), toQ16(L, 3)});
+  constexpr const char* kGravity = "a gravity within +-2^30 units per frame per frame";
+  worldOf(L).mapPart(part).setGravity({toQ16(L, 2, kGravity), toQ16(L, 3, kGravity)});
   return 0;
 }
 
@@ -260,6 +311,9 @@ int addLine(lua_State* L, physics::LineKind kind) {
   const physics::Vec2 a{checkInt32(L, 2), checkInt32(L, 3)}, b{checkInt32(L, 4), checkInt32(L, 5)};
   const uint32_t tag = lua_isnoneornil(L, 6) ? 0 : checkUint32(L, 6);
   physics::MapPart& map = worldOf(L).mapPart(part);
+  if (map.lines().size() >= kMaxPartLines)
+    throw lua::ArgError("line: part " + std::to_string(part) + " holds " + std::to_string(kMaxPartLines) +
+                        " lines, the most scripts may add");
   const physics::LineIndex index = kind == physics::LineKind::OneWay ? map.oneWay(a, b, tag) : map.line(a, b, tag);
   lua_pushnumber(L, index);
   return 1;
@@ -294,7 +348,11 @@ int refreshPierce(lua_State* L) {
 // createPlatform(part, {x0, y0, x1, y1, ...}, tag, "solid" | "oneway") -> platform handle
 int createPlatform(lua_State* L) {
   const physics::MapPartId part = checkPart(L, 1);
-  const std::vector<int32_t> xy = intList(L, 2);
+  ScriptContext& context = contextOf(L);
+  if (context.platforms.size() >= kMaxPlatforms)
+    throw lua::ArgError("createPlatform: scripts have made " + std::to_string(kMaxPlatforms) +
+                        " platforms, the most they may (destroy some first)");
+  const std::vector<int32_t> xy = intList(L, 2, "createPlatform: argument 2 (lines)", 4 * kMaxPlatformLines);
   if (xy.empty() || xy.size() % 4) throw lua::ArgError("createPlatform: lines as {x0, y0, x1, y1, ...}");
   const uint32_t tag = lua_isnoneornil(L, 3) ? 0 : checkUint32(L, 3);
   physics::LineKind kind = physics::LineKind::Solid;
@@ -306,6 +364,7 @@ int createPlatform(lua_State* L) {
   std::vector<physics::PlatformLine> lines;
   for (size_t i = 0; i < xy.size(); i += 4) lines.push_back({{{xy[i], xy[i + 1]}, {xy[i + 2], xy[i + 3]}}, tag, kind});
   const physics::PlatformId id = worldOf(L).createPlatform(part, lines);
+  context.platforms.insert(lua::handleNumber(id.index, id.generation));
   lua::pushHandle(L, id.index, id.generation);
   return 1;
 }
@@ -324,7 +383,9 @@ int platformOffset(lua_State* L) {
 }
 
 int destroyPlatform(lua_State* L) {
-  worldOf(L).destroyPlatform(checkPlatform(L, 1));
+  const physics::PlatformId id = checkPlatform(L, 1);
+  worldOf(L).destroyPlatform(id);
+  contextOf(L).platforms.erase(lua::handleNumber(id.index, id.generation));
   return 0;
 }
 

@@ -1,5 +1,5 @@
 // The FFI fast path of platon.world: the calls a player script makes every frame (position,
-// velocity, setVelocity, gravity, contactCount, contact) as C functions LuaJIT calls from inside
+// velocity, setVelocity, gravity, contactCount, contact, valid) as C functions LuaJIT calls from inside
 // its compiled traces (~3 ns), where a classic Lua C function costs ~16 ns and ends the trace.
 // bench/script/script_frames measures the difference.
 //
@@ -17,7 +17,10 @@ namespace {
 
 using physics::EntityId;
 
-enum Status : int { kOk = 0, kNotHandle = 1, kStale = 2, kNotInserted = 3, kNoPart = 4, kBadIndex = 5, kBadValue = 6, kFailed = 7 };
+enum Status : int {
+  kOk = 0, kNotHandle = 1, kStale = 2, kNotInserted = 3, kNoPart = 4, kBadIndex = 5, kBadValue = 6, kFailed = 7,
+  kBadValue3 = 8
+};
 
 constexpr double kQ16 = 65536.0;
 
@@ -29,6 +32,8 @@ struct WorldFfi {
   int (*gravity)(void*, double, double*);
   int (*contactCount)(void*, double, double*);
   int (*contact)(void*, double, double, double*);
+  int (*valid)(void*, double);
+  const char* (*lastError)(void*);
 };
 
 physics::World& worldOf(void* context) { return static_cast<ScriptContext*>(context)->scene->world(); }
@@ -40,10 +45,17 @@ int entityOf(physics::World& world, double handle, EntityId& out) {
   return world.valid(out) ? kOk : kStale;
 }
 
+// Runs f; an exception becomes kFailed, its message kept for lastError().
 template <class F>
-int guarded(F&& f) noexcept {
+int guarded(void* context, F&& f) noexcept {
   try {
     return f();
+  } catch (const std::exception& e) {
+    try {
+      static_cast<ScriptContext*>(context)->ffiError = e.what();
+    } catch (...) {
+    }
+    return kFailed;
   } catch (...) {
     return kFailed;
   }
@@ -52,7 +64,7 @@ int guarded(F&& f) noexcept {
 // The entity functions' shared part: the handle checked, then f(world, entity) with nothing thrown.
 template <class F>
 int withEntity(void* context, double handle, F&& f) noexcept {
-  return guarded([&] {
+  return guarded(context, [&] {
     physics::World& world = worldOf(context);
     EntityId e;
     if (const int s = entityOf(world, handle, e)) return s;
@@ -78,17 +90,20 @@ int ffiVelocity(void* context, double handle, double* out) {
   });
 }
 
+// The world's largest move per frame: 2^30 units (as world_api.cpp checks it).
+constexpr double kMaxPerFrame = 1073741824.0;
+
 int ffiSetVelocity(void* context, double handle, double vx, double vy) {
   return withEntity(context, handle, [&](physics::World& world, EntityId e) {
-    const double x = vx * kQ16, y = vy * kQ16;
-    if (!std::isfinite(x) || !std::isfinite(y) || std::fabs(x) > 4.6e18 || std::fabs(y) > 4.6e18) return static_cast<int>(kBadValue);
-    world.setVelocity(e, {std::llround(x), std::llround(y)});
+    if (!(std::fabs(vx) <= kMaxPerFrame)) return static_cast<int>(kBadValue);
+    if (!(std::fabs(vy) <= kMaxPerFrame)) return static_cast<int>(kBadValue3);
+    world.setVelocity(e, {std::llround(vx * kQ16), std::llround(vy * kQ16)});
     return static_cast<int>(kOk);
   });
 }
 
 int ffiGravity(void* context, double part, double* out) {
-  return guarded([&] {
+  return guarded(context, [&] {
     physics::World& world = worldOf(context);
     if (!(part >= 0 && part <= 4294967295.0) || part != std::floor(part)) return static_cast<int>(kBadIndex);
     const physics::MapPart* map = world.findMapPart(static_cast<physics::MapPartId>(part));
@@ -125,6 +140,13 @@ int ffiContact(void* context, double handle, double i, double* out) {
   });
 }
 
+int ffiValid(void* context, double handle) {
+  EntityId e;
+  return guarded(context, [&] { return entityOf(worldOf(context), handle, e) == kOk ? 1 : 0; });
+}
+
+const char* ffiLastError(void* context) { return static_cast<ScriptContext*>(context)->ffiError.c_str(); }
+
 // The Lua side, run once in the trusted state: `api` is the struct above, `world` the table the
 // classic functions live in. Messages match world_api.cpp's.
 constexpr const char* kWrappers = R"lua(
@@ -138,6 +160,8 @@ struct platon_world_ffi {
   int (*gravity)(void*, double, double*);
   int (*contactCount)(void*, double, double*);
   int (*contact)(void*, double, double, double*);
+  int (*valid)(void*, double);
+  const char* (*lastError)(void*);
 };
 ]]
 api = ffi.cast("struct platon_world_ffi*", api)
@@ -151,14 +175,15 @@ local function got(v)
   return type(v)
 end
 
-local function fail(status, what, v)
+local function fail(status, what, v, v2, v3)
   if status == 1 then error("argument 1: expected " .. what .. " handle, got " .. got(v), 3) end
   if status == 2 then error("argument 1: stale entity handle (destroyed, or never created)", 3) end
   if status == 3 then error("position: the entity is in no map part (insert it first)", 3) end
   if status == 4 then error("argument 1: no map part " .. tostring(v), 3) end
   if status == 5 then error("argument 1: expected an integer in [0, 4294967295], got " .. got(v), 3) end
-  if status == 6 then error("argument 2: expected a velocity within +-2^46 units per frame", 3) end
-  error("world: internal error", 3)
+  if status == 6 then error("argument 2: expected a velocity within +-2^30 units per frame, got " .. got(v2), 3) end
+  if status == 8 then error("argument 3: expected a velocity within +-2^30 units per frame, got " .. got(v3), 3) end
+  error(ffi.string(api.lastError(context)), 3)  -- what the world's C++ said
 end
 
 local function number(v, i, what)
@@ -184,7 +209,12 @@ function world.setVelocity(e, vx, vy)
   number(vx, 2, "a number")
   number(vy, 3, "a number")
   local s = api.setVelocity(context, e, vx, vy)
-  if s ~= 0 then fail(s, "an entity", e) end
+  if s ~= 0 then fail(s, "an entity", e, vx, vy) end
+end
+
+function world.valid(e)
+  if type(e) ~= "number" then return false end
+  return api.valid(context, e) == 1
 end
 
 function world.gravity(part)
@@ -220,12 +250,12 @@ end
 }  // namespace
 
 void registerWorldFfi(LuaHost& host, ScriptContext& context) {
-  static_assert(sizeof(WorldFfi) == 7 * sizeof(void*));
+  static_assert(sizeof(WorldFfi) == 9 * sizeof(void*));
   lua_State* L = host.state();
   lua::StackGuard guard(L);
   // The struct lives as long as the context (one per ScriptSystem); Lua holds a pointer to it.
   context.ffi = std::make_shared<WorldFfi>(WorldFfi{&context, ffiPosition, ffiVelocity, ffiSetVelocity, ffiGravity,
-                                                    ffiContactCount, ffiContact});
+                                                    ffiContactCount, ffiContact, ffiValid, ffiLastError});
   host.loadString(kWrappers, "=platon.world (FFI)", Trust::Trusted);
   lua_getglobal(L, "require");
   lua_pushliteral(L, "ffi");

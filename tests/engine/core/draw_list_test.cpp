@@ -3,6 +3,9 @@
 // are drawn as they are in it.
 #include <gtest/gtest.h>
 
+#include <string>
+#include <vector>
+
 #include "platon/core/draw_list.h"
 
 using namespace platon::core;
@@ -37,4 +40,27 @@ TEST(DrawListBetween, ShapesThatChangedAreDrawnAsTheyAreNow) {
   EXPECT_FLOAT_EQ(m.shapes()[1].at.x, 7);
   const DrawList same = DrawList::between(b, b, 0.3f);
   EXPECT_FLOAT_EQ(same.shapes()[0].at.x, 500);
+}
+
+// A frame's list is bounded (what scripts draw is work and memory outside every Lua limit): past
+// its limits a shape is dropped and the call says so.
+TEST(DrawListLimits, ShapesPointsAndTextPastTheLimitsAreDropped) {
+  DrawList list(true);
+  for (size_t i = 0; i < DrawList::kMaxShapes; ++i) ASSERT_TRUE(list.circle(Place::onFace(0), {0, 0}, 1, {}));
+  EXPECT_FALSE(list.circle(Place::onFace(0), {0, 0}, 1, {}));
+  EXPECT_FALSE(list.text(Place::onScreen(), {0, 0}, "x", 10, {}));
+  EXPECT_EQ(list.shapes().size(), DrawList::kMaxShapes);
+  DrawList text(true);
+  const std::string big(DrawList::kMaxTextBytes / 2, 'x');
+  EXPECT_TRUE(text.text(Place::onScreen(), {0, 0}, big, 10, {}));
+  EXPECT_TRUE(text.text(Place::onScreen(), {0, 0}, big, 10, {}));
+  EXPECT_FALSE(text.text(Place::onScreen(), {0, 0}, "x", 10, {}));
+  DrawList points(true);
+  const std::vector<Point2> many(256, Point2{});
+  size_t drawn = 0;
+  while (points.polygon(Place::onFace(0), many, {})) ++drawn;
+  EXPECT_EQ(drawn, DrawList::kMaxPoints / 256);
+  DrawList off;  // disabled: records nothing, refuses nothing
+  EXPECT_TRUE(off.circle(Place::onFace(0), {0, 0}, 1, {}));
+  EXPECT_TRUE(off.shapes().empty());
 }

@@ -108,9 +108,11 @@ const char* kFailing = "return { contact = function(entity, tag)\n"
 class RulesBothWays : public ::testing::TestWithParam<LuaRules::Call> {
  protected:
   LuaRules load(const char* code, const std::string& chunkName, Trust trust) {
-    host.loadString(code, chunkName, trust);
-    host.call(0, 1);
-    LuaRules rules(host, -1, GetParam());
+    const int sandbox = host.loadString(code, chunkName, trust);
+    host.beginFrame();
+    if (trust == Trust::Sandboxed) host.callSandboxed(sandbox, 0, 1);
+    else host.call(0, 1);
+    LuaRules rules(host, -1, GetParam(), sandbox);
     lua_pop(host.state(), 1);
     return rules;
   }

@@ -43,16 +43,25 @@ struct DrawShape {
   uint32_t count = 0;
 };
 
+// A frame's list holds at most kMaxShapes shapes, kMaxPoints polygon and line points and
+// kMaxTextBytes of text (what scripts draw is work and memory outside every Lua limit); a shape
+// past them is dropped and its call returns false.
 class DrawList {
  public:
+  static constexpr size_t kMaxShapes = 10'000;
+  static constexpr size_t kMaxPoints = 100'000;
+  static constexpr size_t kMaxTextBytes = 64 * 1024;
+
   explicit DrawList(bool enabled = false) : enabled_(enabled) {}
   bool enabled() const { return enabled_; }
 
-  void circle(Place place, Point2 centre, float radius, Color color);
+  // Each returns false when the shape was dropped: over a limit (a disabled list drops nothing:
+  // it records nothing and returns true).
+  bool circle(Place place, Point2 centre, float radius, Color color);
   // A convex polygon, counter-clockwise.
-  void polygon(Place place, std::span<const Point2> points, Color color);
-  void line(Place place, Point2 a, Point2 b, float width, Color color);
-  void text(Place place, Point2 at, std::string_view text, float height, Color color);
+  bool polygon(Place place, std::span<const Point2> points, Color color);
+  bool line(Place place, Point2 a, Point2 b, float width, Color color);
+  bool text(Place place, Point2 at, std::string_view text, float height, Color color);
   void clear();
 
   std::span<const DrawShape> shapes() const { return shapes_; }

@@ -42,10 +42,16 @@ struct SceneManifest {
   // gives the solid, the lines, start and goal instead of solid and edge.
   std::string levelFile;
   double gravity = 0.35;             // units per frame per frame, along each face's -y
-  // Scripts: "scripts/..." names an engine script (trusted); any other path is the level's own,
-  // relative to the manifest, and runs sandboxed.
+  // Scripts: "scripts/..." names an engine script (trusted; kept as written, the script system
+  // finds it under the engine's root); any other path is the level's own, relative to the
+  // manifest, resolved (links included) and kept inside its folder, and runs sandboxed. Mods are
+  // always the level's own.
   std::string rules, player, progression, level;
   std::vector<std::string> mods;
+  // Which of the four are engine scripts: decided by the parser from what the manifest wrote,
+  // never from a joined path.
+  bool rulesTrusted = false, playerTrusted = false, progressionTrusted = false, levelTrusted = false;
+  // limits = { memory_mb, call_ms }: the script system uses them only to lower its own limits.
   size_t memoryMegabytes = 128;
   double callMilliseconds = 250;
   uint32_t seed = 1;

@@ -37,7 +37,12 @@ struct Replay {
   uint64_t frames() const { return held.size(); }
 };
 
-// Throws std::runtime_error "file:line:column: reason" for anything malformed.
+// Whether a path has a ".." component: a replay's or a scenario's scene path may not (they are
+// shared, and a ".." could name a scene by a path that looks like another: scripts/../../x).
+bool hasParentStep(const std::string& path);
+
+// Throws std::runtime_error "file:line:column: reason" for anything malformed (and a scene path
+// with "..").
 Replay readReplay(const std::string& path);
 Replay parseReplay(const std::string& text, const std::string& fileName);
 std::string formatReplay(const Replay& replay);

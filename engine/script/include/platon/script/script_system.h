@@ -3,6 +3,7 @@
 // player, the progression, the level script and mods, and runs them each frame.
 #pragma once
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -39,7 +40,12 @@ class ScriptSystem final : public core::System {
   // save) to the new version's restore(); docs/scripting.md, "Hot reload".
   void carryOver(core::Scene& scene, core::System& previous) override;
 
+  // The game's state. Never throws: a script error here (or in draw()) is kept, reported with
+  // the next frame's errors (or by takeError()), and the last status that worked is returned.
   GameStatus status() const;
+  // The errors kept from status() and draw() and from sandboxed calls since the last frame, as
+  // one report; nothing when there are none. For a run that ends before another frame would.
+  std::optional<std::string> takeError();
   // Runs `code` as trusted Lua in the scene's state with `game` and `platon` visible; for
   // scenarios' checks. Returns its first result converted to a string ("" for nil).
   std::string evaluate(const std::string& code, const std::string& chunkName);
@@ -48,6 +54,7 @@ class ScriptSystem final : public core::System {
   struct State;  // the Lua state and what the bindings reach (script_system.cpp)
 
  private:
+  GameStatus readStatus() const;
   std::unique_ptr<State> state_;
 };
 

@@ -1,0 +1,720 @@
+// The sandbox inside a running scene: each test is one finding of the sandbox audit
+// (docs/scripting.md, "Sandbox"), played through the engine as a downloaded level would be, with
+// the error a player or a scenario sees. Every one of them failed (or hung, or aborted) before its fix.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "platon/core/draw_list.h"
+#include "platon/core/live_scene.h"
+#include "platon/core/replay.h"
+#include "platon/script/scenario.h"
+#include "platon/script/script_system.h"
+#include "platon/testing/temp_folder.h"
+
+namespace platon::script {
+namespace {
+
+namespace fs = std::filesystem;
+using core::Button;
+using core::InputFrame;
+using Folder = testing::TempFolder;
+
+std::string fileText(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// A downloaded level: the first level's stage, the game's scripts, and the level's own level.lua
+// (and mod.lua, rules.lua when given).
+struct Level {
+  Folder folder;
+  std::string scene;
+  Level(const std::string& name, const std::string& level, const std::string& mod = "", const std::string& rules = "",
+        const std::string& extra = "")
+      : folder(name) {
+    folder.write("cube_intro.level", fileText(std::string(PLATON_SOURCE_ROOT) + "/levels/cube_intro/cube_intro.level"));
+    folder.write("level.lua", level);
+    std::string scripts = "preset = 'game', level = 'level.lua'";
+    if (!mod.empty()) {
+      folder.write("mod.lua", mod);
+      scripts += ", mods = { 'mod.lua' }";
+    }
+    if (!rules.empty()) {
+      folder.write("rules.lua", rules);
+      scripts += ", rules = 'rules.lua'";
+    }
+    scene = folder.write("scene.lua", "return { name = 'audit', systems = { 'scripting' }, stage = { level = 'cube_intro.level' },"
+                                      " gravity = 0.35, scripts = { " + scripts + " }" + extra + " }\n");
+  }
+};
+
+core::SystemRegistry scripting() {
+  core::SystemRegistry registry;
+  registry.add("scripting", makeScriptSystem);
+  return registry;
+}
+
+ScriptSystem& scriptsOf(core::LiveScene& live) { return dynamic_cast<ScriptSystem&>(*live.scene().findSystem("scripting")); }
+
+struct Played {
+  std::vector<std::string> errors;  // "frame N: report"
+  double slowestFrame = 0;          // seconds
+  GameStatus status;
+};
+
+// Plays `frames` frames holding `held`, asking for the status after each (as the game loop does).
+Played play(core::LiveScene& live, int frames, uint8_t held = InputFrame::bit(Button::Right)) {
+  Played p;
+  core::InputEdges edges;
+  for (int f = 1; f <= frames; ++f) {
+    const auto start = std::chrono::steady_clock::now();
+    if (std::optional<std::string> error = live.step(edges.next(held)))
+      p.errors.push_back("frame " + std::to_string(live.scene().frame()) + ": " + *error);
+    p.status = scriptsOf(live).status();
+    p.slowestFrame = std::max(p.slowestFrame, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  return p;
+}
+
+std::string joined(const std::vector<std::string>& errors) {
+  std::string out;
+  for (const std::string& e : errors) out += e + "\n----\n";
+  return out;
+}
+
+double secondsOf(const std::function<void()>& f) {
+  const auto start = std::chrono::steady_clock::now();
+  f();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// --- 1: trust is decided from what the manifest wrote, never from a joined path ---
+
+const char* kTellsWhatItSees =
+    "return { build = function(game) game.message((io and 'io ' or 'no io ') .. (require and 'require' or 'no require')) end }\n";
+
+TEST(Finding1, ALevelOpenedThroughAPathUnderScriptsIsStillSandboxed) {
+  Level level("f1_path", kTellsWhatItSees);
+  // "scripts/../../../tmp/.../scene.lua" from the engine's root: the same file, a path that starts
+  // with scripts/ (tests run in the source root).
+  std::string up = "scripts/";
+  for (const auto& part : fs::current_path()) (void)part, up += "../";
+  const std::string path = up + level.scene.substr(1);
+  ASSERT_TRUE(fs::exists(path)) << path;
+  const core::SceneManifest m = core::loadManifest(path);
+  EXPECT_FALSE(m.levelTrusted);
+  EXPECT_TRUE(m.playerTrusted);  // preset = "game": the engine's
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene live(path, registry, false);
+  EXPECT_EQ(scriptsOf(live).status().message, "no io no require");
+}
+
+TEST(Finding1, ALinkOutOfTheLevelsFolderIsRefused) {
+  Folder outside("f1_outside");
+  const std::string target = outside.write("evil.lua", kTellsWhatItSees);
+  Level level("f1_link", "return {}\n");
+  fs::remove(level.folder.path("level.lua"));
+  fs::create_symlink(target, level.folder.path("level.lua"));
+  try {
+    core::loadManifest(level.scene);
+    FAIL() << "a level script linked from outside its folder was accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("'level.lua' leads to " + fs::canonical(target).string() + ", outside the scene's folder"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+// An engine script is looked for under the engine's root, and must stay under its scripts/.
+TEST(Finding1, AnEngineScriptLinkedFromOutsideTheEnginesScriptsIsRefused) {
+  Folder root("f1_root");
+  for (const char* file : {"scripts/scene.lua", "scripts/player.lua", "scripts/progression.lua", "scripts/rules/game.lua"})
+    root.write(file, fileText(std::string(PLATON_SOURCE_ROOT) + "/" + file));
+  Folder outside("f1_outside_engine");
+  fs::create_symlink(outside.write("evil.lua", "return {}\n"), root.path("scripts/evil.lua"));
+  Level level("f1_engine_link", "return {}\n");
+  level.folder.write("scene.lua", "return { systems = { 'scripting' }, stage = { level = 'cube_intro.level' }, scripts = {"
+                                  " preset = 'game', progression = 'scripts/evil.lua' } }\n");
+  core::SystemRegistry registry;
+  registry.add("scripting", [&](core::Scene& s) { return std::make_unique<ScriptSystem>(s, root.path()); });
+  try {
+    core::LiveScene live(level.scene, registry, false);
+    FAIL() << "an engine script outside the engine's scripts/ loaded";
+  } catch (const std::exception& e) {
+    EXPECT_NE(core::errorReport(e).find("'scripts/evil.lua' is " + fs::canonical(outside.path("evil.lua")).string() +
+                                        ", outside the engine's scripts"),
+              std::string::npos)
+        << core::errorReport(e);
+  }
+}
+
+TEST(Finding1, ReplaysAndScenariosMayNotNameASceneWithDotDot) {
+  try {
+    core::parseReplay("platon replay 1\nscene \"scripts/../../../tmp/x/scene.lua\"\nframes 1\nhash_every 60\ninput\n1 -\nend\n", "r.replay");
+    FAIL();
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("r.replay:2:7: 'scripts/../../../tmp/x/scene.lua': a replay's scene path may not contain '..'"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_NO_THROW(core::parseReplay("platon replay 1\nscene \"levels/a..b/scene.lua\"\nframes 1\nhash_every 60\ninput\n1 -\nend\n", "r"));
+  Folder folder("f1_scenario");
+  const ScenarioResult r = runScenario(folder.write("s.lua", "return { scene = 'scripts/../levels/cube_intro/scene.lua', frames = 1 }"));
+  EXPECT_FALSE(r.passed);
+  EXPECT_NE(r.message.find("'scene' may not contain '..'"), std::string::npos) << r.message;
+}
+
+// --- 2, 16: the game's API checks what a sandbox hands it ---
+
+TEST(Finding2, BadSwitchIdsAreErrorsAtTheCallersLineAndTheGameGoesOn) {
+  for (const char* bad : {"{}", "0/0", "setmetatable({}, {__add = function() error('planted') end})", "1.5", "1000", "'3'"}) {
+    Level level("f2_toggle", std::string("return { tick = function(game, frame)\n  if frame == 5 then game.toggle(") + bad +
+                                 ") end\nend }\n");
+    const core::SystemRegistry registry = scripting();
+    core::LiveScene live(level.scene, registry, false);
+    const Played p = play(live, 60);
+    ASSERT_EQ(p.errors.size(), 1u) << bad << "\n" << joined(p.errors);
+    EXPECT_NE(p.errors[0].find("frame 5: " + level.folder.path("level.lua") + ":2: toggle: expected a switch id, an integer 0..999"),
+              std::string::npos)
+        << p.errors[0];
+    EXPECT_GT(p.status.x, 700);  // the player walked on: the game is not broken
+  }
+  Level level("f2_switch_on", "return { tick = function(game, frame) if frame == 3 then game.switchOn('x') end end }\n");
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene live(level.scene, registry, false);
+  const Played p = play(live, 10);
+  ASSERT_EQ(p.errors.size(), 1u) << joined(p.errors);
+  EXPECT_NE(p.errors[0].find("level.lua:1: switchOn: expected a switch id, an integer 0..999, got \"x\""), std::string::npos) << p.errors[0];
+}
+
+TEST(Finding16, ABadCheckpointIsAnErrorAtItsLineAndDeathsStillRespawn) {
+  Level level("f16_checkpoint", "return { tick = function(game, frame)\n"
+                                "  if frame == 5 then game.checkpoint(99, 0, 0) end\n"
+                                "  if frame == 6 then game.checkpoint(0, 0.5, 0) end\n"
+                                "  if frame == 7 then game.kill() end\n"
+                                "end }\n");
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene live(level.scene, registry, false);
+  const Played p = play(live, 30);
+  ASSERT_EQ(p.errors.size(), 2u) << joined(p.errors);
+  EXPECT_NE(p.errors[0].find("level.lua:2: checkpoint: face: expected a face of this stage, got 99"), std::string::npos) << p.errors[0];
+  EXPECT_NE(p.errors[1].find("level.lua:3: checkpoint: x: expected an integer within +-(2^30 - 1), got 0.5"), std::string::npos)
+      << p.errors[1];
+  EXPECT_EQ(p.status.deaths, 1);
+  EXPECT_EQ(p.status.face, 0u);
+}
+
+// A checkpoint inside a wall: the respawn falls back to the level's start (the old player is
+// destroyed only once the new one stands).
+TEST(Finding16, ACheckpointInAWallRespawnsAtTheLevelStart) {
+  Level level("f16_wall", "return {\n"
+                          "  build = function(game) game.world.line(0, 2000, 400, 2000, 1400) end,\n"
+                          "  tick = function(game, frame)\n"
+                          "    if frame == 5 then game.checkpoint(0, 2000, 700) game.kill() end\n"
+                          "  end }\n");
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene live(level.scene, registry, false);
+  const Played p = play(live, 7, 0);
+  EXPECT_TRUE(p.errors.empty()) << joined(p.errors);
+  EXPECT_EQ(p.status.deaths, 1);
+  EXPECT_EQ(p.status.message, "the checkpoint's place is taken: back to the level's start");
+  EXPECT_NEAR(p.status.x, 600, 2);
+  EXPECT_EQ(live.scene().world().entityCount(), 1u);
+}
+
+TEST(Finding16, ASandboxMayNotDestroyOrEraseThePlayer) {
+  for (const char* call : {"game.world.destroyEntity(game.player())", "game.world.erase(game.player(), 0)",
+                           "platon.world.destroyEntity(game.player())"}) {
+    Level level("f16_destroy", std::string("return { tick = function(game, frame)\n  if frame == 5 then ") + call + " end\nend }\n");
+    const core::SystemRegistry registry = scripting();
+    core::LiveScene live(level.scene, registry, false);
+    const Played p = play(live, 40);
+    ASSERT_EQ(p.errors.size(), 1u) << call << "\n" << joined(p.errors);
+    EXPECT_NE(p.errors[0].find("level.lua:2: "), std::string::npos) << p.errors[0];
+    EXPECT_NE(p.errors[0].find(": the player's entity belongs to the game (a level script or mod may not "), std::string::npos)
+        << p.errors[0];
+    EXPECT_GT(p.status.x, 700);
+  }
+}
+
+// If the player's entity is gone all the same (here: trusted code destroyed it), the player comes
+// back once, with a message, instead of an error on every frame.
+TEST(Finding16, ALostPlayerRespawnsOnce) {
+  Level level("f16_lost", "return {}\n");
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene live(level.scene, registry, false);
+  play(live, 20);
+  scriptsOf(live).evaluate("local game = ... platon.world.destroyEntity(game.player.entity)", "=test");
+  const Played p = play(live, 30);
+  EXPECT_TRUE(p.errors.empty()) << joined(p.errors);
+  EXPECT_EQ(p.status.message, "the player was lost: back at the last checkpoint");
+  EXPECT_EQ(live.scene().world().entityCount(), 1u);
+}
+
+// --- 3: status() and draw() never throw ---
+
+TEST(Finding3, AnErrorInStatusIsReportedWithTheNextFrameAndTheLastGoodStatusStays) {
+  Level level("f3_status", "return {}\n");
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene live(level.scene, registry, false);
+  const Played before = play(live, 10);
+  scriptsOf(live).evaluate("local game = ... game.openSwitches = 5", "=test");  // status() now fails
+  GameStatus s;
+  EXPECT_NO_THROW(s = scriptsOf(live).status());
+  EXPECT_EQ(s.x, before.status.x);
+  const Played after = play(live, 1);
+  ASSERT_FALSE(after.errors.empty());
+  EXPECT_NE(after.errors[0].find("scene.lua"), std::string::npos) << after.errors[0];
+  EXPECT_NE(after.errors[0].find("attempt to get length of local 'on' (a number value)"), std::string::npos) << after.errors[0];
+}
+
+TEST(Finding3, AnErrorInLevelDrawLeavesAnEmptyPictureAndIsReported) {
+  Level level("f3_draw", "return { draw = function(game, draw) draw.circle(0, 1, 1, 5, 0xffffff) error('an ordinary bug') end }\n");
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene live(level.scene, registry, false);
+  core::DrawList list(true);
+  EXPECT_NO_THROW(live.scene().draw(list));
+  EXPECT_TRUE(list.shapes().empty());
+  const Played p = play(live, 1);
+  ASSERT_EQ(p.errors.size(), 1u);
+  EXPECT_NE(p.errors[0].find("level.lua:1: an ordinary bug"), std::string::npos) << p.errors[0];
+  const ScenarioResult r = runScenario(level.folder.write("s.lua", "return { scene = '" + level.scene + "', frames = 10 }"));
+  EXPECT_TRUE(r.passed) << r.message;  // headless: no picture, no draw() call
+}
+
+// --- 4, 5: sandboxes get read-only views of the engine's tables ---
+
+TEST(Finding4, TheEnginesTablesAreReadOnlyInEverySandbox) {
+  const char* attempts[][2] = {
+      {"game.message = 1", "game is read-only (tried to set message)"},
+      {"game.world.valid = function() end", "game.world is read-only (tried to set valid)"},
+      {"platon.world.position = function() end", "platon.world is read-only (tried to set position)"},
+      {"setmetatable(game.world, {})", "cannot change a protected metatable"},
+      {"game.newField = 1", "game is read-only (tried to set newField)"},
+  };
+  for (const auto& [code, message] : attempts) {
+    Level level("f4_tables", std::string("return { tick = function(game, frame) if frame == 2 then ") + code + " end end }\n");
+    const core::SystemRegistry registry = scripting();
+    core::LiveScene live(level.scene, registry, false);
+    const Played p = play(live, 30);
+    ASSERT_EQ(p.errors.size(), 1u) << code << "\n" << joined(p.errors);
+    EXPECT_NE(p.errors[0].find(std::string("level.lua:1: ") + message), std::string::npos) << p.errors[0];
+    EXPECT_GT(p.status.x, 650);
+  }
+  // The draw argument of level.draw too.
+  Level level("f4_draw", "return { draw = function(game, draw) draw.circle = nil end }\n");
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene live(level.scene, registry, false);
+  core::DrawList list(true);
+  live.scene().draw(list);
+  const Played p = play(live, 1);
+  ASSERT_EQ(p.errors.size(), 1u);
+  EXPECT_NE(p.errors[0].find("level.lua:1: draw is read-only (tried to set circle)"), std::string::npos) << p.errors[0];
+}
+
+TEST(Finding5, SandboxedRulesGetTheLevelsViewAndTheGamesSetters) {
+  const char* rules = "local game = ...\n"
+                      "assert(game.Player == nil and game.progression == nil and game.switches == nil, 'the trusted game table')\n"
+                      "assert(not pcall(function() game.won = true end), 'writable')\n"
+                      "local rules = {}\n"
+                      "function rules.pierce(entity, tag, kind) return kind == 'warp' or tag == 2 end\n"
+                      "function rules.beginContact(entity, tag) if tag == 2 and entity == game.player() then game.reachGoal() end end\n"
+                      "return rules\n";
+  Level level("f5_rules", "return {}\n", "", rules);
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene live(level.scene, registry, false);
+  const Played p = play(live, 1500);
+  EXPECT_TRUE(p.errors.empty()) << joined(p.errors);
+  EXPECT_TRUE(p.status.won);
+}
+
+// --- 6, 7, 18: patterns ---
+
+TEST(Finding6, StringMethodsAreTheCountedPatternFunctionsToo) {
+  Level level("f6_method", "return { build = function(game)\n"
+                           "  local ok, e = pcall(function() local r = (string.rep('a', 200)):find('.-.-.-.-b') return r end)\n"
+                           "  game.message(tostring(e) .. ' / dump: ' .. tostring(('').dump))\n"
+                           "end }\n");
+  const core::SystemRegistry registry = scripting();
+  double seconds = 0;
+  std::string message;
+  seconds = secondsOf([&] {
+    core::LiveScene live(level.scene, registry, false);
+    message = scriptsOf(live).status().message;
+  });
+  EXPECT_EQ(message, level.folder.path("level.lua") + ":2: pattern too costly (more than 10000000 steps) / dump: nil");
+  EXPECT_LT(seconds, 1.0);
+}
+
+TEST(Finding7, CostlyPatternsAreRefusedWhateverTheirShape) {
+  struct Case {
+    const char* code;
+    const char* result;
+  };
+  const Case cases[] = {
+      {"string.find(string.rep('a', 1500), '.-.-b')", "pattern too costly"},            // unanchored: n^(items+1)
+      {"string.find(string.rep('a', 1500), '(.-)%1b')", "pattern too costly"},          // a back-reference
+      {"string.gsub(string.rep('a', 1500), '.-.-b', '')", "pattern too costly"},
+      {"string.find(string.rep('a', 4e5), string.rep('a', 1e5) .. 'b', 1, true)", "nil"},  // plain: linear now
+      {"string.find(string.rep('a', 4e5), string.rep('a', 1e5) .. 'b')", "nil"},           // no items: plain
+  };
+  for (const Case& c : cases) {
+    Level level("f7_patterns", std::string("return { build = function(game)\n  local ok, e = pcall(function() return ") + c.code +
+                                   " end)\n  game.message(tostring(e))\nend }\n");
+    const core::SystemRegistry registry = scripting();
+    std::string message;
+    const double seconds = secondsOf([&] {
+      core::LiveScene live(level.scene, registry, false);
+      message = scriptsOf(live).status().message;
+    });
+    EXPECT_NE(message.find(c.result), std::string::npos) << c.code << ": " << message;
+    EXPECT_LT(seconds, 1.0) << c.code;
+  }
+}
+
+// --- 8: the deadline's timer stops a loop of slow C calls ---
+
+TEST(Finding8, ALoopOfSlowCallsIsStoppedAtTheDeadline) {
+  Level level("f8_timer", "return { tick = function(game, frame)\n"
+                          "  local s = string.rep('a', 4e6)\n"
+                          "  while true do s:find('b', 1, true) end\n"
+                          "end }\n",
+              "", "", ", limits = { call_ms = 50 }");
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene live(level.scene, registry, false);
+  const Played p = play(live, 3);
+  ASSERT_EQ(p.errors.size(), 1u) << joined(p.errors);
+  EXPECT_NE(p.errors[0].find("level.lua:3: script stopped: it ran longer than the frame's script budget of 50 ms"), std::string::npos)
+      << p.errors[0];
+  EXPECT_LT(p.slowestFrame, 0.5);  // one C call of a few ms past the deadline, not 100,000 instructions' worth
+}
+
+// --- 9: a level's manifest may lower the limits, never raise them ---
+
+TEST(Finding9, AManifestCannotRaiseTheLimits) {
+  Level level("f9_limits", "return {}\n", "return { tick = function() while true do end end }\n", "",
+              ", limits = { memory_mb = 4096, call_ms = 60000 }");
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene live(level.scene, registry, false);
+  const Played p = play(live, 2);
+  ASSERT_EQ(p.errors.size(), 1u) << joined(p.errors);
+  EXPECT_NE(p.errors[0].find("mod.lua:1: script stopped: it ran longer than the frame's script budget of 250 ms"), std::string::npos)
+      << p.errors[0];
+  EXPECT_LT(p.slowestFrame, 1.0);
+  Level hog("f9_memory", "return {}\n", "local t = {} return { tick = function() for i = 1, 1e7 do t[i] = string.rep('x', 1000) .. i end end }\n", "",
+            ", limits = { memory_mb = 4096 }");
+  core::LiveScene live2(hog.scene, registry, false);
+  const Played q = play(live2, 2);
+  ASSERT_EQ(q.errors.size(), 1u) << joined(q.errors);
+  EXPECT_NE(q.errors[0].find("memory limit of 96 MB (of the Lua state's 128 MB"), std::string::npos) << q.errors[0];
+}
+
+// --- 10: one budget a frame for every sandboxed call, rules callbacks included ---
+
+TEST(Finding10, RulesCallbacksShareTheFramesBudget) {
+  const char* level = "return { tick = function(game, frame)\n"
+                      "  if frame == 1 then for i = 0, 19 do local e = game.world.createEntity { circle = 40 }\n"
+                      "    game.world.insert(e, 0, 300 + i * 150, 700) end end\n"
+                      "end }\n";
+  // Each contact spins a while (tens of ms); 20 balls rest on the floor, each in contact every frame.
+  const char* rules = "local rules = {}\n"
+                      "function rules.pierce(e, tag, kind) return kind == 'warp' end\n"
+                      "function rules.contact(entity) for i = 1, 2e7 do end end\n"
+                      "return rules\n";
+  Level l("f10_rules", level, "", rules, ", limits = { call_ms = 100 }");
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene live(l.scene, registry, false);
+  const Played p = play(live, 60, 0);
+  ASSERT_FALSE(p.errors.empty());
+  EXPECT_NE(p.errors[0].find("rules.lua:3: script stopped: it ran longer than the frame's script budget of 100 ms"), std::string::npos)
+      << p.errors[0];
+  EXPECT_NE(p.errors[0].find("rules.lua disabled"), std::string::npos) << p.errors[0];
+  EXPECT_LT(p.slowestFrame, 0.4) << "one frame ran the rules far past the frame's budget";
+  EXPECT_EQ(p.errors.size(), 1u) << joined(p.errors);
+}
+
+// --- 11: a runaway module is disabled; each module's hooks have their own error boundary ---
+
+TEST(Finding11, ARunawayModIsDisabledAndTheOthersGoOn) {
+  const char* levelScript = "return { tick = function(game, frame) error('the level fails every frame') end }\n";
+  const char* mod = "return { tick = function(game, frame)\n"
+                    "  game.message('mod tick ' .. frame)\n"
+                    "  if frame == 10 then while true do end end\n"
+                    "end }\n";
+  Level level("f11_mod", levelScript, mod, "", ", limits = { call_ms = 50 }");
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene live(level.scene, registry, false);
+  double seconds = 0;
+  Played p;
+  seconds = secondsOf([&] { p = play(live, 40); });
+  EXPECT_LT(seconds, 0.5);  // 50 ms once, not on every frame
+  bool disabled = false;
+  for (const std::string& e : p.errors) {
+    EXPECT_NE(e.find("the level fails every frame"), std::string::npos) << e;  // the level's error, every frame
+    if (e.find("mod.lua:3: script stopped: it ran longer than the frame's script budget of 50 ms (an endless loop?); " +
+               level.folder.path("mod.lua") + " disabled: fix it and save to reload") != std::string::npos)
+      disabled = true;
+  }
+  EXPECT_TRUE(disabled) << joined(p.errors);
+  EXPECT_EQ(p.status.message, "mod tick 10");  // ran every frame until its stop, despite the level's errors
+  // Hot reload brings it back.
+  ASSERT_TRUE(live.reload().ok);
+  EXPECT_EQ(play(live, 1).status.message, "mod tick 41");
+}
+
+// --- 12: hot reload's copy of save() data ---
+
+TEST(Finding12, SavedDataIsCopiedOnceCyclesKeptAndTooMuchRefused) {
+  // A DAG of 60 levels (2^60 paths), a cycle and a shared table.
+  const std::string hooks = "local saved\n"
+                            "local function dag() local n = { 'leaf' } for i = 1, 60 do n = { n, n } end return n end\n"
+                            "return { save = function() local t = { dag = dag(), shared = { 1 } } t.again = t.shared t.self = t return t end,\n"
+                            "  onReload = function(game, s)\n"
+                            "    local d = s.dag for i = 1, 60 do assert(d[1] == d[2]) d = d[1] end\n"
+                            "    game.message(d[1] .. ' ' .. tostring(s.self == s) .. ' ' .. tostring(s.again == s.shared)) end }\n";
+  Level level("f12_dag", hooks);
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene live(level.scene, registry, false);
+  play(live, 5);
+  core::ReloadReport r;
+  const double seconds = secondsOf([&] { r = live.reload(); });
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_LT(seconds, 1.0);
+  EXPECT_EQ(scriptsOf(live).status().message, "leaf true true");
+
+  Level big("f12_big", "return { save = function() local t = {} for i = 1, 200000 do t[i] = i end return t end,\n"
+                       "  onReload = function(game, s) game.message('got it') end }\n");
+  core::LiveScene live2(big.scene, registry, false);
+  play(live2, 5);
+  const core::ReloadReport r2 = live2.reload();
+  ASSERT_TRUE(r2.ok) << r2.error;
+  EXPECT_EQ(scriptsOf(live2).status().message,
+            "reloaded without the level's saved state: save(): data too large to carry over (more than 100000 table entries)");
+  EXPECT_EQ(scriptsOf(live2).status().time, 5u);  // the game's own state crossed
+}
+
+// --- 13, 14: what Lua makes in C++ is capped ---
+
+TEST(Finding13, EntitiesAndPlatformsMadeFromLuaAreCapped) {
+  Level level("f13_flood", "return { tick = function(game, frame)\n"
+                           "  for i = 1, 1000 do game.world.createEntity { circle = 10 } end\n"
+                           "end }\n");
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene live(level.scene, registry, false);
+  const Played p = play(live, 15);
+  ASSERT_FALSE(p.errors.empty());
+  EXPECT_NE(p.errors[0].find("level.lua:2: createEntity: the world holds 10000 entities, the most scripts may make"), std::string::npos)
+      << p.errors[0];
+  EXPECT_EQ(live.scene().world().entityCount(), 10000u);
+  Level platforms("f13_platforms", "return { build = function(game)\n"
+                                   "  local ok, e = pcall(game.world.createPlatform, 0, (function() local t = {} for i = 1, 4004 do t[i] = i end return t end)())\n"
+                                   "  local made = 0\n"
+                                   "  local ok2, e2 = pcall(function() for i = 1, 1001 do game.world.createPlatform(0, { 10, 10, 20, 10 }) made = made + 1 end end)\n"
+                                   "  game.message(tostring(e) .. ' / ' .. made .. ' / ' .. tostring(e2))\n"
+                                   "end }\n");
+  core::LiveScene live2(platforms.scene, registry, false);
+  const std::string m = scriptsOf(live2).status().message;
+  EXPECT_NE(m.find("createPlatform: argument 2 (lines): at most 4000 numbers, got 4004 / 1000 / "), std::string::npos) << m;
+  EXPECT_NE(m.find("createPlatform: scripts have made 1000 platforms, the most they may"), std::string::npos) << m;
+}
+
+TEST(Finding14, MessagesAndDrawingAreCapped) {
+  Level level("f14_caps", "return {\n"
+                          "  tick = function(game, frame) game.message(string.rep('\\226\\128\\162', 100000)) end,\n"
+                          "  draw = function(game, draw) for i = 1, 20000 do draw.text('screen', 0, 0, 'x', 10, 0xffffff) end end }\n");
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene live(level.scene, registry, false);
+  const Played p = play(live, 2);
+  EXPECT_TRUE(p.errors.empty()) << joined(p.errors);
+  EXPECT_LE(p.status.message.size(), 200u + 3);
+  EXPECT_EQ(p.status.message.size() % 3, 0u);  // cut between characters (each 3 bytes), then "..."
+  core::DrawList list(true);
+  live.scene().draw(list);
+  EXPECT_TRUE(list.shapes().empty());  // the draw failed: an empty picture
+  const Played q = play(live, 1);
+  ASSERT_EQ(q.errors.size(), 1u);
+  EXPECT_NE(q.errors[0].find("level.lua:3: draw: this frame's picture is full (at most 10000 shapes"), std::string::npos) << q.errors[0];
+}
+
+// --- 15: a mod at the memory ceiling leaves the engine's scripts their reserve ---
+
+TEST(Finding15, AModAtTheMemoryCeilingDoesNotStarveThePlayer) {
+  const char* mod = "hoard = {}\n"
+                    "return { tick = function(game, frame)\n"
+                    "  pcall(function() while true do hoard[#hoard + 1] = string.rep('x', 4096) .. #hoard end end)\n"
+                    "end }\n";
+  Level level("f15_memhog", "return {}\n", mod, "", ", limits = { memory_mb = 32 }");
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene live(level.scene, registry, false);
+  const Played p = play(live, 200);
+  ASSERT_EQ(p.errors.size(), 1u) << joined(p.errors);
+  EXPECT_NE(p.errors[0].find("mod.lua:3: script stopped: the sandboxes reached their memory limit of 24 MB (of the Lua state's 32 MB"),
+            std::string::npos)
+      << p.errors[0];
+  EXPECT_NE(p.errors[0].find("mod.lua disabled"), std::string::npos);
+  EXPECT_GT(p.status.x, 1500);  // the player walked on
+  EXPECT_LT(scriptsOf(live).luaMemoryBytes(), size_t{8} << 20);  // the hoard was collected
+}
+
+// --- 17: replays are exact: the same run gives the same hash in separate processes ---
+
+uint64_t hashInAChildProcess(const std::string& scene) {
+  int pipeFds[2];
+  if (pipe(pipeFds) != 0) return 0;
+  const pid_t child = fork();
+  if (child == 0) {
+    close(pipeFds[0]);
+    uint64_t hash = 0;
+    try {
+      const core::SystemRegistry registry = scripting();
+      core::LiveScene live(scene, registry, false);
+      play(live, 60);
+      hash = live.scene().world().stateHash();
+    } catch (...) {
+    }
+    (void)!write(pipeFds[1], &hash, sizeof hash);
+    _exit(0);
+  }
+  close(pipeFds[1]);
+  uint64_t hash = 0;
+  (void)!read(pipeFds[0], &hash, sizeof hash);
+  close(pipeFds[0]);
+  waitpid(child, nullptr, 0);
+  return hash;
+}
+
+TEST(Finding17, PairsClocksAndAddressesGiveTheSameRunInEveryProcess) {
+  const char* script =
+      "local keys = {}\n"
+      "for i = 1, 8 do keys['k' .. i] = i end\n"
+      "local order = {}\n"
+      "for k, v in pairs(keys) do order[#order + 1] = v end\n"
+      "local first = next(keys)\n"
+      "local id = tonumber(tostring({}):match('%d+$')) or 1e9\n"
+      "return { tick = function(game, frame)\n"
+      "  if frame == 30 then\n"
+      "    local vx = order[1] + (os.clock() * 60) % 3 + os.time() % 2 + #os.date('%H') + id % 2 + #first\n"
+      "    game.world.setVelocity(game.player(), vx, -3)\n"
+      "  end\n"
+      "end }\n";
+  Level level("f17_determinism", script);
+  const uint64_t first = hashInAChildProcess(level.scene);
+  ASSERT_NE(first, 0u);
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(hashInAChildProcess(level.scene), first) << "run " << i + 2;
+  // What it saw: keys in byte order, the game's clock at frame 30 (0.5 s after 1970-01-01 UTC).
+  Level show("f17_show", "local keys = {}\nfor i = 1, 8 do keys['k' .. i] = i end\n"
+                         "local order = {}\nfor k, v in pairs(keys) do order[#order + 1] = v end\n"
+                         "return { tick = function(game, frame) if frame == 30 then game.message(table.concat(order, ',') .. ' ' .. os.clock() .. ' ' ..\n"
+                         "  os.time() .. ' ' .. os.date('%Y-%m-%d %H:%M:%S') .. ' ' .. tostring(print):gsub('%d+', 'N')) end end }\n");
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene live(show.scene, registry, false);
+  const Played p = play(live, 30);
+  EXPECT_EQ(p.status.message, "1,2,3,4,5,6,7,8 0.48333333333333 0 1970-01-01 00:00:00 function: #N");
+  Level tables("f17_table_keys", "local t = { [{}] = 1 } for k in pairs(t) do end return {}\n");
+  try {
+    core::LiveScene refused(tables.scene, registry, false);
+    FAIL();
+  } catch (const std::exception& e) {
+    EXPECT_NE(core::errorReport(e).find("level.lua:1: pairs over table keys has no fixed order in a replayable game"), std::string::npos)
+        << core::errorReport(e);
+  }
+}
+
+// --- 19: error messages say where, and who ---
+
+TEST(Finding19, ErrorsNameTheSandboxedFileAndLine) {
+  struct Case {
+    const char* tick;
+    const char* message;
+  };
+  const Case cases[] = {
+      {"error({})", "level.lua:1: (error object is a table value)"},
+      {"local function f(n) return 1 + f(n) end f(1)", "level.lua:1: stack overflow"},
+      // LuaJIT gives no place after an overflow in a metamethod: the file is named.
+      {"local t = setmetatable({}, {__index = function(t, k) return t[k] end}) local _ = t.x",
+       "level.lua: stack overflow (a function or metamethod that calls itself without end?)"},
+      {"game.world.setVelocity(game.player(), 0, 2^45)", "level.lua:1: argument 3: expected a velocity within +-2^30 units per frame, got 35184372088832.000000"},
+      {"game.world.setFilter(game.player(), { category = 2^32 })", "level.lua:1: setFilter: category: expected an integer in [0, 4294967295], got 4294967296.000000"},
+      {"game.world.createEntity { polygon = { 0, 0, 10, 0, 'x' } }", "level.lua:1: createEntity: polygon: item 5 is not an integer coordinate"},
+      {"game.world.createEntity { circle = 0.5 }", "level.lua:1: createEntity: circle: expected an integer in [1, 268435456], got 0.500000"},
+      {"local ok = pcall(string.rep, 'x', 1e9) local t = nil return t.field", "level.lua:1: script stopped: the sandboxes reached their memory limit"},
+  };
+  for (const Case& c : cases) {
+    Level level("f19_messages", std::string("return { tick = function(game, frame) if frame == 2 then ") + c.tick + " end end }\n");
+    const core::SystemRegistry registry = scripting();
+    core::LiveScene live(level.scene, registry, false);
+    const Played p = play(live, 3);
+    ASSERT_FALSE(p.errors.empty()) << c.tick;
+    EXPECT_NE(p.errors[0].find("frame 2: " + level.folder.path(c.message)), std::string::npos) << c.tick << "\n" << p.errors[0];
+  }
+}
+
+// The velocity's range is the world's, the same with the FFI path (the default) and without.
+TEST(Finding19, TheVelocityRangeIsTheWorldsOnBothPaths) {
+  for (const bool ffi : {true, false}) {
+    if (ffi) unsetenv("PLATON_NO_FFI");
+    else setenv("PLATON_NO_FFI", "1", 1);
+    Level level("f19_velocity", "local e\n"
+                                "return { tick = function(game, frame)\n"
+                                "  e = e or game.world.createEntity { circle = 10 }  -- not inserted: it does not move\n"
+                                "  if frame == 2 then game.world.setVelocity(e, 2^30, -2^30) end\n"
+                                "  if frame == 3 then game.world.setVelocity(e, 2^30 + 1, 0) end\n"
+                                "end }\n");
+    const core::SystemRegistry registry = scripting();
+    core::LiveScene live(level.scene, registry, false);
+    const Played p = play(live, 3, 0);
+    ASSERT_EQ(p.errors.size(), 1u) << (ffi ? "FFI" : "classic") << "\n" << joined(p.errors);
+    EXPECT_NE(p.errors[0].find("frame 3: " + level.folder.path("level.lua") +
+                               ":5: argument 2: expected a velocity within +-2^30 units per frame, got 1073741825.000000"),
+              std::string::npos)
+        << p.errors[0];
+  }
+  unsetenv("PLATON_NO_FFI");
+}
+
+// A sandboxed rules script that spends the frame inside a trusted call (the player's spawn asks
+// pierce): the stop names the rules script, not the engine's code that happened to run.
+TEST(Finding19, ABudgetStopBlamesTheSandboxThatSpentIt) {
+  const char* rules = "local rules = {}\n"
+                      "function rules.pierce(entity, tag, kind)\n"
+                      "  while true do end\n"
+                      "end\n"
+                      "return rules\n";
+  Level level("f19_blame", "return {}\n", "", rules, ", limits = { call_ms = 50 }");
+  const core::SystemRegistry registry = scripting();
+  try {
+    core::LiveScene live(level.scene, registry, false);
+    FAIL() << "loaded";
+  } catch (const std::exception& e) {
+    const std::string report = core::errorReport(e);
+    EXPECT_EQ(report.rfind(level.folder.path("rules.lua") + ":3: script stopped: it ran longer than the frame's script budget of 50 ms", 0),
+              0u)
+        << report;
+  }
+}
+
+// --- 20: table.sort runs in C: a bound on what it sorts ---
+
+TEST(Finding20, SortRefusesHugeTables) {
+  Level level("f20_sort", "return { build = function(game)\n"
+                          "  local t = {} for i = 1, 1000001 do t[i] = -i end\n"
+                          "  local ok, e = pcall(table.sort, t)\n"
+                          "  local small = { 3, 1, 2 } table.sort(small)\n"
+                          "  game.message(tostring(e) .. ' / ' .. table.concat(small, ','))\n"
+                          "end }\n");
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene live(level.scene, registry, false);
+  EXPECT_EQ(scriptsOf(live).status().message, "table.sort: at most 1000000 items in a sandbox (this table has 1000001) / 1,2,3");
+}
+
+}  // namespace
+}  // namespace platon::script
