@@ -61,6 +61,7 @@ std::vector<size_t> numbering(const Polyhedron& p, const std::vector<Frame>& fra
   std::vector<size_t> order{first};
   std::vector<bool> numbered(count, false);
   numbered[first] = true;
+  size_t open = 0;
   // across[f][k]: the face across the frame's edge k of face f (k = 0 is the floor).
   while (order.size() < count) {
     const size_t right = across[order.back()][1].first;
@@ -69,8 +70,10 @@ std::vector<size_t> numbering(const Polyhedron& p, const std::vector<Frame>& fra
       order.push_back(right);
       continue;
     }
+    // Faces before `open` have every neighbour numbered and keep it so: start there (linear, not
+    // quadratic, in the faces of a big mesh).
     bool found = false;
-    for (size_t i = 0; i < order.size() && !found; ++i) {
+    for (size_t i = open; i < order.size() && !found; ++i) {
       const size_t n = across[order[i]].size();
       for (size_t k = 1; k <= n && !found; ++k) {
         const size_t next = across[order[i]][k % n].first;
@@ -79,6 +82,7 @@ std::vector<size_t> numbering(const Polyhedron& p, const std::vector<Frame>& fra
         order.push_back(next);
         found = true;
       }
+      if (!found) open = i + 1;
     }
   }
   return order;

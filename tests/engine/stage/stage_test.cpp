@@ -170,7 +170,7 @@ TEST(MeshBuilder, EveryBrokenMeshSaysWhatIsWrongAndWhere) {
   EXPECT_EQ(meshRefusal(missing), "triangle 5 names vertex 99, which does not exist");
   stage::MeshData nan = cubeMesh();
   nan.positions[2].x() = std::nan("");
-  EXPECT_EQ(meshRefusal(nan), "vertex 2 is not a finite point of sensible size");
+  EXPECT_EQ(meshRefusal(nan), "vertex 2 is not a finite point of sensible size (within 1e15)");
   EXPECT_EQ(meshRefusal({}), "a closed solid needs at least 4 triangles, the mesh has 0");
 }
 
