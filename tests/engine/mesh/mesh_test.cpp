@@ -2,6 +2,7 @@
 // broken meshes are refused with what is wrong; the shipped mesh levels check clean. (That the
 // plugin is mapped only by a process playing a mesh level is script_tests' MeshPlugin test: this
 // program links assimp itself.)
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -12,6 +13,9 @@
 #include "platon/script/scenario.h"
 #include "platon/stage/level_check.h"
 #include "platon/stage/mesh.h"
+
+#include "../stage/test_meshes.h"
+#include "mesh_files.h"
 
 using namespace platon;
 
@@ -101,6 +105,85 @@ TEST(MeshPlugin, AMeshLevelNeedsTheMeshesSystem) {
     ADD_FAILURE() << "loaded";
   } catch (const std::exception& e) {
     EXPECT_EQ(std::string(e.what()), dir + "/prism.level:1:1: the level is drawn on a mesh: the scene's manifest must list \"meshes\" in its systems");
+  }
+}
+
+std::string scratch(const std::string& name) {
+  const std::string dir = ::testing::TempDir() + "mesh_files/";
+  std::filesystem::create_directories(dir);
+  return dir + name;
+}
+
+stage::Stage stageOfFile(const std::string& path) { return stage::stageFromPolyhedron(stage::polyhedronFromMesh(read(path), 4096)); }
+
+// The same faces, numbered alike, with the same floors (corners within `slack` units) and the
+// same placement in 3D.
+void expectSameStage(const stage::Stage& a, const stage::Stage& b, int slack = 0) {
+  ASSERT_EQ(a.faceCount(), b.faceCount());
+  for (size_t f = 0; f < a.faceCount(); ++f) {
+    SCOPED_TRACE("face " + std::to_string(f));
+    ASSERT_EQ(a.faces[f].corners.size(), b.faces[f].corners.size());
+    for (size_t i = 0; i < a.faces[f].corners.size(); ++i) {
+      EXPECT_LE(std::abs(a.faces[f].corners[i].x - b.faces[f].corners[i].x), slack);
+      EXPECT_LE(std::abs(a.faces[f].corners[i].y - b.faces[f].corners[i].y), slack);
+      EXPECT_EQ(a.faces[f].neighbours[i].face, b.faces[f].neighbours[i].face);
+      EXPECT_EQ(a.faces[f].neighbours[i].edge, b.faces[f].neighbours[i].edge);
+    }
+    EXPECT_LT((a.faces[f].normal - b.faces[f].normal).norm(), 1e-6);
+    EXPECT_LT((a.faces[f].xAxis - b.faces[f].xAxis).norm(), 1e-6);
+  }
+}
+
+bool sameFrames(const stage::Stage& a, const stage::Stage& b) {
+  if (a.faceCount() != b.faceCount()) return false;
+  for (size_t f = 0; f < a.faceCount(); ++f)
+    if ((a.faces[f].normal - b.faces[f].normal).norm() > 1e-6 || a.faces[f].corners != b.faces[f].corners) return false;
+  return true;
+}
+
+testfiles::Node turn(double radians, const Eigen::Vector3d& axis, bool asMatrix = false) {
+  testfiles::Node n;
+  n.rotation = Eigen::Quaterniond(Eigen::AngleAxisd(radians, axis));
+  n.asMatrix = asMatrix;
+  return n;
+}
+
+testfiles::Node scaled(const Eigen::Vector3d& s, bool asMatrix = false) {
+  testfiles::Node n;
+  n.scale = s;
+  n.asMatrix = asMatrix;
+  return n;
+}
+
+// A glTF mesh under nodes that tilt it by a hundredth of a radian or less, scale it by 1% or less,
+// nest, shift and mirror it: the same stage as the same mesh with the transforms written into its
+// points (and not the stage of the untransformed mesh). assimp's own pre-transform step skipped
+// any node within 1% of identity.
+TEST(MeshFiles, NodeTransformsApplyHoweverSmall) {
+  const stage::MeshData box = testmesh::box({1, 0.7, 0.45});
+  const stage::Stage plain = stageOfFile((testfiles::writeObj(box, scratch("plain.obj")), scratch("plain.obj")));
+  const Eigen::Vector3d x = Eigen::Vector3d::UnitX(), y = Eigen::Vector3d::UnitY(), z = Eigen::Vector3d::UnitZ();
+  std::vector<std::vector<testfiles::Node>> chains;
+  for (const bool matrix : {false, true}) {
+    for (const double a : {0.001, 0.01, -0.01, 0.02})
+      for (const auto& axis : {x, y, z}) chains.push_back({turn(a, axis, matrix)});
+    for (const Eigen::Vector3d& s : {Eigen::Vector3d(0.99, 1, 1), Eigen::Vector3d(1, 1.006, 1), Eigen::Vector3d(1, 1, 0.992),
+                                    Eigen::Vector3d(1.01, 0.995, 1.003), Eigen::Vector3d(-1, 1, 1)})
+      chains.push_back({scaled(s, matrix)});
+    testfiles::Node shift = turn(0.005, y, matrix);
+    shift.translation = {0.3, -0.2, 5};
+    chains.push_back({turn(0.01, x, matrix), scaled({1.008, 1, 1}, !matrix), shift});
+  }
+  for (size_t i = 0; i < chains.size(); ++i) {
+    SCOPED_TRACE("chain " + std::to_string(i));
+    testfiles::writeGltf(box, chains[i], scratch("node.gltf"));
+    testfiles::writeObj(testfiles::baked(box, chains[i]), scratch("baked.obj"));
+    const stage::Stage fromNodes = stageOfFile(scratch("node.gltf"));
+    expectSameStage(fromNodes, stageOfFile(scratch("baked.obj")), 1);
+    const bool mirrorOnly = chains[i].size() == 1 && chains[i][0].scale.x() < 0;  // the box is symmetric
+    if (!mirrorOnly) {
+      EXPECT_FALSE(sameFrames(fromNodes, plain)) << "the transform was dropped";
+    }
   }
 }
 

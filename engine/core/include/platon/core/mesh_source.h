@@ -16,8 +16,9 @@ struct MeshFile {
 class MeshSource {
  public:
   virtual ~MeshSource() = default;
-  // Reads every mesh in the file, with its nodes' transforms applied. Throws std::runtime_error
-  // "path: reason" for a file that cannot be read or holds no triangles.
+  // Reads every mesh the file's node tree places, with each node's accumulated transform applied
+  // (in double precision). Throws std::runtime_error "path: reason" for a file that cannot be
+  // read or holds no triangles.
   virtual MeshFile loadMesh(const std::string& path) = 0;
 };
 
