@@ -73,10 +73,10 @@ class Flattener {
 
 core::MeshFile MeshSystem::loadMesh(const std::string& path) {
   Assimp::Importer importer;
-  // Polygons split into triangles, and points that files repeat per triangle (STL) joined; the
-  // stage builder welds what is left. Node transforms are applied below, not by assimp.
-  const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-                                                     aiProcess_SortByPType | aiProcess_FindDegenerates);
+  // Polygons split into triangles, nothing else: no joining of points (assimp's is within an
+  // absolute 1e-5, which collapses small models; polyhedronFromMesh welds relative to the size),
+  // no dropping of degenerate triangles (the stage builder says what it does with them).
+  const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_SortByPType);
   if (!scene) fail(path, importer.GetErrorString());
   if (!scene->mRootNode) fail(path, "the file places no mesh (it has no nodes)");
   Flattener flat(*scene);

@@ -187,4 +187,35 @@ TEST(MeshFiles, NodeTransformsApplyHoweverSmall) {
   }
 }
 
+// A box of any size from a millionth of a unit to a million units (points shared, or repeated per
+// triangle as STL files do) makes the same stage: points are welded relative to the mesh's size.
+TEST(MeshFiles, TinyAndHugeMeshesMakeTheSameStage) {
+  for (const Eigen::Vector3d& half : {Eigen::Vector3d(1, 1, 1), Eigen::Vector3d(1, 0.7, 0.45)})
+  for (int e = -6; e <= 6; ++e) {
+    const stage::MeshData box = testmesh::box(half);
+    testfiles::writeObj(box, scratch("unit.obj"));
+    const stage::Stage unit = stageOfFile(scratch("unit.obj"));
+    SCOPED_TRACE("scale 1e" + std::to_string(e) + ", depth " + std::to_string(half.z()));
+    stage::MeshData m = box, loose;
+    for (auto& p : m.positions) p *= std::pow(10.0, e);
+    for (const auto& t : m.triangles) {
+      const int base = int(loose.positions.size());
+      for (const int v : t) loose.positions.push_back(m.positions[size_t(v)]);
+      loose.triangles.push_back({base, base + 1, base + 2});
+    }
+    testfiles::writeObj(m, scratch("scaled.obj"));
+    testfiles::writeObj(loose, scratch("loose.obj"));
+    expectSameStage(stageOfFile(scratch("scaled.obj")), unit);
+    expectSameStage(stageOfFile(scratch("loose.obj")), unit);
+    std::ofstream quads(scratch("quads.obj"));  // the box's faces as quads, for assimp to split
+    for (size_t v = 0; v < 8; ++v)
+      quads << "v " << m.positions[v].x() << " " << m.positions[v].y() << " " << m.positions[v].z() << "\n";
+    for (size_t t = 0; t < 12; t += 2)
+      quads << "f " << m.triangles[t][0] + 1 << " " << m.triangles[t][1] + 1 << " " << m.triangles[t][2] + 1 << " "
+            << m.triangles[t + 1][2] + 1 << "\n";
+    quads.close();
+    expectSameStage(stageOfFile(scratch("quads.obj")), unit);
+  }
+}
+
 }  // namespace

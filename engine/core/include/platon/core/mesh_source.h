@@ -17,7 +17,7 @@ class MeshSource {
  public:
   virtual ~MeshSource() = default;
   // Reads every mesh the file's node tree places, with each node's accumulated transform applied
-  // (in double precision). Throws std::runtime_error "path: reason" for a file that cannot be
+  // (in double precision), points as the file has them (not joined). Throws std::runtime_error "path: reason" for a file that cannot be
   // read or holds no triangles.
   virtual MeshFile loadMesh(const std::string& path) = 0;
 };
