@@ -7,6 +7,8 @@
 
 namespace platon::core {
 
+static_assert(kMaxMeshFileTriangles == stage::kMaxMeshTriangles, "the plugin's cap is the stage builder's");
+
 void Scene::addSystem(std::unique_ptr<System> system, std::string name) {
   systems_.push_back(std::move(system));
   names_.push_back(std::move(name));

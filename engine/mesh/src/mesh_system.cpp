@@ -5,6 +5,9 @@
 
 #include <array>
 #include <assimp/Importer.hpp>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <stdexcept>
 
 namespace platon::mesh {
@@ -33,6 +36,27 @@ Transform compose(const Transform& parent, const aiMatrix4x4& m) {
 double determinant3(const Transform& t) {
   return t[0][0] * (t[1][1] * t[2][2] - t[1][2] * t[2][1]) - t[0][1] * (t[1][0] * t[2][2] - t[1][2] * t[2][0]) +
          t[0][2] * (t[1][0] * t[2][1] - t[1][1] * t[2][0]);
+}
+
+// Refuses a file too big to be a stage before it is read whole: over the size cap, or a binary STL
+// whose header counts more triangles than a stage takes.
+void checkBeforeReading(const std::string& path) {
+  std::error_code error;
+  const auto bytes = std::filesystem::file_size(path, error);
+  if (error) return;  // assimp says why it cannot read it
+  if (bytes > core::kMaxMeshFileBytes)
+    fail(path, "the file is " + std::to_string(bytes >> 20) + " MB; a mesh file may be at most " +
+                   std::to_string(core::kMaxMeshFileBytes >> 20) + " MB");
+  if (bytes < 84) return;
+  std::ifstream in(path, std::ios::binary);
+  char header[84];
+  if (!in.read(header, sizeof header)) return;
+  uint32_t count = 0;
+  std::memcpy(&count, header + 80, 4);
+  const bool binaryStl = bytes == 84 + 50 * uint64_t{count};
+  if (binaryStl && count > core::kMaxMeshFileTriangles)
+    fail(path, "the file has " + std::to_string(count) + " triangles; a stage takes at most " +
+                   std::to_string(core::kMaxMeshFileTriangles));
 }
 
 // Each mesh the node tree places, with the node's accumulated transform applied in double
@@ -72,6 +96,7 @@ class Flattener {
 }  // namespace
 
 core::MeshFile MeshSystem::loadMesh(const std::string& path) {
+  checkBeforeReading(path);
   Assimp::Importer importer;
   // Polygons split into triangles, nothing else: no joining of points (assimp's is within an
   // absolute 1e-5, which collapses small models; polyhedronFromMesh welds relative to the size),
@@ -82,6 +107,9 @@ core::MeshFile MeshSystem::loadMesh(const std::string& path) {
   Flattener flat(*scene);
   flat.add(*scene->mRootNode, identity());
   if (flat.triangles() == 0) fail(path, "the file holds no triangles");
+  if (flat.triangles() > core::kMaxMeshFileTriangles)
+    fail(path, "the file has " + std::to_string(flat.triangles()) + " triangles; a stage takes at most " +
+                   std::to_string(core::kMaxMeshFileTriangles));
   return flat.take();
 }
 

@@ -218,4 +218,23 @@ TEST(MeshFiles, TinyAndHugeMeshesMakeTheSameStage) {
   }
 }
 
+// A file too big for a stage is refused before assimp reads it: by its size, or by the triangle
+// count in a binary STL's header. (Sparse files: nothing is written but the header.)
+TEST(MeshFiles, FilesOverTheCapsAreRefusedBeforeReading) {
+  const std::string big = scratch("big.obj");
+  std::ofstream(big) << "v 0 0 0\n";
+  std::filesystem::resize_file(big, (size_t{65} << 20) + 5);
+  EXPECT_EQ(refusal(big), big + ": the file is 65 MB; a mesh file may be at most 64 MB");
+  const std::string stl = scratch("many.stl");
+  {
+    std::ofstream out(stl, std::ios::binary);
+    const char header[80] = "binary";
+    out.write(header, 80);
+    const uint32_t count = 200000;
+    out.write(reinterpret_cast<const char*>(&count), 4);
+  }
+  std::filesystem::resize_file(stl, 84 + 50 * size_t{200000});
+  EXPECT_EQ(refusal(stl), stl + ": the file has 200000 triangles; a stage takes at most 100000");
+}
+
 }  // namespace
