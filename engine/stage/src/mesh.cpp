@@ -87,20 +87,56 @@ std::vector<int> weldPositions(const MeshData& mesh, const Eigen::Vector3d& lo, 
   return id;
 }
 
-// The mesh's triangles on welded points. Throws for a triangle with no area.
+// The mesh's triangles on welded points. A triangle whose corners are not three different points
+// once welded covers nothing and is left out; one of three different points in a line is refused.
 Surface weldedSurface(const MeshData& mesh, const Eigen::Vector3d& lo, double extent) {
   Surface s;
   const std::vector<int> id = weldPositions(mesh, lo, 1e-6 * extent, s.points);
   for (size_t t = 0; t < mesh.triangles.size(); ++t) {
     const auto& m = mesh.triangles[t];
     const std::array<int, 3> tri{id[static_cast<size_t>(m[0])], id[static_cast<size_t>(m[1])], id[static_cast<size_t>(m[2])]};
+    if (tri[0] == tri[1] || tri[1] == tri[2] || tri[2] == tri[0]) continue;
     const double area = (s.at(tri[1]) - s.at(tri[0])).cross(s.at(tri[2]) - s.at(tri[0])).norm() / 2;
     if (area <= 1e-10 * extent * extent)
-      fail(triangleName(t) + " is degenerate (no area) at " + pointText(mesh.positions[static_cast<size_t>(m[0])]));
+      fail(triangleName(t) + " is degenerate: its corners " + pointText(s.at(tri[0])) + ", " + pointText(s.at(tri[1])) +
+           " and " + pointText(s.at(tri[2])) + " lie on one line (no area)");
     s.triangles.push_back(tri);
     s.fileTriangle.push_back(t);
   }
+  const size_t left = mesh.triangles.size() - s.triangles.size();
+  if (s.triangles.empty())
+    fail("all " + std::to_string(mesh.triangles.size()) + " triangles are degenerate (each has a repeated corner)");
+  if (s.triangles.size() < 4)
+    fail("a closed solid needs at least 4 triangles, the mesh has " + std::to_string(s.triangles.size()) + " (and " +
+         std::to_string(left) + " with a repeated corner, which cover nothing)");
   return s;
+}
+
+// Where an open edge comes from a T-junction (a point of one triangle on another's edge): the
+// message naming it, or "" when no open edge has a point along it. Looks only at the open edges'
+// own ends, which are where such points are.
+std::string tJunction(const Surface& s, const detail::EdgeIndex& edges, double tolerance) {
+  std::vector<std::pair<size_t, size_t>> open;  // triangle, corner
+  std::vector<int> ends;
+  for (size_t t = 0; t < s.triangles.size() && open.size() < 2000; ++t)
+    for (size_t k = 0; k < 3; ++k)
+      if (!edges.find(s.triangles[t][(k + 1) % 3], s.triangles[t][k])) {
+        open.push_back({t, k});
+        ends.push_back(s.triangles[t][k]);
+      }
+  for (const auto& [t, k] : open) {
+    const int a = s.triangles[t][k], b = s.triangles[t][(k + 1) % 3];
+    const Eigen::Vector3d along = s.at(b) - s.at(a);
+    for (const int w : ends) {
+      if (w == a || w == b) continue;
+      const double u = (s.at(w) - s.at(a)).dot(along) / along.squaredNorm();
+      if (u <= 0 || u >= 1 || (s.at(a) + u * along - s.at(w)).norm() > tolerance) continue;
+      return "a T-junction: the point " + pointText(s.at(w)) + " lies on the edge " + pointText(s.at(a)) + " - " +
+             pointText(s.at(b)) + " of " + triangleName(s.fileTriangle[t]) + ", which the triangles on its other side "
+             "split there (split " + triangleName(s.fileTriangle[t]) + " at that point too)";
+    }
+  }
+  return "";
 }
 
 Polyhedron asPolyhedron(const Surface& s) {
@@ -125,8 +161,10 @@ detail::EdgeIndex checkSolid(const Surface& s, double tolerance) {
                                    [&](int v) { return pointText(s.at(v)); }};
   detail::EdgeIndex edges(surface, names);
   detail::checkClosed(surface, edges, [&](int from, int to, size_t t) {
-    return "open mesh: the edge " + pointText(s.at(from)) + " - " + pointText(s.at(to)) + " of " +
-           triangleName(s.fileTriangle[t]) + " has no triangle on its other side";
+    const std::string junction = tJunction(s, edges, tolerance);
+    return !junction.empty() ? junction
+                             : "open mesh: the edge " + pointText(s.at(from)) + " - " + pointText(s.at(to)) + " of " +
+                                   triangleName(s.fileTriangle[t]) + " has no triangle on its other side";
   });
   detail::checkConnected(surface, edges, names);
   std::vector<Eigen::Vector3d> normals;
@@ -228,7 +266,8 @@ Polyhedron polyhedronFromMesh(const MeshData& mesh, double longestEdge) {
       hi = hi.cwiseMax(mesh.positions[static_cast<size_t>(v)]);
     }
   const double extent = (hi - lo).norm();
-  if (!(extent > 0)) fail("the mesh has no extent (all its points are one)");
+  if (!(extent > 0))
+    fail("all " + std::to_string(mesh.triangles.size()) + " triangles are degenerate (every point of the mesh is the same)");
   const double tolerance = 1e-6 * extent;  // a mesh file's floats hold about 7 digits
   Surface surface = weldedSurface(mesh, lo, extent);
   windOutward(surface);

@@ -130,4 +130,79 @@ TEST(MeshBuilder, TooManyTrianglesAreRefusedNamingTheCap) {
   EXPECT_EQ(refusal(m), "the mesh has 100001 triangles; a stage takes at most 100000");
 }
 
+bool sameStage(const stage::Stage& a, const stage::Stage& b) {
+  if (a.faceCount() != b.faceCount()) return false;
+  for (size_t f = 0; f < a.faceCount(); ++f) {
+    if (a.faces[f].corners != b.faces[f].corners) return false;
+    for (size_t i = 0; i < a.faces[f].neighbours.size(); ++i)
+      if (a.faces[f].neighbours[i].face != b.faces[f].neighbours[i].face) return false;
+  }
+  return true;
+}
+
+// Triangles whose corners are not three different points once welded (a repeated index, or two
+// points within the weld distance) cover nothing: left out, the solid is the same. Three
+// different points in a line are refused, naming the triangle.
+TEST(MeshBuilder, TrianglesWithARepeatedCornerAreLeftOutAndFlatOnesRefused) {
+  platon::testing::Rng rng{5};
+  for (int i = 0; i < 60; ++i) {
+    stage::MeshData m = randomConvex(rng);
+    const stage::Stage clean = stage::stageFromPolyhedron(stage::polyhedronFromMesh(m, 4096));
+    const int extra = rng.between(1, 4);
+    for (int k = 0; k < extra; ++k) {  // a repeated index, or a copy of a point nudged within the weld
+      const int a = rng.between(0, int(m.positions.size()) - 1), b = rng.between(0, int(m.positions.size()) - 1);
+      if (rng.between(0, 1)) {
+        m.triangles.insert(m.triangles.begin() + rng.between(0, int(m.triangles.size())), {a, a, b});
+      } else {
+        m.positions.push_back(m.positions[size_t(a)] + Eigen::Vector3d::Constant(1e-9));
+        m.triangles.push_back({a, int(m.positions.size()) - 1, b});
+      }
+    }
+    EXPECT_TRUE(sameStage(stage::stageFromPolyhedron(stage::polyhedronFromMesh(m, 4096)), clean)) << i;
+    // Three different points in a line: a solid triangle's first two corners and one between them.
+    std::array<int, 3> solid = m.triangles[0];
+    for (const auto& t : m.triangles)
+      if ((m.positions[size_t(t[0])] - m.positions[size_t(t[1])]).norm() > 1e-3) solid = t;
+    const Eigen::Vector3d p = m.positions[size_t(solid[0])], q = m.positions[size_t(solid[1])];
+    m.positions.push_back(p + rng.uniform(0.1, 0.9) * (q - p));
+    m.triangles.push_back({solid[0], solid[1], int(m.positions.size()) - 1});
+    const std::string why = refusal(m);
+    EXPECT_EQ(why.rfind("triangle " + std::to_string(m.triangles.size() - 1) + " is degenerate: its corners ", 0), 0u) << why;
+    EXPECT_NE(why.find(" lie on one line (no area)"), std::string::npos) << why;
+  }
+  stage::MeshData zero;
+  zero.positions.assign(3, Eigen::Vector3d::Zero());
+  zero.triangles.assign(1000, {0, 1, 2});
+  EXPECT_EQ(refusal(zero), "all 1000 triangles are degenerate (every point of the mesh is the same)");
+  stage::MeshData lines = testmesh::box({1, 2, 3});
+  for (auto& t : lines.triangles) t[2] = t[0];
+  EXPECT_EQ(refusal(lines), "all 12 triangles are degenerate (each has a repeated corner)");
+}
+
+// A face split along an edge that its neighbour keeps whole: the open edge is named as a
+// T-junction, with the point and the triangle to split, for every edge of random solids.
+TEST(MeshBuilder, ATJunctionIsNamed) {
+  platon::testing::Rng rng{8};
+  for (int i = 0; i < 60; ++i) {
+    stage::MeshData m = randomConvex(rng);
+    const size_t t = size_t(rng.between(0, int(m.triangles.size()) - 1));
+    const int k = rng.between(0, 2);
+    const int a = m.triangles[t][size_t(k)], b = m.triangles[t][size_t((k + 1) % 3)], c = m.triangles[t][size_t((k + 2) % 3)];
+    size_t neighbour = 0;  // the triangle running b -> a
+    for (size_t u = 0; u < m.triangles.size(); ++u)
+      for (int j = 0; j < 3; ++j)
+        if (m.triangles[u][size_t(j)] == b && m.triangles[u][size_t((j + 1) % 3)] == a) neighbour = u;
+    m.positions.push_back(m.positions[size_t(a)] + rng.uniform(0.2, 0.8) * (m.positions[size_t(b)] - m.positions[size_t(a)]));
+    const int split = int(m.positions.size()) - 1;
+    m.triangles[t] = {a, split, c};
+    m.triangles.push_back({split, b, c});
+    const std::string why = refusal(m);
+    EXPECT_EQ(why.rfind("a T-junction: the point ", 0), 0u) << why;
+    EXPECT_NE(why.find(" of triangle " + std::to_string(neighbour) + ", which the triangles on its other side split there (split "
+                       "triangle " + std::to_string(neighbour) + " at that point too)"),
+              std::string::npos)
+        << why;
+  }
+}
+
 }  // namespace
