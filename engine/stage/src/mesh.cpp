@@ -20,6 +20,12 @@ std::string pointText(const Eigen::Vector3d& x) {
   return text;
 }
 
+std::string amountText(double d) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", d);
+  return text;
+}
+
 // The file's triangles on welded points, in the file's units.
 struct Surface {
   std::vector<Eigen::Vector3d> points;
@@ -251,6 +257,11 @@ Polyhedron mergedFaces(const Surface& s, const detail::EdgeIndex& edges, double 
       face.push_back(at->second);
     }
     out.faces.push_back(std::move(face));
+    // The same flatness test validatePolyhedron makes, so that it never refuses what the merge made.
+    if (const detail::OffPlane off = detail::worstOffPlane(out, out.faces.size() - 1); off.distance > tolerance)
+      fail("the face of " + triangleName(s.fileTriangle[m[0]]) + " is not flat: its triangles each lie within " +
+           "1e-6 of the mesh's size of its first one's plane, but the point " + pointText(out.vertices[size_t(off.vertex)]) +
+           " is " + amountText(off.distance) + " off the face's own plane (the mesh curves too gently to be one face or two)");
   }
   return out;
 }

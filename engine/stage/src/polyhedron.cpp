@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <utility>
 
 #include "platon/stage/stage_error.h"
@@ -33,11 +32,8 @@ void checkFaceShape(const Polyhedron& p, size_t f, double tolerance) {
     fail(name + " visits " + vertexName(p, *twice) + " twice");
   const Eigen::Vector3d n = faceNormal(p, f);
   if (!n.allFinite()) fail(name + " is degenerate (no area)");
-  const Eigen::Vector3d c = faceCentre(p, f);
-  for (const int v : cycle) {
-    const double off = std::abs(n.dot(p.vertices[static_cast<size_t>(v)] - c));
-    if (off > tolerance) fail(name + " is not flat: " + vertexName(p, v) + " is " + std::to_string(off) + " off its plane");
-  }
+  if (const detail::OffPlane off = detail::worstOffPlane(p, f); off.distance > tolerance)
+    fail(name + " is not flat: " + vertexName(p, off.vertex) + " is " + std::to_string(off.distance) + " off its plane");
   for (size_t i = 0; i < cycle.size(); ++i) {
     const Eigen::Vector3d& a = p.vertices[static_cast<size_t>(cycle[i])];
     const Eigen::Vector3d& b = p.vertices[static_cast<size_t>(cycle[(i + 1) % cycle.size()])];
@@ -135,13 +131,6 @@ void validatePolyhedron(const Polyhedron& p, double tolerance) {
            " on one side and nothing on the other";
   });
   detail::checkConnected(p, edges, names);
-  for (size_t f = 0; f < p.faces.size(); ++f)
-    for (size_t i = 0; i < p.faces[f].size(); ++i) {
-      const auto& cycle = p.faces[f];
-      const size_t g = edges.find(cycle[(i + 1) % cycle.size()], cycle[i])->face;
-      if (normals[f].dot(normals[g]) > 1 - 1e-9)
-        fail("faces " + std::to_string(f) + " and " + std::to_string(g) + " share an edge and lie in one plane");
-    }
   detail::checkLocallyConvex(p, edges, normals, tolerance, names);
 }
 

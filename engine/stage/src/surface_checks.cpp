@@ -87,6 +87,16 @@ const EdgeIndex::Use* EdgeIndex::find(int from, int to) const {
   return it == uses_.end() ? nullptr : &it->second;
 }
 
+OffPlane worstOffPlane(const Polyhedron& p, size_t face) {
+  const Eigen::Vector3d n = faceNormal(p, face), c = faceCentre(p, face);
+  OffPlane worst;
+  for (const int v : p.faces[face]) {
+    const double off = std::abs(n.dot(p.vertices[size_t(v)] - c));
+    if (worst.vertex < 0 || off > worst.distance) worst = {v, off};
+  }
+  return worst;
+}
+
 void checkClosed(const Polyhedron& p, const EdgeIndex& edges, const std::function<std::string(int, int, size_t)>& openEdge) {
   for (size_t f = 0; f < p.faces.size(); ++f) {
     const auto& cycle = p.faces[f];

@@ -45,6 +45,14 @@ class EdgeIndex {
   std::unordered_map<uint64_t, Use> uses_;
 };
 
+// The corner of `face` farthest off the face's plane (through the mean of its corners, along its
+// Newell normal), and how far: the one flatness test, for polygons and merged mesh faces alike.
+struct OffPlane {
+  int vertex = -1;
+  double distance = 0;
+};
+OffPlane worstOffPlane(const Polyhedron& p, size_t face);
+
 // Every edge has a face on its other side. `openEdge` says what is wrong with an edge that has
 // none (the mesh builder names a T-junction there).
 void checkClosed(const Polyhedron& p, const EdgeIndex& edges, const std::function<std::string(int from, int to, size_t face)>& openEdge);

@@ -205,4 +205,59 @@ TEST(MeshBuilder, ATJunctionIsNamed) {
   }
 }
 
+// One face of a box fanned into four triangles round its centre, pushed out (or in) by a
+// fraction of the box's size: within 1e-6 the fan is one face with the rest of its side; beyond,
+// four faces (out) or a dent refused as not convex (in). Never "in one plane" at any height: the
+// merge alone decides what is one face, and refusals name a triangle and a point.
+TEST(MeshBuilder, NearlyFlatBumpsMergeOrStandWithOneCriterion) {
+  platon::testing::Rng rng{12};
+  for (int i = 0; i < 40; ++i) {
+    const Eigen::Vector3d half(rng.uniform(0.5, 2), rng.uniform(0.5, 2), rng.uniform(0.5, 2));
+    const double size = 2 * half.norm();
+    for (const double height : {1e-8, 1e-7, 3e-7, 1e-6, 2e-6, 3e-6, 1e-5, 1e-4, 1e-3})
+      for (const double sign : {1.0, -1.0}) {
+        stage::MeshData m = testmesh::box(half);
+        m.positions.emplace_back(half.x() + sign * height * size, 0, 0);
+        const int c = 8;
+        m.triangles.erase(m.triangles.begin() + 10, m.triangles.end());  // the +x side's two triangles
+        for (const auto& [a, b] : {std::pair{1, 3}, {3, 7}, {7, 5}, {5, 1}}) m.triangles.push_back({a, b, c});
+        const std::string why = refusal(m);
+        SCOPED_TRACE(std::to_string(sign * height) + ": " + why);
+        EXPECT_EQ(why.find("one plane"), std::string::npos);
+        if (why == "(accepted)") {
+          const size_t faces = stage::polyhedronFromMesh(m, 4096).faces.size();
+          EXPECT_TRUE(faces == 6 || (faces == 9 && sign > 0));
+          if (height <= 2e-7) {
+            EXPECT_EQ(faces, 6u);  // the fan's corner 2 * height off the first triangle's plane
+          }
+          if (height >= 1e-6 && sign > 0) {
+            EXPECT_EQ(faces, 9u);
+          }
+        } else {
+          EXPECT_LT(sign, 0);
+          EXPECT_GT(height, 2e-7);
+          EXPECT_EQ(why.rfind("not convex: the point (", 0), 0u);
+          EXPECT_NE(why.find(" of triangle "), std::string::npos);
+        }
+        if (height >= 1e-5 && sign < 0) {
+          EXPECT_NE(why, "(accepted)");
+        }
+      }
+  }
+}
+
+// Hand-built: a cube with one side cut into two triangles in its plane validates (neighbouring
+// faces in one plane are allowed; before, an angle test refused them).
+TEST(MeshBuilder, NeighbouringFacesInOnePlaneValidate) {
+  for (const stage::Solid solid : {stage::Solid::Hexahedron, stage::Solid::Dodecahedron}) {
+    stage::Polyhedron p = stage::platonicSolid(solid, 1000);
+    const std::vector<int> side = p.faces[0];
+    p.faces[0] = {side[0], side[1], side[2]};
+    p.faces.push_back({side[0], side[2]});
+    for (size_t k = 3; k < side.size(); ++k) p.faces.back().push_back(side[k]);
+    EXPECT_NO_THROW(stage::validatePolyhedron(p, 1e-6 * 1000)) << stage::solidName(solid);
+    EXPECT_NO_THROW(stage::stageFromPolyhedron(p)) << stage::solidName(solid);
+  }
+}
+
 }  // namespace
