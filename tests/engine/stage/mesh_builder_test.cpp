@@ -1,6 +1,8 @@
 // The mesh builder (stage::polyhedronFromMesh) over families of meshes: its local convexity
 // checks agree with the brute-force test on random convex and dented solids, it refuses what is
 // not one convex solid, and a mesh of 20,480 triangles builds (bench/stage/mesh_load times it).
+#include <algorithm>
+
 #include <gtest/gtest.h>
 
 #include "platon/stage/mesh.h"
@@ -257,6 +259,65 @@ TEST(MeshBuilder, NeighbouringFacesInOnePlaneValidate) {
     for (size_t k = 3; k < side.size(); ++k) p.faces.back().push_back(side[k]);
     EXPECT_NO_THROW(stage::validatePolyhedron(p, 1e-6 * 1000)) << stage::solidName(solid);
     EXPECT_NO_THROW(stage::stageFromPolyhedron(p)) << stage::solidName(solid);
+  }
+}
+
+// The 24 turns of a box by quarter turns about the axes, as exact signed permutations.
+std::vector<Eigen::Matrix3i> quarterTurns() {
+  std::vector<Eigen::Matrix3i> out;
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b)
+      for (int c = 0; c < 4; ++c) {
+        const Eigen::Matrix3d r = (Eigen::AngleAxisd(c * M_PI / 2, Eigen::Vector3d::UnitZ()) *
+                                   Eigen::AngleAxisd(b * M_PI / 2, Eigen::Vector3d::UnitY()) *
+                                   Eigen::AngleAxisd(a * M_PI / 2, Eigen::Vector3d::UnitX()))
+                                      .toRotationMatrix();
+        const Eigen::Matrix3i exact = r.array().round().cast<int>();
+        if (std::find(out.begin(), out.end(), exact) == out.end()) out.push_back(exact);
+      }
+  return out;
+}
+
+// The same turn computed in 32-bit floats, as a modeller or a file's node rotation leaves it:
+// about 1e-7 of noise in every coordinate.
+Eigen::Matrix3f noisyTurn(const Eigen::Matrix3i& exact) {
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b)
+      for (int c = 0; c < 4; ++c) {
+        const float q = float(M_PI / 2);
+        const Eigen::Matrix3f r = (Eigen::AngleAxisf(float(c) * q, Eigen::Vector3f::UnitZ()) * Eigen::AngleAxisf(float(b) * q, Eigen::Vector3f::UnitY()) *
+                                   Eigen::AngleAxisf(float(a) * q, Eigen::Vector3f::UnitX()))
+                                      .toRotationMatrix();
+        if (r.array().round().cast<int>().matrix() == exact) return r;
+      }
+  return Eigen::Matrix3f::Identity();
+}
+
+// A box turned by any of the 24 quarter turns, with float noise in its points, makes the stage of
+// the same box turned exactly: noise of 1e-7 never picks a floor, a face 0 or a tie. A cube turned
+// any way is the same cube, so +90 and -90 degrees about any axis give the plain cube's stage.
+TEST(MeshBuilder, QuarterTurnsWithFloatNoiseGiveTheExactTurnsStage) {
+  platon::testing::Rng rng{90};
+  const std::vector<Eigen::Matrix3i> turns = quarterTurns();
+  ASSERT_EQ(turns.size(), 24u);
+  for (int i = 0; i < 8; ++i) {
+    const Eigen::Vector3d half = i == 0 ? Eigen::Vector3d(1, 1, 1) : Eigen::Vector3d(rng.between(2, 9), rng.between(2, 9), rng.between(2, 9)) / 4;
+    const stage::MeshData box = testmesh::box(half);
+    const stage::Stage plain = stage::stageFromPolyhedron(stage::polyhedronFromMesh(box, 4096));
+    for (size_t t = 0; t < turns.size(); ++t) {
+      SCOPED_TRACE("box " + std::to_string(i) + ", turn " + std::to_string(t));
+      stage::MeshData exact = box, noisy = box;
+      const Eigen::Matrix3f r = noisyTurn(turns[t]);
+      for (size_t v = 0; v < box.positions.size(); ++v) {
+        exact.positions[v] = turns[t].cast<double>() * box.positions[v];
+        noisy.positions[v] = (r * box.positions[v].cast<float>()).cast<double>();
+      }
+      const stage::Stage want = stage::stageFromPolyhedron(stage::polyhedronFromMesh(exact, 4096));
+      EXPECT_TRUE(sameStage(stage::stageFromPolyhedron(stage::polyhedronFromMesh(noisy, 4096)), want));
+      if (i == 0) {
+        EXPECT_TRUE(sameStage(want, plain));
+      }
+    }
   }
 }
 
