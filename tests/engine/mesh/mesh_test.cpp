@@ -259,4 +259,44 @@ TEST(MeshFiles, QuarterTurnNodesMakeTheBakedStage) {
         }
 }
 
+// A level's mesh must be a regular file inside the level's folder once symbolic links are
+// followed: a link to a file elsewhere, to /dev/zero or to /etc/passwd is refused, naming where it
+// leads; links and subfolders that stay inside are fine.
+TEST(MeshFiles, TheMeshMustStayInTheLevelsFolder) {
+  namespace fs = std::filesystem;
+  const fs::path root = fs::path(::testing::TempDir()) / "mesh_folder";
+  fs::remove_all(root);
+  fs::create_directories(root / "level" / "meshes");
+  testfiles::writeObj(testmesh::box({1, 0.7, 0.45}), (root / "outside.obj").string());
+  testfiles::writeObj(testmesh::box({1, 0.7, 0.45}), (root / "level" / "meshes" / "box.obj").string());
+  fs::create_symlink(root / "outside.obj", root / "level" / "out.obj");
+  fs::create_symlink("/dev/zero", root / "level" / "zero.obj");
+  fs::create_symlink("/etc/passwd", root / "level" / "passwd.obj");
+  fs::create_symlink("meshes/box.obj", root / "level" / "inside.obj");
+  fs::create_symlink(root / "level" / "meshes", root / "level" / "linked");
+  const std::string file = (root / "level" / "l.level").string(), folder = (root / "level").string() + "/";
+  auto load = [&](const std::string& mesh) -> std::string {
+    std::string text = "MESH " + mesh + "\n0 1000 1000\n0 2000 2000\n4096\n";
+    for (int f = 0; f < 6; ++f) text += "%\n";
+    mesh::MeshSystem reader;
+    try {
+      (void)core::meshStageOf(stage::parseLevel(text, file), reader);
+    } catch (const stage::StageError& e) {
+      return e.what();
+    }
+    return "(accepted)";
+  };
+  EXPECT_EQ(load("meshes/box.obj"), "(accepted)");
+  EXPECT_EQ(load("inside.obj"), "(accepted)");
+  EXPECT_EQ(load("linked/box.obj"), "(accepted)");
+  EXPECT_EQ(load("out.obj"), file + ":1:6: " + folder + "out.obj: the mesh file leads out of the level's folder (to " +
+                                 (root / "outside.obj").string() + "): it must be a file in that folder");
+  EXPECT_EQ(load("zero.obj"), file + ":1:6: " + folder + "zero.obj: the mesh file leads out of the level's folder (to /dev/zero): it must be a file in that folder");
+  EXPECT_EQ(load("passwd.obj"), file + ":1:6: " + folder + "passwd.obj: the mesh file leads out of the level's folder (to /etc/passwd): it must be a file in that folder");
+  EXPECT_EQ(load("meshes"), file + ":1:6: " + folder + "meshes: the mesh file is not a regular file (" + folder + "meshes)");
+  EXPECT_EQ(load("nowhere.obj"), file + ":1:6: " + folder + "nowhere.obj: cannot find the mesh file");
+  fs::create_symlink("/dev/zero", root / "level" / "meshes" / "zero.obj");  // a link in a subfolder
+  EXPECT_NE(load("meshes/zero.obj").find("leads out of the level's folder (to /dev/zero)"), std::string::npos);
+}
+
 }  // namespace
