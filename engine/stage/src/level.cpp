@@ -89,7 +89,7 @@ std::string writeLevel(const Level& level) {
 
 void checkLevelOnStage(const Level& level, const Stage& stage) {
   if (level.faces.size() != stage.faceCount())
-    throw StageError({level.file, level.endLine, 0}, "the stage has " + std::to_string(stage.faceCount()) +
+    throw StageError({level.file, level.endLine, 1}, "the stage has " + std::to_string(stage.faceCount()) +
                                                          " faces; the file describes " + std::to_string(level.faces.size()));
   for (size_t f = 0; f < level.faces.size(); ++f) {
     const auto& corners = stage.faces[f].corners;
