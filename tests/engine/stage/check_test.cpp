@@ -114,4 +114,52 @@ TEST(Check, AnOpenLevelIsAcceptedAtEverySize) {
     }
 }
 
+// A start or goal near an edge of its face needs its room from the walls just across that edge
+// too: on every edge of every solid, at random distances, a wall parallel to the edge on the
+// neighbour is refused when the two distances add up to less than 100, and named there.
+TEST(Check, TheStartNeedsRoomAcrossAnEdge) {
+  platon::testing::Rng rng{21};
+  int refused = 0, accepted = 0;
+  for (const stage::Solid solid : stage::kSolids) {
+    const stage::Stage s = stage::platonicStage(solid, 4096);
+    for (size_t k = 0; k < s.faces[0].corners.size(); ++k) {
+      const auto& c = s.faces[0].corners;
+      const Vec2 a = c[k], b = c[(k + 1) % c.size()];
+      const double ex = double(b.x) - a.x, ey = double(b.y) - a.y, len = std::hypot(ex, ey);
+      const double nx = -ey / len, ny = ex / len;  // into the face
+      const double here = rng.uniform(5, 95), there = rng.uniform(5, 95), t = rng.uniform(0.35, 0.65);
+      stage::Level level = emptyLevel(solid, 4096, s);
+      level.start.position = unit({a.x + t * ex + here * nx, a.y + t * ey + here * ny});
+      const auto [g, j] = s.faces[0].neighbours[k];
+      level.goal = {g == 1 ? 2 : 1, unit(centreOf(s.faces[size_t(g == 1 ? 2 : 1)])), 3, 1};
+      // On the neighbour, its edge j runs b -> a: the start's foot is at 1 - t along it.
+      const auto& d = s.faces[size_t(g)].corners;
+      const Vec2 p = d[size_t(j)], q = d[(size_t(j) + 1) % d.size()];
+      const double fx = double(q.x) - p.x, fy = double(q.y) - p.y, flen = std::hypot(fx, fy);
+      const double mx = -fy / flen, my = fx / flen;
+      const Point foot{p.x + (1 - t) * fx + there * mx, p.y + (1 - t) * fy + there * my};
+      level.faces[size_t(g)].lines.push_back({unit({foot.x - 300 * fx / flen, foot.y - 300 * fy / flen}),
+                                              unit({foot.x + 300 * fx / flen, foot.y + 300 * fy / flen}), false, 0, 30, 1});
+      std::string why = "(accepted)";
+      try {
+        stage::checkLevelOnStage(level, s);
+      } catch (const stage::StageError& e) {
+        why = e.what();
+      }
+      SCOPED_TRACE(std::string(stage::solidName(solid)) + " edge " + std::to_string(k) + ": " + std::to_string(here) + " + " +
+                   std::to_string(there) + ": " + why);
+      if (here + there < 98) {
+        EXPECT_NE(why.find("is inside a wall: "), std::string::npos);
+        EXPECT_NE(why.find("from the segment on line 30 (on face " + std::to_string(g) + ", across the edge)"), std::string::npos);
+        ++refused;
+      } else if (here + there > 102) {
+        EXPECT_EQ(why, "(accepted)");
+        ++accepted;
+      }
+    }
+  }
+  EXPECT_GT(refused, 5);
+  EXPECT_GT(accepted, 5);
+}
+
 }  // namespace
