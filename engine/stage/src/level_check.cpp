@@ -8,11 +8,51 @@
 #include "walls_near.h"
 
 namespace platon::stage {
+namespace {
+
+// How wide a face is: the least, over its edges, of how far its farthest corner lies from the
+// edge's line (what a disk must fit across).
+double widthOf(const StageFace& face) {
+  const auto& c = face.corners;
+  double width = INFINITY;
+  for (size_t k = 0; k < c.size(); ++k) {
+    const physics::Vec2 a = c[k], b = c[(k + 1) % c.size()];
+    const double length = std::hypot(double(b.x) - a.x, double(b.y) - a.y);
+    double farthest = 0;
+    for (const physics::Vec2 p : c) farthest = std::max(farthest, side(a, b, p.x, p.y) / length);
+    width = std::min(width, farthest);
+  }
+  return width;
+}
+
+// One warning for the faces no default player fits across (a needle of a mesh, or a tiny stage).
+void warnNarrowFaces(const Level& level, const Stage& stage, CheckReport& report) {
+  std::vector<size_t> narrow;
+  size_t narrowest = 0;
+  for (size_t f = 0; f < stage.faceCount(); ++f) {
+    if (widthOf(stage.faces[f]) >= 2 * kPlayerRadius) continue;
+    if (narrow.empty() || widthOf(stage.faces[f]) < widthOf(stage.faces[narrowest])) narrowest = f;
+    narrow.push_back(f);
+  }
+  if (narrow.empty()) return;
+  std::string list;
+  for (size_t i = 0; i < narrow.size() && i < 10; ++i) list += (i ? ", " : "") + std::to_string(narrow[i]);
+  if (narrow.size() > 10) list += " and " + std::to_string(narrow.size() - 10) + " more";
+  const std::string width = std::to_string(static_cast<int>(widthOf(stage.faces[narrowest])));
+  const std::string message =
+      narrow.size() == 1 ? "face " + list + " is " + width + " units wide, narrower than the default player (192 units across)"
+                         : "faces " + list + " are narrower than the default player (192 units across); the narrowest, face " +
+                               std::to_string(narrowest) + ", is " + width + " units wide";
+  report.warnings.push_back(Finding{SourcePosition{level.file, level.faces[narrow[0]].sourceLine, 1}, message});
+}
+
+}  // namespace
 
 bool goalReachable(const Level& level, const Stage& stage) { return searchReach(level, stage).reachable; }
 
 CheckReport checkLevel(const Level& level, const Stage& stage) {
   CheckReport report;
+  warnNarrowFaces(level, stage, report);  // also when the level is refused: it may be why
   try {
     checkLevelOnStage(level, stage);
   } catch (const StageError& e) {

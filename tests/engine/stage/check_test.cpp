@@ -162,4 +162,32 @@ TEST(Check, TheStartNeedsRoomAcrossAnEdge) {
   EXPECT_GT(accepted, 5);
 }
 
+// Faces narrower than the default player are warned of, once for the level, naming the narrowest:
+// a needle of a mesh, and every face of a small stage.
+TEST(Check, FacesTooNarrowForThePlayerAreWarnedOf) {
+  stage::MeshData needle;
+  needle.positions = {{0, 0, 0}, {1, 0, 0}, {0.5, 0.8, 0}, {0.5, 0.3, 1000}};
+  needle.triangles = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}};
+  const stage::Stage s = stage::stageFromPolyhedron(stage::polyhedronFromMesh(needle, 4096));
+  stage::Level level = stage::parseLevel("MESH needle.obj\n0 0 0\n1 0 0\n4096\n%\n%\n%\n%\n", "n.level");
+  bool warned = false;
+  for (const auto& w : stage::checkLevel(level, s).warnings)
+    if (w.message.find("narrower than the default player") != std::string::npos) {
+      warned = true;
+      EXPECT_EQ(w.message.find("face"), 0u) << w.message;
+    }
+  EXPECT_TRUE(warned);
+  const stage::Level small = stage::parseLevel("TETRAHEDRON\n0 10 10\n1 10 10\n150\n%\n%\n%\n%\n", "t.level");
+  const auto report = stage::checkLevel(small, stage::platonicStageOf(small));
+  bool all = false;
+  for (const auto& w : report.warnings)
+    all = all || (stage::describe(w.where) + w.message) ==
+                     "t.level:5:1: faces 0, 1, 2, 3 are narrower than the default player (192 units across); the narrowest, face 0, "
+                     "is 129 units wide";
+  EXPECT_TRUE(all);
+  const stage::Level big = stage::parseLevel("TETRAHEDRON\n0 1000 600\n1 1000 600\n4096\n%\n%\n%\n%\n", "t.level");
+  for (const auto& w : stage::checkLevel(big, stage::platonicStageOf(big)).warnings)
+    EXPECT_EQ(w.message.find("narrower"), std::string::npos) << w.message;
+}
+
 }  // namespace
