@@ -265,6 +265,25 @@ TEST(LevelFormat, TheDocumentedNetsAreTheStages) {
   }
 }
 
+// The tables of docs/level-format.md ("Across each edge") are today's neighbours: what
+// stage::neighbourTable writes, between the doc's markers, for every solid.
+TEST(LevelFormat, TheDocumentedNeighbourTablesAreTheStages) {
+  const std::string doc = readFile(std::string(PLATON_SOURCE_ROOT) + "/docs/level-format.md");
+  for (const stage::Solid solid : stage::kSolids) {
+    const std::string marker = "<!-- neighbours " + std::string(stage::solidName(solid)) + " -->\n";
+    const size_t at = doc.find(marker);
+    ASSERT_NE(at, std::string::npos) << marker;
+    const size_t table = doc.find("| face |", at), end = doc.find("<!-- end -->", at);
+    ASSERT_LT(table, end);
+    const std::string want = stage::neighbourTable(stage::platonicStage(solid, 1000));
+    EXPECT_EQ(doc.substr(table, end - table), want) << stage::solidName(solid) << ": the doc should show\n" << want;
+  }
+  // Any size gives the same table (frames and numbering do not depend on it).
+  for (const stage::Solid solid : stage::kSolids)
+    for (const int32_t size : {64, 4096, 1 << 24})
+      EXPECT_EQ(stage::neighbourTable(stage::platonicStage(solid, size)), stage::neighbourTable(stage::platonicStage(solid, 1000)));
+}
+
 // Nets never overlap, and every face joins the face it was unfolded from along their shared edge.
 TEST(Net, FacesJoinTheirNeighboursAndNeverOverlap) {
   for (const stage::Solid solid : stage::kSolids) {
