@@ -1,11 +1,14 @@
 #include "platon/core/scene.h"
 
 #include <exception>
+#include <filesystem>
 
 #include "platon/core/mesh_source.h"
 #include "platon/stage/mesh.h"
 
 namespace platon::core {
+
+static_assert(kMaxMeshFileTriangles == stage::kMaxMeshTriangles, "the plugin's cap is the stage builder's");
 
 void Scene::addSystem(std::unique_ptr<System> system, std::string name) {
   systems_.push_back(std::move(system));
@@ -65,13 +68,40 @@ stage::MeshData meshDataOf(const MeshFile& file) {
   return mesh;
 }
 
+namespace {
+
+// The mesh file a level names, as a canonical path: it must be a regular file inside the level's
+// own folder once every symbolic link is followed (the parser refuses '..' and absolute names; a
+// link could still lead anywhere, /dev/zero or /etc/passwd included).
+std::string meshFileOf(const stage::Level& level) {
+  namespace fs = std::filesystem;
+  const fs::path folder = fs::path(level.file).parent_path().empty() ? fs::path(".") : fs::path(level.file).parent_path();
+  const std::string shown = level.file.substr(0, level.file.find_last_of('/') + 1) + level.mesh;
+  auto refuse = [&](const std::string& why) { throw stage::StageError({level.file, 1, 6}, shown + ": " + why); };
+  std::error_code error;
+  const fs::path root = fs::canonical(folder, error);
+  if (error) refuse("cannot find the level's folder");
+  const fs::path file = fs::canonical(folder / level.mesh, error);
+  if (error) refuse("cannot find the mesh file");
+  const fs::path inside = file.lexically_relative(root);
+  if (inside.empty() || *inside.begin() == "..")
+    refuse("the mesh file leads out of the level's folder (to " + file.string() + "): it must be a file in that folder");
+  if (!fs::is_regular_file(file, error)) refuse("the mesh file is not a regular file (" + file.string() + ")");
+  return file.string();
+}
+
+}  // namespace
+
 stage::Stage meshStageOf(const stage::Level& level, MeshSource& source) {
   const std::string folder = level.file.substr(0, level.file.find_last_of('/') + 1);
+  const std::string path = meshFileOf(level);
   MeshFile file;
   try {
-    file = source.loadMesh(folder + level.mesh);
-  } catch (const std::runtime_error& e) {
-    throw stage::StageError({level.file, 1, 6}, e.what());
+    file = source.loadMesh(path);
+  } catch (const std::runtime_error& e) {  // "path: reason", named as the level names it
+    std::string why = e.what();
+    if (why.rfind(path + ": ", 0) == 0) why = folder + level.mesh + why.substr(path.size());
+    throw stage::StageError({level.file, 1, 6}, why);
   }
   try {
     return stage::stageFromPolyhedron(stage::polyhedronFromMesh(meshDataOf(file), level.size));

@@ -3,33 +3,114 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include <array>
 #include <assimp/Importer.hpp>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <stdexcept>
 
 namespace platon::mesh {
+namespace {
 
-core::MeshFile MeshSystem::loadMesh(const std::string& path) {
-  Assimp::Importer importer;
-  // Node transforms baked in (one mesh in the level's space), polygons split into triangles, and
-  // points that files repeat per triangle (STL) joined; the stage builder welds what is left.
-  const aiScene* scene = importer.ReadFile(
-      path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices |
-                aiProcess_SortByPType | aiProcess_FindDegenerates);
-  if (!scene) throw std::runtime_error(path + ": " + importer.GetErrorString());
-  core::MeshFile out;
-  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
-    const aiMesh* mesh = scene->mMeshes[m];
-    const auto base = static_cast<int32_t>(out.positions.size() / 3);
-    for (unsigned v = 0; v < mesh->mNumVertices; ++v)
-      for (const float c : {mesh->mVertices[v].x, mesh->mVertices[v].y, mesh->mVertices[v].z}) out.positions.push_back(c);
-    for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
-      const aiFace& face = mesh->mFaces[f];
+using Transform = std::array<std::array<double, 4>, 4>;  // row-major, acting on column vectors
+
+[[noreturn]] void fail(const std::string& path, const std::string& reason) { throw std::runtime_error(path + ": " + reason); }
+
+Transform identity() {
+  Transform t{};
+  for (int i = 0; i < 4; ++i) t[size_t(i)][size_t(i)] = 1;
+  return t;
+}
+
+// parent * node's own matrix, in double (assimp keeps node matrices as floats).
+Transform compose(const Transform& parent, const aiMatrix4x4& m) {
+  const float own[4][4] = {{m.a1, m.a2, m.a3, m.a4}, {m.b1, m.b2, m.b3, m.b4}, {m.c1, m.c2, m.c3, m.c4}, {m.d1, m.d2, m.d3, m.d4}};
+  Transform out{};
+  for (size_t i = 0; i < 4; ++i)
+    for (size_t j = 0; j < 4; ++j)
+      for (size_t k = 0; k < 4; ++k) out[i][j] += parent[i][k] * double(own[k][j]);
+  return out;
+}
+
+double determinant3(const Transform& t) {
+  return t[0][0] * (t[1][1] * t[2][2] - t[1][2] * t[2][1]) - t[0][1] * (t[1][0] * t[2][2] - t[1][2] * t[2][0]) +
+         t[0][2] * (t[1][0] * t[2][1] - t[1][1] * t[2][0]);
+}
+
+// Refuses a file too big to be a stage before it is read whole: over the size cap, or a binary STL
+// whose header counts more triangles than a stage takes.
+void checkBeforeReading(const std::string& path) {
+  std::error_code error;
+  const auto bytes = std::filesystem::file_size(path, error);
+  if (error) return;  // assimp says why it cannot read it
+  if (bytes > core::kMaxMeshFileBytes)
+    fail(path, "the file is " + std::to_string(bytes >> 20) + " MB; a mesh file may be at most " +
+                   std::to_string(core::kMaxMeshFileBytes >> 20) + " MB");
+  if (bytes < 84) return;
+  std::ifstream in(path, std::ios::binary);
+  char header[84];
+  if (!in.read(header, sizeof header)) return;
+  uint32_t count = 0;
+  std::memcpy(&count, header + 80, 4);
+  const bool binaryStl = bytes == 84 + 50 * uint64_t{count};
+  if (binaryStl && count > core::kMaxMeshFileTriangles)
+    fail(path, "the file has " + std::to_string(count) + " triangles; a stage takes at most " +
+                   std::to_string(core::kMaxMeshFileTriangles));
+}
+
+// Each mesh the node tree places, with the node's accumulated transform applied in double
+// precision (assimp's aiProcess_PreTransformVertices skips transforms within 1% of identity).
+class Flattener {
+ public:
+  explicit Flattener(const aiScene& scene) : scene_(scene) {}
+
+  void add(const aiNode& node, const Transform& parent) {
+    const Transform t = compose(parent, node.mTransformation);
+    for (unsigned i = 0; i < node.mNumMeshes; ++i) place(*scene_.mMeshes[node.mMeshes[i]], t);
+    for (unsigned c = 0; c < node.mNumChildren; ++c) add(*node.mChildren[c], t);
+  }
+  core::MeshFile take() { return std::move(out_); }
+  size_t triangles() const { return out_.triangles.size() / 3; }
+
+ private:
+  void place(const aiMesh& mesh, const Transform& t) {
+    const auto base = static_cast<int32_t>(out_.positions.size() / 3);
+    for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+      const double p[3] = {mesh.mVertices[v].x, mesh.mVertices[v].y, mesh.mVertices[v].z};
+      for (size_t r = 0; r < 3; ++r) out_.positions.push_back(t[r][0] * p[0] + t[r][1] * p[1] + t[r][2] * p[2] + t[r][3]);
+    }
+    const bool mirrored = determinant3(t) < 0;  // a mirroring node turns the winding over: turn it back
+    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+      const aiFace& face = mesh.mFaces[f];
       if (face.mNumIndices != 3) continue;  // points and lines: not part of a surface
-      for (unsigned k = 0; k < 3; ++k) out.triangles.push_back(base + static_cast<int32_t>(face.mIndices[k]));
+      const unsigned order[3] = {0, mirrored ? 2u : 1u, mirrored ? 1u : 2u};
+      for (const unsigned k : order) out_.triangles.push_back(base + static_cast<int32_t>(face.mIndices[k]));
     }
   }
-  if (out.triangles.empty()) throw std::runtime_error(path + ": the file holds no triangles");
-  return out;
+
+  const aiScene& scene_;
+  core::MeshFile out_;
+};
+
+}  // namespace
+
+core::MeshFile MeshSystem::loadMesh(const std::string& path) {
+  checkBeforeReading(path);
+  Assimp::Importer importer;
+  // Polygons split into triangles, nothing else: no joining of points (assimp's is within an
+  // absolute 1e-5, which collapses small models; polyhedronFromMesh welds relative to the size),
+  // no dropping of degenerate triangles (the stage builder says what it does with them).
+  const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_SortByPType);
+  if (!scene) fail(path, importer.GetErrorString());
+  if (!scene->mRootNode) fail(path, "the file places no mesh (it has no nodes)");
+  Flattener flat(*scene);
+  flat.add(*scene->mRootNode, identity());
+  if (flat.triangles() == 0) fail(path, "the file holds no triangles");
+  if (flat.triangles() > core::kMaxMeshFileTriangles)
+    fail(path, "the file has " + std::to_string(flat.triangles()) + " triangles; a stage takes at most " +
+                   std::to_string(core::kMaxMeshFileTriangles));
+  return flat.take();
 }
 
 }  // namespace platon::mesh

@@ -6,6 +6,7 @@
 #include "platon/stage/level.h"
 
 #include "face_geometry.h"
+#include "walls_near.h"
 
 namespace platon::stage {
 namespace {
@@ -42,13 +43,16 @@ void checkPoint(const Level& level, const Stage& stage, const LevelPoint& p, con
   const auto& corners = stage.faces[static_cast<size_t>(p.face)].corners;
   if (!insidePolygon(corners, p.position.x, p.position.y))
     throw StageError(at, std::string(what) + " " + pointText(p.position) + " is outside face " + std::to_string(p.face));
-  for (const LevelLine& l : level.faces[static_cast<size_t>(p.face)].lines) {
-    if (playerPassesThrough(l.tag)) continue;
-    const double d = distanceToSegment(p.position.x, p.position.y, l.a, l.b);
-    if (d < kStartClearance)
-      throw StageError(at, std::string(what) + " " + pointText(p.position) + " is inside a wall: " +
-                               std::to_string(static_cast<int>(d)) + " units from the segment on line " +
-                               std::to_string(l.sourceLine) + " (the player needs " + std::to_string(kStartClearance) + ")");
+  // The face's own lines, and its neighbours' near the shared edges laid flat beside it: the
+  // player's disk reaches over an edge onto the next face.
+  for (const FlatWall& w : wallsNear(level, stage, static_cast<size_t>(p.face), kStartClearance + 4, Counting::Clearance)) {
+    const double d = pointSegmentDistance(p.position.x, p.position.y, w.ax, w.ay, w.bx, w.by);
+    if (d >= kStartClearance) continue;
+    const std::string across = w.face == p.face ? "" : " (on face " + std::to_string(w.face) + ", across the edge)";
+    throw StageError(at, std::string(what) + " " + pointText(p.position) + " is inside a wall: " +
+                             std::to_string(static_cast<int>(d)) + " units from the segment on line " +
+                             std::to_string(w.line->sourceLine) + across + " (the player needs " +
+                             std::to_string(kStartClearance) + ")");
   }
 }
 
@@ -89,7 +93,7 @@ std::string writeLevel(const Level& level) {
 
 void checkLevelOnStage(const Level& level, const Stage& stage) {
   if (level.faces.size() != stage.faceCount())
-    throw StageError({level.file, level.endLine, 0}, "the stage has " + std::to_string(stage.faceCount()) +
+    throw StageError({level.file, level.endLine, 1}, "the stage has " + std::to_string(stage.faceCount()) +
                                                          " faces; the file describes " + std::to_string(level.faces.size()));
   for (size_t f = 0; f < level.faces.size(); ++f) {
     const auto& corners = stage.faces[f].corners;

@@ -1,5 +1,6 @@
 // parseLevel: the level text, line by line. Every rejection names file:line:column.
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <span>
 
@@ -11,7 +12,28 @@ namespace {
 struct Token {
   std::string_view text;
   int column = 0;
+  int end() const { return column + static_cast<int>(text.size()); }  // the column just past it
 };
+
+// A token as a message shows it: bytes outside printable ASCII as \xHH (a NUL would end the
+// message, a byte order mark or a look-alike minus would hide), and at most 40 bytes of it.
+std::string shown(std::string_view token) {
+  constexpr size_t kLongest = 40;
+  std::string out;
+  for (const char c : token.substr(0, kLongest)) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte >= 0x20 && byte < 0x7f) {
+      out += c;
+      continue;
+    }
+    char hex[8];
+    std::snprintf(hex, sizeof hex, "\\x%02X", byte);
+    out += hex;
+  }
+  return token.size() > kLongest ? out + "..." : out;
+}
+
+std::string quoted(std::string_view token) { return "'" + shown(token) + "'"; }
 
 struct TextLine {
   int number = 0;
@@ -22,7 +44,9 @@ struct TextLine {
 // tokens): comments (# to the end of the line) and blank lines are skipped.
 class LineReader {
  public:
-  explicit LineReader(std::string_view text) : text_(text) {}
+  // A UTF-8 byte order mark in front is skipped (line 1's columns count from after it).
+  LineReader(std::string_view text, const std::string& file)
+      : text_(text.substr(text.substr(0, 3) == "\xEF\xBB\xBF" ? 3 : 0)), file_(file) {}
 
   // The next line with values, or nullptr at the end. Valid until the next call.
   const TextLine* next() {
@@ -32,6 +56,7 @@ class LineReader {
       std::string_view line = text_.substr(at_, end - at_);
       at_ = end + 1;
       ++number_;
+      checkLineEnds(line);
       if (const size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
       tokens_.clear();
       size_t i = 0;
@@ -51,16 +76,31 @@ class LineReader {
   int lineCount() const { return number_; }
 
  private:
+  // A CR counts as a space, unless more of the line follows it: then it is a line end without
+  // its LF (old Mac files, or a mix), and the file is refused rather than read as one long line.
+  void checkLineEnds(std::string_view line) const {
+    const size_t cr = line.find('\r');
+    if (cr == std::string_view::npos || line.find_first_not_of(" \t\r", cr) == std::string_view::npos) return;
+    throw StageError({file_, number_, static_cast<int>(cr) + 1},
+                     "a CR (\\r) ends a line here without an LF: lines must end with LF or CR LF (CR-only line ends, "
+                     "as old Mac files have, are not read)");
+  }
+
   std::string_view text_;
+  std::string file_;
   size_t at_ = 0;
   int number_ = 0;
   std::vector<Token> tokens_;
   TextLine current_;
 };
 
+// Face numbers are checked against the level's own face count once its '%' lines are read; here
+// only that they are whole numbers a face count could reach.
+constexpr int kMostFaces = 2147483647;
+
 class Parser {
  public:
-  Parser(std::string_view text, const std::string& file) : file_(file), reader_(text) {}
+  Parser(std::string_view text, const std::string& file) : file_(file), reader_(text, file) {}
 
   Level parse() {
     Level level;
@@ -73,7 +113,7 @@ class Parser {
     level.endLine = reader_.lineCount() + 1;
     const int faceTotal = static_cast<int>(level.faces.size());
     if (level.solid && faceTotal != faceCount(*level.solid))
-      fail(level.endLine, 0, std::string(solidName(*level.solid)) + " has " + std::to_string(faceCount(*level.solid)) +
+      fail(level.endLine, 1, std::string(solidName(*level.solid)) + " has " + std::to_string(faceCount(*level.solid)) +
                                  " faces; the file describes " + std::to_string(faceTotal));
     checkFaceIndex(level, level.start, "start");
     checkFaceIndex(level, level.goal, "goal");
@@ -90,14 +130,13 @@ class Parser {
 
   const TextLine& next(const char* what) {
     const TextLine* line = reader_.next();
-    if (!line) fail(reader_.lineCount() + 1, 0, std::string("the file ends before the ") + what);
+    if (!line) fail(reader_.lineCount() + 1, 1, std::string("the file ends before the ") + what);
     return *line;
   }
 
   void expectCount(const TextLine& line, size_t lo, size_t hi, const char* what) const {
-    if (line.tokens.size() < lo) fail(line.number, 0, std::string(what) + ": too few values");
-    if (line.tokens.size() > hi)
-      fail(line, line.tokens[hi], std::string(what) + ": unexpected '" + std::string(line.tokens[hi].text) + "'");
+    if (line.tokens.size() < lo) fail(line.number, line.tokens.back().end(), std::string(what) + ": too few values");
+    if (line.tokens.size() > hi) fail(line, line.tokens[hi], std::string(what) + ": unexpected " + quoted(line.tokens[hi].text));
   }
 
   // A decimal number: digits with an optional sign, point and exponent; nothing else.
@@ -133,10 +172,10 @@ class Parser {
       while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) ++i, ++exponent;
       if (exponent == 0) digits = 0;
     }
-    if (digits == 0 || i != s.size()) fail(line, t, std::string(what) + ": '" + s + "' is not a number");
+    if (digits == 0 || i != s.size()) fail(line, t, std::string(what) + ": " + quoted(s) + " is not a number");
     const double v = std::strtod(s.c_str(), nullptr);
     if (!(v >= lo && v <= hi))
-      fail(line, t, std::string(what) + ": " + s + " is out of range (" + format(lo) + " to " + format(hi) + ")");
+      fail(line, t, std::string(what) + ": " + shown(s) + " is out of range (" + format(lo) + " to " + format(hi) + ")");
     return v;
   }
 
@@ -153,7 +192,7 @@ class Parser {
 
   int integer(const TextLine& line, const Token& t, int lo, int hi, const char* what) const {
     const double v = number(line, t, lo, hi, what);
-    if (v != std::floor(v)) fail(line, t, std::string(what) + ": " + std::string(t.text) + " is not a whole number");
+    if (v != std::floor(v)) fail(line, t, std::string(what) + ": " + shown(t.text) + " is not a whole number");
     return static_cast<int>(v);
   }
 
@@ -161,7 +200,7 @@ class Parser {
     const TextLine& line = next("solid (the first line)");
     const Token& first = line.tokens[0];
     if (first.text == "MESH") {
-      if (line.tokens.size() < 2) fail(line.number, 0, "MESH needs a file name");
+      if (line.tokens.size() < 2) fail(line.number, first.end(), "MESH needs a file name");
       const Token& name = line.tokens[1];
       expectCount(line, 2, 2, "MESH");
       const std::string path(name.text);
@@ -175,14 +214,14 @@ class Parser {
     expectCount(line, 1, 1, "solid");
     level.solid = solidFromName(first.text);
     if (!level.solid)
-      fail(line, first, "unknown solid '" + std::string(first.text) +
-                            "' (known: TETRAHEDRON, HEXAHEDRON, OCTAHEDRON, DODECAHEDRON, ICOSAHEDRON, or MESH file)");
+      fail(line, first, "unknown solid " + quoted(first.text) +
+                            " (known: TETRAHEDRON, HEXAHEDRON, OCTAHEDRON, DODECAHEDRON, ICOSAHEDRON, or MESH file)");
   }
 
   void startLine(Level& level) {
     const TextLine& line = next("start line (face x y [degrees])");
     expectCount(line, 3, 4, "start (face x y [degrees])");
-    level.start = {integer(line, line.tokens[0], 0, 9999, "start face"), {unit(line, line.tokens[1], "start x"), unit(line, line.tokens[2], "start y")},
+    level.start = {integer(line, line.tokens[0], 0, kMostFaces, "start face"), {unit(line, line.tokens[1], "start x"), unit(line, line.tokens[2], "start y")},
                    line.number, line.tokens[0].column};
     if (line.tokens.size() == 4)
       level.startMillidegrees = std::llround(number(line, line.tokens[3], -360, 360, "start rotation (degrees)") * 1000);
@@ -192,7 +231,7 @@ class Parser {
     const TextLine& line = next("goal line ([face] x y)");
     expectCount(line, 2, 3, "goal ([face] x y)");
     const size_t base = line.tokens.size() - 2;
-    const int face = base ? integer(line, line.tokens[0], 0, 9999, "goal face") : level.start.face;
+    const int face = base ? integer(line, line.tokens[0], 0, kMostFaces, "goal face") : level.start.face;
     level.goal = {face, {unit(line, line.tokens[base], "goal x"), unit(line, line.tokens[base + 1], "goal y")}, line.number,
                   line.tokens[0].column};
   }
@@ -224,19 +263,24 @@ class Parser {
     face.sourceLine = line.number;
     for (size_t i = 1; i < line.tokens.size();) {
       const Token& t = line.tokens[i];
-      if (t.text != "gravity") fail(line, t, "unknown face option '" + std::string(t.text) + "' (known: gravity gx gy)");
+      if (t.text != "gravity") fail(line, t, "unknown face option " + quoted(t.text) + " (known: gravity gx gy)");
       if (face.gravityQ16) fail(line, t, "gravity given twice");
       if (i + 2 >= line.tokens.size()) fail(line, t, "gravity needs two numbers: gx gy (units per frame per frame)");
       const double gx = number(line, line.tokens[i + 1], -16384, 16384, "gravity x");
       const double gy = number(line, line.tokens[i + 2], -16384, 16384, "gravity y");
       face.gravityQ16 = physics::Vec2w{std::llround(gx * 65536), std::llround(gy * 65536)};
+      if ((gx != 0 || gy != 0) && face.gravityQ16->x == 0 && face.gravityQ16->y == 0)
+        fail(line, t, "gravity " + shown(line.tokens[i + 1].text) + " " + shown(line.tokens[i + 2].text) +
+                          " rounds to none: gravity is kept in steps of 1/65536 unit per frame per frame (write 0 0 for "
+                          "none)");
       i += 3;
     }
     return face;
   }
 
   LevelLine segment(const TextLine& line) const {
-    if (line.tokens.size() < 4) fail(line.number, 0, "a segment is x0 y0 x1 y1 [oneway] [tag]: too few values");
+    if (line.tokens.size() < 4)
+      fail(line.number, line.tokens.back().end(), "a segment is x0 y0 x1 y1 [oneway] [tag]: too few values");
     LevelLine out;
     out.sourceLine = line.number;
     out.sourceColumn = line.tokens[0].column;
@@ -273,8 +317,8 @@ class Parser {
       } else if (t.text == "tag") {
         setTag(numbered("tag", 0, 2147483647));
       } else {
-        fail(line, t, "unknown segment word '" + std::string(t.text) +
-                          "' (known: oneway, solid, hazard, goal, checkpoint, door N, switch N, tag N)");
+        fail(line, t, "unknown segment word " + quoted(t.text) +
+                          " (known: oneway, solid, hazard, goal, checkpoint, door N, switch N, tag N)");
       }
     }
     return out;

@@ -77,6 +77,23 @@ std::vector<NetFace> unfold(const Stage& stage) {
   return net;
 }
 
+std::string neighbourTable(const Stage& stage) {
+  size_t edges = 0;
+  for (const auto& f : stage.faces) edges = std::max(edges, f.neighbours.size());
+  std::ostringstream out;
+  out << "| face |";
+  for (size_t k = 0; k < edges; ++k) out << " edge " << k << " |";
+  out << "\n|---|";
+  for (size_t k = 0; k < edges; ++k) out << "---|";
+  out << "\n";
+  for (size_t f = 0; f < stage.faceCount(); ++f) {
+    out << "| " << f << " |";
+    for (const Neighbour& n : stage.faces[f].neighbours) out << " " << n.face << " (its edge " << n.edge << ") |";
+    out << "\n";
+  }
+  return out.str();
+}
+
 std::string netSvg(const Stage& stage, const std::vector<NetFace>& net, const std::string& title) {
   Eigen::Vector2d lo = Eigen::Vector2d::Constant(INFINITY), hi = -lo;
   double edge = 0;

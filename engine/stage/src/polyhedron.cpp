@@ -1,10 +1,11 @@
 #include "platon/stage/polyhedron.h"
 
+#include <algorithm>
 #include <cmath>
-#include <map>
 #include <utility>
 
 #include "platon/stage/stage_error.h"
+#include "surface_checks.h"
 
 namespace platon::stage {
 namespace {
@@ -22,19 +23,17 @@ void checkFaceShape(const Polyhedron& p, size_t f, double tolerance) {
   const auto& cycle = p.faces[f];
   const std::string name = "face " + std::to_string(f);
   if (cycle.size() < 3) fail(name + " has " + std::to_string(cycle.size()) + " corners (at least 3)");
-  for (size_t i = 0; i < cycle.size(); ++i) {
-    if (cycle[i] < 0 || static_cast<size_t>(cycle[i]) >= p.vertices.size())
-      fail(name + " names vertex " + std::to_string(cycle[i]) + ", which does not exist");
-    for (size_t j = 0; j < i; ++j)
-      if (cycle[i] == cycle[j]) fail(name + " visits " + vertexName(p, cycle[i]) + " twice");
-  }
+  for (const int v : cycle)
+    if (v < 0 || static_cast<size_t>(v) >= p.vertices.size())
+      fail(name + " names vertex " + std::to_string(v) + ", which does not exist");
+  std::vector<int> sorted = cycle;  // sorted: a face of 10^5 corners checks in n log n
+  std::sort(sorted.begin(), sorted.end());
+  if (const auto twice = std::adjacent_find(sorted.begin(), sorted.end()); twice != sorted.end())
+    fail(name + " visits " + vertexName(p, *twice) + " twice");
   const Eigen::Vector3d n = faceNormal(p, f);
   if (!n.allFinite()) fail(name + " is degenerate (no area)");
-  const Eigen::Vector3d c = faceCentre(p, f);
-  for (const int v : cycle) {
-    const double off = std::abs(n.dot(p.vertices[static_cast<size_t>(v)] - c));
-    if (off > tolerance) fail(name + " is not flat: " + vertexName(p, v) + " is " + std::to_string(off) + " off its plane");
-  }
+  if (const detail::OffPlane off = detail::worstOffPlane(p, f); off.distance > tolerance)
+    fail(name + " is not flat: " + vertexName(p, off.vertex) + " is " + std::to_string(off.distance) + " off its plane");
   for (size_t i = 0; i < cycle.size(); ++i) {
     const Eigen::Vector3d& a = p.vertices[static_cast<size_t>(cycle[i])];
     const Eigen::Vector3d& b = p.vertices[static_cast<size_t>(cycle[(i + 1) % cycle.size()])];
@@ -117,38 +116,22 @@ void validatePolyhedron(const Polyhedron& p, double tolerance) {
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
   for (size_t f = 0; f < p.faces.size(); ++f) centre += faceCentre(p, f);
   centre /= static_cast<double>(p.faces.size());
-
-  std::map<std::pair<int, int>, size_t> edgeFace;  // directed edge u -> v: its face
+  std::vector<Eigen::Vector3d> normals;
   for (size_t f = 0; f < p.faces.size(); ++f) {
-    const auto& cycle = p.faces[f];
-    if (faceNormal(p, f).dot(faceCentre(p, f) - centre) <= 0)
+    normals.push_back(faceNormal(p, f));
+    if (normals.back().dot(faceCentre(p, f) - centre) <= 0)
       fail("face " + std::to_string(f) + " faces inward (its corners run clockwise seen from outside)");
-    for (size_t i = 0; i < cycle.size(); ++i) {
-      const std::pair<int, int> e{cycle[i], cycle[(i + 1) % cycle.size()]};
-      const auto [at, added] = edgeFace.emplace(e, f);
-      if (!added)
-        fail("faces " + std::to_string(at->second) + " and " + std::to_string(f) + " both run from " +
-             vertexName(p, e.first) + " to " + vertexName(p, e.second) + " (non-manifold or inconsistent winding)");
-    }
   }
-  for (const auto& [e, f] : edgeFace) {
-    const auto back = edgeFace.find({e.second, e.first});
-    if (back == edgeFace.end())
-      fail("open solid: the edge from " + vertexName(p, e.first) + " to " + vertexName(p, e.second) +
-           " has face " + std::to_string(f) + " on one side and nothing on the other");
-    const Eigen::Vector3d a = faceNormal(p, f), b = faceNormal(p, back->second);
-    if (a.dot(b) > 1 - 1e-9)
-      fail("faces " + std::to_string(f) + " and " + std::to_string(back->second) + " share an edge and lie in one plane");
-  }
-  for (size_t f = 0; f < p.faces.size(); ++f) {
-    const Eigen::Vector3d n = faceNormal(p, f), c = faceCentre(p, f);
-    for (size_t v = 0; v < p.vertices.size(); ++v) {
-      const double ahead = n.dot(p.vertices[v] - c);
-      if (ahead > tolerance)
-        fail("not convex: " + vertexName(p, static_cast<int>(v)) + " lies " + std::to_string(ahead) +
-             " in front of face " + std::to_string(f));
-    }
-  }
+
+  const detail::SurfaceNames names{[](size_t f) { return "face " + std::to_string(f); },
+                                   [&](int v) { return vertexName(p, v); }};
+  const detail::EdgeIndex edges(p, names);
+  detail::checkClosed(p, edges, [&](int from, int to, size_t f) {
+    return "open solid: the edge from " + vertexName(p, from) + " to " + vertexName(p, to) + " has face " + std::to_string(f) +
+           " on one side and nothing on the other";
+  });
+  detail::checkConnected(p, edges, names);
+  detail::checkLocallyConvex(p, edges, normals, tolerance, names);
 }
 
 }  // namespace platon::stage

@@ -19,48 +19,56 @@ Eigen::Vector3d corner(const Polyhedron& p, size_t face, size_t i) {
   return p.vertices[static_cast<size_t>(cycle[i % cycle.size()])];
 }
 
-// The face's "down": the world's -y laid onto the face; for a face looking straight up or down,
-// the world's -z laid onto it (away from the default camera).
+// How near two directions (unit vectors, cosines) or two positions (over the solid's size) may be
+// and count as a tie: a mesh file's 32-bit floats carry about 1e-7 of noise (more after a node's
+// rotation), which must not pick a floor or face 0 (docs/level-format.md).
+constexpr double kTie = 1e-6;
+
+// The face's "down": the world's -y laid onto the face; for a face looking straight up or down
+// (its normal within 1e-6 of +-y), the world's -z laid onto it (away from the default camera).
 Eigen::Vector3d downOn(const Eigen::Vector3d& normal) {
-  const double flat = 1e-9;
+  const double flat = kTie;
   Eigen::Vector3d down = -Eigen::Vector3d::UnitY() + normal.y() * normal;
   if (down.norm() < flat) down = -Eigen::Vector3d::UnitZ() + normal.z() * normal;
   return down.normalized();
 }
 
 // The floor: the edge whose outward direction in the face's plane points most along "down"; of
-// edges within 1e-9 of the best, the first in the face's cycle.
+// edges within 1e-6 of the best (a corner pointing straight down), the first in the face's cycle
+// (a mesh face's cycle starts at the corner the file's triangles use first).
 Frame frameOf(const Polyhedron& p, size_t face) {
   Frame frame{0, faceNormal(p, face)};
   const Eigen::Vector3d down = downOn(frame.normal);
-  double best = -INFINITY;
-  for (size_t i = 0; i < p.faces[face].size(); ++i) {
+  const size_t n = p.faces[face].size();
+  std::vector<double> facing(n);
+  for (size_t i = 0; i < n; ++i) {
     const Eigen::Vector3d along = (corner(p, face, i + 1) - corner(p, face, i)).normalized();
-    const double facing = along.cross(frame.normal).dot(down);  // outward = along x normal
-    if (facing > best + 1e-9) {
-      best = facing;
-      frame.floorEdge = static_cast<int>(i);
-    }
+    facing[i] = along.cross(frame.normal).dot(down);  // outward = along x normal
   }
+  const double best = *std::max_element(facing.begin(), facing.end());
+  while (facing[static_cast<size_t>(frame.floorEdge)] < best - kTie) ++frame.floorEdge;
   return frame;
 }
 
-// Face 0 looks most along +z (ties: lowest centre, then leftmost). Then: the right-hand
-// neighbour (across edge 1) of the face numbered last, while it has no number; when it has one,
-// the first face in number order with a face not numbered yet across its edges 1, 2, ..., 0.
+// Face 0 looks most along +z (ties within 1e-6: lowest centre, then leftmost, within 1e-6 of the
+// solid's size; then the first in the polyhedron's order). Then: the right-hand neighbour (across
+// edge 1) of the face numbered last, while it has no number; when it has one, the first face in
+// number order with a face not numbered yet across its edges 1, 2, ..., 0.
 std::vector<size_t> numbering(const Polyhedron& p, const std::vector<Frame>& frames,
                               const std::vector<std::vector<std::pair<size_t, int>>>& across) {
   const size_t count = p.faces.size();
+  const double near = kTie * sizeOf(p);
   size_t first = 0;
   for (size_t f = 1; f < count; ++f) {
     const double dz = frames[f].normal.z() - frames[first].normal.z();
     const Eigen::Vector3d a = faceCentre(p, f), b = faceCentre(p, first);
-    if (dz > 1e-9 || (dz > -1e-9 && (a.y() < b.y() - 1e-9 || (std::abs(a.y() - b.y()) <= 1e-9 && a.x() < b.x() - 1e-9))))
+    if (dz > kTie || (dz > -kTie && (a.y() < b.y() - near || (std::abs(a.y() - b.y()) <= near && a.x() < b.x() - near))))
       first = f;
   }
   std::vector<size_t> order{first};
   std::vector<bool> numbered(count, false);
   numbered[first] = true;
+  size_t open = 0;
   // across[f][k]: the face across the frame's edge k of face f (k = 0 is the floor).
   while (order.size() < count) {
     const size_t right = across[order.back()][1].first;
@@ -69,8 +77,10 @@ std::vector<size_t> numbering(const Polyhedron& p, const std::vector<Frame>& fra
       order.push_back(right);
       continue;
     }
+    // Faces before `open` have every neighbour numbered and keep it so: start there (linear, not
+    // quadratic, in the faces of a big mesh).
     bool found = false;
-    for (size_t i = 0; i < order.size() && !found; ++i) {
+    for (size_t i = open; i < order.size() && !found; ++i) {
       const size_t n = across[order[i]].size();
       for (size_t k = 1; k <= n && !found; ++k) {
         const size_t next = across[order[i]][k % n].first;
@@ -79,6 +89,7 @@ std::vector<size_t> numbering(const Polyhedron& p, const std::vector<Frame>& fra
         order.push_back(next);
         found = true;
       }
+      if (!found) open = i + 1;
     }
   }
   return order;

@@ -2,6 +2,7 @@
 // broken meshes are refused with what is wrong; the shipped mesh levels check clean. (That the
 // plugin is mapped only by a process playing a mesh level is script_tests' MeshPlugin test: this
 // program links assimp itself.)
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -12,6 +13,9 @@
 #include "platon/script/scenario.h"
 #include "platon/stage/level_check.h"
 #include "platon/stage/mesh.h"
+
+#include "../stage/test_meshes.h"
+#include "mesh_files.h"
 
 using namespace platon;
 
@@ -85,7 +89,7 @@ TEST(MeshFiles, TheShippedMeshLevelsCheckClean) {
     const stage::Level level = stage::parseLevel(text.str(), path);
     const stage::Stage s = core::meshStageOf(level, reader);
     const stage::CheckReport report = stage::checkLevel(level, s);
-    EXPECT_TRUE(report.errors.empty()) << name;
+    EXPECT_TRUE(report.errors.empty()) << name << ": " << (report.errors.empty() ? "" : report.errors[0].message);
     EXPECT_EQ(stage::parseLevel(stage::writeLevel(level), path), level);
   }
 }
@@ -102,6 +106,197 @@ TEST(MeshPlugin, AMeshLevelNeedsTheMeshesSystem) {
   } catch (const std::exception& e) {
     EXPECT_EQ(std::string(e.what()), dir + "/prism.level:1:1: the level is drawn on a mesh: the scene's manifest must list \"meshes\" in its systems");
   }
+}
+
+std::string scratch(const std::string& name) {
+  const std::string dir = ::testing::TempDir() + "mesh_files/";
+  std::filesystem::create_directories(dir);
+  return dir + name;
+}
+
+stage::Stage stageOfFile(const std::string& path) { return stage::stageFromPolyhedron(stage::polyhedronFromMesh(read(path), 4096)); }
+
+// The same faces, numbered alike, with the same floors (corners within `slack` units) and the
+// same placement in 3D.
+void expectSameStage(const stage::Stage& a, const stage::Stage& b, int slack = 0) {
+  ASSERT_EQ(a.faceCount(), b.faceCount());
+  for (size_t f = 0; f < a.faceCount(); ++f) {
+    SCOPED_TRACE("face " + std::to_string(f));
+    ASSERT_EQ(a.faces[f].corners.size(), b.faces[f].corners.size());
+    for (size_t i = 0; i < a.faces[f].corners.size(); ++i) {
+      EXPECT_LE(std::abs(a.faces[f].corners[i].x - b.faces[f].corners[i].x), slack);
+      EXPECT_LE(std::abs(a.faces[f].corners[i].y - b.faces[f].corners[i].y), slack);
+      EXPECT_EQ(a.faces[f].neighbours[i].face, b.faces[f].neighbours[i].face);
+      EXPECT_EQ(a.faces[f].neighbours[i].edge, b.faces[f].neighbours[i].edge);
+    }
+    EXPECT_LT((a.faces[f].normal - b.faces[f].normal).norm(), 1e-6);
+    EXPECT_LT((a.faces[f].xAxis - b.faces[f].xAxis).norm(), 1e-6);
+  }
+}
+
+bool sameFrames(const stage::Stage& a, const stage::Stage& b) {
+  if (a.faceCount() != b.faceCount()) return false;
+  for (size_t f = 0; f < a.faceCount(); ++f)
+    if ((a.faces[f].normal - b.faces[f].normal).norm() > 1e-6 || a.faces[f].corners != b.faces[f].corners) return false;
+  return true;
+}
+
+testfiles::Node turn(double radians, const Eigen::Vector3d& axis, bool asMatrix = false) {
+  testfiles::Node n;
+  n.rotation = Eigen::Quaterniond(Eigen::AngleAxisd(radians, axis));
+  n.asMatrix = asMatrix;
+  return n;
+}
+
+testfiles::Node scaled(const Eigen::Vector3d& s, bool asMatrix = false) {
+  testfiles::Node n;
+  n.scale = s;
+  n.asMatrix = asMatrix;
+  return n;
+}
+
+// A glTF mesh under nodes that tilt it by a hundredth of a radian or less, scale it by 1% or less,
+// nest, shift and mirror it: the same stage as the same mesh with the transforms written into its
+// points (and not the stage of the untransformed mesh). assimp's own pre-transform step skipped
+// any node within 1% of identity.
+TEST(MeshFiles, NodeTransformsApplyHoweverSmall) {
+  const stage::MeshData box = testmesh::box({1, 0.7, 0.45});
+  const stage::Stage plain = stageOfFile((testfiles::writeObj(box, scratch("plain.obj")), scratch("plain.obj")));
+  const Eigen::Vector3d x = Eigen::Vector3d::UnitX(), y = Eigen::Vector3d::UnitY(), z = Eigen::Vector3d::UnitZ();
+  std::vector<std::vector<testfiles::Node>> chains;
+  for (const bool matrix : {false, true}) {
+    for (const double a : {0.001, 0.01, -0.01, 0.02})
+      for (const auto& axis : {x, y, z}) chains.push_back({turn(a, axis, matrix)});
+    for (const Eigen::Vector3d& s : {Eigen::Vector3d(0.99, 1, 1), Eigen::Vector3d(1, 1.006, 1), Eigen::Vector3d(1, 1, 0.992),
+                                    Eigen::Vector3d(1.01, 0.995, 1.003), Eigen::Vector3d(-1, 1, 1)})
+      chains.push_back({scaled(s, matrix)});
+    testfiles::Node shift = turn(0.005, y, matrix);
+    shift.translation = {0.3, -0.2, 5};
+    chains.push_back({turn(0.01, x, matrix), scaled({1.008, 1, 1}, !matrix), shift});
+  }
+  for (size_t i = 0; i < chains.size(); ++i) {
+    SCOPED_TRACE("chain " + std::to_string(i));
+    testfiles::writeGltf(box, chains[i], scratch("node.gltf"));
+    testfiles::writeObj(testfiles::baked(box, chains[i]), scratch("baked.obj"));
+    const stage::Stage fromNodes = stageOfFile(scratch("node.gltf"));
+    expectSameStage(fromNodes, stageOfFile(scratch("baked.obj")), 1);
+    const bool mirrorOnly = chains[i].size() == 1 && chains[i][0].scale.x() < 0;  // the box is symmetric
+    if (!mirrorOnly) {
+      EXPECT_FALSE(sameFrames(fromNodes, plain)) << "the transform was dropped";
+    }
+  }
+}
+
+// A box of any size from a millionth of a unit to a million units (points shared, or repeated per
+// triangle as STL files do) makes the same stage: points are welded relative to the mesh's size.
+TEST(MeshFiles, TinyAndHugeMeshesMakeTheSameStage) {
+  for (const Eigen::Vector3d& half : {Eigen::Vector3d(1, 1, 1), Eigen::Vector3d(1, 0.7, 0.45)})
+  for (int e = -6; e <= 6; ++e) {
+    const stage::MeshData box = testmesh::box(half);
+    testfiles::writeObj(box, scratch("unit.obj"));
+    const stage::Stage unit = stageOfFile(scratch("unit.obj"));
+    SCOPED_TRACE("scale 1e" + std::to_string(e) + ", depth " + std::to_string(half.z()));
+    stage::MeshData m = box, loose;
+    for (auto& p : m.positions) p *= std::pow(10.0, e);
+    for (const auto& t : m.triangles) {
+      const int base = int(loose.positions.size());
+      for (const int v : t) loose.positions.push_back(m.positions[size_t(v)]);
+      loose.triangles.push_back({base, base + 1, base + 2});
+    }
+    testfiles::writeObj(m, scratch("scaled.obj"));
+    testfiles::writeObj(loose, scratch("loose.obj"));
+    expectSameStage(stageOfFile(scratch("scaled.obj")), unit);
+    expectSameStage(stageOfFile(scratch("loose.obj")), unit);
+    std::ofstream quads(scratch("quads.obj"));  // the box's faces as quads, for assimp to split
+    for (size_t v = 0; v < 8; ++v)
+      quads << "v " << m.positions[v].x() << " " << m.positions[v].y() << " " << m.positions[v].z() << "\n";
+    for (size_t t = 0; t < 12; t += 2)
+      quads << "f " << m.triangles[t][0] + 1 << " " << m.triangles[t][1] + 1 << " " << m.triangles[t][2] + 1 << " "
+            << m.triangles[t + 1][2] + 1 << "\n";
+    quads.close();
+    expectSameStage(stageOfFile(scratch("quads.obj")), unit);
+  }
+}
+
+// A file too big for a stage is refused before assimp reads it: by its size, or by the triangle
+// count in a binary STL's header. (Sparse files: nothing is written but the header.)
+TEST(MeshFiles, FilesOverTheCapsAreRefusedBeforeReading) {
+  const std::string big = scratch("big.obj");
+  std::ofstream(big) << "v 0 0 0\n";
+  std::filesystem::resize_file(big, (size_t{65} << 20) + 5);
+  EXPECT_EQ(refusal(big), big + ": the file is 65 MB; a mesh file may be at most 64 MB");
+  const std::string stl = scratch("many.stl");
+  {
+    std::ofstream out(stl, std::ios::binary);
+    const char header[80] = "binary";
+    out.write(header, 80);
+    const uint32_t count = 200000;
+    out.write(reinterpret_cast<const char*>(&count), 4);
+  }
+  std::filesystem::resize_file(stl, 84 + 50 * size_t{200000});
+  EXPECT_EQ(refusal(stl), stl + ": the file has 200000 triangles; a stage takes at most 100000");
+}
+
+// A glTF node turning a box by any multiple of 90 degrees about the axes (assimp hands the
+// rotation over as a float matrix: about 1e-7 of noise) makes the stage of the OBJ with the turn
+// written exactly into its points: the same faces, numbers and floors.
+TEST(MeshFiles, QuarterTurnNodesMakeTheBakedStage) {
+  for (const Eigen::Vector3d& half : {Eigen::Vector3d(1, 1, 1), Eigen::Vector3d(1, 0.7, 0.45), Eigen::Vector3d(0.5, 1, 0.25)})
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b)
+        for (int c = 0; c < 4; ++c) {
+          SCOPED_TRACE("turns " + std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(c));
+          const stage::MeshData box = testmesh::box(half);
+          testfiles::Node node;
+          node.rotation = Eigen::AngleAxisd(c * M_PI / 2, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(b * M_PI / 2, Eigen::Vector3d::UnitY()) *
+                          Eigen::AngleAxisd(a * M_PI / 2, Eigen::Vector3d::UnitX());
+          stage::MeshData exact = box;
+          const Eigen::Matrix3d turn = node.rotation.toRotationMatrix().array().round().matrix();
+          for (auto& p : exact.positions) p = turn * p;
+          testfiles::writeGltf(box, {node}, scratch("turned.gltf"));
+          testfiles::writeObj(exact, scratch("turned.obj"));
+          expectSameStage(stageOfFile(scratch("turned.gltf")), stageOfFile(scratch("turned.obj")));
+        }
+}
+
+// A level's mesh must be a regular file inside the level's folder once symbolic links are
+// followed: a link to a file elsewhere, to /dev/zero or to /etc/passwd is refused, naming where it
+// leads; links and subfolders that stay inside are fine.
+TEST(MeshFiles, TheMeshMustStayInTheLevelsFolder) {
+  namespace fs = std::filesystem;
+  const fs::path root = fs::path(::testing::TempDir()) / "mesh_folder";
+  fs::remove_all(root);
+  fs::create_directories(root / "level" / "meshes");
+  testfiles::writeObj(testmesh::box({1, 0.7, 0.45}), (root / "outside.obj").string());
+  testfiles::writeObj(testmesh::box({1, 0.7, 0.45}), (root / "level" / "meshes" / "box.obj").string());
+  fs::create_symlink(root / "outside.obj", root / "level" / "out.obj");
+  fs::create_symlink("/dev/zero", root / "level" / "zero.obj");
+  fs::create_symlink("/etc/passwd", root / "level" / "passwd.obj");
+  fs::create_symlink("meshes/box.obj", root / "level" / "inside.obj");
+  fs::create_symlink(root / "level" / "meshes", root / "level" / "linked");
+  const std::string file = (root / "level" / "l.level").string(), folder = (root / "level").string() + "/";
+  auto load = [&](const std::string& mesh) -> std::string {
+    std::string text = "MESH " + mesh + "\n0 1000 1000\n0 2000 2000\n4096\n";
+    for (int f = 0; f < 6; ++f) text += "%\n";
+    mesh::MeshSystem reader;
+    try {
+      (void)core::meshStageOf(stage::parseLevel(text, file), reader);
+    } catch (const stage::StageError& e) {
+      return e.what();
+    }
+    return "(accepted)";
+  };
+  EXPECT_EQ(load("meshes/box.obj"), "(accepted)");
+  EXPECT_EQ(load("inside.obj"), "(accepted)");
+  EXPECT_EQ(load("linked/box.obj"), "(accepted)");
+  EXPECT_EQ(load("out.obj"), file + ":1:6: " + folder + "out.obj: the mesh file leads out of the level's folder (to " +
+                                 (root / "outside.obj").string() + "): it must be a file in that folder");
+  EXPECT_EQ(load("zero.obj"), file + ":1:6: " + folder + "zero.obj: the mesh file leads out of the level's folder (to /dev/zero): it must be a file in that folder");
+  EXPECT_EQ(load("passwd.obj"), file + ":1:6: " + folder + "passwd.obj: the mesh file leads out of the level's folder (to /etc/passwd): it must be a file in that folder");
+  EXPECT_EQ(load("meshes"), file + ":1:6: " + folder + "meshes: the mesh file is not a regular file (" + folder + "meshes)");
+  EXPECT_EQ(load("nowhere.obj"), file + ":1:6: " + folder + "nowhere.obj: cannot find the mesh file");
+  fs::create_symlink("/dev/zero", root / "level" / "meshes" / "zero.obj");  // a link in a subfolder
+  EXPECT_NE(load("meshes/zero.obj").find("leads out of the level's folder (to /dev/zero)"), std::string::npos);
 }
 
 }  // namespace

@@ -71,27 +71,27 @@ TEST(LevelFormat, EveryMistakeNamesFileLineColumnAndWhy) {
   const struct {
     std::string text, expected;
   } cases[] = {
-      {"", "t.level:1: the file ends before the solid (the first line)"},
+      {"", "t.level:1:1: the file ends before the solid (the first line)"},
       {"CUBE\n", "t.level:1:1: unknown solid 'CUBE' (known: TETRAHEDRON, HEXAHEDRON, OCTAHEDRON, DODECAHEDRON, ICOSAHEDRON, or MESH file)"},
       {"HEXAHEDRON extra\n", "t.level:1:12: solid: unexpected 'extra'"},
       {"MESH ../../etc/passwd\n", "t.level:1:6: the mesh file must be a path inside the level's folder (no '/' at the start, no '..')"},
-      {"HEXAHEDRON\n", "t.level:2: the file ends before the start line (face x y [degrees])"},
-      {"HEXAHEDRON\n0 600\n", "t.level:2: start (face x y [degrees]): too few values"},
+      {"HEXAHEDRON\n", "t.level:2:1: the file ends before the start line (face x y [degrees])"},
+      {"HEXAHEDRON\n0 600\n", "t.level:2:6: start (face x y [degrees]): too few values"},
       {"HEXAHEDRON\n0 6o0 700\n", "t.level:2:3: start x: '6o0' is not a number"},
       {"HEXAHEDRON\n0 nan 700\n", "t.level:2:3: start x: 'nan' is not a number"},
       {"HEXAHEDRON\n0 1e300 700\n", "t.level:2:3: start x: 1e300 is out of range (-536870912 to 536870912)"},
       {"HEXAHEDRON\n0.5 600 700\n", "t.level:2:1: start face: 0.5 is not a whole number"},
-      {"HEXAHEDRON\n0 600 700\n", "t.level:3: the file ends before the goal line ([face] x y)"},
+      {"HEXAHEDRON\n0 600 700\n", "t.level:3:1: the file ends before the goal line ([face] x y)"},
       {"HEXAHEDRON\n0 600 700\n1 2 3 4\n", "t.level:3:7: goal ([face] x y): unexpected '4'"},
-      {"HEXAHEDRON\n0 600 700\n0 2000 2000\n", "t.level:4: the file ends before the face size line"},
+      {"HEXAHEDRON\n0 600 700\n0 2000 2000\n", "t.level:4:1: the file ends before the face size line"},
       {"HEXAHEDRON\n0 600 700\n0 2000 2000\n10\n", "t.level:4:1: face size (units): 10 is out of range (64 to 16777216)"},
-      {header, "t.level:5: HEXAHEDRON has 6 faces; the file describes 0"},
+      {header, "t.level:5:1: HEXAHEDRON has 6 faces; the file describes 0"},
       {header + "1 2 3 4\n", "t.level:5:1: expected '%', which starts face 0 (after the four header lines)"},
-      {header + "%\n%\n%\n%\n%\n", "t.level:10: HEXAHEDRON has 6 faces; the file describes 5"},
+      {header + "%\n%\n%\n%\n%\n", "t.level:10:1: HEXAHEDRON has 6 faces; the file describes 5"},
       {header + empty6 + "%\n", "t.level:11:1: HEXAHEDRON has 6 faces; this '%' starts one more"},
       {header + "% spin 1\n", "t.level:5:3: unknown face option 'spin' (known: gravity gx gy)"},
       {header + "% gravity 1\n", "t.level:5:3: gravity needs two numbers: gx gy (units per frame per frame)"},
-      {header + "%\n1 2 3\n", "t.level:6: a segment is x0 y0 x1 y1 [oneway] [tag]: too few values"},
+      {header + "%\n1 2 3\n", "t.level:6:6: a segment is x0 y0 x1 y1 [oneway] [tag]: too few values"},
       {header + "%\n1 2 1 2\n", "t.level:6:1: the segment has no length (both ends at one point)"},
       {header + "%\n1 2 3 4 lava\n", "t.level:6:9: unknown segment word 'lava' (known: oneway, solid, hazard, goal, checkpoint, door N, switch N, tag N)"},
       {header + "%\n1 2 3 4 hazard goal\n", "t.level:6:16: a segment has one tag at most"},
@@ -109,6 +109,50 @@ TEST(LevelFormat, EveryMistakeNamesFileLineColumnAndWhy) {
        "t.level:3:1: the goal's square (300 units wide) reaches over the edge of face 0"},
   };
   for (const auto& c : cases) EXPECT_EQ(errorOf(c.text), c.expected) << c.text;
+}
+
+// What the text itself can hide: a byte order mark (skipped), CR-only line ends (refused, saying
+// so), bytes a terminal does not show (escaped as \xHH, a NUL included, which used to end the
+// message), very long tokens (cut to 40 bytes), a gravity too small to keep; and every message
+// has a column, also for what is missing (the column just past the line's last value).
+TEST(LevelFormat, WhatTheTextHidesIsShownInTheMessage) {
+  using namespace std::string_literals;
+  const std::string header = "HEXAHEDRON\n0 600 700\n0 2000 2000\n4096\n";
+  const std::string faces = "%\n%\n%\n%\n%\n%\n";
+  const std::string digits(10000, '7'), letters(100, 'a');
+  const struct {
+    std::string text, expected;
+  } cases[] = {
+      {"\xEF\xBB\xBF" + header + faces, "(accepted)"},
+      {"\xEF\xBB\xBF" "CUBE\n", "t.level:1:1: unknown solid 'CUBE' (known: TETRAHEDRON, HEXAHEDRON, OCTAHEDRON, DODECAHEDRON, ICOSAHEDRON, or MESH file)"},
+      {"\xEF\xBB\xBF\xEF\xBB\xBF" "HEXAHEDRON\n",
+       "t.level:1:1: unknown solid '\\xEF\\xBB\\xBFHEXAHEDRON' (known: TETRAHEDRON, HEXAHEDRON, OCTAHEDRON, DODECAHEDRON, ICOSAHEDRON, or MESH file)"},
+      {"HEXAHEDRON\r0 600 700\r0 2000 2000\r4096\r",
+       "t.level:1:11: a CR (\\r) ends a line here without an LF: lines must end with LF or CR LF (CR-only line ends, as old Mac files have, are not read)"},
+      {"HEXAHEDRON\r\n0 600\r700\r\n",
+       "t.level:2:6: a CR (\\r) ends a line here without an LF: lines must end with LF or CR LF (CR-only line ends, as old Mac files have, are not read)"},
+      {"HEXAHEDRON\r\n0 600 700 \r \r\n0\r2000 2000\r\n",
+       "t.level:3:2: a CR (\\r) ends a line here without an LF: lines must end with LF or CR LF (CR-only line ends, as old Mac files have, are not read)"},
+      {"HEXAHEDRON\r\n0 600 700\r\n0 2000 2000 \r\r\n4096\r\n" + faces, "(accepted)"},
+      {"HEXAHEDRON\n0 600\0 700\n"s, "t.level:2:3: start x: '600\\x00' is not a number"},
+      {"HEXAHEDRON\n0 \xE2\x88\x92" "600 700\n", "t.level:2:3: start x: '\\xE2\\x88\\x92" "600' is not a number"},
+      {"HEXA\xC3\x89" "DRON\n", "t.level:1:1: unknown solid 'HEXA\\xC3\\x89" "DRON' (known: TETRAHEDRON, HEXAHEDRON, OCTAHEDRON, DODECAHEDRON, ICOSAHEDRON, or MESH file)"},
+      {"HEXAHEDRON\n0 " + digits + " 700\n", "t.level:2:3: start x: " + digits.substr(0, 40) + "... is out of range (-536870912 to 536870912)"},
+      {"HEXAHEDRON\n0 " + letters + " 700\n", "t.level:2:3: start x: '" + letters.substr(0, 40) + "...' is not a number"},
+      {header + "%\n1 2 3 4 " + letters + "\n", "t.level:6:9: unknown segment word '" + letters.substr(0, 40) + "...' (known: oneway, solid, hazard, goal, checkpoint, door N, switch N, tag N)"},
+      {header + "% gravity 0 -0.000001\n",
+       "t.level:5:3: gravity 0 -0.000001 rounds to none: gravity is kept in steps of 1/65536 unit per frame per frame (write 0 0 for none)"},
+      {header + "% gravity 0 -0.00001\n%\n%\n%\n%\n%\n", "(accepted)"},  // 0.65 of a step: one step
+      {"MESH\n", "t.level:1:5: MESH needs a file name"},
+      {"HEXAHEDRON\n12000 600 700\n0 2000 2000\n4096\n" + faces, "t.level:2:1: start face 12000 does not exist (faces 0 to 5)"},
+  };
+  for (const auto& c : cases) EXPECT_EQ(errorOf(c.text), c.expected) << c.text;
+  // Face numbers go as far as the level's faces: a mesh level of 20,480 faces may start on the last.
+  std::string mesh = "MESH sphere.stl\n20479 10 10\n20000 10 10\n4096\n";
+  for (int f = 0; f < 20480; ++f) mesh += "%\n";
+  const stage::Level big = stage::parseLevel(mesh, "m.level");
+  EXPECT_EQ(big.start.face, 20479);
+  EXPECT_EQ(big.goal.face, 20000);
 }
 
 // A random level on a random solid: segments inside their faces, tags, one-way lines, gravity.
@@ -219,6 +263,25 @@ TEST(LevelFormat, TheDocumentedNetsAreTheStages) {
     EXPECT_EQ(readFile(std::string(PLATON_SOURCE_ROOT) + "/docs/nets/" + name + ".svg"), stage::netSvg(s, stage::unfold(s), title))
         << name << ": run `platon net " << stage::solidName(solid) << " -o docs/nets/" << name << ".svg`";
   }
+}
+
+// The tables of docs/level-format.md ("Across each edge") are today's neighbours: what
+// stage::neighbourTable writes, between the doc's markers, for every solid.
+TEST(LevelFormat, TheDocumentedNeighbourTablesAreTheStages) {
+  const std::string doc = readFile(std::string(PLATON_SOURCE_ROOT) + "/docs/level-format.md");
+  for (const stage::Solid solid : stage::kSolids) {
+    const std::string marker = "<!-- neighbours " + std::string(stage::solidName(solid)) + " -->\n";
+    const size_t at = doc.find(marker);
+    ASSERT_NE(at, std::string::npos) << marker;
+    const size_t table = doc.find("| face |", at), end = doc.find("<!-- end -->", at);
+    ASSERT_LT(table, end);
+    const std::string want = stage::neighbourTable(stage::platonicStage(solid, 1000));
+    EXPECT_EQ(doc.substr(table, end - table), want) << stage::solidName(solid) << ": the doc should show\n" << want;
+  }
+  // Any size gives the same table (frames and numbering do not depend on it).
+  for (const stage::Solid solid : stage::kSolids)
+    for (const int32_t size : {64, 4096, 1 << 24})
+      EXPECT_EQ(stage::neighbourTable(stage::platonicStage(solid, size)), stage::neighbourTable(stage::platonicStage(solid, 1000)));
 }
 
 // Nets never overlap, and every face joins the face it was unfolded from along their shared edge.

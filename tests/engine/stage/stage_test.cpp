@@ -163,14 +163,15 @@ TEST(MeshBuilder, EveryBrokenMeshSaysWhatIsWrongAndWhere) {
   dent.positions[7] = {0.6, 0.6, 0.6};  // a corner pushed in
   EXPECT_NE(meshRefusal(dent).find("not convex"), std::string::npos) << meshRefusal(dent);
   stage::MeshData flat = cubeMesh();
-  flat.triangles[0] = {0, 0, 1};
-  EXPECT_NE(meshRefusal(flat).find("triangle 0 is degenerate"), std::string::npos) << meshRefusal(flat);
+  flat.positions.emplace_back(0.5, 0, 0);  // on the edge from point 0 to point 1
+  flat.triangles.push_back({0, 1, 8});
+  EXPECT_EQ(meshRefusal(flat), "triangle 12 is degenerate: its corners (0, 0, 0), (1, 0, 0) and (0.5, 0, 0) lie on one line (no area)");
   stage::MeshData missing = cubeMesh();
   missing.triangles[5][2] = 99;
   EXPECT_EQ(meshRefusal(missing), "triangle 5 names vertex 99, which does not exist");
   stage::MeshData nan = cubeMesh();
   nan.positions[2].x() = std::nan("");
-  EXPECT_EQ(meshRefusal(nan), "vertex 2 is not a finite point of sensible size");
+  EXPECT_EQ(meshRefusal(nan), "vertex 2 is not a finite point of sensible size (within 1e15)");
   EXPECT_EQ(meshRefusal({}), "a closed solid needs at least 4 triangles, the mesh has 0");
 }
 

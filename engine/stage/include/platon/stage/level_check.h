@@ -18,17 +18,20 @@ struct CheckReport {
 };
 
 // Checks a parsed level on its stage: checkLevelOnStage's errors; a goal no path reaches (error);
-// lines lying along a face's edge, where they block the way to the next face, and faces with no
-// lines (warnings).
+// lines lying along a face's edge, where they block the way to the next face, faces with no
+// lines, faces narrower than the default player, and a reachability search that had to coarsen
+// its cells (warnings).
 //
-// Reachability is coarse: free space for the default player (a disk of kStartClearance units)
-// on a grid of size / 64 (at least 8 units), four ways within a face and across every edge to
-// the neighbour, from the start's cell. Doors count as open, one-way lines as passable, hazards
-// as walls. Gravity and jump height are not modelled: "reachable" means not sealed off, and a goal
-// it calls unreachable is sealed off by walls (or by gaps narrower than the player within a cell).
+// Reachability is conservative (src/reach_search.h, docs/level-format.md "platon check"): free
+// space for the default player's disk (radius 96) as a quadtree per face, refined near walls down
+// to 8 units, a cell free only when no wall comes within the radius of any of its points (the
+// neighbours' walls near a shared edge included), joined within faces and across every edge. Doors
+// count as open, one-way lines as passable, hazards as walls. Gravity and jump height are not
+// modelled: "reachable" means a disk can slide there; "sealed off" means walls, or a gap under
+// 216 units.
 CheckReport checkLevel(const Level& level, const Stage& stage);
 
-// Whether the goal's cell is joined to the start's (the search above).
+// Whether the search above joins the start to the goal.
 bool goalReachable(const Level& level, const Stage& stage);
 
 }  // namespace platon::stage

@@ -26,6 +26,10 @@ struct NetFace {
 // number order that already lies flat and leaves it room. Faces never overlap in the result.
 std::vector<NetFace> unfold(const Stage& stage);
 
+// Which face, and which of its edges, lies across each edge of each face, as a Markdown table
+// (docs/level-format.md shows one per Platonic solid; a test checks they are today's).
+std::string neighbourTable(const Stage& stage);
+
 // The net as a self-contained SVG document.
 std::string netSvg(const Stage& stage, const std::vector<NetFace>& net, const std::string& title);
 

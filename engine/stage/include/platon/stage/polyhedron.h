@@ -31,9 +31,12 @@ Polyhedron platonicSolid(Solid solid, double edge);
 
 // Checks that `p` is a closed convex polyhedron: at least four faces, each a planar convex polygon
 // of three or more distinct corners, counter-clockwise from outside; every edge shared by exactly
-// two faces running opposite ways; every vertex behind or on every face's plane; no two
-// neighbouring faces in one plane. Throws StageError naming the face, edge or vertex.
-// `tolerance` is a length: how far off a plane a point may be and still count as on it.
+// two faces running opposite ways; one connected piece; across every edge the neighbour bending
+// away (its corner after the edge behind or on the face's plane) and every vertex's faces winding
+// round it once, which together make the solid convex. Throws StageError naming the face, edge
+// or vertex. `tolerance` is a length: how far off a plane a point may be and still count as on
+// it. Two neighbouring faces may lie in one plane (within the tolerance): for a mesh, what is one
+// face is polyhedronFromMesh's decision alone. Linear in the edges.
 void validatePolyhedron(const Polyhedron& p, double tolerance);
 
 // A length that scales with the solid: its bounding box's diagonal.
