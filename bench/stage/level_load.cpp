@@ -97,13 +97,31 @@ std::string bigLevel(int count) {
   return text;
 }
 
+// The loader's phases, in ms, of the latest loadFile.
+struct Phases {
+  double read = 0, parse = 0, stage = 0, check = 0, build = 0;
+};
+Phases phases;
+
 void loadFile(const std::string& path) {
-  const stage::Level level = stage::parseLevel(stage::readLevelFile(path), path);
+  // As the engine does (core::loadScene): the text lives only while it is parsed.
+  auto t0 = Clock::now(), t1 = t0;
+  const stage::Level level = [&] {
+    const std::string text = stage::readLevelFile(path);
+    t1 = Clock::now();
+    return stage::parseLevel(text, path);
+  }();
+  auto t2 = Clock::now();
   stage::Stage s = stage::platonicStageOf(level);
+  auto t3 = Clock::now();
   stage::checkLevelOnStage(level, s);
+  auto t4 = Clock::now();
   physics::World world;
   stage::buildLevel(level, s, world, 0, 22938);
   for (size_t f = 0; f < s.faceCount(); ++f) world.mapPart(s.part(f)).initialize();
+  auto t5 = Clock::now();
+  auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
+  phases = {ms(t0, t1), ms(t1, t2), ms(t2, t3), ms(t3, t4), ms(t4, t5)};
 }
 
 struct Lines {
@@ -140,8 +158,11 @@ int main(int argc, char** argv) {
     for (const auto& l : face.lines) lines.perFace.back().push_back({l.a, l.b});
   }
   std::vector<double> loader, physics, parse;
+  std::vector<double> readMs, parseMs, stageMs, checkMs, buildMs;
   for (int r = 0; r < runs; ++r) {
     loader.push_back(millisecondsOf([&] { loadFile(path); }));
+    readMs.push_back(phases.read), parseMs.push_back(phases.parse), stageMs.push_back(phases.stage);
+    checkMs.push_back(phases.check), buildMs.push_back(phases.build);
     physics.push_back(millisecondsOf([&] { physicsOnly(lines); }));
     parse.push_back(millisecondsOf([&] { (void)stage::parseLevel(stage::readLevelFile(path), path); }));
   }
@@ -153,7 +174,10 @@ int main(int argc, char** argv) {
               static_cast<size_t>(std::filesystem::file_size(path)), runs);
   std::printf("  file -> built world (read, parse, check, build, initialize): %s ms, peak heap %ld kB\n",
               bench::Spread::of(loader).show("%.1f").c_str(), loaderKb);
-  std::printf("    of which read + parse:                                    %s ms\n", bench::Spread::of(parse).show("%.1f").c_str());
+  std::printf("    read %s, parse %s, stage %s, check %s, build + initialize %s ms\n", bench::Spread::of(readMs).show("%.2f").c_str(),
+              bench::Spread::of(parseMs).show("%.2f").c_str(), bench::Spread::of(stageMs).show("%.2f").c_str(),
+              bench::Spread::of(checkMs).show("%.2f").c_str(), bench::Spread::of(buildMs).show("%.2f").c_str());
+  std::printf("    read + parse on their own:                               %s ms\n", bench::Spread::of(parse).show("%.1f").c_str());
   std::printf("  physics alone (parts, warps, lines in bulk, initialize):   %s ms, peak heap %ld kB\n",
               bench::Spread::of(physics).show("%.1f").c_str(), physicsKb);
   std::printf("  ratio loader / physics: %s (time), %.2f (memory)\n", bench::Spread::of(ratio).show("%.2f").c_str(),

@@ -1,4 +1,5 @@
 // Writing levels, checking them against their stage and building them into a world.
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -43,18 +44,63 @@ void checkPoint(const Level& level, const Stage& stage, const LevelPoint& p, con
   const auto& corners = stage.faces[static_cast<size_t>(p.face)].corners;
   if (!insidePolygon(corners, p.position.x, p.position.y))
     throw StageError(at, std::string(what) + " " + pointText(p.position) + " is outside face " + std::to_string(p.face));
-  // The face's own lines, and its neighbours' near the shared edges laid flat beside it: the
-  // player's disk reaches over an edge onto the next face.
-  for (const FlatWall& w : wallsNear(level, stage, static_cast<size_t>(p.face), kStartClearance + 4, Counting::Clearance)) {
-    const double d = pointSegmentDistance(p.position.x, p.position.y, w.ax, w.ay, w.bx, w.by);
-    if (d >= kStartClearance) continue;
-    const std::string across = w.face == p.face ? "" : " (on face " + std::to_string(w.face) + ", across the edge)";
+  // The face's own lines, and its neighbours' across the edges the point is near, laid flat beside
+  // it: the player's disk reaches over an edge onto the next face. A neighbour's lines are
+  // measured from the point carried into that face's frame (one point moved, not every line), and
+  // only when the point is within the clearance of the shared edge: a line across the edge line
+  // is at least as far from the point as the edge is. A line whose bounding box is farther than
+  // the clearance is passed over without a distance (the check is one pass over the level).
+  auto tooClose = [&](const LevelLine& l, double x, double y) {
+    if (!counts(l, Counting::Clearance)) return -1.0;
+    const double lo = kStartClearance;
+    if (x < std::min(l.a.x, l.b.x) - lo || x > std::max(l.a.x, l.b.x) + lo || y < std::min(l.a.y, l.b.y) - lo ||
+        y > std::max(l.a.y, l.b.y) + lo)
+      return -1.0;
+    const double d = pointSegmentDistance(x, y, l.a.x, l.a.y, l.b.x, l.b.y);
+    return d < kStartClearance ? d : -1.0;
+  };
+  auto refuse = [&](const LevelLine& l, double d, int face) {
+    const std::string across = face == p.face ? "" : " (on face " + std::to_string(face) + ", across the edge)";
     throw StageError(at, std::string(what) + " " + pointText(p.position) + " is inside a wall: " +
                              std::to_string(static_cast<int>(d)) + " units from the segment on line " +
-                             std::to_string(w.line->sourceLine) + across + " (the player needs " +
+                             std::to_string(l.sourceLine) + across + " (the player needs " +
                              std::to_string(kStartClearance) + ")");
+  };
+  const size_t f = static_cast<size_t>(p.face);
+  for (const LevelLine& l : level.faces[f].lines)
+    if (const double d = tooClose(l, p.position.x, p.position.y); d >= 0) refuse(l, d, p.face);
+  for (size_t k = 0; k < corners.size(); ++k) {
+    if (distanceToSegment(p.position.x, p.position.y, corners[k], corners[(k + 1) % corners.size()]) >= kStartClearance) continue;
+    const int g = stage.faces[f].neighbours[k].face;
+    double x = p.position.x, y = p.position.y;
+    unfoldAcross(stage, f, k).inverse().apply(x, y);
+    for (const LevelLine& l : level.faces[static_cast<size_t>(g)].lines)
+      if (const double d = tooClose(l, x, y); d >= 0) refuse(l, d, g);
   }
 }
+
+// Inside or on the border of a convex counter-clockwise polygon, for many points: the edges'
+// directions worked out once (the same arithmetic as insidePolygon).
+class InsideTest {
+ public:
+  explicit InsideTest(const std::vector<physics::Vec2>& corners) {
+    for (size_t i = 0; i < corners.size(); ++i) {
+      const physics::Vec2 a = corners[i], b = corners[(i + 1) % corners.size()];
+      edges_.push_back({double(a.x), double(a.y), double(b.x) - a.x, double(b.y) - a.y});
+    }
+  }
+  bool inside(physics::Vec2 p) const {
+    for (const Edge& e : edges_)
+      if (e.dx * (p.y - e.ay) - e.dy * (p.x - e.ax) < 0) return false;
+    return true;
+  }
+
+ private:
+  struct Edge {
+    double ax, ay, dx, dy;
+  };
+  std::vector<Edge> edges_;
+};
 
 }  // namespace
 
@@ -97,9 +143,10 @@ void checkLevelOnStage(const Level& level, const Stage& stage) {
                                                          " faces; the file describes " + std::to_string(level.faces.size()));
   for (size_t f = 0; f < level.faces.size(); ++f) {
     const auto& corners = stage.faces[f].corners;
+    const InsideTest face(corners);
     for (const LevelLine& l : level.faces[f].lines)
       for (const physics::Vec2 p : {l.a, l.b})
-        if (!insidePolygon(corners, p.x, p.y)) {
+        if (!face.inside(p)) {
           std::string shape;
           for (const physics::Vec2 c : corners) shape += " " + pointText(c);
           throw StageError({level.file, l.sourceLine, l.sourceColumn},

@@ -1,7 +1,10 @@
 // parseLevel: the level text, line by line. Every rejection names file:line:column.
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <span>
 
 #include "platon/stage/level.h"
@@ -40,6 +43,13 @@ struct TextLine {
   std::span<const Token> tokens;
 };
 
+// The bytes a value is made of: all but the separators (space, tab, CR), '#' and the line end.
+constexpr auto kValueByte = [] {
+  std::array<bool, 256> table{};
+  for (int c = 0; c < 256; ++c) table[static_cast<size_t>(c)] = c != ' ' && c != '\t' && c != '\r' && c != '#' && c != '\n';
+  return table;
+}();
+
 // Reads the text one line at a time (a level of 10^5 segments never holds more than one line's
 // tokens): comments (# to the end of the line) and blank lines are skipped.
 class LineReader {
@@ -48,24 +58,38 @@ class LineReader {
   LineReader(std::string_view text, const std::string& file)
       : text_(text.substr(text.substr(0, 3) == "\xEF\xBB\xBF" ? 3 : 0)), file_(file) {}
 
-  // The next line with values, or nullptr at the end. Valid until the next call.
+  // The next line with values, or nullptr at the end. Valid until the next call. One pass over
+  // each line's bytes: values end at a space, tab, CR, '#' (a comment to the end of the line) or
+  // the line's end (a level of 10^5 segments is mostly this loop).
   const TextLine* next() {
+    const char* const begin = text_.data();
+    const char* const end = begin + text_.size();
     while (at_ < text_.size()) {
-      size_t end = text_.find('\n', at_);
-      if (end == std::string_view::npos) end = text_.size();
-      std::string_view line = text_.substr(at_, end - at_);
-      at_ = end + 1;
+      const char* const lineStart = begin + at_;
+      const char* p = lineStart;
       ++number_;
-      checkLineEnds(line);
-      if (const size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
       tokens_.clear();
-      size_t i = 0;
-      while (i < line.size()) {
-        while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
-        const size_t start = i;
-        while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') ++i;
-        if (i > start) tokens_.push_back({line.substr(start, i - start), static_cast<int>(start) + 1});
+      while (p < end && *p != '\n') {
+        const char c = *p;
+        if (c == ' ' || c == '\t') {
+          ++p;
+        } else if (kValueByte[static_cast<unsigned char>(c)]) {
+          const char* const start = p;
+          while (p < end && kValueByte[static_cast<unsigned char>(*p)]) ++p;
+          tokens_.push_back({std::string_view(start, static_cast<size_t>(p - start)), static_cast<int>(start - lineStart) + 1});
+        } else if (c == '\r') {
+          checkAfterCr(std::string_view(p, static_cast<size_t>(end - p)), static_cast<int>(p - lineStart) + 1);
+          ++p;
+        } else if (c == '#') {
+          const void* newline = std::memchr(p, '\n', static_cast<size_t>(end - p));
+          const char* stop = newline ? static_cast<const char*>(newline) : end;
+          if (const void* cr = std::memchr(p, '\r', static_cast<size_t>(stop - p)))
+            checkAfterCr(std::string_view(static_cast<const char*>(cr), static_cast<size_t>(end - static_cast<const char*>(cr))),
+                         static_cast<int>(static_cast<const char*>(cr) - lineStart) + 1);
+          p = stop;
+        }
       }
+      at_ = static_cast<size_t>(p - begin) + 1;
       if (tokens_.empty()) continue;
       current_ = {number_, tokens_};
       return &current_;
@@ -75,13 +99,66 @@ class LineReader {
   // Lines read so far (all of them, once next() returned nullptr).
   int lineCount() const { return number_; }
 
+  // The usual segment line, four whole numbers within +-2^29 and nothing else, read straight from
+  // the bytes (a level of 10^5 segments is mostly these): true with the numbers and the line
+  // consumed; false leaves the line, whatever it holds, to next().
+  bool plainSegment(std::array<int32_t, 4>& values, int& lineNumber, int& column) {
+    const char* const lineStart = text_.data() + at_;
+    const char* const end = text_.data() + text_.size();
+    const char* p = lineStart;
+    auto blanks = [&] {
+      while (p < end && (*p == ' ' || *p == '\t')) ++p;
+    };
+    blanks();
+    const char* const first = p;
+    for (int32_t& v : values) {
+      if (&v != &values[0]) {
+        if (p == end || (*p != ' ' && *p != '\t')) return false;
+        blanks();
+      }
+      const bool negative = p < end && *p == '-';
+      if (p < end && (*p == '-' || *p == '+')) ++p;
+      const char* const digits = p;
+      int64_t value = 0;
+      for (unsigned d; p < end && p - digits < 10 && (d = static_cast<unsigned>(*p - '0')) < 10; ++p) value = value * 10 + d;
+      if (p == digits || (p < end && kValueByte[static_cast<unsigned char>(*p)]) || value > (1 << 29)) return false;
+      v = static_cast<int32_t>(negative ? -value : value);
+    }
+    blanks();
+    if (p < end && *p == '\r' && p + 1 < end && p[1] == '\n') ++p;
+    if (p < end && *p != '\n') return false;
+    at_ = static_cast<size_t>(p - text_.data()) + 1;
+    lineNumber = ++number_;
+    column = static_cast<int>(first - lineStart) + 1;
+    return true;
+  }
+
+  // At most how many lines with values the text holds before its next line that starts with '%'
+  // (a face's segments, to reserve room for them at once; blank and comment lines count too).
+  size_t linesBeforeNextFace() const {
+    size_t count = 0;
+    const char* p = text_.data() + std::min(at_, text_.size());
+    const char* const end = text_.data() + text_.size();
+    while (p < end) {
+      const char* first = p;
+      while (first < end && (*first == ' ' || *first == '\t')) ++first;
+      if (first < end && *first == '%') break;
+      ++count;
+      const void* newline = std::memchr(p, '\n', static_cast<size_t>(end - p));
+      if (!newline) break;
+      p = static_cast<const char*>(newline) + 1;
+    }
+    return count;
+  }
+
  private:
   // A CR counts as a space, unless more of the line follows it: then it is a line end without
   // its LF (old Mac files, or a mix), and the file is refused rather than read as one long line.
-  void checkLineEnds(std::string_view line) const {
-    const size_t cr = line.find('\r');
-    if (cr == std::string_view::npos || line.find_first_not_of(" \t\r", cr) == std::string_view::npos) return;
-    throw StageError({file_, number_, static_cast<int>(cr) + 1},
+  // `rest` starts at the CR and runs to the end of the text.
+  void checkAfterCr(std::string_view rest, int column) const {
+    const size_t lineEnd = std::min(rest.find('\n'), rest.size());
+    if (rest.substr(0, lineEnd).find_first_not_of(" \t\r") == std::string_view::npos) return;
+    throw StageError({file_, number_, column},
                      "a CR (\\r) ends a line here without an LF: lines must end with LF or CR LF (CR-only line ends, "
                      "as old Mac files have, are not read)");
   }
@@ -187,6 +264,15 @@ class Parser {
 
   // Coordinates are whole units; a decimal is rounded to the nearest (halves away from zero).
   int32_t unit(const TextLine& line, const Token& t, const char* what) const {
+    // Most coordinates are plain integers: read those without a double.
+    const std::string_view text = t.text;
+    if (text.size() <= 10) {
+      const size_t first = !text.empty() && (text[0] == '-' || text[0] == '+') ? 1 : 0;
+      int64_t value = 0;
+      size_t k = first;
+      for (unsigned digit; k < text.size() && (digit = static_cast<unsigned>(text[k] - '0')) < 10; ++k) value = value * 10 + digit;
+      if (k == text.size() && k > first && value <= (1 << 29)) return static_cast<int32_t>(text[0] == '-' ? -value : value);
+    }
     return static_cast<int32_t>(std::lround(number(line, t, -(1 << 29), 1 << 29, what)));
   }
 
@@ -243,13 +329,25 @@ class Parser {
   }
 
   void faces(Level& level) {
-    while (const TextLine* next = reader_.next()) {
+    for (;;) {
+      std::array<int32_t, 4> v;
+      LevelLine plain;
+      if (!level.faces.empty() && reader_.plainSegment(v, plain.sourceLine, plain.sourceColumn)) {
+        plain.a = {v[0], v[1]};
+        plain.b = {v[2], v[3]};
+        if (plain.a == plain.b) fail(plain.sourceLine, plain.sourceColumn, "the segment has no length (both ends at one point)");
+        level.faces.back().lines.push_back(plain);
+        continue;
+      }
+      const TextLine* next = reader_.next();
+      if (!next) break;
       const TextLine& line = *next;
       if (line.tokens[0].text == "%") {
         if (level.solid && static_cast<int>(level.faces.size()) == faceCount(*level.solid))
           fail(line, line.tokens[0], std::string(solidName(*level.solid)) + " has " +
                                          std::to_string(faceCount(*level.solid)) + " faces; this '%' starts one more");
         level.faces.push_back(faceOptions(line));
+        level.faces.back().lines.reserve(reader_.linesBeforeNextFace());
         continue;
       }
       if (level.faces.empty())
