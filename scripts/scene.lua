@@ -295,9 +295,11 @@ end
 
 -- note: why the level's and mods' saved state did not cross (too large, say), or nil.
 function scene.restore(saved, note)
+  local newMessage = game.message  -- what the new version's build said, if anything, wins
   for _, key in ipairs(KEPT) do
     if saved.game[key] ~= nil then game[key] = saved.game[key] end
   end
+  if newMessage ~= "" then game.message = newMessage end
   if game.progression.onReload then game.progression.onReload(game) end
   game.restoredPlayer = restorePlayer(saved.player)
   if not game.restoredPlayer and saved.player then game.message = "reloaded: the player's place is gone, back to the start" end

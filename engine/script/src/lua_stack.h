@@ -116,6 +116,18 @@ inline std::optional<HandleBits> toHandle(lua_State* L, int index) {
   return HandleBits{static_cast<uint32_t>(bits % (1u << 24)), static_cast<uint32_t>(bits >> 24)};
 }
 
+// Platform handles are the negative numbers -(1 + index + 2^24 * generation), so that no number
+// is both an entity's and a platform's handle: passing one for the other is an error, never the
+// wrong object.
+inline double platformNumber(uint32_t index, uint32_t generation) { return -1.0 - handleNumber(index, generation); }
+
+inline std::optional<HandleBits> toPlatformHandle(lua_State* L, int index) {
+  const double value = lua_type(L, index) == LUA_TNUMBER ? lua_tonumber(L, index) : 1;
+  if (!(value <= -1) || value != std::floor(value) || value <= -9007199254740992.0) return std::nullopt;
+  const auto bits = static_cast<uint64_t>(-1.0 - value);
+  return HandleBits{static_cast<uint32_t>(bits % (1u << 24)), static_cast<uint32_t>(bits >> 24)};
+}
+
 inline HandleBits checkHandle(lua_State* L, int index, std::string_view what) {
   const std::optional<HandleBits> handle = toHandle(L, index);
   if (!handle) argError(L, index, std::string(what) + " handle");

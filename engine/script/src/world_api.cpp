@@ -39,8 +39,9 @@ EntityId checkEntity(lua_State* L, int index) {
 }
 
 physics::PlatformId checkPlatform(lua_State* L, int index) {
-  const lua::HandleBits bits = lua::checkHandle(L, index, "a platform");
-  return {bits.index, bits.generation};
+  const std::optional<lua::HandleBits> bits = lua::toPlatformHandle(L, index);
+  if (!bits) lua::argError(L, index, "a platform handle (from createPlatform)");
+  return {bits->index, bits->generation};
 }
 
 // The world's largest move per frame, and largest gravity per frame: 2^30 units (2^46 in Q16).
@@ -364,8 +365,8 @@ int createPlatform(lua_State* L) {
   std::vector<physics::PlatformLine> lines;
   for (size_t i = 0; i < xy.size(); i += 4) lines.push_back({{{xy[i], xy[i + 1]}, {xy[i + 2], xy[i + 3]}}, tag, kind});
   const physics::PlatformId id = worldOf(L).createPlatform(part, lines);
-  context.platforms.insert(lua::handleNumber(id.index, id.generation));
-  lua::pushHandle(L, id.index, id.generation);
+  context.platforms.insert(lua::platformNumber(id.index, id.generation));
+  lua_pushnumber(L, lua::platformNumber(id.index, id.generation));
   return 1;
 }
 
@@ -385,7 +386,7 @@ int platformOffset(lua_State* L) {
 int destroyPlatform(lua_State* L) {
   const physics::PlatformId id = checkPlatform(L, 1);
   worldOf(L).destroyPlatform(id);
-  contextOf(L).platforms.erase(lua::handleNumber(id.index, id.generation));
+  contextOf(L).platforms.erase(lua::platformNumber(id.index, id.generation));
   return 0;
 }
 

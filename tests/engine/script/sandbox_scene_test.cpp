@@ -527,6 +527,27 @@ TEST(Finding13, EntitiesAndPlatformsMadeFromLuaAreCapped) {
   EXPECT_NE(m.find("createPlatform: scripts have made 1000 platforms, the most they may"), std::string::npos) << m;
 }
 
+// An entity's handle and a platform's are never the same number (the audit moved a platform with
+// the player's handle): each kind of function refuses the other kind's handle.
+TEST(Handles, EntityAndPlatformHandlesNeverMix) {
+  Level level("handles_mix", "return { build = function(game)\n"
+                             "  local w = game.world\n"
+                             "  local p = w.createPlatform(0, { 100, 300, 400, 300 })\n"
+                             "  local e = w.createEntity { circle = 20 }\n"
+                             "  local ok1, e1 = pcall(w.setPlatformMotion, e, 1, 0)\n"
+                             "  local ok2, e2 = pcall(w.velocity, p)\n"
+                             "  local ok3 = pcall(w.setPlatformMotion, p, 1, 0)\n"
+                             "  game.message(tostring(p < 0) .. ' ' .. tostring(e >= 0) .. ' | ' .. tostring(e1) .. ' | ' .. tostring(e2) .. ' | ' .. tostring(ok3))\n"
+                             "end }\n");
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene live(level.scene, registry, false);
+  const std::string m = scriptsOf(live).status().message;
+  EXPECT_EQ(m.rfind("true true | ", 0), 0u) << m;
+  EXPECT_NE(m.find("argument 1: expected a platform handle (from createPlatform), got "), std::string::npos) << m;
+  EXPECT_NE(m.find("argument 1: expected an entity handle, got -"), std::string::npos) << m;
+  EXPECT_NE(m.find("| true"), std::string::npos) << m;
+}
+
 TEST(Finding14, MessagesAndDrawingAreCapped) {
   Level level("f14_caps", "return {\n"
                           "  tick = function(game, frame) game.message(string.rep('\\226\\128\\162', 100000)) end,\n"
