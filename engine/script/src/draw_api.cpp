@@ -1,6 +1,7 @@
 // platon.draw: what scripts ask the renderer to draw this frame. Without a renderer every call
-// returns at once and records nothing. Places: a face id (shapes in that face's units) or
+// checks its arguments and records nothing. Places: a face id (shapes in that face's units) or
 // "screen" (pixels from the top left). Colours: 0xRRGGBB, with an optional alpha 0..255.
+#include <cmath>
 #include <vector>
 
 #include "script_context.h"
@@ -8,9 +9,18 @@
 namespace platon::script {
 namespace {
 
+// Arguments are checked whether or not a renderer records the shape, so that a script's mistake
+// shows headless (in a scenario) as it would in the window.
 core::Place checkPlace(lua_State* L, int index) {
-  if (lua_type(L, index) == LUA_TSTRING && lua::checkString(L, index) == "screen") return core::Place::onScreen();
-  return core::Place::onFace(lua::checkUint32(L, index));
+  if (lua_type(L, index) == LUA_TSTRING) {
+    if (lua::checkString(L, index) == "screen") return core::Place::onScreen();
+  } else if (lua_type(L, index) == LUA_TNUMBER) {
+    const double v = lua_tonumber(L, index);
+    if (v >= 0 && v <= 4294967295.0 && v == static_cast<double>(static_cast<uint32_t>(v)) &&
+        contextOf(L).scene->world().findMapPart(static_cast<uint32_t>(v)))
+      return core::Place::onFace(static_cast<uint32_t>(v));
+  }
+  lua::argError(L, index, "a face id of this stage or \"screen\"");
 }
 
 core::Color checkColor(lua_State* L, int index) {
@@ -20,7 +30,19 @@ core::Color checkColor(lua_State* L, int index) {
           static_cast<uint8_t>(alpha)};
 }
 
-float checkFloat(lua_State* L, int index) { return static_cast<float>(lua::checkNumber(L, index)); }
+// Coordinates: finite, and within what a float holds well (2^30, the world's range).
+float checkFloat(lua_State* L, int index) {
+  const double v = lua::checkNumber(L, index);
+  if (!(std::fabs(v) <= 1073741824.0)) lua::argError(L, index, "a number within +-2^30");
+  return static_cast<float>(v);
+}
+
+// A radius, width or text height: more than 0.
+float checkSize(lua_State* L, int index) {
+  const double v = lua::checkNumber(L, index);
+  if (!(v > 0 && v <= 1073741824.0)) lua::argError(L, index, "a size above 0 (and at most 2^30)");
+  return static_cast<float>(v);
+}
 
 // A shape the frame's list had no room for (DrawList's limits): the first of a frame is an error
 // at the script's line, the rest are dropped quietly.
@@ -35,48 +57,67 @@ void dropped(lua_State* L) {
 
 // circle(place, x, y, radius, colour [, alpha])
 int circle(lua_State* L) {
+  const core::Place place = checkPlace(L, 1);
+  const core::Point2 centre{checkFloat(L, 2), checkFloat(L, 3)};
+  const float radius = checkSize(L, 4);
+  const core::Color colour = checkColor(L, 5);
   core::DrawList* out = contextOf(L).draw;
-  if (!out) return 0;
-  if (!out->circle(checkPlace(L, 1), {checkFloat(L, 2), checkFloat(L, 3)}, checkFloat(L, 4), checkColor(L, 5))) dropped(L);
+  if (out && !out->circle(place, centre, radius, colour)) dropped(L);
   return 0;
 }
 
 // line(place, x0, y0, x1, y1, width, colour [, alpha])
 int line(lua_State* L) {
+  const core::Place place = checkPlace(L, 1);
+  const core::Point2 a{checkFloat(L, 2), checkFloat(L, 3)}, b{checkFloat(L, 4), checkFloat(L, 5)};
+  const float width = checkSize(L, 6);
+  const core::Color colour = checkColor(L, 7);
   core::DrawList* out = contextOf(L).draw;
-  if (!out) return 0;
-  if (!out->line(checkPlace(L, 1), {checkFloat(L, 2), checkFloat(L, 3)}, {checkFloat(L, 4), checkFloat(L, 5)},
-                 checkFloat(L, 6), checkColor(L, 7)))
-    dropped(L);
+  if (out && !out->line(place, a, b, width, colour)) dropped(L);
   return 0;
 }
 
 // polygon(place, {x0, y0, x1, y1, ...}, colour [, alpha]): convex, counter-clockwise
 int polygon(lua_State* L) {
-  core::DrawList* out = contextOf(L).draw;
-  if (!out) return 0;
   const core::Place place = checkPlace(L, 1);
   lua::checkTable(L, 2);
   const size_t n = lua_objlen(L, 2);
-  if (n < 6 || n % 2 || n > 512) throw lua::ArgError("polygon: 3 to 256 points as {x0, y0, x1, y1, ...}");
+  if (n < 6 || n % 2 || n > 512) throw lua::ArgError("polygon: argument 2: 3 to 256 points as {x0, y0, x1, y1, ...}");
   std::vector<core::Point2> points;
   for (size_t i = 1; i <= n; i += 2) {
     lua_rawgeti(L, 2, static_cast<int>(i));
     lua_rawgeti(L, 2, static_cast<int>(i + 1));
-    points.push_back({checkFloat(L, -2), checkFloat(L, -1)});
+    const double x = lua_tonumber(L, -2), y = lua_tonumber(L, -1);
+    if (lua_type(L, -2) != LUA_TNUMBER || lua_type(L, -1) != LUA_TNUMBER || !(std::fabs(x) <= 1073741824.0) ||
+        !(std::fabs(y) <= 1073741824.0))
+      throw lua::ArgError("polygon: argument 2: point " + std::to_string(i / 2 + 1) + " is not two numbers within +-2^30");
+    points.push_back({static_cast<float>(x), static_cast<float>(y)});
     lua_pop(L, 2);
   }
-  if (!out->polygon(place, points, checkColor(L, 3))) dropped(L);
+  // Convex and counter-clockwise: every turn to the left (or straight).
+  for (size_t i = 0; i < points.size(); ++i) {
+    const core::Point2 a = points[i], b = points[(i + 1) % points.size()], c = points[(i + 2) % points.size()];
+    const double turn = (double(b.x) - a.x) * (double(c.y) - b.y) - (double(b.y) - a.y) * (double(c.x) - b.x);
+    if (turn < 0)
+      throw lua::ArgError("polygon: argument 2: the points must go counter-clockwise round a convex shape (it turns right at point " +
+                          std::to_string((i + 1) % points.size() + 1) + ")");
+  }
+  const core::Color colour = checkColor(L, 3);
+  core::DrawList* out = contextOf(L).draw;
+  if (out && !out->polygon(place, points, colour)) dropped(L);
   return 0;
 }
 
 // text(place, x, y, text, height, colour [, alpha])
 int text(lua_State* L) {
-  core::DrawList* out = contextOf(L).draw;
-  if (!out) return 0;
+  const core::Place place = checkPlace(L, 1);
+  const core::Point2 at{checkFloat(L, 2), checkFloat(L, 3)};
   const std::string_view s = lua::checkString(L, 4);
   if (s.size() > 4096) throw lua::ArgError("text: at most 4096 bytes");
-  if (!out->text(checkPlace(L, 1), {checkFloat(L, 2), checkFloat(L, 3)}, s, checkFloat(L, 5), checkColor(L, 6))) dropped(L);
+  const float height = checkSize(L, 5);
+  const core::Color colour = checkColor(L, 6);
+  core::DrawList* out = contextOf(L).draw;
+  if (out && !out->text(place, at, s, height, colour)) dropped(L);
   return 0;
 }
 

@@ -7,6 +7,8 @@
 #include <lua.hpp>
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <cstdint>
 #include <optional>
 #include <stdexcept>
@@ -26,9 +28,32 @@ class ArgError : public std::runtime_error {
 
 inline std::string typeName(lua_State* L, int index) { return luaL_typename(L, index); }
 
+// The value at `index` as an error message shows it: a number in the shortest form that reads
+// back the same (no 300 digits for 1e300), a string quoted and cut to 40 bytes, else its type.
+inline std::string shownValue(lua_State* L, int index) {
+  if (lua_type(L, index) == LUA_TNUMBER) {
+    const double v = lua_tonumber(L, index);
+    if (std::isnan(v)) return "nan";
+    char text[32];
+    for (int digits = 6; digits <= 17; ++digits) {
+      std::snprintf(text, sizeof text, "%.*g", digits, v);
+      if (std::strtod(text, nullptr) == v) break;
+    }
+    return text;
+  }
+  if (lua_type(L, index) == LUA_TSTRING) {
+    size_t length = 0;
+    const char* s = lua_tolstring(L, index, &length);
+    std::string out = "\"";
+    for (size_t i = 0; i < length && i < 40; ++i)
+      out += static_cast<unsigned char>(s[i]) >= 0x20 && s[i] != '"' && s[i] != '\\' ? std::string(1, s[i]) : "?";
+    return out + (length > 40 ? "...\"" : "\"");
+  }
+  return typeName(L, index);
+}
+
 [[noreturn]] inline void argError(lua_State* L, int index, std::string_view expected) {
-  throw ArgError("argument " + std::to_string(index) + ": expected " + std::string(expected) + ", got " +
-                 (lua_type(L, index) == LUA_TNUMBER ? std::to_string(lua_tonumber(L, index)) : typeName(L, index)));
+  throw ArgError("argument " + std::to_string(index) + ": expected " + std::string(expected) + ", got " + shownValue(L, index));
 }
 
 inline double checkNumber(lua_State* L, int index) {

@@ -112,8 +112,7 @@ std::optional<int64_t> integerField(lua_State* L, int table, const char* functio
   const double value = lua_type(L, -1) == LUA_TNUMBER ? lua_tonumber(L, -1) : 0.5;
   if (value != std::floor(value) || value < static_cast<double>(low) || value > static_cast<double>(high))
     throw lua::ArgError(std::string(function) + ": " + key + ": expected an integer in [" + std::to_string(low) + ", " +
-                        std::to_string(high) + "], got " +
-                        (lua_type(L, -1) == LUA_TNUMBER ? std::to_string(lua_tonumber(L, -1)) : lua::typeName(L, -1)));
+                        std::to_string(high) + "], got " + lua::shownValue(L, -1));
   lua_pop(L, 1);
   return static_cast<int64_t>(value);
 }

@@ -170,8 +170,22 @@ local out = ffi.new("double[8]")
 local type, error, tostring = type, error, tostring
 local KINDS = { [0] = "solid", "warp", "oneway", "entity" }
 
+-- As lua::shownValue shows a value (the classic path's messages): a number in the shortest form
+-- that reads back the same, a string quoted and cut to 40 bytes, else its type.
 local function got(v)
-  if type(v) == "number" then return string.format("%f", v) end
+  if type(v) == "number" then
+    if v ~= v then return "nan" end
+    local s
+    for digits = 6, 17 do
+      s = string.format("%." .. digits .. "g", v)
+      if tonumber(s) == v then break end
+    end
+    return s
+  end
+  if type(v) == "string" then
+    local shown = v:sub(1, 40):gsub('[%z\1-\31"\\]', "?")
+    return '"' .. shown .. (#v > 40 and '..."' or '"')
+  end
   return type(v)
 end
 
@@ -187,7 +201,7 @@ local function fail(status, what, v, v2, v3)
 end
 
 local function number(v, i, what)
-  if type(v) ~= "number" then error("argument " .. i .. ": expected " .. what .. ", got " .. type(v), 3) end
+  if type(v) ~= "number" then error("argument " .. i .. ": expected " .. what .. ", got " .. got(v), 3) end
 end
 
 function world.position(e)

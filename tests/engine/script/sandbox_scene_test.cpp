@@ -548,6 +548,38 @@ TEST(Handles, EntityAndPlatformHandlesNeverMix) {
   EXPECT_NE(m.find("| true"), std::string::npos) << m;
 }
 
+// The draw API checks its arguments with or without a renderer, so a script's mistake shows in a
+// headless scenario as in the window (headless it returned before looking at them).
+TEST(DrawApi, BadArgumentsAreErrorsHeadlessToo) {
+  // One call a frame, its error (or "ok") the frame's message.
+  Level level("draw_args", "local calls = {\n"
+                           "  function(d) d.circle(999, 0, 0, 10, 0xffffff) end,\n"
+                           "  function(d) d.circle('Screen', 0, 0, 10, 0xffffff) end,\n"
+                           "  function(d) d.circle(0, 0, 0, -5, 0xffffff) end,\n"
+                           "  function(d) d.line(0, 0, 0, 1e300, 0, 2, 0xffffff) end,\n"
+                           "  function(d) d.text('screen', 0, 0, 'hi', 0, 0xffffff) end,\n"
+                           "  function(d) d.polygon(0, { 0, 0, 100, 100, 100, 0 }, 0xffffff) end,\n"
+                           "  function(d) d.polygon(0, { 0, 0, 100, 0, 100, 100 }, 0xffffff) end }\n"
+                           "return { tick = function(game, frame)\n"
+                           "  local ok, e = pcall(calls[frame], platon.draw)\n"
+                           "  game.message(ok and 'ok' or e)\n"
+                           "end }\n");
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene live(level.scene, registry, false);
+  const std::vector<std::string> expected = {
+      "level.lua:2: argument 1: expected a face id of this stage or \"screen\", got 999",
+      "level.lua:3: argument 1: expected a face id of this stage or \"screen\", got \"Screen\"",
+      "level.lua:4: argument 4: expected a size above 0 (and at most 2^30), got -5",
+      "level.lua:5: argument 4: expected a number within +-2^30, got 1e+300",
+      "level.lua:6: argument 5: expected a size above 0 (and at most 2^30), got 0",
+      "level.lua:7: polygon: argument 2: the points must go counter-clockwise round a convex shape",
+      "ok"};
+  for (const std::string& e : expected) {
+    const Played p = play(live, 1);
+    EXPECT_NE(p.status.message.find(e), std::string::npos) << "expected: " << e << "\ngot: " << p.status.message;
+  }
+}
+
 TEST(Finding14, MessagesAndDrawingAreCapped) {
   Level level("f14_caps", "return {\n"
                           "  tick = function(game, frame) game.message(string.rep('\\226\\128\\162', 100000)) end,\n"
@@ -663,10 +695,10 @@ TEST(Finding19, ErrorsNameTheSandboxedFileAndLine) {
       // LuaJIT gives no place after an overflow in a metamethod: the file is named.
       {"local t = setmetatable({}, {__index = function(t, k) return t[k] end}) local _ = t.x",
        "level.lua: stack overflow (a function or metamethod that calls itself without end?)"},
-      {"game.world.setVelocity(game.player(), 0, 2^45)", "level.lua:1: argument 3: expected a velocity within +-2^30 units per frame, got 35184372088832.000000"},
-      {"game.world.setFilter(game.player(), { category = 2^32 })", "level.lua:1: setFilter: category: expected an integer in [0, 4294967295], got 4294967296.000000"},
+      {"game.world.setVelocity(game.player(), 0, 2^45)", "level.lua:1: argument 3: expected a velocity within +-2^30 units per frame, got 35184372088832"},
+      {"game.world.setFilter(game.player(), { category = 2^32 })", "level.lua:1: setFilter: category: expected an integer in [0, 4294967295], got 4294967296"},
       {"game.world.createEntity { polygon = { 0, 0, 10, 0, 'x' } }", "level.lua:1: createEntity: polygon: item 5 is not an integer coordinate"},
-      {"game.world.createEntity { circle = 0.5 }", "level.lua:1: createEntity: circle: expected an integer in [1, 268435456], got 0.500000"},
+      {"game.world.createEntity { circle = 0.5 }", "level.lua:1: createEntity: circle: expected an integer in [1, 268435456], got 0.5"},
       {"local ok = pcall(string.rep, 'x', 1e9) local t = nil return t.field", "level.lua:1: script stopped: the sandboxes reached their memory limit"},
   };
   for (const Case& c : cases) {
@@ -695,7 +727,7 @@ TEST(Finding19, TheVelocityRangeIsTheWorldsOnBothPaths) {
     const Played p = play(live, 3, 0);
     ASSERT_EQ(p.errors.size(), 1u) << (ffi ? "FFI" : "classic") << "\n" << joined(p.errors);
     EXPECT_NE(p.errors[0].find("frame 3: " + level.folder.path("level.lua") +
-                               ":5: argument 2: expected a velocity within +-2^30 units per frame, got 1073741825.000000"),
+                               ":5: argument 2: expected a velocity within +-2^30 units per frame, got 1073741825"),
               std::string::npos)
         << p.errors[0];
   }
