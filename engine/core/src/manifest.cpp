@@ -4,6 +4,7 @@
 #include <stdlib.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -55,10 +56,9 @@ class DataReader {
     for (;;) {
       while (pos_ < text_.size() && std::isspace(static_cast<unsigned char>(peek()))) advance();
       if (text_.substr(pos_, 2) == "--") {
-        if (text_.substr(pos_, 4) == "--[[") {
-          const size_t end = text_.find("]]", pos_);
-          if (end == std::string_view::npos) fail("unfinished --[[ comment");
-          while (pos_ < end + 2) advance();
+        advance(), advance();
+        if (longBracketLevel() >= 0) {
+          (void)longBracket("comment");
         } else {
           while (pos_ < text_.size() && peek() != '\n') advance();
         }
@@ -67,6 +67,32 @@ class DataReader {
       return;
     }
   }
+  // At a Lua long bracket, [[ or [=[ or [==[ ...: its level (the number of '='), else -1.
+  int longBracketLevel() const {
+    if (peek() != '[') return -1;
+    size_t i = pos_ + 1;
+    while (i < text_.size() && text_[i] == '=') ++i;
+    return i < text_.size() && text_[i] == '[' ? static_cast<int>(i - pos_ - 1) : -1;
+  }
+  // A long-bracket string or comment's text, from its opening to the matching ]=*] (a newline
+  // right after the opening is dropped, as Lua does).
+  std::string longBracket(const char* what) {
+    const int level = longBracketLevel();
+    const std::string close = "]" + std::string(static_cast<size_t>(level), '=') + "]";
+    const int openLine = line_, openColumn = column_;
+    for (int i = 0; i < level + 2; ++i) advance();
+    if (peek() == '\r') advance();
+    if (peek() == '\n') advance();
+    const size_t end = text_.find(close, pos_);
+    if (end == std::string_view::npos) {
+      line_ = openLine, column_ = openColumn;
+      fail(std::string("unfinished long ") + what + " (no " + close + ")");
+    }
+    std::string out(text_.substr(pos_, end - pos_));
+    while (pos_ < end + close.size()) advance();
+    return out;
+  }
+
   std::string_view word() {
     size_t end = pos_;
     while (end < text_.size() && (std::isalnum(static_cast<unsigned char>(text_[end])) || text_[end] == '_')) ++end;
@@ -87,6 +113,8 @@ class DataReader {
       v.value = table(depth);
     } else if (c == '"' || c == '\'') {
       v.value = quoted();
+    } else if (longBracketLevel() >= 0) {
+      v.value = longBracket("string");
     } else if (c == '-' || c == '.' || std::isdigit(static_cast<unsigned char>(c))) {
       v.value = number();
     } else {
@@ -217,14 +245,27 @@ std::string stringField(const std::string& file, const DataValue& table, const c
   return *v->string();
 }
 
+std::string shown(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.15g", v);
+  return text;
+}
+
 double numberField(const std::string& file, const DataValue& table, const char* key, double fallback, double low,
                    double high) {
   const DataValue* v = table.field(key);
   if (!v) return fallback;
   if (!v->number()) fieldError(file, *v, std::string("'") + key + "' must be a number");
   if (*v->number() < low || *v->number() > high)
-    fieldError(file, *v, std::string("'") + key + "' must be within [" + std::to_string(low) + ", " + std::to_string(high) + "]");
+    fieldError(file, *v, std::string("'") + key + "' must be within [" + shown(low) + ", " + shown(high) + "], not " + shown(*v->number()));
   return *v->number();
+}
+
+// A whole number within [low, high] (an edge, a seed, a limit: 4096.7 is a mistake, not 4096).
+double wholeField(const std::string& file, const DataValue& table, const char* key, double fallback, double low, double high) {
+  const double v = numberField(file, table, key, fallback, low, high);
+  if (v != std::floor(v)) fieldError(file, *table.field(key), std::string("'") + key + "' must be a whole number, not " + shown(v));
+  return v;
 }
 
 void checkKeys(const std::string& file, const DataValue& table, std::initializer_list<const char*> known) {
@@ -308,10 +349,10 @@ SceneManifest loadManifest(const std::string& path) {
     if (!solidOfManifest(m.solid))
       fieldError(path, *stage->field("solid"),
                  "unknown solid '" + m.solid + "' (known: tetrahedron, cube, octahedron, dodecahedron, icosahedron)");
-    m.edge = static_cast<int32_t>(numberField(path, *stage, "edge", m.edge, 64, 1 << 24));
+    m.edge = static_cast<int32_t>(wholeField(path, *stage, "edge", m.edge, 64, 1 << 24));
   }
   m.gravity = numberField(path, root, "gravity", m.gravity, 0, 1000);
-  m.seed = static_cast<uint32_t>(numberField(path, root, "seed", m.seed, 0, 4294967295.0));
+  m.seed = static_cast<uint32_t>(wholeField(path, root, "seed", m.seed, 0, 4294967295.0));
   if (const DataValue* scripts = root.field("scripts")) {
     if (!scripts->table()) fieldError(path, *scripts, "'scripts' must be a table");
     checkKeys(path, *scripts, {"preset", "rules", "player", "progression", "level", "mods"});
@@ -344,11 +385,14 @@ SceneManifest loadManifest(const std::string& path) {
     m.level = script("level", m.levelTrusted);
     if (const DataValue* mods = scripts->field("mods")) {
       if (!mods->table()) fieldError(path, *mods, "'mods' must be a list of paths");
+      int index = 0;
       for (const auto& [key, v] : *mods->table()) {
-        if (!v.string() || v.string()->empty() || v.string()->find("..") != std::string::npos ||
-            v.string()->rfind("scripts/", 0) == 0 || (*v.string())[0] == '/')
-          fieldError(path, v, "a mod is a .lua path inside the level's folder");
-        m.mods.push_back(insideFolder(path, m.directory, v, *v.string()));
+        if (key != std::to_string(++index)) fieldError(path, v, "'mods' must be a list of paths ({ \"a.lua\", \"b.lua\" }), not keyed");
+        const std::string* p = v.string();
+        if (!p || p->size() < 5 || p->substr(p->size() - 4) != ".lua" || p->find("..") != std::string::npos ||
+            p->rfind("scripts/", 0) == 0 || (*p)[0] == '/')
+          fieldError(path, v, "a mod is a .lua path inside the level's folder (no '..', not absolute, not under scripts/)");
+        m.mods.push_back(insideFolder(path, m.directory, v, *p));
       }
     }
     if (!m.rules.empty() || !m.player.empty() || !m.progression.empty() || !m.level.empty() || !m.mods.empty())
@@ -358,7 +402,7 @@ SceneManifest loadManifest(const std::string& path) {
   if (const DataValue* limits = root.field("limits")) {
     if (!limits->table()) fieldError(path, *limits, "'limits' must be a table {memory_mb =, call_ms =}");
     checkKeys(path, *limits, {"memory_mb", "call_ms"});
-    m.memoryMegabytes = static_cast<size_t>(numberField(path, *limits, "memory_mb", 128, 4, 4096));
+    m.memoryMegabytes = static_cast<size_t>(wholeField(path, *limits, "memory_mb", 128, 4, 4096));
     m.callMilliseconds = numberField(path, *limits, "call_ms", 250, 1, 60000);
   }
   return m;

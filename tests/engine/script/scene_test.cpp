@@ -49,6 +49,28 @@ TEST(Manifest, ErrorsNameFileLineColumn) {
   EXPECT_EQ(manifestError("return { name = 'unfinished }"), "scene.lua:1:30: unfinished string");
 }
 
+// The audit's gaps: fractions where whole numbers are meant, mods that are not .lua paths in a
+// list, ranges shown with six zeros; and Lua's long brackets, which a table literal may use.
+TEST(Manifest, WholeNumbersModsAndLongBrackets) {
+  EXPECT_EQ(manifestError("return { stage = { solid = 'cube', edge = 4096.7 } }"),
+            "scene.lua:1:43: 'edge' must be a whole number, not 4096.7");
+  EXPECT_EQ(manifestError("return { seed = 1.5 }"), "scene.lua:1:17: 'seed' must be a whole number, not 1.5");
+  EXPECT_EQ(manifestError("return { gravity = -1 }"), "scene.lua:1:20: 'gravity' must be within [0, 1000], not -1");
+  const std::string mod = "return { systems = { 'scripting' }, scripts = { mods = { ";
+  EXPECT_EQ(manifestError(mod + "'/etc/passwd' } } }"),
+            "scene.lua:1:58: a mod is a .lua path inside the level's folder (no '..', not absolute, not under scripts/)");
+  EXPECT_EQ(manifestError(mod + "'cube_intro.level' } } }").substr(0, 60), "scene.lua:1:58: a mod is a .lua path inside the level's fold");
+  EXPECT_EQ(manifestError(mod + "'' } } }").substr(0, 60), "scene.lua:1:58: a mod is a .lua path inside the level's fold");
+  EXPECT_EQ(manifestError(mod + "a = 'level.lua' } } }"),
+            "scene.lua:1:62: 'mods' must be a list of paths ({ \"a.lua\", \"b.lua\" }), not keyed");
+  Folder folder("manifest_long");
+  const core::SceneManifest m = core::loadManifest(folder.write(
+      "scene.lua", "--[==[ a long comment\n with ]] inside ]==]\nreturn { name = [[Two\nlines]], --[[ short ]] seed = 3 }\n"));
+  EXPECT_EQ(m.name, "Two\nlines");
+  EXPECT_EQ(m.seed, 3u);
+  EXPECT_EQ(manifestError("return { name = [==[ never closed ] }").substr(0, 56), "scene.lua:1:17: unfinished long string (no ]==])");
+}
+
 TEST(Manifest, AcceptsCommentsAndListsSystems) {
   Folder folder("manifest_ok");
   const std::string path = folder.write("scene.lua",
