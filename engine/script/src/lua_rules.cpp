@@ -72,6 +72,13 @@ LuaRules::LuaRules(LuaHost& host, int index, Call how, int sandbox) : host_(host
     lua_rawget(L, index);
     if (!lua_isfunction(L, -1) && !lua_isnil(L, -1))
       throw ScriptError(std::string("rules: '") + kNames[i] + "' is a " + luaL_typename(L, -1) + ", not a function", "");
+    if (lua_isfunction(L, -1)) {
+      // Where the callback is written, for errors about what it returns (file:line of its start).
+      lua_Debug ar;
+      lua_pushvalue(L, -1);
+      if (lua_getinfo(L, ">S", &ar) && ar.source[0] == '@' && ar.linedefined > 0)
+        places_[i] = std::string(ar.source + 1) + ":" + std::to_string(ar.linedefined) + ": ";
+    }
     lua_pop(L, 1);
   }
   const char* kinds[] = {"solid", "warp", "oneway", "entity"};
@@ -153,7 +160,9 @@ inline int LuaRules::pushNormal(const physics::Vec2w& normal) {
 }
 
 void LuaRules::fail(const std::string& message) {
-  ScriptError error(sandbox_ == kNoSandbox ? message : host_.sandboxName(sandbox_) + ": " + message, "");
+  // A message that does not say where yet (file:line of the callback) gets the script's name.
+  const bool placed = message.rfind("rules:", 0) != 0;
+  ScriptError error(sandbox_ == kNoSandbox || placed ? message : host_.sandboxName(sandbox_) + ": " + message, "");
   if (sandbox_ == kNoSandbox) throw error;
   host_.keepError(std::move(error));
 }
@@ -211,7 +220,7 @@ void LuaRules::contact(const physics::Contact& c, physics::ContactResponse& resp
   }
   if (type != LUA_TTABLE) {
     lua_pop(L, 1);
-    fail("rules: contact() returned a " + std::string(lua_typename(L, type)) +
+    fail(places_[kContact] + "rules: contact() returned a " + std::string(lua_typename(L, type)) +
          "; return nothing, false, or {slide =, keepVelocity =, restitution =}");
     return;
   }
@@ -228,7 +237,7 @@ void LuaRules::contact(const physics::Contact& c, physics::ContactResponse& resp
     const double r = lua_tonumber(L, -1);
     if (lua_type(L, -1) != LUA_TNUMBER || !(r >= 0 && r <= 1)) {
       lua_pop(L, 4);
-      fail("rules: contact() returned restitution outside [0, 1]");
+      fail(places_[kContact] + "rules: contact() returned restitution outside [0, 1]");
       return;
     }
     response.restitution = {std::llround(r * 65536), 65536};

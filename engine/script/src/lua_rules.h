@@ -22,6 +22,7 @@
 #pragma once
 #include <array>
 #include <memory>
+#include <string>
 
 #include "lua_host.h"
 #include "platon/physics/rules.h"
@@ -50,6 +51,7 @@ class LuaRules final : public physics::Rules {
 
  private:
   enum Callback { kPierce, kBegin, kOver, kEnd, kContact, kTouch, kCrushed, kCount };
+  std::string places_[kCount];  // "file:line: " where each callback is written, or empty
   void event(Callback which, const physics::Contact& c);
   // Classic: pushes entity, tag, kind, part, line (5 values). FFI: writes them into the slot, pushes
   // nothing. Returns the number of values pushed.

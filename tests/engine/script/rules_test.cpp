@@ -3,6 +3,8 @@
 // (entity or line, world bound, other entity or none, any normal) through every callback.
 #include <gtest/gtest.h>
 
+#include <utility>
+
 #include <string>
 
 #include "lua_host.h"
@@ -134,6 +136,32 @@ TEST_P(RulesBothWays, AnErrorInACallbackCarriesFileLineAndTraceback) {
     EXPECT_NE(e.traceback().find("levels/demo/rules.lua:2"), std::string::npos) << e.traceback();
   }
   EXPECT_EQ(lua_gettop(host.state()), 1);  // the traceback handler only
+}
+
+// What contact() returns is checked, and the error names where the callback is written (it named
+// no line before: "rules: contact() returned a string").
+TEST_P(RulesBothWays, AWrongResponseNamesTheCallbacksFileAndLine) {
+  LuaRules rules = load("local rules = {}\n"
+                        "function rules.contact(e, tag)\n"
+                        "  if tag == 1 then return 'slide' end\n"
+                        "  return { restitution = 2 }\n"
+                        "end\n"
+                        "return rules\n",
+                        "@levels/demo/rules.lua", Trust::Trusted);
+  physics::Contact c{};
+  c.entity = {1, 0};
+  physics::ContactResponse response;
+  for (const auto& [tag, message] : {std::pair{1u, "levels/demo/rules.lua:2: rules: contact() returned a string; return nothing, "
+                                                    "false, or {slide =, keepVelocity =, restitution =}"},
+                                     std::pair{0u, "levels/demo/rules.lua:2: rules: contact() returned restitution outside [0, 1]"}}) {
+    c.line.tag = tag;
+    try {
+      rules.contact(c, response);
+      ADD_FAILURE() << "no error for tag " << tag;
+    } catch (const ScriptError& e) {
+      EXPECT_EQ(std::string(e.what()), message);
+    }
+  }
 }
 
 // A sandboxed script's response table is read raw: its metamethods never run outside a sandboxed
