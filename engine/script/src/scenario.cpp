@@ -14,6 +14,7 @@
 
 #include "lua_host.h"
 #include "platon/core/input.h"
+#include "platon/core/live_scene.h"
 #include "platon/script/script_system.h"
 
 namespace platon::script {
@@ -390,6 +391,8 @@ struct Plan {
   std::map<uint64_t, std::string> faceWhere;  // file:line:column: expect.face[f], for the face id check
   std::vector<Box> inside;
   std::map<uint64_t, std::string> hashAt;
+  std::optional<uint64_t> sceneFilesHash;  // a replay's record of the scene's files
+  std::string passNote;                    // added to a passing run's summary
 
   uint64_t lastCheck() const {
     uint64_t last = 0;
@@ -615,8 +618,9 @@ std::string hex(uint64_t value) {
 
 
 // The checks of frame f; "" when they pass.
+// `filesNote`: said before a hash mismatch ("" or why the recorded hashes may no longer hold).
 std::string checkFrame(const Plan& plan, uint64_t f, core::Scene& scene, ScriptSystem* scripts, uint64_t traceEvery,
-                       const std::string& path) {
+                       const std::string& path, const std::string& filesNote) {
   const std::string at = "frame " + std::to_string(f) + ": ";
   if (traceEvery > 0 && scripts && f % traceEvery == 0) {
     const GameStatus s = scripts->status();
@@ -626,7 +630,7 @@ std::string checkFrame(const Plan& plan, uint64_t f, core::Scene& scene, ScriptS
   if (const size_t overlaps = scene.world().countOverlaps(); overlaps != 0)
     return at + std::to_string(overlaps) + " instance(s) overlap a solid line";
   if (auto h = plan.hashAt.find(f); h != plan.hashAt.end() && hex(scene.world().stateHash()) != h->second)
-    return at + "state hash " + hex(scene.world().stateHash()) + ", expected " + h->second;
+    return filesNote + at + "state hash " + hex(scene.world().stateHash()) + ", expected " + h->second;
   if (!scripts) return "";
   if (auto face = plan.faceAt.find(f); face != plan.faceAt.end()) {
     const GameStatus s = scripts->status();
@@ -651,7 +655,9 @@ namespace {
 ScenarioResult runPlan(const std::string& path, const std::function<Plan()>& makePlan, const RunOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   ScenarioResult result;
+  std::string passNote;
   auto finish = [&](bool passed, std::string message) {
+    if (passed) message += passNote;
     result.passed = passed;
     result.message = std::move(message);
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -663,24 +669,30 @@ ScenarioResult runPlan(const std::string& path, const std::function<Plan()>& mak
   };
   try {
     const Plan plan = makePlan();
+    passNote = plan.passNote;
     core::SystemRegistry registry;
     registry.add("scripting", makeScriptSystem);
     registry.addPlugin("meshes", "platon_meshes", options.pluginFolders);
     std::unique_ptr<core::Scene> scene = core::loadScene(plan.scene, registry);
     checkFaces(plan, *scene);
+    const uint64_t filesHash = core::sceneFilesHash(core::sceneSourceFiles(*scene));
+    const std::string filesNote = plan.sceneFilesHash && *plan.sceneFilesHash != filesHash
+                                      ? "the scene's files changed since the recording (files " + hex(filesHash) +
+                                            ", recorded with " + hex(*plan.sceneFilesHash) + "): "
+                                      : "";
     ScriptSystem* scripts = nullptr;
     for (size_t i = 0; i < scene->systemCount(); ++i)
       if (auto* s = dynamic_cast<ScriptSystem*>(&scene->system(i))) scripts = s;
     if ((plan.goalBy || plan.deaths || !plan.faceAt.empty() || !plan.inside.empty()) && !scripts)
       return finish(false, "the scene has no scripts, so no player to check");
-    if (options.record) recorder.emplace(plan.scene, options.hashEvery);
+    if (options.record) recorder.emplace(plan.scene, options.hashEvery, filesHash);
     core::InputEdges edges;
     std::string failure;
     for (uint64_t f = 1; f <= plan.frames && failure.empty(); ++f) {
       scene->step(edges.next(plan.held[f]));
       result.frames = f;
       if (recorder) recorder->frame(plan.held[f], scene->world().stateHash());
-      failure = checkFrame(plan, f, *scene, scripts, options.traceEvery, path);
+      failure = checkFrame(plan, f, *scene, scripts, options.traceEvery, path, filesNote);
       // With the goal reached there is nothing left to see, unless a check waits for a later frame.
       if (failure.empty() && plan.goalBy && f >= plan.lastCheck() && scripts && scripts->status().won) break;
     }
@@ -724,6 +736,8 @@ ScenarioResult runReplay(const std::string& path, const RunOptions& options) {
     plan.held.assign(1, 0);
     plan.held.insert(plan.held.end(), replay.held.begin(), replay.held.end());
     for (const core::ReplayHash& h : replay.hashes) plan.hashAt[h.frame] = hex(h.hash);
+    plan.sceneFilesHash = replay.sceneFiles;
+    if (replay.hashes.empty()) plan.passNote = " (the replay has no hashes: its input ran, nothing was compared)";
     return plan;
   }, options);
 }

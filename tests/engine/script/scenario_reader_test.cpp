@@ -1,11 +1,13 @@
 // Reading scenario files: every malformed scenario is refused, before anything runs, with the
 // scenario's file:line:column, what the value's path is (expect.face[50]) and what was wrong; a
-// scenario that computes its values in Lua still reads, with the line of its return.
+// scenario that computes its values in Lua still reads, with the line of its return. Replays say
+// when the scene's files changed since the recording.
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <sstream>
 
+#include "platon/core/replay.h"
 #include "platon/script/scenario.h"
 #include "platon/testing/temp_folder.h"
 
@@ -157,6 +159,61 @@ TEST(ScenarioReader, LiteralsComputedScenariosAndCommentsReadTheSame) {
   // Every escape Lua knows reads the same in a literal, \ddd included.
   const ScenarioResult escaped = runScenario(folder.write("c.lua", "return { scene = \"" + kScene + "\\116\", frames = 1 }\n"));
   EXPECT_NE(escaped.message.find(kScene + "t: cannot open the manifest"), std::string::npos) << escaped.message;
+}
+
+// D4: a replay records a hash of its scene's files, and says when they changed.
+TEST(ScenarioReplay, AChangedSceneIsNamedBeforeTheFirstHashMismatch) {
+  Folder folder("replay_scene_files");
+  const std::string source = std::string(PLATON_SOURCE_ROOT) + "/levels/cube_intro/";
+  auto copy = [&](const std::string& name) {
+    std::ifstream in(source + name, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    return folder.write(name, text.str());
+  };
+  const std::string scene = copy("scene.lua");
+  const std::string level = copy("cube_intro.level");
+  copy("level.lua");
+  RunOptions record;
+  record.record = true;
+  const ScenarioResult walk = runScenario(folder.write(
+      "walk.lua", "return { scene = '" + scene + "', frames = 120, input = { { hold = 'right', from = 1, to = 120 } } }"), record);
+  ASSERT_TRUE(walk.passed) << walk.message;
+  ASSERT_TRUE(walk.recorded && walk.recorded->sceneFiles.has_value());
+  const std::string replay = folder.path("walk.replay");
+  core::writeReplay(*walk.recorded, replay);
+  core::Replay old = *walk.recorded;
+  old.sceneFiles.reset();
+  const std::string oldReplay = folder.path("old.replay");
+  core::writeReplay(old, oldReplay);
+  EXPECT_TRUE(runReplay(replay).passed);
+
+  // The floor of face 0 moves down by 8 units: the player falls longer, from the first frames.
+  std::ifstream in(level, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string edited = text.str();
+  const size_t floor = edited.find("256 512 4096 512");
+  ASSERT_NE(floor, std::string::npos) << "cube_intro.level changed: pick another line to move";
+  folder.write("cube_intro.level", edited.replace(floor, 16, "256 504 4096 504"));
+  const ScenarioResult changed = runReplay(replay);
+  EXPECT_FALSE(changed.passed);
+  EXPECT_EQ(changed.message.find("the scene's files changed since the recording"), 0u) << changed.message;
+  EXPECT_NE(changed.message.find("state hash"), std::string::npos) << changed.message;
+  // A replay from before the line existed reads, and says only what it knows.
+  const ScenarioResult unknown = runReplay(oldReplay);
+  EXPECT_FALSE(unknown.passed);
+  EXPECT_EQ(unknown.message.find("the scene's files changed"), std::string::npos) << unknown.message;
+  EXPECT_NE(unknown.message.find("state hash"), std::string::npos) << unknown.message;
+}
+
+TEST(ScenarioReplay, AReplayWithoutHashesSaysItComparedNothing) {
+  Folder folder("replay_no_hashes");
+  const std::string file = folder.write(
+      "a.replay", "platon replay 1\nscene \"" + kScene + "\"\nframes 10\nhash_every 60\ninput\n10 right\nend\n");
+  const ScenarioResult r = runReplay(file);
+  EXPECT_TRUE(r.passed) << r.message;
+  EXPECT_NE(r.message.find("the replay has no hashes: its input ran, nothing was compared"), std::string::npos) << r.message;
 }
 
 }  // namespace
