@@ -1,7 +1,8 @@
 // Reading scenario files: every malformed scenario is refused, before anything runs, with the
 // scenario's file:line:column, what the value's path is (expect.face[50]) and what was wrong; a
 // scenario that computes its values in Lua still reads, with the line of its return. Replays say
-// when the scene's files changed since the recording.
+// when the scene's files changed since the recording, and `platon scenario` writes any scene path
+// so that it reads back as itself.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -214,6 +215,20 @@ TEST(ScenarioReplay, AReplayWithoutHashesSaysItComparedNothing) {
   const ScenarioResult r = runReplay(file);
   EXPECT_TRUE(r.passed) << r.message;
   EXPECT_NE(r.message.find("the replay has no hashes: its input ran, nothing was compared"), std::string::npos) << r.message;
+}
+
+// G: `platon scenario` writes the scene path so that it reads back as itself.
+TEST(ScenarioReplay, AScenarioFromAReplayQuotesItsScenePath) {
+  Folder folder("scenario_quoting");
+  core::Replay replay;
+  replay.scene = "odd\\path \"quoted\"\n\x01/scene.lua";
+  replay.held.assign(5, 0);
+  ScenarioResult outcome;
+  outcome.frames = 5;
+  const std::string text = scenarioFromReplay(replay, outcome, "a\nb.replay");
+  EXPECT_EQ(text.find("a\nb"), std::string::npos) << "the name broke out of the comment";
+  const ScenarioResult r = runScenario(folder.write("sc.lua", text));
+  EXPECT_NE(r.message.find(replay.scene + ": cannot open the manifest"), std::string::npos) << text << "\n" << r.message;
 }
 
 }  // namespace
