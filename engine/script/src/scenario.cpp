@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <map>
@@ -356,6 +357,8 @@ Datum runScenarioFile(const std::string& path, std::string_view text) {
 }
 
 Datum readScenarioFile(const std::string& path) {
+  if (std::error_code error; std::filesystem::is_directory(path, error))  // a folder opens as an empty file
+    throw ScriptError(path + ": a folder, not a scenario file", "");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw ScriptError(path + ": cannot open the scenario", "");
   std::stringstream buffer;

@@ -5,6 +5,7 @@
 // so that it reads back as itself.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -134,6 +135,14 @@ TEST(ScenarioReader, TopLevelFieldsAreChecked) {
     EXPECT_NE(r.message.find(c.error), std::string::npos) << c.text << "\n" << r.message;
     EXPECT_EQ(r.message.find("sc.lua:0"), std::string::npos) << r.message;
   }
+}
+
+TEST(ScenarioReader, AFolderOrAMissingFileIsNamedAsSuch) {
+  Folder folder("scenario_folder");
+  const std::string sub = folder.path("sub.lua");
+  std::filesystem::create_directories(sub);
+  EXPECT_EQ(runScenario(sub).message, sub + ": a folder, not a scenario file");
+  EXPECT_EQ(runScenario(folder.path("none.lua")).message, folder.path("none.lua") + ": cannot open the scenario");
 }
 
 TEST(ScenarioReader, AScenarioWithAMetatableIsReadRawAndRuns) {
