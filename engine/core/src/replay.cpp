@@ -54,7 +54,22 @@ class LineReader {
 
   int line() const { return line_; }
   [[noreturn]] void failAt(int line, int column, const std::string& reason) const {
-    throw std::runtime_error(file_ + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + reason);
+    throw std::runtime_error(file_ + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + visible(reason));
+  }
+  // The reason quotes the file's words: a control byte in them (a NUL would end what() there)
+  // is shown as \xNN.
+  static std::string visible(const std::string& text) {
+    std::string out;
+    for (const char c : text) {
+      if (static_cast<unsigned char>(c) < 0x20 && c != '\t') {
+        char escaped[8];
+        std::snprintf(escaped, sizeof escaped, "\\x%02x", static_cast<unsigned char>(c));
+        out += escaped;
+      } else {
+        out += c;
+      }
+    }
+    return out;
   }
   [[noreturn]] void fail(int column, const std::string& reason) const { failAt(line_, column, reason); }
   // An empty file has no line to name: its line 1 is where the missing text belongs.
@@ -124,7 +139,8 @@ void readHashes(LineReader& in, std::vector<Word>& w, Replay& r) {
   const uint64_t frames = r.frames();
   auto implies = [&](uint64_t frame) {
     return "hash_every " + std::to_string(r.hashEvery) + " implies a hash at frame " + std::to_string(frame) +
-           " (each multiple of hash_every and the last frame): the hashes are all there or none";
+           " (each multiple of hash_every and the last frame): the hashes are all there or none"
+           " (hash_every 0: the last frame's only)";
   };
   uint64_t expected = nextHashFrame(0, r.hashEvery, frames);
   while (in.next(w)) {

@@ -40,6 +40,21 @@ struct Datum {
   int line = 0, column = 0;
 };
 
+// A string as an error shows it: control bytes as \xNN (a NUL would end the message there).
+std::string visible(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    if (static_cast<unsigned char>(c) < 0x20) {
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\x%02x", static_cast<unsigned char>(c));
+      out += escaped;
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
 std::string describe(const Datum& d) {
   char number[64];
   switch (d.kind) {
@@ -49,7 +64,7 @@ std::string describe(const Datum& d) {
       if (std::isnan(d.number)) return "nan";
       std::snprintf(number, sizeof number, "%.17g", d.number);
       return number;
-    case Datum::Kind::String: return "'" + d.text.substr(0, 40) + (d.text.size() > 40 ? "...'" : "'") + " (a string)";
+    case Datum::Kind::String: return "'" + visible(d.text.substr(0, 40)) + (d.text.size() > 40 ? "...'" : "'") + " (a string)";
     case Datum::Kind::Table: return "a table";
     case Datum::Kind::Other: return d.text;
   }
@@ -58,7 +73,7 @@ std::string describe(const Datum& d) {
 
 // A table key as a scenario writes it: 'name' or a number.
 std::string keyText(const Datum& key) {
-  if (key.kind == Datum::Kind::String) return "'" + key.text + "'";
+  if (key.kind == Datum::Kind::String) return "'" + visible(key.text) + "'";
   if (key.kind == Datum::Kind::Number) return describe(key);
   return describe(key);
 }
@@ -209,7 +224,7 @@ class LiteralReader {
         keyed = true;
       }
       if (!keyed) key.kind = Datum::Kind::Number, key.number = nextIndex++;
-      if (!keys.insert(keyText(key)).second) throw RepeatedKey{key};
+      if (!keys.insert((key.kind == Datum::Kind::String ? "s" + key.text : "n" + describe(key))).second) throw RepeatedKey{key};
       t.entries.emplace_back(std::move(key), value(depth + 1));
       if (peek() == ',' || peek() == ';') advance();
       else if (peek() != '}') throw NotALiteral{};
@@ -459,7 +474,7 @@ class PlanReader {
       bool ok = false;
       for (const char* k : known) ok = ok || (key.kind == Datum::Kind::String && key.text == k);
       if (ok) continue;
-      const std::string name = key.kind == Datum::Kind::String ? "'" + key.text + "'" : "[" + keyText(key) + "]";
+      const std::string name = key.kind == Datum::Kind::String ? keyText(key) : "[" + keyText(key) + "]";
       fail(key.line ? key : value, where, "unknown key " + name + " (known: " + list + ")");
     }
   }
@@ -501,7 +516,7 @@ class PlanReader {
   core::Button button(const Datum& d, const std::string& where) const {
     core::Button b{};
     if (d.kind != Datum::Kind::String || !core::buttonFromName(d.text, b))
-      fail(d, where, "unknown button " + (d.kind == Datum::Kind::String ? "'" + d.text + "'" : describe(d)) +
+      fail(d, where, "unknown button " + (d.kind == Datum::Kind::String ? keyText(d) : describe(d)) +
                          " (left, right, up, down, jump, restart, pause, reload)");
     return b;
   }

@@ -81,6 +81,11 @@ TEST(Replay, CommentsBlankLinesAndNoInput) {
   EXPECT_TRUE(r.hashes.empty());
 }
 
+TEST(Replay, AControlByteInTheFileIsShownNotCutShort) {
+  const std::string error = errorOf(kHeader + "10 ri" + std::string(1, '\0') + "ght\nend\n");
+  EXPECT_NE(error.find("run.replay:6:4: unknown button 'ri\\x00ght'"), std::string::npos) << error;
+}
+
 TEST(Replay, ACommentRunsFromAHashToTheEndOfTheLine) {
   const Replay r = parseReplay("platon replay 1  # a run\nscene \"a#b.lua\"\nframes 3 # three\nhash_every 0\ninput\n"
                                "3 right # all the way\nend # done\nhash 3 0123456789abcdef # the last\n",

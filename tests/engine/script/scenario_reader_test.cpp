@@ -95,6 +95,7 @@ TEST(ScenarioReader, EveryMalformedValueIsRefusedAtItsLineAndColumn) {
       {"  expect = { face = { [50] = 7 } },", "7", "expect.face[50]: face 7 does not exist (the stage's faces are 0..5)"},
       {"  expect = { inside = { { frame = 5, face = 9, box = { 0, 0, 1, 1 } } } },", "9", "expect.inside[1].face: face 9 does not exist"},
       {"  frames = 50,", "frames", "the key 'frames' is given twice in one table"},
+      {"  expect = { face = { ['a\\0b'] = 1 } },", "'a", "expect.face['a\\x00b'] (a frame): expected a whole number"},
   };
   for (const Case& c : cases) {
     std::ofstream(file, std::ios::trunc) << scenarioText(c.line);
