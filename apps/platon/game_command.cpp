@@ -48,19 +48,20 @@ class LevelRecorder {
  public:
   explicit LevelRecorder(std::string folder) : folder_(std::move(folder)) {}
   bool on() const { return !folder_.empty(); }
-  void start(const std::string& scene, core::Scene& loaded) {
+  void start(const CampaignLevel& level, core::Scene& loaded) {
     if (!on()) return;
-    level_ = std::filesystem::path(scene).parent_path().filename().string();
-    recorder_.emplace(scene, 60, core::sceneFilesHash(core::sceneSourceFiles(loaded)));
+    level_ = level.folder;
+    recorder_.emplace(level.scene, 60, core::sceneFilesHash(core::sceneSourceFiles(loaded)));
   }
   void frame(uint8_t held, uint64_t stateHash) {
     if (recorder_) recorder_->frame(held, stateHash);
   }
   // Writes what was played since start() (nothing when no frame was); "" or what went wrong.
   std::string finish() {
-    if (!recorder_ || recorder_->replay().frames() == 0) return recorder_.reset(), "";
+    if (!recorder_) return "";
     const core::Replay replay = recorder_->replay();
     recorder_.reset();
+    if (replay.frames() == 0) return "";
     std::string path;
     for (int n = 1; path.empty() || std::filesystem::exists(path); ++n)
       path = folder_ + "/" + level_ + (n == 1 ? "" : "-" + std::to_string(n)) + ".replay";
@@ -109,7 +110,7 @@ class Game {
     screen_ = Screen::Playing;
     std::printf("playing %s\n", levels_[level_].folder.c_str());
     std::fflush(stdout);
-    recording_.start(levels_[level_].scene, live_->scene());
+    recording_.start(levels_[level_], live_->scene());
   }
   void finishRecording() {
     if (std::string error = recording_.finish(); !error.empty()) {
