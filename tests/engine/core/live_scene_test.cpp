@@ -34,12 +34,16 @@ struct SaveDuringLoad {
   std::string file, text;
 };
 
+// Engine scripts ("scripts/...") are read under `engineRoot`, whose scripts/scene.lua it always
+// reads first, as the scripting system reads its driver.
 class ScriptsFromManifest : public System {
  public:
-  ScriptsFromManifest(const Scene& scene, std::optional<SaveDuringLoad>& save) {
+  ScriptsFromManifest(const Scene& scene, std::optional<SaveDuringLoad>& save, const std::string& engineRoot) {
     const SceneManifest& m = scene.manifest();
     files_ = m.mods;
     if (!m.level.empty()) files_.insert(files_.begin(), m.level);
+    if (!m.rules.empty()) files_.insert(files_.begin(), engineRoot + "/" + m.rules);
+    files_.insert(files_.begin(), engineRoot + "/scripts/scene.lua");
     for (const std::string& file : files_) {
       const std::string text = contents(file);
       versions_ += text;
@@ -61,7 +65,10 @@ class ScriptsFromManifest : public System {
 class LiveSceneTest : public ::testing::Test {
  protected:
   LiveSceneTest() {
-    registry_.add("scripting", [this](Scene& scene) { return std::make_unique<ScriptsFromManifest>(scene, save_); });
+    folder_.write("engine/scripts/scene.lua", "");
+    registry_.add("scripting", [this](Scene& scene) {
+      return std::make_unique<ScriptsFromManifest>(scene, save_, folder_.path("engine"));
+    });
   }
   std::string manifest(const std::string& mods) {
     return folder_.write("scene.lua", "return { systems = { 'scripting' }, scripts = { level = 'level.lua', mods = { " + mods + " } } }\n");
@@ -166,6 +173,23 @@ TEST_F(LiveSceneTest, AFileOnlyARefusedEditNamedIsWatchedAndItsFixReloads) {
   EXPECT_TRUE(fixed->ok) << fixed->error;
   EXPECT_EQ(fixed->files, std::vector<std::string>{mod2});
   EXPECT_EQ(versions(live), "v0mfixed");
+}
+
+TEST_F(LiveSceneTest, AnEngineScriptOnlyARefusedEditNamedIsWatched) {
+  const std::string scene = manifest("");
+  folder_.write("level.lua", "v0");
+  folder_.write("engine/scripts/rules/new.lua", "broken");
+  LiveScene live(scene, registry_, true);
+  settle();
+  folder_.write("scene.lua", "return { systems = { 'scripting' }, scripts = { level = 'level.lua', rules = 'scripts/rules/new.lua' } }\n");
+  std::optional<ReloadReport> refused = awaitReload(live);
+  ASSERT_TRUE(refused.has_value());
+  EXPECT_FALSE(refused->ok);
+  folder_.write("engine/scripts/rules/new.lua", "rules");
+  std::optional<ReloadReport> fixed = awaitReload(live);
+  ASSERT_TRUE(fixed.has_value()) << "the fix of an engine script only the refused edit named was not seen";
+  EXPECT_TRUE(fixed->ok) << fixed->error;
+  EXPECT_EQ(versions(live), "rulesv0");
 }
 
 TEST_F(LiveSceneTest, ALevelFileOnlyARefusedManifestNamedIsWatched) {
