@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -19,6 +20,7 @@
 #include "platon/core/fixed_step.h"
 #include "platon/core/live_scene.h"
 #include "platon/core/manifest.h"
+#include "platon/core/replay.h"
 #include "platon/script/script_system.h"
 
 namespace platon::app {
@@ -36,10 +38,57 @@ std::string clockText(uint64_t frames) {
   return text;
 }
 
+// With --record DIR: one replay per level played, DIR/<folder>.replay (then <folder>-2.replay,
+// ... : an existing file is never overwritten). A recording starts with the level's first frame
+// and is written when the level is complete, left (another level, a restart, the title), the
+// game quits, or the scene reloads. A reload changes the scene under the recording, and the new
+// version starts from the carried-over state, which no replay (a fresh load) reproduces: so the
+// recording ends there, as in `platon play`, and the next start of a level records again.
+class LevelRecorder {
+ public:
+  explicit LevelRecorder(std::string folder) : folder_(std::move(folder)) {}
+  bool on() const { return !folder_.empty(); }
+  void start(const CampaignLevel& level, core::Scene& loaded) {
+    if (!on()) return;
+    level_ = level.folder;
+    recorder_.emplace(level.scene, 60, core::sceneFilesHash(core::sceneSourceFiles(loaded)));
+  }
+  void frame(uint8_t held, uint64_t stateHash) {
+    if (recorder_) recorder_->frame(held, stateHash);
+  }
+  // Writes what was played since start() (nothing when no frame was); "" or what went wrong.
+  std::string finish() {
+    if (!recorder_) return "";
+    const core::Replay replay = recorder_->replay();
+    recorder_.reset();
+    if (replay.frames() == 0) return "";
+    std::string path;
+    for (int n = 1; path.empty() || std::filesystem::exists(path); ++n)
+      path = folder_ + "/" + level_ + (n == 1 ? "" : "-" + std::to_string(n)) + ".replay";
+    try {
+      std::filesystem::create_directories(folder_);
+      core::writeReplay(replay, path);
+    } catch (const std::exception& e) {
+      return std::string("recording not written: ") + e.what();
+    }
+    std::printf("recorded %s: %llu frames to %s\n", level_.c_str(), static_cast<unsigned long long>(replay.frames()), path.c_str());
+    std::fflush(stdout);
+    return "";
+  }
+
+ private:
+  std::string folder_;
+  std::string level_;
+  std::optional<core::ReplayRecorder> recorder_;
+};
+
 class Game {
  public:
-  Game(std::vector<CampaignLevel> levels, Progress progress)
-      : levels_(std::move(levels)), progress_(std::move(progress)), registry_(engineRegistry(Presentation::Window)) {
+  Game(std::vector<CampaignLevel> levels, Progress progress, std::string recordFolder)
+      : levels_(std::move(levels)),
+        progress_(std::move(progress)),
+        registry_(engineRegistry(Presentation::Window)),
+        recording_(std::move(recordFolder)) {
     for (const CampaignLevel& l : levels_) {  // the names players see; a broken manifest shows its folder
       try {
         names_.push_back(core::loadManifest(l.scene).name);
@@ -61,6 +110,20 @@ class Game {
     screen_ = Screen::Playing;
     std::printf("playing %s\n", levels_[level_].folder.c_str());
     std::fflush(stdout);
+    recording_.start(levels_[level_], live_->scene());
+  }
+  void finishRecording() {
+    if (std::string error = recording_.finish(); !error.empty()) {
+      notice_ = error;
+      std::fprintf(stderr, "%s\n", error.c_str());
+    }
+  }
+  void afterReload(const core::ReloadReport& r) {
+    notice_ = r.ok ? "reloaded" : "reload refused: " + r.error;
+    if (r.ok) {
+      std::printf("reloaded %s\n", levels_[level_].folder.c_str());
+      finishRecording();  // the frames so far were played on the version before
+    }
   }
   void stepSimulation(int due, uint8_t held);
   void draw(double alpha);
@@ -82,9 +145,12 @@ class Game {
   bool quit_ = false;
   bool showFps_ = false;
   std::string notice_;  // a line under the heads-up text (a failed save, a refused reload)
+  std::string lastFrameError_;  // printed once, not on every frame it repeats
+  LevelRecorder recording_;
 };
 
 bool Game::load(size_t level) {
+  finishRecording();  // the level played so far ends here, whether or not the next one loads
   core::System* previous = live_ ? live_->scene().findSystem("rendering") : nullptr;
   std::unique_ptr<core::LiveScene> next;
   try {
@@ -104,6 +170,7 @@ bool Game::load(size_t level) {
   level_ = level;
   loaded_ = true;
   notice_.clear();
+  lastFrameError_.clear();
   view_ = GameView{};
   view_.step(live_->scene(), status(), 1.0 / clock_.hz());
   edges_.reset();
@@ -141,10 +208,7 @@ void Game::handle(const core::WindowInput& input) {
         break;
       case Screen::Playing:
         if (key == core::Key::Escape) screen_ = Screen::Paused, menuItem_ = 0;
-        if (key == core::Key::Reload) {
-          const core::ReloadReport r = live_->reload({"F5"});
-          notice_ = r.ok ? "reloaded" : "reload refused: " + r.error;
-        }
+        if (key == core::Key::Reload) afterReload(live_->reload({"F5"}));
         break;
       case Screen::Paused:
         if (key == core::Key::Escape) screen_ = Screen::Playing;
@@ -153,7 +217,7 @@ void Game::handle(const core::WindowInput& input) {
         if (key == core::Key::Enter) {
           if (menuItem_ == 0) screen_ = Screen::Playing;
           if (menuItem_ == 1 && load(level_)) play();
-          if (menuItem_ == 2) screen_ = Screen::Title, selected_ = level_;
+          if (menuItem_ == 2) finishRecording(), screen_ = Screen::Title, selected_ = level_;
           if (menuItem_ == 3) quit_ = true;
         }
         break;
@@ -173,8 +237,11 @@ void Game::handle(const core::WindowInput& input) {
 
 void Game::stepSimulation(int due, uint8_t held) {
   for (int s = 0; s < due && screen_ == Screen::Playing; ++s) {
-    if (std::optional<std::string> error = live_->step(edges_.next(held)))
+    if (std::optional<std::string> error = live_->step(edges_.next(held)); error && *error != lastFrameError_) {
       std::fprintf(stderr, "frame error (the game goes on):\n%s\n", error->c_str());
+      lastFrameError_ = *error;
+    }
+    recording_.frame(held, live_->scene().world().stateHash());
     const script::GameStatus st = status();
     view_.step(live_->scene(), st, 1.0 / clock_.hz());
     if (st.won) {
@@ -182,6 +249,7 @@ void Game::stepSimulation(int due, uint8_t held) {
       std::fflush(stdout);
       if (!progress_.finish(levels_[level_].folder, st.wonFrame, st.deaths)) notice_ = progress_.lastError();
       screen_ = Screen::Complete;
+      finishRecording();
     }
   }
 }
@@ -230,7 +298,7 @@ int Game::run(bool quitAfterFirstFrame, const std::string& firstFrameShot) {
   }
   auto previous = std::chrono::steady_clock::now();
   while (!quit_) {
-    if (std::optional<core::ReloadReport> r = live_->poll(0)) notice_ = r->ok ? "reloaded" : "reload refused: " + r->error;
+    if (std::optional<core::ReloadReport> r = live_->poll(0)) afterReload(*r);
     core::Display* d = display();
     if (!d) return 1;
     const core::WindowInput input = d->pollEvents();
@@ -256,6 +324,7 @@ int Game::run(bool quitAfterFirstFrame, const std::string& firstFrameShot) {
     if (quitAfterFirstFrame) break;
     if (due == 0) std::this_thread::sleep_for(std::chrono::milliseconds(1));  // no vsync: do not spin
   }
+  finishRecording();
   const script::GameStatus st = status();
   std::printf("quit on %s: face %u at (%d, %d), %llu frames played\n", levels_[level_].folder.c_str(), st.face, st.x, st.y,
               static_cast<unsigned long long>(st.time));
@@ -269,21 +338,24 @@ int gameCommand(int argc, char** argv) {
   std::string progressPath = Progress::defaultPath();
   bool quitAfterFirstFrame = false;
   std::string firstFrameShot;  // the title screen as a PNG, then quit (docs, tests)
+  std::string recordFolder;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--campaign" && i + 1 < argc) campaignPath = argv[++i];
     else if (a == "--progress" && i + 1 < argc) progressPath = argv[++i];
     else if (a == "--quit-after-first-frame") quitAfterFirstFrame = true;  // for start-up benchmarks
     else if (a == "--first-frame-shot" && i + 1 < argc) firstFrameShot = argv[++i], quitAfterFirstFrame = true;
+    else if (a == "--record" && i + 1 < argc) recordFolder = argv[++i];
     else {
-      std::fprintf(stderr, "usage: platon game [--campaign levels/campaign.txt] [--progress file]\n"
+      std::fprintf(stderr, "usage: platon game [--campaign levels/campaign.txt] [--progress file] [--record dir]\n"
+                           "  --record DIR  write a replay of each level played to DIR/<level>.replay\n"
                            "  keys: arrows or WASD move, Space jumps, R restarts, Esc pauses, F5 reloads,\n"
                            "        F3 frame rate, F11 fullscreen; a gamepad works too\n");
       return 2;
     }
   }
   try {
-    Game game(readCampaign(campaignPath), Progress(progressPath));
+    Game game(readCampaign(campaignPath), Progress(progressPath), recordFolder);
     return game.run(quitAfterFirstFrame, firstFrameShot);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s\n", e.what());

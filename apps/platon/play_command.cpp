@@ -6,7 +6,10 @@
 // too) and the last good version goes on.
 #include "play_command.h"
 
+#include <signal.h>
+
 #include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -24,16 +27,40 @@
 namespace platon::app {
 namespace {
 
+// The one piece of global state: the signal (SIGINT or SIGTERM) that asked play to stop, set by
+// its handler, read once a loop. A signal handler can only reach a global; it ends the loop so
+// that a recording is still written (an endless headless play is stopped by a signal).
+volatile sig_atomic_t stopSignal = 0;
+
+void onStopSignal(int signal) { stopSignal = signal; }
+
+void stopOnSignals() {
+  struct sigaction action {};
+  action.sa_handler = onStopSignal;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
+
+// --frames N: a whole number from 1 (strtoull took "-1" as 2^64 - 1 and "abc" as 0, unlimited).
+bool frameCount(const char* text, uint64_t& out) {
+  const char* end = text + std::strlen(text);
+  const auto [stop, error] = std::from_chars(text, end, out);
+  return error == std::errc() && stop == end && end != text && out >= 1;
+}
+
 int usage() {
   std::fprintf(stderr,
                "usage: platon play scene.lua [--frames N] [--input run.replay] [--record out.replay]\n"
                "                             [--watch] [--fast] [--headless] [--shot out.png]\n"
-               "  --frames N   stop after N frames (default: at the goal, or never with --watch)\n"
+               "  --frames N   stop after N frames, N >= 1 (default: at the goal, or never with --watch)\n"
                "  --input F    the buttons of a recorded run (nothing held without it)\n"
-               "  --record F   write this run's input and hashes to F as a replay\n"
+               "  --record F   write this run's input and hashes to F as a replay (also when stopped by\n"
+               "               SIGINT or SIGTERM)\n"
                "  --watch      reload the scene when its files are saved\n"
                "  --fast       do not wait for real time\n"
-               "  --headless   no window, even when the scene names \"rendering\"\n"
+               "  --headless   no window, even when the scene names \"rendering\"; exits 1 if a frame had a\n"
+               "               script error\n"
                "  --shot F     save the last frame shown to F (PNG) at the end\n"
                "keys in the window: arrows or WASD move, Space jumps, R restarts, F3 frame rate, F11 fullscreen, Esc quits\n");
   return 2;
@@ -68,7 +95,10 @@ int playCommand(int argc, char** argv) {
   bool watch = false, fast = false, headless = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--frames" && i + 1 < argc) frames = std::strtoull(argv[++i], nullptr, 10);
+    if (a == "--frames" && i + 1 < argc) {
+      if (!frameCount(argv[++i], frames))
+        return std::fprintf(stderr, "platon play: --frames %s: expected a whole number of frames from 1\n", argv[i]), usage();
+    }
     else if (a == "--input" && i + 1 < argc) inputPath = argv[++i];
     else if (a == "--record" && i + 1 < argc) recordPath = argv[++i];
     else if (a == "--watch") watch = true;
@@ -115,7 +145,9 @@ int playCommand(int argc, char** argv) {
   std::fflush(stdout);
 
   std::optional<core::ReplayRecorder> recorder;
-  if (!recordPath.empty()) recorder.emplace(scenePath, 60);
+  if (!recordPath.empty()) recorder.emplace(scenePath, 60, core::sceneFilesHash(core::sceneSourceFiles(live->scene())));
+  stopOnSignals();
+  uint64_t frameErrors = 0;  // frames whose scripts raised an error
   core::FixedStep clock(60);
   core::InputEdges edges;
   GameView gameView;
@@ -125,7 +157,7 @@ int playCommand(int argc, char** argv) {
   uint64_t frame = 0;
   bool won = false;
   auto previous = std::chrono::steady_clock::now();
-  while (frames == 0 || frame < frames) {
+  while ((frames == 0 || frame < frames) && !stopSignal) {
     int due = 1;
     if (!fast) {
       const auto now = std::chrono::steady_clock::now();
@@ -156,8 +188,10 @@ int playCommand(int argc, char** argv) {
     for (int s = 0; s < due && (frames == 0 || frame < frames); ++s) {
       const uint8_t held = inputPath.empty() ? keys : frame < input.held.size() ? input.held[frame] : 0;
       ++frame;
-      if (std::optional<std::string> error = live->step(edges.next(held)); error && *error != lastError) {
-        std::printf("frame %llu: error (the game goes on):\n%s\n", static_cast<unsigned long long>(frame), error->c_str());
+      if (std::optional<std::string> error = live->step(edges.next(held))) {
+        ++frameErrors;
+        if (*error != lastError)
+          std::printf("frame %llu: error (the game goes on):\n%s\n", static_cast<unsigned long long>(frame), error->c_str());
         lastError = *error;
       }
       if (recorder) recorder->frame(held, live->scene().world().stateHash());
@@ -180,9 +214,10 @@ int playCommand(int argc, char** argv) {
     if (won && frames == 0 && !watch && !display) break;
     if (!fast && due == 0) std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
+  if (stopSignal) std::printf("stopped by signal %d at frame %llu\n", static_cast<int>(stopSignal), static_cast<unsigned long long>(frame));
   if (recorder) {
     core::writeReplay(recorder->replay(), recordPath);
-    std::printf("recorded %llu frames to %s\n", static_cast<unsigned long long>(frame), recordPath.c_str());
+    std::printf("recorded %llu frames to %s\n", static_cast<unsigned long long>(recorder->replay().frames()), recordPath.c_str());
   }
   if (display && !shotPath.empty()) {
     try {
@@ -196,7 +231,11 @@ int playCommand(int argc, char** argv) {
   }
   std::printf("state hash %016llx after %llu frames\n", static_cast<unsigned long long>(live->scene().world().stateHash()),
               static_cast<unsigned long long>(frame));
-  return 0;
+  if (!display && frameErrors > 0) {  // headless is how CI plays: a script error must fail it
+    std::printf("%llu frame(s) had a script error\n", static_cast<unsigned long long>(frameErrors));
+    return 1;
+  }
+  return stopSignal ? 128 + stopSignal : 0;
 }
 
 }  // namespace platon::app

@@ -1,22 +1,29 @@
-// Runs scenarios, in parallel worker processes with -j. Each worker runs its share and writes one
-// record per scenario to a pipe; a worker that outlives the time limit (a trusted script's
-// endless compiled loop cannot be stopped from inside) is killed and its unfinished scenarios
-// fail. Results print in the order the scenarios were given: the same output at any -j.
+// Runs scenarios, each in a worker process of its own, -j at a time, handed out in the order
+// given. A worker writes its one record to a pipe and exits. A worker that outlives the time
+// limit (a trusted script's endless compiled loop cannot be stopped from inside) is killed, and
+// one that dies without a record (a crash, an exit inside a library) is reported with its
+// signal or status: either way only that scenario fails, and the others run in fresh workers.
+// Results print in the order the scenarios were given: the same output at any -j.
 #include "run_command.h"
 
 #include "engine_registry.h"
 
+#include <poll.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cerrno>
+#include <charconv>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <map>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "platon/script/scenario.h"
@@ -24,63 +31,127 @@
 namespace platon::app {
 namespace {
 
+using Clock = std::chrono::steady_clock;
+
+// A message longer than this is cut (a 20 MB error string would otherwise go out whole, twice
+// into the JUnit file).
+constexpr size_t kMessageLimit = 4096;
+
 struct Outcome {
   bool done = false;
   script::ScenarioResult result;
 };
 
-// One record: index, passed, frames, seconds, hash, message length, message.
-void writeRecord(int fd, size_t index, const script::ScenarioResult& r) {
-  std::string text = std::to_string(index) + " " + (r.passed ? "1" : "0") + " " + std::to_string(r.frames) + " " +
-                     std::to_string(r.seconds) + " " + (r.hash.empty() ? "-" : r.hash) + " " +
-                     std::to_string(r.message.size()) + "\n" + r.message;
+std::string capped(const std::string& message) {
+  if (message.size() <= kMessageLimit) return message;
+  size_t cut = kMessageLimit;
+  while (cut > 0 && (static_cast<unsigned char>(message[cut]) & 0xC0) == 0x80) --cut;  // not inside a UTF-8 character
+  return message.substr(0, cut) + "... (cut: " + std::to_string(message.size()) + " bytes in all)";
+}
+
+// The length of the valid UTF-8 character at text[i], or 0.
+size_t utf8Length(const std::string& text, size_t i) {
+  const auto byte = [&](size_t k) { return static_cast<unsigned char>(text[k]); };
+  const unsigned char b = byte(i);
+  size_t length = 0;
+  uint32_t code = 0;
+  if (b < 0x80) return 1;
+  if (b >= 0xC2 && b <= 0xDF) length = 2, code = b & 0x1F;
+  else if (b >= 0xE0 && b <= 0xEF) length = 3, code = b & 0x0F;
+  else if (b >= 0xF0 && b <= 0xF4) length = 4, code = b & 0x07;
+  else return 0;
+  if (i + length > text.size()) return 0;
+  for (size_t k = 1; k < length; ++k) {
+    if ((byte(i + k) & 0xC0) != 0x80) return 0;
+    code = code << 6 | (byte(i + k) & 0x3F);
+  }
+  const bool overlong = (length == 3 && code < 0x800) || (length == 4 && code < 0x10000);
+  if (overlong || code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF)) return 0;
+  return length;
+}
+
+// `text` fit for a terminal and an XML file: valid UTF-8, no control bytes but tab and newline.
+// Anything else is shown as \xNN, so nothing is lost (a NUL no longer cuts the message short).
+std::string printable(const std::string& text) {
+  std::string out;
+  for (size_t i = 0; i < text.size();) {
+    const unsigned char b = static_cast<unsigned char>(text[i]);
+    const size_t length = utf8Length(text, i);
+    if (length == 0 || (b < 0x20 && b != '\t' && b != '\n') || b == 0x7F) {
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\x%02x", b);
+      out += escaped;
+      ++i;
+    } else {
+      out.append(text, i, length);
+      i += length;
+    }
+  }
+  return out;
+}
+
+// One record: passed, frames, seconds, hash, message length, message.
+std::string recordOf(const script::ScenarioResult& r) {
+  const std::string message = capped(r.message);
+  return std::string(r.passed ? "1" : "0") + " " + std::to_string(r.frames) + " " + std::to_string(r.seconds) + " " +
+         (r.hash.empty() ? "-" : r.hash) + " " + std::to_string(message.size()) + "\n" + message;
+}
+
+void writeAll(int fd, const std::string& text) {
   for (size_t sent = 0; sent < text.size();) {
     const ssize_t n = write(fd, text.data() + sent, text.size() - sent);
+    if (n < 0 && errno == EINTR) continue;
     if (n <= 0) return;
     sent += static_cast<size_t>(n);
   }
 }
 
-void readRecords(const std::string& data, std::vector<Outcome>& out) {
-  size_t pos = 0;
-  while (pos < data.size()) {
-    const size_t eol = data.find('\n', pos);
-    if (eol == std::string::npos) return;
-    size_t index = 0, length = 0;
-    int passed = 0;
-    unsigned long long frames = 0;
-    double seconds = 0;
-    char hash[32] = {};
-    if (std::sscanf(data.c_str() + pos, "%zu %d %llu %lf %31s %zu", &index, &passed, &frames, &seconds, hash, &length) != 6) return;
-    if (eol + 1 + length > data.size() || index >= out.size()) return;
-    Outcome& o = out[index];
-    o.done = true;
-    o.result.passed = passed != 0;
-    o.result.frames = frames;
-    o.result.seconds = seconds;
-    o.result.hash = std::strcmp(hash, "-") == 0 ? "" : hash;
-    o.result.message = data.substr(eol + 1, length);
-    pos = eol + 1 + length;
+bool readRecord(const std::string& data, script::ScenarioResult& r) {
+  const size_t eol = data.find('\n');
+  if (eol == std::string::npos) return false;
+  size_t length = 0;
+  int passed = 0;
+  unsigned long long frames = 0;
+  double seconds = 0;
+  char hash[32] = {};
+  if (std::sscanf(data.c_str(), "%d %llu %lf %31s %zu", &passed, &frames, &seconds, hash, &length) != 5) return false;
+  if (eol + 1 + length > data.size()) return false;
+  r.passed = passed != 0;
+  r.frames = frames;
+  r.seconds = seconds;
+  r.hash = std::strcmp(hash, "-") == 0 ? "" : hash;
+  r.message = data.substr(eol + 1, length);
+  return true;
+}
+
+// Why a worker ended without a record.
+std::string workerDied(int status, const std::string& file) {
+  if (WIFSIGNALED(status)) {
+    const int signal = WTERMSIG(status);
+    return "worker crashed (signal " + std::to_string(signal) + ") while running " + file + ": " + strsignal(signal);
   }
+  return "worker exited with status " + std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + " while running " +
+         file + " and gave no result";
 }
 
 std::string xmlEscape(const std::string& s) {
   std::string out;
-  for (const char c : s) {
+  for (const char c : printable(s)) {
     switch (c) {
       case '&': out += "&amp;"; break;
       case '<': out += "&lt;"; break;
       case '>': out += "&gt;"; break;
       case '"': out += "&quot;"; break;
+      case '\'': out += "&apos;"; break;
       default: out += c;
     }
   }
   return out;
 }
 
-void writeJunit(const std::string& path, const std::vector<std::string>& names, const std::vector<Outcome>& outcomes,
+bool writeJunit(const std::string& path, const std::vector<std::string>& names, const std::vector<Outcome>& outcomes,
                 double seconds) {
-  std::ofstream out(path);
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
   size_t failures = 0;
   for (const Outcome& o : outcomes) failures += o.result.passed ? 0 : 1;
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuite name=\"platon scenarios\" tests=\"" << names.size()
@@ -96,12 +167,15 @@ void writeJunit(const std::string& path, const std::vector<std::string>& names, 
     }
   }
   out << "</testsuite>\n";
+  return static_cast<bool>(out.flush());
 }
 
 int usage() {
   std::fprintf(stderr,
                "usage: platon run [-j N] [--junit report.xml] [--timeout seconds] [--trace frames]\n"
-               "                  [--record dir] [--hash-every frames] scenario.lua|run.replay...\n");
+               "                  [--record dir] [--hash-every frames] scenario.lua|run.replay...\n"
+               "  -j N          run N scenarios at a time (1..256; default 1)\n"
+               "  --timeout S   each scenario's wall-clock limit in seconds (default 600)\n");
   return 2;
 }
 
@@ -115,14 +189,27 @@ std::string stem(const std::string& path) {
   return name.substr(0, name.find_last_of('.'));
 }
 
-// One file: a scenario or a replay; with a record folder, its run is written there as a replay.
-script::ScenarioResult runOne(const std::string& file, const script::RunOptions& options, const std::string& recordDir) {
+// Where each scenario's replay goes with --record: DIR/<stem>.replay, and DIR/<stem>-2.replay,
+// -3, ... for later scenarios of the same file name (a/x.lua and b/x.lua).
+std::vector<std::string> recordPaths(const std::vector<std::string>& files, const std::string& dir) {
+  std::vector<std::string> paths;
+  if (dir.empty()) return std::vector<std::string>(files.size());
+  std::map<std::string, int> seen;
+  for (const std::string& file : files) {
+    const std::string name = stem(file);
+    const int n = ++seen[name];
+    paths.push_back(dir + "/" + name + (n == 1 ? "" : "-" + std::to_string(n)) + ".replay");
+  }
+  return paths;
+}
+
+// One file: a scenario or a replay; with a record path, its run is written there as a replay.
+script::ScenarioResult runOne(const std::string& file, const script::RunOptions& options, const std::string& recordPath) {
   script::ScenarioResult r = endsWith(file, ".replay") ? script::runReplay(file, options) : script::runScenario(file, options);
-  if (!recordDir.empty() && r.recorded) {
-    const std::string out = recordDir + "/" + stem(file) + ".replay";
+  if (!recordPath.empty() && r.recorded) {
     try {
-      core::writeReplay(*r.recorded, out);
-      r.message += " (recorded to " + out + ")";
+      core::writeReplay(*r.recorded, recordPath);
+      r.message += " (recorded to " + recordPath + ")";
     } catch (const std::exception& e) {
       r.passed = false;
       r.message = e.what();
@@ -131,10 +218,139 @@ script::ScenarioResult runOne(const std::string& file, const script::RunOptions&
   return r;
 }
 
+struct Worker {
+  pid_t pid;
+  int fd;
+  size_t index;  // the scenario it runs
+  Clock::time_point deadline;
+  std::string data;
+};
+
+// Forks a worker for one scenario; it writes its record to a pipe and exits. "" or why it could
+// not start.
+std::string startWorker(size_t index, const std::string& file, const script::RunOptions& options,
+                        const std::string& recordPath, double timeout, std::vector<Worker>& workers) {
+  int fds[2];
+  if (pipe(fds) != 0) return std::string("cannot start a worker: pipe: ") + std::strerror(errno);
+  std::fflush(nullptr);
+  const pid_t pid = fork();
+  if (pid < 0) {
+    const std::string error = std::string("cannot start a worker: fork: ") + std::strerror(errno);
+    close(fds[0]), close(fds[1]);
+    return error;
+  }
+  if (pid == 0) {
+    close(fds[0]);
+    writeAll(fds[1], recordOf(runOne(file, options, recordPath)));
+    close(fds[1]);
+    std::fflush(nullptr);
+    _exit(0);
+  }
+  close(fds[1]);
+  const auto limit = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(timeout));
+  workers.push_back({pid, fds[0], index, Clock::now() + limit, {}});
+  return "";
+}
+
+// Ends a worker whose pipe closed (or that was killed) and turns what it wrote into an outcome.
+Outcome finishWorker(Worker& w, const std::string& file, bool killedAfterTimeout, double timeout) {
+  close(w.fd);
+  int status = 0;
+  while (waitpid(w.pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  Outcome o;
+  o.done = true;
+  if (killedAfterTimeout) {
+    char limit[32];
+    std::snprintf(limit, sizeof limit, "%g", timeout);
+    o.result.message = "not finished within the time limit of " + std::string(limit) + " s (killed)";
+  } else if (!readRecord(w.data, o.result)) {
+    o.result.message = workerDied(status, file);
+  }
+  return o;
+}
+
+// Runs every file in workers, `jobs` at a time, and fills `outcomes`.
+void runInWorkers(const std::vector<std::string>& files, const script::RunOptions& options,
+                  const std::vector<std::string>& records, int jobs, double timeout, std::vector<Outcome>& outcomes) {
+  std::vector<Worker> workers;
+  size_t next = 0;
+  while (next < files.size() || !workers.empty()) {
+    while (next < files.size() && workers.size() < static_cast<size_t>(jobs)) {
+      if (std::string error = startWorker(next, files[next], options, records[next], timeout, workers); !error.empty())
+        outcomes[next].done = true, outcomes[next].result.message = error;
+      ++next;
+    }
+    std::vector<pollfd> fds;
+    auto wait = std::chrono::milliseconds(100);
+    const auto now = Clock::now();
+    for (const Worker& w : workers) {
+      fds.push_back({w.fd, POLLIN, 0});
+      wait = std::min(wait, std::chrono::duration_cast<std::chrono::milliseconds>(std::max(w.deadline - now, Clock::duration::zero())) +
+                                std::chrono::milliseconds(1));
+    }
+    if (poll(fds.data(), fds.size(), static_cast<int>(wait.count())) < 0 && errno != EINTR) std::perror("poll");
+    for (size_t k = workers.size(); k-- > 0;) {
+      Worker& w = workers[k];
+      bool ended = false, killed = false;
+      if (fds[k].revents & (POLLIN | POLLHUP | POLLERR)) {
+        char buffer[65536];
+        const ssize_t n = read(w.fd, buffer, sizeof buffer);
+        if (n > 0) w.data.append(buffer, static_cast<size_t>(n));
+        else if (n == 0 || errno != EINTR) ended = true;
+      }
+      if (!ended && Clock::now() > w.deadline) {
+        kill(w.pid, SIGKILL);
+        ended = killed = true;
+      }
+      if (!ended) continue;
+      outcomes[w.index] = finishWorker(w, files[w.index], killed, timeout);
+      workers.erase(workers.begin() + static_cast<std::ptrdiff_t>(k));
+    }
+  }
+}
+
+// The result line, then any further lines of the message indented below it.
+void printResult(const std::string& file, const script::ScenarioResult& r) {
+  const std::string message = printable(r.message);
+  const size_t eol = message.find('\n');
+  const std::string first = message.substr(0, eol);
+  if (r.passed) {
+    std::printf("PASS %s: %s, %llu frames, %.3f s, hash %s\n", printable(file).c_str(), first.c_str(),
+                static_cast<unsigned long long>(r.frames), r.seconds, r.hash.c_str());
+  } else {
+    std::printf("FAIL %s: %s\n", printable(file).c_str(), first.c_str());
+  }
+  for (size_t at = eol; at != std::string::npos && at + 1 < message.size();) {
+    const size_t end = message.find('\n', at + 1);
+    std::printf("    %s\n", message.substr(at + 1, end == std::string::npos ? std::string::npos : end - at - 1).c_str());
+    at = end;
+  }
+}
+
+// A whole number in [low, high] from the whole of `text`.
+bool wholeNumber(const char* text, uint64_t low, uint64_t high, uint64_t& out) {
+  const char* end = text + std::strlen(text);
+  const auto [stop, error] = std::from_chars(text, end, out);
+  return error == std::errc() && stop == end && end != text && out >= low && out <= high;
+}
+
+// A number of seconds > 0 from the whole of `text`.
+bool seconds(const char* text, double& out) {
+  char* stop = nullptr;
+  out = std::strtod(text, &stop);
+  return stop != text && *stop == '\0' && std::isfinite(out) && out > 0;
+}
+
+int badValue(const char* option, const char* value, const char* expected) {
+  std::fprintf(stderr, "platon run: %s %s: expected %s\n", option, value, expected);
+  return usage();
+}
+
 }  // namespace
 
 int runCommand(int argc, char** argv) {
-  int jobs = 1;
+  uint64_t jobs = 1;
   double timeout = 600;
   std::string junit;
   script::RunOptions options;
@@ -143,97 +359,45 @@ int runCommand(int argc, char** argv) {
   std::vector<std::string> files;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "-j" && i + 1 < argc) jobs = std::atoi(argv[++i]);
-    else if (a.rfind("-j", 0) == 0 && a.size() > 2) jobs = std::atoi(a.c_str() + 2);
-    else if (a == "--junit" && i + 1 < argc) junit = argv[++i];
-    else if (a == "--timeout" && i + 1 < argc) timeout = std::atof(argv[++i]);
-    else if (a == "--trace" && i + 1 < argc) options.traceEvery = std::strtoull(argv[++i], nullptr, 10);
-    else if (a == "--record" && i + 1 < argc) recordDir = argv[++i], options.record = true;
-    else if (a == "--hash-every" && i + 1 < argc) options.hashEvery = std::strtoull(argv[++i], nullptr, 10);
-    else if (!a.empty() && a[0] == '-') return usage();
-    else files.push_back(a);
+    const bool hasValue = i + 1 < argc;
+    if ((a == "-j" && hasValue) || (a.rfind("-j", 0) == 0 && a.size() > 2)) {
+      const char* value = a == "-j" ? argv[++i] : argv[i] + 2;
+      if (!wholeNumber(value, 1, 256, jobs)) return badValue("-j", value, "a whole number from 1 to 256");
+    } else if (a == "--junit" && hasValue) {
+      junit = argv[++i];
+    } else if (a == "--timeout" && hasValue) {
+      if (!seconds(argv[++i], timeout)) return badValue("--timeout", argv[i], "a number of seconds above 0");
+    } else if (a == "--trace" && hasValue) {
+      if (!wholeNumber(argv[++i], 1, UINT64_MAX, options.traceEvery)) return badValue("--trace", argv[i], "a whole number of frames from 1");
+    } else if (a == "--record" && hasValue) {
+      recordDir = argv[++i], options.record = true;
+    } else if (a == "--hash-every" && hasValue) {
+      if (!wholeNumber(argv[++i], 0, UINT64_MAX, options.hashEvery))
+        return badValue("--hash-every", argv[i], "a whole number of frames (0: only the last frame's hash)");
+    } else if (!a.empty() && a[0] == '-') {
+      return usage();
+    } else {
+      files.push_back(a);
+    }
   }
-  if (files.empty() || jobs < 1 || jobs > 256 || !(timeout > 0)) return usage();
-  const auto start = std::chrono::steady_clock::now();
+  if (files.empty()) return usage();
+  const auto start = Clock::now();
   std::vector<Outcome> outcomes(files.size());
+  runInWorkers(files, options, recordPaths(files, recordDir), static_cast<int>(jobs), timeout, outcomes);
 
-  if (jobs == 1) {
-    for (size_t i = 0; i < files.size(); ++i) outcomes[i] = {true, runOne(files[i], options, recordDir)};
-  } else {
-    struct Worker {
-      pid_t pid;
-      int fd;
-      std::string data;
-      bool open = true;
-    };
-    std::vector<Worker> workers;
-    std::fflush(nullptr);
-    for (int w = 0; w < jobs && static_cast<size_t>(w) < files.size(); ++w) {
-      int fds[2];
-      if (pipe(fds) != 0) return std::perror("pipe"), 1;
-      const pid_t pid = fork();
-      if (pid < 0) return std::perror("fork"), 1;
-      if (pid == 0) {
-        close(fds[0]);
-        for (size_t i = static_cast<size_t>(w); i < files.size(); i += static_cast<size_t>(jobs))
-          writeRecord(fds[1], i, runOne(files[i], options, recordDir));
-        close(fds[1]);
-        _exit(0);
-      }
-      close(fds[1]);
-      workers.push_back({pid, fds[0], {}});
-    }
-    // Read every worker's pipe until all close or the time limit passes.
-    for (;;) {
-      bool anyOpen = false;
-      for (Worker& w : workers) {
-        if (!w.open) continue;
-        char buffer[65536];
-        fd_set set;
-        FD_ZERO(&set);
-        FD_SET(w.fd, &set);
-        timeval zero{0, 20000};
-        if (select(w.fd + 1, &set, nullptr, nullptr, &zero) > 0) {
-          const ssize_t n = read(w.fd, buffer, sizeof buffer);
-          if (n > 0) w.data.append(buffer, static_cast<size_t>(n));
-          else w.open = false;
-        }
-        anyOpen = anyOpen || w.open;
-      }
-      if (!anyOpen) break;
-      if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > timeout) {
-        for (Worker& w : workers)
-          if (w.open) kill(w.pid, SIGKILL);
-        break;
-      }
-    }
-    for (Worker& w : workers) {
-      close(w.fd);
-      int status = 0;
-      waitpid(w.pid, &status, 0);
-      readRecords(w.data, outcomes);
-    }
-  }
-
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
   int failed = 0;
   for (size_t i = 0; i < files.size(); ++i) {
     Outcome& o = outcomes[i];
-    if (!o.done) {
-      o.result = {};
-      o.result.message = "not finished within the time limit of " + std::to_string(timeout) + " s (killed)";
-    }
-    const script::ScenarioResult& r = o.result;
-    if (r.passed) {
-      std::printf("PASS %s: %s, %llu frames, %.3f s, hash %s\n", files[i].c_str(), r.message.c_str(),
-                  static_cast<unsigned long long>(r.frames), r.seconds, r.hash.c_str());
-    } else {
-      ++failed;
-      std::printf("FAIL %s: %s\n", files[i].c_str(), r.message.c_str());
-    }
+    failed += o.result.passed ? 0 : 1;
+    printResult(files[i], o.result);
   }
-  std::printf("%zu scenarios, %d failed, %.2f s with -j %d\n", files.size(), failed, seconds, jobs);
-  if (!junit.empty()) writeJunit(junit, files, outcomes, seconds);
+  std::printf("%zu scenarios, %d failed, %.2f s with -j %llu\n", files.size(), failed, elapsed, static_cast<unsigned long long>(jobs));
+  std::fflush(stdout);
+  if (!junit.empty() && !writeJunit(junit, files, outcomes, elapsed)) {
+    std::fprintf(stderr, "%s: cannot write the JUnit report\n", junit.c_str());
+    return 1;
+  }
   return failed ? 1 : 0;
 }
 

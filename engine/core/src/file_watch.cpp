@@ -16,6 +16,9 @@ namespace {
 // A save in place ends with IN_CLOSE_WRITE; a save by rename with IN_MOVED_TO.
 constexpr uint32_t kSaved = IN_CLOSE_WRITE | IN_MOVED_TO;
 
+// "folder/name" of a path as given, made absolute: the key events are matched by.
+std::filesystem::path normalPath(const std::string& file) { return std::filesystem::absolute(file).lexically_normal(); }
+
 }  // namespace
 
 FileWatcher::FileWatcher() : fd_(inotify_init1(IN_NONBLOCK | IN_CLOEXEC)) {
@@ -24,22 +27,43 @@ FileWatcher::FileWatcher() : fd_(inotify_init1(IN_NONBLOCK | IN_CLOEXEC)) {
 
 FileWatcher::~FileWatcher() { close(fd_); }
 
-void FileWatcher::watch(const std::vector<std::string>& files) {
-  for (const auto& [wd, folder] : folders_) inotify_rm_watch(fd_, wd);
-  folders_.clear();
-  files_.clear();
-  std::map<std::string, int> byFolder;
+std::vector<std::string> FileWatcher::watch(const std::vector<std::string>& files) {
+  std::map<std::string, std::string> wantedFiles;  // as files_
+  std::set<std::string> wantedFolders;
   for (const std::string& file : files) {
-    const std::filesystem::path path = std::filesystem::absolute(file).lexically_normal();
-    const std::string folder = path.parent_path().string();
-    if (!byFolder.count(folder)) {
-      const int wd = inotify_add_watch(fd_, folder.c_str(), kSaved);
-      if (wd < 0) throw std::runtime_error(folder + ": cannot watch for changes: " + std::strerror(errno));
-      byFolder[folder] = wd;
-      folders_[wd] = folder;
-    }
-    files_[folder + "/" + path.filename().string()] = file;
+    const std::filesystem::path path = normalPath(file);
+    wantedFolders.insert(path.parent_path().string());
+    wantedFiles.emplace(path.parent_path().string() + "/" + path.filename().string(), file);
   }
+  // Drop only the folders no longer wanted. Removing and adding the others again would give them
+  // new watch descriptors, and the events queued under the old ones would be lost (a save that
+  // landed during a reload).
+  std::set<std::string> watchedFolders;
+  for (auto it = folders_.begin(); it != folders_.end();) {
+    if (wantedFolders.count(it->second)) {
+      watchedFolders.insert(it->second);
+      ++it;
+    } else {
+      inotify_rm_watch(fd_, it->first);
+      it = folders_.erase(it);
+    }
+  }
+  std::string unwatchable;
+  for (const std::string& folder : wantedFolders) {
+    if (watchedFolders.count(folder)) continue;
+    const int wd = inotify_add_watch(fd_, folder.c_str(), kSaved);
+    if (wd < 0) {
+      unwatchable += (unwatchable.empty() ? "" : "; ") + folder + ": cannot watch for changes: " + std::strerror(errno);
+      continue;
+    }
+    folders_[wd] = folder;
+  }
+  std::vector<std::string> added;
+  for (const auto& [key, file] : wantedFiles)
+    if (!files_.count(key)) added.push_back(file);
+  files_ = std::move(wantedFiles);
+  if (!unwatchable.empty()) throw std::runtime_error(unwatchable);
+  return added;
 }
 
 std::vector<std::string> FileWatcher::changes(int timeoutMilliseconds) {

@@ -1,6 +1,7 @@
 #include "platon/core/replay.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -34,7 +35,7 @@ class LineReader {
           ++i;
           continue;
         }
-        if (line[i] == '#' && words.empty()) break;
+        if (line[i] == '#') break;  // a comment, to the end of the line
         const size_t start = i;
         if (line[i] == '"') {
           const size_t end = line.find('"', i + 1);
@@ -51,16 +52,38 @@ class LineReader {
     return false;
   }
 
-  [[noreturn]] void fail(int column, const std::string& reason) const {
-    throw std::runtime_error(file_ + ":" + std::to_string(line_) + ":" + std::to_string(column) + ": " + reason);
+  int line() const { return line_; }
+  [[noreturn]] void failAt(int line, int column, const std::string& reason) const {
+    throw std::runtime_error(file_ + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + visible(reason));
   }
-  [[noreturn]] void failAtEnd(const std::string& reason) const { fail(1, reason + " (at the end of the file)"); }
+  // The reason quotes the file's words: a control byte in them (a NUL would end what() there)
+  // is shown as \xNN.
+  static std::string visible(const std::string& text) {
+    std::string out;
+    for (const char c : text) {
+      if (static_cast<unsigned char>(c) < 0x20 && c != '\t') {
+        char escaped[8];
+        std::snprintf(escaped, sizeof escaped, "\\x%02x", static_cast<unsigned char>(c));
+        out += escaped;
+      } else {
+        out += c;
+      }
+    }
+    return out;
+  }
+  [[noreturn]] void fail(int column, const std::string& reason) const { failAt(line_, column, reason); }
+  // An empty file has no line to name: its line 1 is where the missing text belongs.
+  [[noreturn]] void failAtEnd(const std::string& reason) const {
+    failAt(std::max(line_, 1), 1, reason + " (at the end of the file)");
+  }
 
   uint64_t number(const Word& w, uint64_t max, const char* what) const {
-    if (w.text.empty() || w.text.size() > 20 || w.text.find_first_not_of("0123456789") != std::string::npos)
+    if (w.text.empty() || w.text.find_first_not_of("0123456789") != std::string::npos)
       fail(w.column, std::string(what) + ": expected a whole number, got '" + w.text + "'");
-    const uint64_t v = std::stoull(w.text);
-    if (v > max) fail(w.column, std::string(what) + " " + w.text + " is more than " + std::to_string(max));
+    uint64_t v = 0;
+    const auto [end, error] = std::from_chars(w.text.data(), w.text.data() + w.text.size(), v);
+    if (error == std::errc::result_out_of_range || v > max)  // out of range: more than 2^64 - 1, so more than max
+      fail(w.column, std::string(what) + " " + w.text + " is more than " + std::to_string(max));
     return v;
   }
 
@@ -75,8 +98,67 @@ class LineReader {
   int line_ = 0;
 };
 
+bool isHash(const std::string& text) {
+  return text.size() == 16 && text.find_first_not_of("0123456789abcdef") == std::string::npos;
+}
+
+// The input section: runs of `count buttons...` up to `end`, `frames` in all.
+void readInput(LineReader& in, std::vector<Word>& w, uint64_t frames, Replay& r) {
+  r.held.reserve(frames);
+  for (;;) {
+    if (!in.next(w)) in.failAtEnd("missing 'end'");
+    if (w[0].text == "end" && w.size() == 1) break;
+    const uint64_t count = in.number(w[0], kMaxFrames, "frame count");
+    if (count == 0) in.fail(w[0].column, "a run of 0 frames");
+    if (w.size() < 2) in.fail(w[0].column, "expected 'count buttons...' ('-' for none)");
+    uint8_t held = 0;
+    for (size_t i = 1; i < w.size(); ++i) {
+      if (w[i].text == "-" && w.size() == 2) continue;
+      Button b{};
+      if (!buttonFromName(w[i].text, b))
+        in.fail(w[i].column, "unknown button '" + w[i].text + "' (left, right, up, down, jump, restart, pause, reload, or - for none)");
+      if (held & InputFrame::bit(b)) in.fail(w[i].column, "'" + w[i].text + "' is given twice");
+      held |= InputFrame::bit(b);
+    }
+    if (r.held.size() + count > frames)
+      in.fail(w[0].column, "the input runs past frame " + std::to_string(frames) + " given by 'frames'");
+    r.held.insert(r.held.end(), count, held);
+  }
+  if (r.held.size() != frames)
+    in.fail(w[0].column, "the input covers " + std::to_string(r.held.size()) + " frames, 'frames' says " + std::to_string(frames));
+}
+
+// The frame after `frame` that carries a hash: the next multiple of hashEvery, or the last frame.
+uint64_t nextHashFrame(uint64_t frame, uint64_t hashEvery, uint64_t frames) {
+  if (hashEvery == 0) return frames;
+  return std::min(frames, (frame / hashEvery + 1) * hashEvery);
+}
+
+// The hashes: all that hash_every implies, in order, or none.
+void readHashes(LineReader& in, std::vector<Word>& w, Replay& r) {
+  const uint64_t frames = r.frames();
+  auto implies = [&](uint64_t frame) {
+    return "hash_every " + std::to_string(r.hashEvery) + " implies a hash at frame " + std::to_string(frame) +
+           " (each multiple of hash_every and the last frame): the hashes are all there or none"
+           " (hash_every 0: the last frame's only)";
+  };
+  uint64_t expected = nextHashFrame(0, r.hashEvery, frames);
+  while (in.next(w)) {
+    in.expect(w, "hash", 3, "hash FRAME HEX16");
+    const uint64_t frame = in.number(w[1], frames, "hash frame");
+    if (frame == 0) in.fail(w[1].column, "hash frame 0: frames count from 1 (a hash is the state after its frame)");
+    if (!r.hashes.empty() && frame <= r.hashes.back().frame) in.fail(w[1].column, "hash frames must increase");
+    if (!isHash(w[2].text)) in.fail(w[2].column, "a hash is 16 lower-case hex digits");
+    if (frame != expected) in.fail(w[1].column, frame > expected ? implies(expected) : "hash_every " + std::to_string(r.hashEvery) + " implies no hash at frame " + std::to_string(frame));
+    r.hashes.push_back({frame, std::stoull(w[2].text, nullptr, 16)});
+    expected = frame == frames ? 0 : nextHashFrame(frame, r.hashEvery, frames);
+  }
+  if (!r.hashes.empty() && expected != 0) in.failAtEnd(implies(expected));
+}
+
 }  // namespace
 
+// Whether a path has a ".." step: a replay names its scene's own path, and replays are shared.
 bool hasParentStep(const std::string& path) {
   for (size_t start = 0; start <= path.size();) {
     const size_t end = std::min(path.find('/', start), path.size());
@@ -90,12 +172,14 @@ Replay parseReplay(const std::string& text, const std::string& fileName) {
   LineReader in(text, fileName);
   std::vector<Word> w;
   auto line = [&](const char* what) {
-    if (!in.next(w)) in.failAtEnd("missing '" + std::string(what) + "'");
+    if (!in.next(w)) in.failAtEnd(in.line() == 0 ? "an empty file, not a replay: missing 'platon replay 1'" : "missing '" + std::string(what) + "'");
   };
   Replay r;
   line("platon replay 1");
   if (w.size() != 3 || w[0].text != "platon" || w[1].text != "replay")
-    in.fail(w[0].column, "not a replay: the first line is 'platon replay 1'");
+    in.fail(w[0].column, text.rfind("\xEF\xBB\xBF", 0) == 0 && in.line() == 1
+                             ? "not a replay: the file starts with a byte-order mark (a replay is plain ASCII text)"
+                             : "not a replay: the first line is 'platon replay 1'");
   if (w[2].text != "1") in.fail(w[2].column, "replay version " + w[2].text + " is not supported (this engine reads 1)");
   line("scene \"path\"");
   in.expect(w, "scene", 2, "scene \"path\"");
@@ -105,6 +189,12 @@ Replay parseReplay(const std::string& text, const std::string& fileName) {
   if (hasParentStep(r.scene))
     in.fail(w[1].column, "'" + r.scene + "': a replay's scene path may not contain '..' (replays are shared: it names the scene's own path)");
   line("frames N");
+  if (w[0].text == "scene_files") {  // optional
+    in.expect(w, "scene_files", 2, "scene_files HEX16");
+    if (!isHash(w[1].text)) in.fail(w[1].column, "the scene files' hash is 16 lower-case hex digits");
+    r.sceneFiles = std::stoull(w[1].text, nullptr, 16);
+    line("frames N");
+  }
   in.expect(w, "frames", 2, "frames N");
   const uint64_t frames = in.number(w[1], kMaxFrames, "frames");
   line("hash_every N");
@@ -112,35 +202,8 @@ Replay parseReplay(const std::string& text, const std::string& fileName) {
   r.hashEvery = in.number(w[1], kMaxFrames, "hash_every");
   line("input");
   in.expect(w, "input", 1, "input");
-  r.held.reserve(frames);
-  for (;;) {
-    line("end");
-    if (w[0].text == "end" && w.size() == 1) break;
-    const uint64_t count = in.number(w[0], kMaxFrames, "frame count");
-    if (count == 0) in.fail(w[0].column, "a run of 0 frames");
-    if (w.size() < 2) in.fail(w[0].column, "expected 'count buttons...' ('-' for none)");
-    uint8_t held = 0;
-    for (size_t i = 1; i < w.size(); ++i) {
-      if (w[i].text == "-" && w.size() == 2) continue;
-      Button b{};
-      if (!buttonFromName(w[i].text, b))
-        in.fail(w[i].column, "unknown button '" + w[i].text + "' (left, right, up, down, jump, restart, pause, reload, or - for none)");
-      held |= InputFrame::bit(b);
-    }
-    if (r.held.size() + count > frames)
-      in.fail(w[0].column, "the input runs past frame " + std::to_string(frames) + " given by 'frames'");
-    r.held.insert(r.held.end(), count, held);
-  }
-  if (r.held.size() != frames)
-    in.fail(w[0].column, "the input covers " + std::to_string(r.held.size()) + " frames, 'frames' says " + std::to_string(frames));
-  while (in.next(w)) {
-    in.expect(w, "hash", 3, "hash FRAME HEX16");
-    const uint64_t frame = in.number(w[1], frames, "hash frame");
-    if (!r.hashes.empty() && frame <= r.hashes.back().frame) in.fail(w[1].column, "hash frames must increase");
-    if (w[2].text.size() != 16 || w[2].text.find_first_not_of("0123456789abcdef") != std::string::npos)
-      in.fail(w[2].column, "a hash is 16 lower-case hex digits");
-    r.hashes.push_back({frame, std::stoull(w[2].text, nullptr, 16)});
-  }
+  readInput(in, w, frames, r);
+  readHashes(in, w, r);
   return r;
 }
 
@@ -152,9 +215,18 @@ Replay readReplay(const std::string& path) {
   return parseReplay(text.str(), path);
 }
 
+namespace {
+std::string hex16(uint64_t value) {
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(value));
+  return hex;
+}
+}  // namespace
+
 std::string formatReplay(const Replay& r) {
-  std::string out = "platon replay 1\nscene \"" + r.scene + "\"\nframes " + std::to_string(r.frames()) +
-                    "\nhash_every " + std::to_string(r.hashEvery) + "\ninput\n";
+  std::string out = "platon replay 1\nscene \"" + r.scene + "\"\n";
+  if (r.sceneFiles) out += "scene_files " + hex16(*r.sceneFiles) + "\n";
+  out += "frames " + std::to_string(r.frames()) + "\nhash_every " + std::to_string(r.hashEvery) + "\ninput\n";
   for (size_t i = 0; i < r.held.size();) {
     size_t j = i;
     while (j < r.held.size() && r.held[j] == r.held[i]) ++j;
@@ -166,16 +238,13 @@ std::string formatReplay(const Replay& r) {
     i = j;
   }
   out += "end\n";
-  for (const ReplayHash& h : r.hashes) {
-    char hex[17];
-    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h.hash));
-    out += "hash " + std::to_string(h.frame) + " " + hex + "\n";
-  }
+  for (const ReplayHash& h : r.hashes) out += "hash " + std::to_string(h.frame) + " " + hex16(h.hash) + "\n";
   return out;
 }
 
 void writeReplay(const Replay& replay, const std::string& path) {
-  if (replay.scene.find('"') != std::string::npos) throw std::runtime_error(path + ": a scene path with '\"' cannot be written");
+  if (replay.scene.find_first_of("\"\n\r") != std::string::npos)
+    throw std::runtime_error(path + ": a scene path with '\"' or a line break cannot be written");
   const std::string temporary = path + ".partial";
   {
     std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
@@ -185,9 +254,26 @@ void writeReplay(const Replay& replay, const std::string& path) {
   if (std::rename(temporary.c_str(), path.c_str()) != 0) throw std::runtime_error(path + ": cannot write the replay");
 }
 
-ReplayRecorder::ReplayRecorder(std::string scene, uint64_t hashEvery) {
+uint64_t sceneFilesHash(const std::vector<std::string>& files) {
+  uint64_t h = 14695981039346656037ull;  // FNV-1a, 64 bits
+  auto mix = [&](std::string_view bytes) {
+    for (const char c : bytes) h = (h ^ static_cast<unsigned char>(c)) * 1099511628211ull;
+  };
+  for (const std::string& file : files) {
+    std::ifstream in(file, std::ios::binary);
+    std::ostringstream text;
+    if (in) text << in.rdbuf();
+    const std::string contents = in ? text.str() : std::string("\0unreadable", 11);
+    mix(std::to_string(contents.size()) + ":");  // lengths keep "ab"+"c" apart from "a"+"bc"
+    mix(contents);
+  }
+  return h;
+}
+
+ReplayRecorder::ReplayRecorder(std::string scene, uint64_t hashEvery, std::optional<uint64_t> sceneFiles) {
   replay_.scene = std::move(scene);
   replay_.hashEvery = hashEvery;
+  replay_.sceneFiles = sceneFiles;
 }
 
 void ReplayRecorder::frame(uint8_t held, uint64_t stateHashAfter) {

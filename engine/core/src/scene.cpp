@@ -2,6 +2,9 @@
 
 #include <exception>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
 
 #include "platon/core/mesh_source.h"
 #include "platon/stage/mesh.h"
@@ -55,6 +58,43 @@ stage::Stage meshStage(const stage::Level& level, const SceneManifest& manifest,
   MeshSource* source = scene.findSystem("meshes")->meshSource();
   if (!source) throw stage::StageError({level.file, 1, 1}, "the meshes system reads no meshes");
   return meshStageOf(level, *source);
+}
+
+// "file:line:column" of the manifest's entry naming `system` in its systems list, or the file.
+std::string systemEntry(const SceneManifest& manifest, const std::string& system) {
+  try {
+    std::ifstream in(manifest.path, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    const DataValue root = parseDataFile(text.str(), manifest.path);
+    if (const DataValue* list = root.field("systems"); list && list->table())
+      for (const auto& [key, v] : *list->table())
+        if (v.string() && *v.string() == system)
+          return manifest.path + ":" + std::to_string(v.line) + ":" + std::to_string(v.column);
+  } catch (const std::exception&) {
+  }
+  return manifest.path;
+}
+
+bool hasScripts(const SceneManifest& m) {
+  return !m.rules.empty() || !m.player.empty() || !m.progression.empty() || !m.level.empty() || !m.mods.empty();
+}
+
+// Whether loadScene creates the named system now. "meshes" is created only for a level drawn on
+// a mesh (meshStage), so other scenes never load its plugin and assimp; "scripting" only when
+// the manifest names a script, so a scene without scripts never creates a Lua state; "rendering"
+// is left out where the program has no renderer (headless runs). Any other system the program
+// does not provide is an error at the manifest's entry: the scene would silently go without it.
+bool shouldCreate(const std::string& name, const SceneManifest& manifest, const SystemRegistry& registry) {
+  if (name == "meshes") return false;
+  if (name == "scripting" && !hasScripts(manifest)) return false;
+  if (registry.has(name)) return true;
+  if (name == "rendering") return false;
+  if (name == "audio") throw std::runtime_error(systemEntry(manifest, name) + ": audio: no audio system in this build");
+  std::string known;
+  for (const std::string& n : registry.names()) known += (known.empty() ? "" : ", ") + n;
+  throw std::runtime_error(systemEntry(manifest, name) + ": " + name + ": this program provides no such system (it provides: " +
+                           (known.empty() ? "none" : known) + ")");
 }
 
 }  // namespace
@@ -132,7 +172,8 @@ std::unique_ptr<Scene> loadScene(const std::string& manifestPath, const SystemRe
   const std::vector<std::string> systems = manifest.systems;
   scene->setManifest(std::move(manifest));
   for (const std::string& name : systems)
-    if (registry.has(name) && !scene->findSystem(name)) scene->addSystem(registry.create(name, *scene), name);
+    if (shouldCreate(name, scene->manifest(), registry) && !scene->findSystem(name))
+      scene->addSystem(registry.create(name, *scene), name);
   for (size_t i = 0; i < scene->systemCount(); ++i) scene->system(i).build(*scene);
   for (size_t i = 0; i < scene->stage()->faceCount(); ++i) scene->world().mapPart(scene->stage()->part(i)).initialize();
   for (size_t i = 0; i < scene->systemCount(); ++i) scene->system(i).start(*scene);

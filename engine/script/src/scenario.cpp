@@ -2,22 +2,401 @@
 
 #include <algorithm>
 #include <chrono>
-#include <functional>
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
 #include <map>
+#include <set>
+#include <sstream>
+#include <string_view>
 #include <vector>
 
 #include "lua_host.h"
 #include "platon/core/input.h"
+#include "platon/core/live_scene.h"
 #include "platon/script/script_system.h"
 
 namespace platon::script {
 namespace {
 
+// ---- Reading a scenario file ---------------------------------------------------------------
+//
+// A scenario is a table literal in every example, so it is read as data first, the way the
+// manifest is: every value keeps the line:column it was written at, and each error names it. A
+// trusted scenario may compute its values instead (a loop, a local, a call): one that is not a
+// plain literal runs as Lua, and its result is read by the same checks, with the line of its
+// top-level `return` as the best position there is.
+
+// A value of the scenario file and where it was written (line 0: computed by Lua, not written).
+struct Datum {
+  enum class Kind { Nil, Boolean, Number, String, Table, Other };
+  Kind kind = Kind::Nil;
+  bool boolean = false;
+  double number = 0;
+  std::string text;  // a string's bytes; for Other, what it is ("a function")
+  std::vector<std::pair<Datum, Datum>> entries;  // a table's keys and values, in file order
+  int line = 0, column = 0;
+};
+
+// A string as an error shows it: control bytes as \xNN (a NUL would end the message there).
+std::string visible(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    if (static_cast<unsigned char>(c) < 0x20) {
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\x%02x", static_cast<unsigned char>(c));
+      out += escaped;
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+std::string describe(const Datum& d) {
+  char number[64];
+  switch (d.kind) {
+    case Datum::Kind::Nil: return "nil";
+    case Datum::Kind::Boolean: return d.boolean ? "true" : "false";
+    case Datum::Kind::Number:
+      if (std::isnan(d.number)) return "nan";
+      std::snprintf(number, sizeof number, "%.17g", d.number);
+      return number;
+    case Datum::Kind::String: return "'" + visible(d.text.substr(0, 40)) + (d.text.size() > 40 ? "...'" : "'") + " (a string)";
+    case Datum::Kind::Table: return "a table";
+    case Datum::Kind::Other: return d.text;
+  }
+  return "?";
+}
+
+// A table key as a scenario writes it: 'name' or a number.
+std::string keyText(const Datum& key) {
+  if (key.kind == Datum::Kind::String) return "'" + visible(key.text) + "'";
+  if (key.kind == Datum::Kind::Number) return describe(key);
+  return describe(key);
+}
+
+// Thrown by the literal reader for text that is valid Lua but not a literal: the file then runs.
+struct NotALiteral {};
+// A key given twice in one table (Lua would silently keep the last).
+struct RepeatedKey {
+  Datum key;
+};
+
+// A recursive-descent reader of `return <table constructor>` with literal values only: strings,
+// numbers, booleans, nil, tables with name = , [literal] = and positional fields, comments.
+class LiteralReader {
+ public:
+  explicit LiteralReader(std::string_view text) : text_(text) {}
+
+  Datum file() {
+    skipSpace();
+    if (word() != "return") throw NotALiteral{};
+    skip(6);
+    Datum d = value(0);
+    skipSpace();
+    if (peek() == ';') advance(), skipSpace();
+    if (pos_ < text_.size()) throw NotALiteral{};
+    return d;
+  }
+
+ private:
+  char peek(size_t ahead = 0) const { return pos_ + ahead < text_.size() ? text_[pos_ + ahead] : '\0'; }
+  void advance() {
+    if (text_[pos_] == '\n') ++line_, column_ = 1;
+    else ++column_;
+    ++pos_;
+  }
+  void skip(size_t n) {
+    for (size_t i = 0; i < n && pos_ < text_.size(); ++i) advance();
+  }
+  // "[[", "[=[", ...: the level of a long bracket at pos_, or -1.
+  int longBracket() const {
+    if (peek() != '[') return -1;
+    size_t i = 1;
+    while (peek(i) == '=') ++i;
+    return peek(i) == '[' ? static_cast<int>(i - 1) : -1;
+  }
+  std::string longString(int level) {
+    skip(static_cast<size_t>(level) + 2);
+    if (peek() == '\r') advance();
+    if (peek() == '\n') advance();  // Lua skips a first newline
+    const std::string close = "]" + std::string(static_cast<size_t>(level), '=') + "]";
+    const size_t end = text_.find(close, pos_);
+    if (end == std::string_view::npos) throw NotALiteral{};
+    std::string out(text_.substr(pos_, end - pos_));
+    skip(end - pos_ + close.size());
+    return out;
+  }
+  void skipSpace() {
+    for (;;) {
+      while (pos_ < text_.size() && std::isspace(static_cast<unsigned char>(peek()))) advance();
+      if (peek() == '-' && peek(1) == '-') {
+        skip(2);
+        if (const int level = longBracket(); level >= 0) {
+          longString(level);
+        } else {
+          while (pos_ < text_.size() && peek() != '\n') advance();
+        }
+        continue;
+      }
+      if (pos_ == 0 && peek() == '#') {  // a #! line, as Lua allows
+        while (pos_ < text_.size() && peek() != '\n') advance();
+        continue;
+      }
+      return;
+    }
+  }
+  std::string_view word() const {
+    size_t end = pos_;
+    while (end < text_.size() && (std::isalnum(static_cast<unsigned char>(text_[end])) || text_[end] == '_')) ++end;
+    if (end == pos_ || std::isdigit(static_cast<unsigned char>(text_[pos_]))) return {};
+    return text_.substr(pos_, end - pos_);
+  }
+
+  Datum value(int depth) {
+    if (depth > 32) throw NotALiteral{};  // Lua reads it, and the checks refuse what it is
+    skipSpace();
+    Datum d;
+    d.line = line_, d.column = column_;
+    const char c = peek();
+    const std::string_view w = word();
+    if (c == '{') {
+      d.kind = Datum::Kind::Table;
+      table(d, depth);
+    } else if (c == '"' || c == '\'') {
+      d.kind = Datum::Kind::String;
+      d.text = quoted();
+    } else if (longBracket() >= 0) {
+      d.kind = Datum::Kind::String;
+      d.text = longString(longBracket());
+    } else if (c == '-' || c == '.' || std::isdigit(static_cast<unsigned char>(c))) {
+      d.kind = Datum::Kind::Number;
+      d.number = number();
+    } else if (w == "true" || w == "false") {
+      d.kind = Datum::Kind::Boolean;
+      d.boolean = w == "true";
+      skip(w.size());
+    } else if (w == "nil") {
+      skip(3);
+    } else {
+      throw NotALiteral{};
+    }
+    skipSpace();
+    if (peek() != ',' && peek() != ';' && peek() != '}' && peek() != ']' && peek() != '\0') throw NotALiteral{};  // an operator
+    return d;
+  }
+
+  void table(Datum& t, int depth) {
+    advance();  // {
+    double nextIndex = 1;
+    std::set<std::string> keys;  // Lua would keep the last of two equal keys: a scenario may not repeat one
+    for (;;) {
+      skipSpace();
+      if (peek() == '}') return advance();
+      Datum key;
+      key.line = line_, key.column = column_;
+      const std::string_view w = word();
+      const size_t save = pos_;
+      const int saveLine = line_, saveColumn = column_;
+      bool keyed = false;
+      if (!w.empty() && w != "true" && w != "false" && w != "nil") {
+        skip(w.size());
+        skipSpace();
+        if (peek() == '=' && peek(1) != '=') {
+          advance();
+          key.kind = Datum::Kind::String;
+          key.text = std::string(w);
+          keyed = true;
+        } else {
+          pos_ = save, line_ = saveLine, column_ = saveColumn;
+        }
+      } else if (peek() == '[' && longBracket() < 0) {
+        advance();
+        key = value(depth + 1);
+        if (peek() != ']') throw NotALiteral{};
+        advance();
+        skipSpace();
+        if (peek() != '=') throw NotALiteral{};
+        advance();
+        keyed = true;
+      }
+      if (!keyed) key.kind = Datum::Kind::Number, key.number = nextIndex++;
+      if (!keys.insert((key.kind == Datum::Kind::String ? "s" + key.text : "n" + describe(key))).second) throw RepeatedKey{key};
+      t.entries.emplace_back(std::move(key), value(depth + 1));
+      if (peek() == ',' || peek() == ';') advance();
+      else if (peek() != '}') throw NotALiteral{};
+    }
+  }
+
+  std::string quoted() {
+    const char quote = peek();
+    advance();
+    std::string out;
+    for (;;) {
+      if (pos_ >= text_.size() || peek() == '\n') throw NotALiteral{};  // Lua says where
+      char c = peek();
+      advance();
+      if (c == quote) return out;
+      if (c == '\\') {
+        const char e = peek();
+        if (pos_ >= text_.size()) throw NotALiteral{};
+        advance();
+        switch (e) {
+          case 'n': c = '\n'; break;
+          case 't': c = '\t'; break;
+          case 'r': c = '\r'; break;
+          case '\\': case '"': case '\'': c = e; break;
+          default: {
+            if (!std::isdigit(static_cast<unsigned char>(e))) throw NotALiteral{};  // \x, \z, ...: Lua reads them
+            int byte = e - '0';
+            for (int k = 0; k < 2 && std::isdigit(static_cast<unsigned char>(peek())); ++k) byte = byte * 10 + (peek() - '0'), advance();
+            if (byte > 255) throw NotALiteral{};
+            c = static_cast<char>(byte);
+          }
+        }
+      }
+      out += c;
+    }
+  }
+
+  double number() {
+    bool negative = false;
+    if (peek() == '-') {
+      if (peek(1) == '-') throw NotALiteral{};
+      negative = true;
+      advance();
+      skipSpace();
+    }
+    size_t end = pos_;
+    while (end < text_.size() && (std::isalnum(static_cast<unsigned char>(text_[end])) || text_[end] == '.' ||
+                                  ((text_[end] == '-' || text_[end] == '+') && end > pos_ &&
+                                   (text_[end - 1] == 'e' || text_[end - 1] == 'E') && text_.substr(pos_, 2) != "0x")))
+      ++end;
+    const std::string token(text_.substr(pos_, end - pos_));
+    char* stop = nullptr;
+    const double v = std::strtod(token.c_str(), &stop);
+    if (token.empty() || *stop != '\0') throw NotALiteral{};
+    skip(end - pos_);
+    return negative ? -v : v;
+  }
+
+  std::string_view text_;
+  size_t pos_ = 0;
+  int line_ = 1, column_ = 1;
+};
+
+// The line of the file's last top-level `return` (a line that starts with it): the best position
+// for values a scenario computed. 0 when there is none.
+int returnLine(std::string_view text) {
+  int line = 1, found = 0;
+  for (size_t at = 0; at <= text.size(); ++line) {
+    const size_t eol = std::min(text.find('\n', at), text.size());
+    const std::string_view l = text.substr(at, eol - at);
+    if (l.substr(0, 6) == "return" && (l.size() == 6 || !std::isalnum(static_cast<unsigned char>(l[6])))) found = line;
+    at = eol + 1;
+  }
+  return found;
+}
+
+// Reads the Lua value at `index` into a Datum (raw reads only: a metatable runs no code).
+struct Conversion {
+  Datum out;
+  std::string error;  // why it could not be read
+  int line = 0;
+};
+
+Datum datumOf(lua_State* L, int index, int depth, int line) {
+  index = index < 0 ? lua_gettop(L) + index + 1 : index;
+  Datum d;
+  d.line = line;
+  switch (lua_type(L, index)) {
+    case LUA_TNIL: break;
+    case LUA_TBOOLEAN: d.kind = Datum::Kind::Boolean, d.boolean = lua_toboolean(L, index) != 0; break;
+    case LUA_TNUMBER: d.kind = Datum::Kind::Number, d.number = lua_tonumber(L, index); break;
+    case LUA_TSTRING: {
+      size_t length = 0;
+      const char* text = lua_tolstring(L, index, &length);
+      d.kind = Datum::Kind::String, d.text.assign(text, length);
+      break;
+    }
+    case LUA_TTABLE:
+      if (depth > 32) throw std::runtime_error("tables nested more than 32 deep (a table that holds itself?)");
+      if (!lua_checkstack(L, 4)) throw std::runtime_error("out of Lua stack");
+      d.kind = Datum::Kind::Table;
+      for (lua_pushnil(L); lua_next(L, index); lua_pop(L, 1)) {
+        Datum key = datumOf(L, -2, depth + 1, line);
+        Datum value = datumOf(L, -1, depth + 1, line);
+        d.entries.emplace_back(std::move(key), std::move(value));
+      }
+      // lua_next's order is the hash's: list items and frames are read in key order.
+      std::stable_sort(d.entries.begin(), d.entries.end(), [](const auto& a, const auto& b) {
+        const bool an = a.first.kind == Datum::Kind::Number, bn = b.first.kind == Datum::Kind::Number;
+        if (an != bn) return an;
+        if (an) return a.first.number < b.first.number;
+        return a.first.kind == Datum::Kind::String && b.first.kind == Datum::Kind::String && a.first.text < b.first.text;
+      });
+      break;
+    default: d.kind = Datum::Kind::Other, d.text = std::string("a ") + lua_typename(L, lua_type(L, index)); break;
+  }
+  return d;
+}
+
+int convertProtected(lua_State* L) {
+  auto* job = static_cast<Conversion*>(lua_touserdata(L, 1));
+  try {
+    job->out = datumOf(L, 2, 0, job->line);
+  } catch (const std::exception& e) {
+    job->error = e.what();
+  }
+  return 0;
+}
+
+// Runs a scenario that is not a literal (trusted) and reads what it returns.
+Datum runScenarioFile(const std::string& path, std::string_view text) {
+  LuaHost host;  // the scenario's own state: it only makes the plan
+  lua_State* L = host.state();
+  lua::StackGuard guard(L);
+  host.loadFile(path, Trust::Trusted);
+  host.call(0, 1);
+  Conversion job;
+  job.line = returnLine(text);
+  lua_pushcfunction(L, convertProtected);
+  lua_pushlightuserdata(L, &job);
+  lua_pushvalue(L, -3);
+  host.call(2, 0);
+  if (!job.error.empty()) throw ScriptError(path + (job.line ? ":" + std::to_string(job.line) : "") + ": " + job.error, "");
+  return std::move(job.out);
+}
+
+Datum readScenarioFile(const std::string& path) {
+  if (std::error_code error; std::filesystem::is_directory(path, error))  // a folder opens as an empty file
+    throw ScriptError(path + ": a folder, not a scenario file", "");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ScriptError(path + ": cannot open the scenario", "");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  const std::string text = buffer.str();
+  try {
+    return LiteralReader(text).file();
+  } catch (const NotALiteral&) {
+    return runScenarioFile(path, text);
+  } catch (const RepeatedKey& repeated) {
+    throw ScriptError(path + ":" + std::to_string(repeated.key.line) + ":" + std::to_string(repeated.key.column) + ": " +
+                          "the key " + keyText(repeated.key) + " is given twice in one table",
+                      "");
+  }
+}
+
+// ---- The plan: what a scenario asks for, checked whole before anything runs ----------------
+
 struct Box {
   uint64_t frame;
   physics::MapPartId face;
   int32_t x0, y0, x1, y1;
+  std::string where;  // file:line:column: expect.inside[i]
 };
 
 struct Plan {
@@ -27,8 +406,11 @@ struct Plan {
   std::optional<uint64_t> goalBy;
   std::optional<int> deaths;
   std::map<uint64_t, physics::MapPartId> faceAt;
+  std::map<uint64_t, std::string> faceWhere;  // file:line:column: expect.face[f], for the face id check
   std::vector<Box> inside;
   std::map<uint64_t, std::string> hashAt;
+  std::optional<uint64_t> sceneFilesHash;  // a replay's record of the scene's files
+  std::string passNote;                    // added to a passing run's summary
 
   uint64_t lastCheck() const {
     uint64_t last = 0;
@@ -39,116 +421,213 @@ struct Plan {
   }
 };
 
-[[noreturn]] void planError(const std::string& path, const std::string& what) {
-  throw ScriptError(path + ": " + what, "");
-}
+constexpr double kMaxFrames = 1e8;
+constexpr double kMaxCoordinate = (1 << 30) - 1;  // positions, as the world takes them
 
-double numberAt(lua_State* L, int table, const char* key, const std::string& path, const std::string& where) {
-  lua_getfield(L, table, key);
-  if (!lua_isnumber(L, -1)) planError(path, where + ": '" + key + "' must be a number");
-  const double v = lua_tonumber(L, -1);
-  lua_pop(L, 1);
-  return v;
-}
+// Checks a scenario's table against what a scenario may hold, and turns it into a plan. Every
+// error is "file:line:column: where: reason", where is the value's path (expect.face[600]).
+class PlanReader {
+ public:
+  explicit PlanReader(std::string path) : path_(std::move(path)) {}
 
-core::Button buttonAt(lua_State* L, int index, const std::string& path, const std::string& where) {
-  core::Button b{};
-  if (!lua_isstring(L, index) || !core::buttonFromName(lua_tostring(L, index), b))
-    planError(path, where + ": unknown button (left, right, up, down, jump, restart, pause, reload)");
-  return b;
-}
+  Plan read(const Datum& root) {
+    if (root.kind != Datum::Kind::Table) fail(root, "scenario", "a scenario returns a table, got " + describe(root));
+    knownKeys(root, "scenario", {"scene", "frames", "input", "expect"});
+    Plan plan;
+    const Datum* scene = field(root, "scene");
+    if (!scene) fail(root, "scenario", "'scene' (the manifest's path) is missing");
+    if (scene->kind != Datum::Kind::String || scene->text.empty())
+      fail(*scene, "scene", "expected the manifest's path (a string), got " + describe(*scene));
+    plan.scene = scene->text;
+    if (core::hasParentStep(plan.scene))
+      fail(*scene, "scene", "may not contain '..' (" + plan.scene + "): a scenario names its scene's own path");
+    const Datum* frames = field(root, "frames");
+    if (!frames) fail(root, "scenario", "'frames' (how many frames to run) is missing");
+    plan.frames = wholeNumber(*frames, "frames", 1, kMaxFrames);
+    plan.held.assign(plan.frames + 1, 0);
+    if (const Datum* input = field(root, "input")) readInput(*input, plan);
+    if (const Datum* expect = field(root, "expect")) readExpect(*expect, plan);
+    return plan;
+  }
 
-Plan readPlan(LuaHost& host, const std::string& path) {
-  lua_State* L = host.state();
-  lua::StackGuard guard(L);
-  host.loadFile(path, Trust::Trusted);
-  host.call(0, 1);
-  if (!lua_istable(L, -1)) planError(path, "a scenario returns a table");
-  const int t = lua_gettop(L);
-  Plan plan;
-  lua_getfield(L, t, "scene");
-  if (!lua_isstring(L, -1)) planError(path, "'scene' (the manifest's path) is missing");
-  plan.scene = lua_tostring(L, -1);
-  lua_pop(L, 1);
-  if (core::hasParentStep(plan.scene)) planError(path, "'scene' may not contain '..' (" + plan.scene + ")");
-  const double frames = numberAt(L, t, "frames", path, "scenario");
-  if (frames < 1 || frames > 1e8) planError(path, "'frames' must be within 1..10^8");
-  plan.frames = static_cast<uint64_t>(frames);
-  plan.held.assign(plan.frames + 1, 0);
+  // "file:line:column: where: " for a value (the line alone for a computed one).
+  std::string at(const Datum& d, const std::string& where) const {
+    std::string out = path_;
+    if (d.line > 0) out += ":" + std::to_string(d.line);
+    if (d.column > 0) out += ":" + std::to_string(d.column);
+    return out + ": " + where + ": ";
+  }
 
-  lua_getfield(L, t, "input");
-  if (lua_istable(L, -1)) {
-    const int input = lua_gettop(L);
-    for (int i = 1; lua_rawgeti(L, input, i), !lua_isnil(L, -1); ++i) {
-      const std::string where = "input[" + std::to_string(i) + "]";
-      const int item = lua_gettop(L);
+ private:
+  [[noreturn]] void fail(const Datum& d, const std::string& where, const std::string& reason) const {
+    throw ScriptError(at(d, where) + reason, "");
+  }
+
+  static const Datum* field(const Datum& table, std::string_view key) {
+    for (const auto& [k, v] : table.entries)
+      if (k.kind == Datum::Kind::String && k.text == key) return v.kind == Datum::Kind::Nil ? nullptr : &v;
+    return nullptr;
+  }
+
+  void knownKeys(const Datum& table, const std::string& where, std::initializer_list<const char*> known) const {
+    std::string list;
+    for (const char* k : known) list += std::string(list.empty() ? "" : ", ") + k;
+    for (const auto& [key, value] : table.entries) {
+      bool ok = false;
+      for (const char* k : known) ok = ok || (key.kind == Datum::Kind::String && key.text == k);
+      if (ok) continue;
+      const std::string name = key.kind == Datum::Kind::String ? keyText(key) : "[" + keyText(key) + "]";
+      fail(key.line ? key : value, where, "unknown key " + name + " (known: " + list + ")");
+    }
+  }
+
+  int64_t integer(const Datum& d, const std::string& where, double low, double high) const {
+    char range[96];
+    std::snprintf(range, sizeof range, "%.0f..%.0f", low, high);
+    if (d.kind != Datum::Kind::Number || !std::isfinite(d.number) || d.number != std::floor(d.number))
+      fail(d, where, "expected a whole number in " + std::string(range) + ", got " + describe(d));
+    if (d.number < low || d.number > high) fail(d, where, describe(d) + " is outside " + range);
+    return static_cast<int64_t>(d.number);
+  }
+  uint64_t wholeNumber(const Datum& d, const std::string& where, double low, double high) const {
+    return static_cast<uint64_t>(integer(d, where, low, high));
+  }
+  // A box corner: a position on a face.
+  int32_t coordinate(const Datum& d, const std::string& where) const {
+    return static_cast<int32_t>(integer(d, where, -kMaxCoordinate, kMaxCoordinate));
+  }
+  // A list: keys 1, 2, ... n with no holes, each a table.
+  std::vector<const Datum*> list(const Datum& d, const std::string& where, const char* ofWhat) const {
+    if (d.kind != Datum::Kind::Table) fail(d, where, std::string("expected a list of ") + ofWhat + ", got " + describe(d));
+    std::vector<const Datum*> items;
+    for (const auto& [key, value] : d.entries) {
+      const std::string item = where + "[" + keyText(key) + "]";
+      if (key.kind != Datum::Kind::Number || key.number != static_cast<double>(items.size() + 1))
+        fail(key.line ? key : value, item,
+             std::string("not item ") + std::to_string(items.size() + 1) + " of a list (" + where + " is a list of " + ofWhat +
+                 ", items 1, 2, 3... with no holes)");
+      if (value.kind != Datum::Kind::Table) fail(value, item, std::string("expected ") + ofWhat + ", got " + describe(value));
+      items.push_back(&value);
+    }
+    return items;
+  }
+  uint64_t frameKey(const Datum& key, const Datum& value, const std::string& where, const Plan& plan) const {
+    return wholeNumber(key.line ? key : value, where + " (a frame)", 1, static_cast<double>(plan.frames));
+  }
+
+  core::Button button(const Datum& d, const std::string& where) const {
+    core::Button b{};
+    if (d.kind != Datum::Kind::String || !core::buttonFromName(d.text, b))
+      fail(d, where, "unknown button " + (d.kind == Datum::Kind::String ? keyText(d) : describe(d)) +
+                         " (left, right, up, down, jump, restart, pause, reload)");
+    return b;
+  }
+
+  void readInput(const Datum& input, Plan& plan) const {
+    const std::vector<const Datum*> items = list(input, "input", "{ hold = \"button\", from =, to = } or { press = \"button\", at =, frames = }");
+    for (size_t i = 0; i < items.size(); ++i) {
+      const Datum& item = *items[i];
+      const std::string where = "input[" + std::to_string(i + 1) + "]";
+      const Datum* hold = field(item, "hold");
+      const Datum* press = field(item, "press");
+      if (hold && press) fail(*press, where, "give hold or press, not both");
+      const auto last = static_cast<double>(plan.frames);
       uint64_t from = 0, to = 0;
-      lua_getfield(L, item, "hold");
-      lua_getfield(L, item, "press");
-      core::Button button{};
-      if (!lua_isnil(L, -2)) {
-        button = buttonAt(L, -2, path, where);
-        from = static_cast<uint64_t>(numberAt(L, item, "from", path, where));
-        to = static_cast<uint64_t>(numberAt(L, item, "to", path, where));
-      } else if (!lua_isnil(L, -1)) {
-        button = buttonAt(L, -1, path, where);
-        from = static_cast<uint64_t>(numberAt(L, item, "at", path, where));
-        lua_getfield(L, item, "frames");
-        to = from + (lua_isnumber(L, -1) ? static_cast<uint64_t>(lua_tonumber(L, -1)) : 1) - 1;
-        lua_pop(L, 1);
+      core::Button b{};
+      if (hold) {
+        knownKeys(item, where, {"hold", "from", "to"});
+        b = button(*hold, where);
+        from = wholeNumber(required(item, "from", where), where + ".from", 1, last);
+        to = wholeNumber(required(item, "to", where), where + ".to", 1, last);
+        if (to < from) fail(required(item, "to", where), where + ".to", "frame " + std::to_string(to) + " is before from = " + std::to_string(from));
+      } else if (press) {
+        knownKeys(item, where, {"press", "at", "frames"});
+        b = button(*press, where);
+        from = wholeNumber(required(item, "at", where), where + ".at", 1, last);
+        const Datum* count = field(item, "frames");
+        to = from + (count ? wholeNumber(*count, where + ".frames", 1, last) : 1) - 1;
+        if (to > plan.frames)
+          fail(*count, where + ".frames", "the press runs to frame " + std::to_string(to) + ", past the scenario's " + std::to_string(plan.frames) + " frames");
       } else {
-        planError(path, where + ": give hold = \"button\" (from, to) or press = \"button\" (at, frames)");
+        fail(item, where, "give hold = \"button\" (from, to) or press = \"button\" (at, frames)");
       }
-      if (from < 1 || to < from || to > plan.frames) planError(path, where + ": frames outside 1.." + std::to_string(plan.frames));
-      for (uint64_t f = from; f <= to; ++f) plan.held[f] |= core::InputFrame::bit(button);
-      lua_settop(L, item - 1);
+      for (uint64_t f = from; f <= to; ++f) plan.held[f] |= core::InputFrame::bit(b);
     }
   }
-  lua_settop(L, t);
 
-  lua_getfield(L, t, "expect");
-  if (lua_istable(L, -1)) {
-    const int e = lua_gettop(L);
-    lua_getfield(L, e, "goal_by");
-    if (lua_isnumber(L, -1)) plan.goalBy = static_cast<uint64_t>(lua_tonumber(L, -1));
-    lua_getfield(L, e, "deaths");
-    if (lua_isnumber(L, -1)) plan.deaths = static_cast<int>(lua_tonumber(L, -1));
-    lua_settop(L, e);
-    lua_getfield(L, e, "face");
-    if (lua_istable(L, -1)) {
-      for (lua_pushnil(L); lua_next(L, -2); lua_pop(L, 1))
-        plan.faceAt[static_cast<uint64_t>(lua_tonumber(L, -2))] = static_cast<physics::MapPartId>(lua_tonumber(L, -1));
+  const Datum& required(const Datum& table, const char* key, const std::string& where) const {
+    const Datum* v = field(table, key);
+    if (!v) fail(table, where, std::string("'") + key + "' is missing");
+    return *v;
+  }
+
+  void readExpect(const Datum& expect, Plan& plan) const {
+    if (expect.kind != Datum::Kind::Table) fail(expect, "expect", "expected a table of checks, got " + describe(expect));
+    knownKeys(expect, "expect", {"goal_by", "deaths", "face", "inside", "hash"});
+    const auto last = static_cast<double>(plan.frames);
+    if (const Datum* goal = field(expect, "goal_by")) plan.goalBy = wholeNumber(*goal, "expect.goal_by", 1, last);
+    if (const Datum* deaths = field(expect, "deaths"))
+      plan.deaths = static_cast<int>(wholeNumber(*deaths, "expect.deaths", 0, 2147483647.0));
+    if (const Datum* face = field(expect, "face")) {
+      if (face->kind != Datum::Kind::Table) fail(*face, "expect.face", "expected { [frame] = face, ... }, got " + describe(*face));
+      for (const auto& [key, value] : face->entries) {
+        const std::string where = "expect.face[" + keyText(key) + "]";
+        const uint64_t f = frameKey(key, value, where, plan);
+        plan.faceAt[f] = static_cast<physics::MapPartId>(wholeNumber(value, where, 0, 4095));
+        plan.faceWhere[f] = at(value, where);
+      }
     }
-    lua_settop(L, e);
-    lua_getfield(L, e, "hash");
-    if (lua_istable(L, -1)) {
-      for (lua_pushnil(L); lua_next(L, -2); lua_pop(L, 1))
-        if (lua_isstring(L, -1)) plan.hashAt[static_cast<uint64_t>(lua_tonumber(L, -2))] = lua_tostring(L, -1);
+    if (const Datum* hash = field(expect, "hash")) {
+      if (hash->kind != Datum::Kind::Table) fail(*hash, "expect.hash", "expected { [frame] = \"16 hex digits\", ... }, got " + describe(*hash));
+      for (const auto& [key, value] : hash->entries) {
+        const std::string where = "expect.hash[" + keyText(key) + "]";
+        const uint64_t f = frameKey(key, value, where, plan);
+        if (value.kind != Datum::Kind::String || value.text.size() != 16 ||
+            value.text.find_first_not_of("0123456789abcdef") != std::string::npos)
+          fail(value, where, "frame " + std::to_string(f) + ": state hash " + describe(value) + " is not 16 lower-case hex digits");
+        plan.hashAt[f] = value.text;
+      }
     }
-    lua_settop(L, e);
-    lua_getfield(L, e, "inside");
-    if (lua_istable(L, -1)) {
-      const int list = lua_gettop(L);
-      for (int i = 1; lua_rawgeti(L, list, i), !lua_isnil(L, -1); ++i) {
-        const int item = lua_gettop(L);
-        const std::string where = "expect.inside[" + std::to_string(i) + "]";
+    if (const Datum* inside = field(expect, "inside")) {
+      const std::vector<const Datum*> items = list(*inside, "expect.inside", "{ frame =, face =, box = { x0, y0, x1, y1 } }");
+      for (size_t i = 0; i < items.size(); ++i) {
+        const Datum& item = *items[i];
+        const std::string where = "expect.inside[" + std::to_string(i + 1) + "]";
+        knownKeys(item, where, {"frame", "face", "box"});
         Box b{};
-        b.frame = static_cast<uint64_t>(numberAt(L, item, "frame", path, where));
-        b.face = static_cast<physics::MapPartId>(numberAt(L, item, "face", path, where));
-        lua_getfield(L, item, "box");
-        if (!lua_istable(L, -1) || lua_objlen(L, -1) != 4) planError(path, where + ": box = {x0, y0, x1, y1}");
-        int32_t* corners[] = {&b.x0, &b.y0, &b.x1, &b.y1};
-        for (int k = 0; k < 4; ++k) {
-          lua_rawgeti(L, -1, k + 1);
-          *corners[k] = static_cast<int32_t>(lua_tonumber(L, -1));
-          lua_pop(L, 1);
-        }
+        b.frame = wholeNumber(required(item, "frame", where), where + ".frame", 1, last);
+        b.face = static_cast<physics::MapPartId>(wholeNumber(required(item, "face", where), where + ".face", 0, 4095));
+        b.where = at(*field(item, "face"), where + ".face");
+        const Datum& box = required(item, "box", where);
+        const std::vector<std::pair<Datum, Datum>>& corners = box.entries;
+        bool isList = box.kind == Datum::Kind::Table && corners.size() == 4;
+        for (size_t k = 0; isList && k < 4; ++k) isList = corners[k].first.kind == Datum::Kind::Number && corners[k].first.number == static_cast<double>(k + 1);
+        if (!isList) fail(box, where + ".box", "expected { x0, y0, x1, y1 }, got " + describe(box));
+        int32_t* out[] = {&b.x0, &b.y0, &b.x1, &b.y1};
+        for (size_t k = 0; k < 4; ++k) *out[k] = coordinate(corners[k].second, where + ".box[" + std::to_string(k + 1) + "]");
+        if (b.x1 < b.x0 || b.y1 < b.y0)
+          fail(box, where + ".box", "an inverted box: x0 <= x1 and y0 <= y1 (corners lower left, upper right)");
         plan.inside.push_back(b);
-        lua_settop(L, item - 1);
       }
     }
   }
-  return plan;
+
+  std::string path_;
+};
+
+Plan readPlan(const std::string& path) { return PlanReader(path).read(readScenarioFile(path)); }
+
+// The face ids the plan checks, against the stage the scene loaded: a face that does not exist
+// can never match.
+void checkFaces(const Plan& plan, const core::Scene& scene) {
+  const size_t faces = scene.stage() ? scene.stage()->faceCount() : 0;
+  auto check = [&](physics::MapPartId face, const std::string& where) {
+    if (face >= faces)
+      throw ScriptError(where + "face " + std::to_string(face) + " does not exist (the stage's faces are 0.." +
+                            std::to_string(faces == 0 ? 0 : faces - 1) + ")", "");
+  };
+  for (const auto& [frame, face] : plan.faceAt) check(face, plan.faceWhere.at(frame));
+  for (const Box& b : plan.inside) check(b.face, b.where);
 }
 
 std::string hex(uint64_t value) {
@@ -159,8 +638,9 @@ std::string hex(uint64_t value) {
 
 
 // The checks of frame f; "" when they pass.
+// `filesNote`: said before a hash mismatch ("" or why the recorded hashes may no longer hold).
 std::string checkFrame(const Plan& plan, uint64_t f, core::Scene& scene, ScriptSystem* scripts, uint64_t traceEvery,
-                       const std::string& path) {
+                       const std::string& path, const std::string& filesNote) {
   const std::string at = "frame " + std::to_string(f) + ": ";
   if (traceEvery > 0 && scripts && f % traceEvery == 0) {
     const GameStatus s = scripts->status();
@@ -170,7 +650,7 @@ std::string checkFrame(const Plan& plan, uint64_t f, core::Scene& scene, ScriptS
   if (const size_t overlaps = scene.world().countOverlaps(); overlaps != 0)
     return at + std::to_string(overlaps) + " instance(s) overlap a solid line";
   if (auto h = plan.hashAt.find(f); h != plan.hashAt.end() && hex(scene.world().stateHash()) != h->second)
-    return at + "state hash " + hex(scene.world().stateHash()) + ", expected " + h->second;
+    return filesNote + at + "state hash " + hex(scene.world().stateHash()) + ", expected " + h->second;
   if (!scripts) return "";
   if (auto face = plan.faceAt.find(f); face != plan.faceAt.end()) {
     const GameStatus s = scripts->status();
@@ -195,7 +675,9 @@ namespace {
 ScenarioResult runPlan(const std::string& path, const std::function<Plan()>& makePlan, const RunOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   ScenarioResult result;
+  std::string passNote;
   auto finish = [&](bool passed, std::string message) {
+    if (passed) message += passNote;
     result.passed = passed;
     result.message = std::move(message);
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -207,23 +689,30 @@ ScenarioResult runPlan(const std::string& path, const std::function<Plan()>& mak
   };
   try {
     const Plan plan = makePlan();
+    passNote = plan.passNote;
     core::SystemRegistry registry;
     registry.add("scripting", makeScriptSystem);
     registry.addPlugin("meshes", "platon_meshes", options.pluginFolders);
     std::unique_ptr<core::Scene> scene = core::loadScene(plan.scene, registry);
+    checkFaces(plan, *scene);
+    const uint64_t filesHash = core::sceneFilesHash(core::sceneSourceFiles(*scene));
+    const std::string filesNote = plan.sceneFilesHash && *plan.sceneFilesHash != filesHash
+                                      ? "the scene's files changed since the recording (files " + hex(filesHash) +
+                                            ", recorded with " + hex(*plan.sceneFilesHash) + "): "
+                                      : "";
     ScriptSystem* scripts = nullptr;
     for (size_t i = 0; i < scene->systemCount(); ++i)
       if (auto* s = dynamic_cast<ScriptSystem*>(&scene->system(i))) scripts = s;
     if ((plan.goalBy || plan.deaths || !plan.faceAt.empty() || !plan.inside.empty()) && !scripts)
       return finish(false, "the scene has no scripts, so no player to check");
-    if (options.record) recorder.emplace(plan.scene, options.hashEvery);
+    if (options.record) recorder.emplace(plan.scene, options.hashEvery, filesHash);
     core::InputEdges edges;
     std::string failure;
     for (uint64_t f = 1; f <= plan.frames && failure.empty(); ++f) {
       scene->step(edges.next(plan.held[f]));
       result.frames = f;
       if (recorder) recorder->frame(plan.held[f], scene->world().stateHash());
-      failure = checkFrame(plan, f, *scene, scripts, options.traceEvery, path);
+      failure = checkFrame(plan, f, *scene, scripts, options.traceEvery, path, filesNote);
       // With the goal reached there is nothing left to see, unless a check waits for a later frame.
       if (failure.empty() && plan.goalBy && f >= plan.lastCheck() && scripts && scripts->status().won) break;
     }
@@ -258,10 +747,7 @@ ScenarioResult runPlan(const std::string& path, const std::function<Plan()>& mak
 }  // namespace
 
 ScenarioResult runScenario(const std::string& path, const RunOptions& options) {
-  return runPlan(path, [&] {
-    LuaHost host;  // the scenario's own state: it only reads the plan
-    return readPlan(host, path);
-  }, options);
+  return runPlan(path, [&] { return readPlan(path); }, options);
 }
 
 ScenarioResult runReplay(const std::string& path, const RunOptions& options) {
@@ -273,13 +759,44 @@ ScenarioResult runReplay(const std::string& path, const RunOptions& options) {
     plan.held.assign(1, 0);
     plan.held.insert(plan.held.end(), replay.held.begin(), replay.held.end());
     for (const core::ReplayHash& h : replay.hashes) plan.hashAt[h.frame] = hex(h.hash);
+    plan.sceneFilesHash = replay.sceneFiles;
+    if (replay.hashes.empty()) plan.passNote = " (the replay has no hashes: its input ran, nothing was compared)";
     return plan;
   }, options);
 }
 
+namespace {
+
+// `text` as a Lua string literal, "..." with the quote, the backslash and control bytes escaped,
+// so that any path reads back as itself (other bytes, UTF-8 included, go in as they are).
+std::string luaQuoted(const std::string& text) {
+  std::string out = "\"";
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == '"' || c == '\\') {
+      (out += '\\') += c;
+    } else if (byte < 0x20 || byte == 0x7f) {
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\%03u", byte);  // Lua's decimal escape
+      out += escaped;
+    } else {
+      out += c;
+    }
+  }
+  return out + "\"";
+}
+
+// A name for the leading comment: one line.
+std::string oneLine(std::string text) {
+  std::replace_if(text.begin(), text.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
+  return text;
+}
+
+}  // namespace
+
 std::string scenarioFromReplay(const core::Replay& replay, const ScenarioResult& outcome, const std::string& name) {
-  std::string out = "-- Made by `platon scenario` from " + name + ": the recorded input, and what that run reached.\n";
-  out += "return {\n  scene = \"" + replay.scene + "\",\n  frames = " + std::to_string(replay.frames()) + ",\n  input = {\n";
+  std::string out = "-- Made by `platon scenario` from " + oneLine(name) + ": the recorded input, and what that run reached.\n";
+  out += "return {\n  scene = " + luaQuoted(replay.scene) + ",\n  frames = " + std::to_string(replay.frames()) + ",\n  input = {\n";
   for (int b = 0; b < core::kButtonCount; ++b) {
     const std::string button(core::buttonName(static_cast<core::Button>(b)));
     for (size_t i = 0; i < replay.held.size();) {

@@ -1,9 +1,14 @@
 // Replay files: every malformed input is an error at file:line:column, and any input survives a
 // write and a read unchanged.
 #include "platon/core/replay.h"
+#include "platon/core/input.h"
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
 #include <stdexcept>
 
 #include "platon/testing/rng.h"
@@ -27,7 +32,8 @@ TEST(Replay, MalformedInputsNamePositionAndReason) {
     std::string text, error;
   };
   const Case cases[] = {
-      {"", "run.replay:0:1: missing 'platon replay 1' (at the end of the file)"},
+      {"", "run.replay:1:1: an empty file, not a replay: missing 'platon replay 1' (at the end of the file)"},
+      {"\xEF\xBB\xBFplaton replay 1\n", "run.replay:1:1: not a replay: the file starts with a byte-order mark"},
       {"platon movie 1\n", "run.replay:1:1: not a replay: the first line is 'platon replay 1'"},
       {"platon replay 7\n", "run.replay:1:15: replay version 7 is not supported (this engine reads 1)"},
       {"platon replay 1\nscene \"levels\n", "run.replay:2:7: unfinished string"},
@@ -37,6 +43,17 @@ TEST(Replay, MalformedInputsNamePositionAndReason) {
       {"platon replay 1\nscene \"a\"\nframes ten\n", "run.replay:3:8: frames: expected a whole number, got 'ten'"},
       {"platon replay 1\nscene \"a\"\nframes -3\n", "run.replay:3:8: frames: expected a whole number, got '-3'"},
       {"platon replay 1\nscene \"a\"\nframes 99999999999\n", "run.replay:3:8: frames 99999999999 is more than 67108864"},
+      // More than 2^64: no bare conversion error, the same message with its place.
+      {"platon replay 1\nscene \"a\"\nframes 99999999999999999999\n",
+       "run.replay:3:8: frames 99999999999999999999 is more than 67108864"},
+      {"platon replay 1\nscene \"a\"\nframes 123456789012345678901234567890\n", "run.replay:3:8: frames 123456789012345678901234567890 is more"},
+      {"platon replay 1\nscene \"a\"\nscene_files 12\n", "run.replay:3:13: the scene files' hash is 16 lower-case hex digits"},
+      {kHeader + "10 left left\nend\n", "run.replay:6:9: 'left' is given twice"},
+      {kHeader + "10 -\nend\nhash 0 0123456789abcdef\n", "run.replay:8:6: hash frame 0: frames count from 1"},
+      // The hashes hash_every implies are all there or none: a stripped or tampered file is refused.
+      {kHeader + "10 -\nend\nhash 10 0123456789abcdef\n", "run.replay:8:6: hash_every 5 implies a hash at frame 5"},
+      {kHeader + "10 -\nend\nhash 5 0123456789abcdef\n", "run.replay:8:1: hash_every 5 implies a hash at frame 10"},
+      {kHeader + "10 -\nend\nhash 5 0123456789abcdef\nhash 7 0123456789abcdef\n", "run.replay:9:6: hash_every 5 implies no hash at frame 7"},
       {kHeader + "10 left\n", "missing 'end' (at the end of the file)"},
       {kHeader + "10 lef\nend\n", "run.replay:6:4: unknown button 'lef'"},
       {kHeader + "0 -\nend\n", "run.replay:6:1: a run of 0 frames"},
@@ -46,7 +63,7 @@ TEST(Replay, MalformedInputsNamePositionAndReason) {
       {kHeader + "10 - left\nend\n", "run.replay:6:4: unknown button '-'"},
       {kHeader + "10 -\nend\nhash 5 12\n", "run.replay:8:8: a hash is 16 lower-case hex digits"},
       {kHeader + "10 -\nend\nhash 11 0123456789abcdef\n", "run.replay:8:6: hash frame 11 is more than 10"},
-      {kHeader + "10 -\nend\nhash 5 0123456789abcdef\nhash 5 0123456789abcdef\n", "run.replay:9:6: hash frames must increase"},
+      {kHeader + "10 -\nend\nhash 5 0123456789abcdef\nhash 5 0123456789abcdef\nhash 10 0123456789abcdef\n", "run.replay:9:6: hash frames must increase"},
       {kHeader + "10 -\nend\nhash 5\n", "run.replay:8:6: expected 'hash FRAME HEX16'"},
       {kHeader + "10 -\nend\nnoise\n", "run.replay:8:1: expected 'hash FRAME HEX16', got 'noise'"},
   };
@@ -62,6 +79,65 @@ TEST(Replay, CommentsBlankLinesAndNoInput) {
   EXPECT_EQ(r.scene, "s.lua");
   EXPECT_EQ(r.held, (std::vector<uint8_t>{0, 0, 0}));
   EXPECT_TRUE(r.hashes.empty());
+}
+
+TEST(Replay, AControlByteInTheFileIsShownNotCutShort) {
+  const std::string error = errorOf(kHeader + "10 ri" + std::string(1, '\0') + "ght\nend\n");
+  EXPECT_NE(error.find("run.replay:6:4: unknown button 'ri\\x00ght'"), std::string::npos) << error;
+}
+
+TEST(Replay, ACommentRunsFromAHashToTheEndOfTheLine) {
+  const Replay r = parseReplay("platon replay 1  # a run\nscene \"a#b.lua\"\nframes 3 # three\nhash_every 0\ninput\n"
+                               "3 right # all the way\nend # done\nhash 3 0123456789abcdef # the last\n",
+                               "x.replay");
+  EXPECT_EQ(r.scene, "a#b.lua");  // not inside quotes
+  EXPECT_EQ(r.held, std::vector<uint8_t>(3, InputFrame::bit(Button::Right)));
+  ASSERT_EQ(r.hashes.size(), 1u);
+  EXPECT_EQ(r.hashes[0].frame, 3u);
+}
+
+TEST(Replay, AllHashesOrNone) {
+  // No hashes at all is an input-only file: it reads (and replays without checking anything).
+  const Replay none = parseReplay(kHeader + "10 -\nend\n", "x.replay");
+  EXPECT_TRUE(none.hashes.empty());
+  const Replay all = parseReplay(kHeader + "10 -\nend\nhash 5 0123456789abcdef\nhash 10 0123456789abcdef\n", "x.replay");
+  EXPECT_EQ(all.hashes.size(), 2u);
+  // hash_every 4 over 10 frames: 4, 8 and the last.
+  const std::string odd = "platon replay 1\nscene \"a\"\nframes 10\nhash_every 4\ninput\n10 -\nend\n";
+  EXPECT_EQ(parseReplay(odd + "hash 4 0123456789abcdef\nhash 8 0123456789abcdef\nhash 10 0123456789abcdef\n", "x.replay").hashes.size(), 3u);
+  EXPECT_NE(errorOf(odd + "hash 4 0123456789abcdef\nhash 10 0123456789abcdef\n").find("implies a hash at frame 8"), std::string::npos);
+}
+
+TEST(Replay, TheSceneFilesHashIsOptionalAndSurvivesWriteAndRead) {
+  const Replay old = parseReplay(kHeader + "10 -\nend\n", "old.replay");
+  EXPECT_FALSE(old.sceneFiles.has_value());  // files from before the line existed still read
+  EXPECT_EQ(formatReplay(old).find("scene_files"), std::string::npos);
+  ReplayRecorder recorder("levels/a/scene.lua", 5, 0x0123456789abcdefull);
+  for (int f = 0; f < 10; ++f) recorder.frame(0, 7);
+  const std::string text = formatReplay(recorder.replay());
+  EXPECT_NE(text.find("scene \"levels/a/scene.lua\"\nscene_files 0123456789abcdef\nframes 10\n"), std::string::npos) << text;
+  EXPECT_EQ(parseReplay(text, "new.replay").sceneFiles, 0x0123456789abcdefull);
+}
+
+TEST(Replay, TheSceneFilesHashFollowsEveryByteOfEveryFile) {
+  const std::string folder = ::testing::TempDir() + "/platon_scene_files_" + std::to_string(getpid());
+  std::filesystem::create_directories(folder);
+  auto write = [&](const std::string& name, const std::string& text) {
+    std::ofstream(folder + "/" + name, std::ios::binary | std::ios::trunc) << text;
+    return folder + "/" + name;
+  };
+  const std::string a = write("a.lua", "return {}"), b = write("b.level", "lines");
+  const uint64_t before = sceneFilesHash({a, b});
+  EXPECT_EQ(sceneFilesHash({a, b}), before);
+  write("b.level", "lineS");
+  EXPECT_NE(sceneFilesHash({a, b}), before);
+  write("b.level", "lines");
+  EXPECT_EQ(sceneFilesHash({a, b}), before);
+  write("a.lua", "return {}l"), write("b.level", "ines");  // the same bytes split another way
+  EXPECT_NE(sceneFilesHash({a, b}), before);
+  write("b.level", "");
+  EXPECT_NE(sceneFilesHash({a, b}), sceneFilesHash({a, folder + "/missing"}));  // empty is not missing
+  std::filesystem::remove_all(folder);
 }
 
 TEST(Replay, RandomRunsSurviveWriteAndRead) {

@@ -21,9 +21,14 @@ class FileWatcher {
   FileWatcher(const FileWatcher&) = delete;
   FileWatcher& operator=(const FileWatcher&) = delete;
 
-  // Replaces the watched set. A file that does not exist yet is watched for its creation; a
-  // folder that does not exist is an error.
-  void watch(const std::vector<std::string>& files);
+  // Makes `files` the watched set. A folder watched before and still wanted keeps its watch, so a
+  // save that is already queued, or that lands while the set changes, is still reported by the
+  // next changes(); only folders no longer wanted are dropped. A file that does not exist yet is
+  // watched for its creation. A folder that does not exist (or cannot be watched) is an error:
+  // every other file is watched all the same, then std::runtime_error names the folders left out.
+  // Returns the files that were not watched before this call (they may have been saved before
+  // their watch began: the caller can compare their times).
+  std::vector<std::string> watch(const std::vector<std::string>& files);
   // The watched files (as given to watch()) saved since the last call, each once; waits up to
   // `timeoutMilliseconds` for the first one (0: just look).
   std::vector<std::string> changes(int timeoutMilliseconds = 0);

@@ -5,8 +5,15 @@
 // keeps its place and state where the new level allows it. Any error while loading or taking
 // over leaves the old scene running and is reported; so is an error while running a frame, and
 // the game goes on. The files to watch are the manifest and what each system read
-// (System::sourceFiles).
+// (System::sourceFiles), and after a refused reload also the files the refused manifest names (a
+// broken edit may have added one, and saving its fix must reload). A save that lands while a
+// reload runs is not lost: the next poll() reloads again for it.
+//
+// Entity handles do not cross a reload: the new world numbers its entities afresh, so a handle a
+// script carried over (through save/onReload) may name another entity of the new world. Scripts
+// carry places and their own ids instead, and look entities up again.
 #pragma once
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -22,6 +29,11 @@ struct ReloadReport {
   std::vector<std::string> files;  // the saved files that caused it
   double milliseconds = 0;         // loading the new version and taking over
 };
+
+// The files a loaded scene was read from: its manifest, its level file and what each system read
+// (System::sourceFiles), each once, in that order. Hot reload watches them; a replay records a
+// hash of their contents.
+std::vector<std::string> sceneSourceFiles(Scene& scene);
 
 class LiveScene {
  public:
@@ -44,7 +56,14 @@ class LiveScene {
   uint64_t reloads() const { return reloads_; }
 
  private:
+  // The files the live version read: the manifest, the level file, each system's sources.
   std::vector<std::string> watchedFiles() const;
+  // The files the manifest on disk names now, read without Lua (empty when it does not parse:
+  // the manifest itself is always watched).
+  std::vector<std::string> manifestFiles() const;
+  // Watches the live version's files and the manifest's; a file watched only from now on that
+  // was saved since `since` goes to pending_.
+  void watchAgain(std::filesystem::file_time_type since, ReloadReport& report);
 
   std::string path_;
   const SystemRegistry& registry_;
@@ -52,6 +71,7 @@ class LiveScene {
   std::optional<FileWatcher> watcher_;
   std::string lastError_;
   uint64_t reloads_ = 0;
+  std::vector<std::string> pending_;  // saved while a reload ran: the next poll() reloads for them
 };
 
 }  // namespace platon::core

@@ -5,6 +5,7 @@
 //
 //   platon replay 1
 //   scene "levels/cube_intro/scene.lua"
+//   scene_files 5d41402abc4b2a76   <- optional: a hash of the scene's files when it was recorded
 //   frames 336
 //   hash_every 60
 //   input
@@ -15,9 +16,14 @@
 //   hash 60 0a1b2c3d4e5f6a7b
 //   hash 120 ...
 //
-// Blank lines and lines starting with '#' are ignored. Errors name file:line:column.
+// Blank lines are ignored, and so is everything from a '#' that starts a word to the end of its
+// line (a comment on a line of its own or after the words). The file is plain ASCII: a UTF-8
+// byte-order mark is not skipped. The hashes are all or none: a file either has every hash its
+// hash_every implies (each multiple of it, and the last frame) or none at all (input only: it
+// replays but checks nothing). Errors name file:line:column.
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +36,10 @@ struct ReplayHash {
 
 struct Replay {
   std::string scene;           // the scene's manifest, as the run named it
+  // A hash of the contents of the scene's files when it was recorded (core/live_scene.h's
+  // sceneSourceFiles): a replay that goes another way can say whether they changed since. Files
+  // from before this line existed have none.
+  std::optional<uint64_t> sceneFiles;
   std::vector<uint8_t> held;   // held[f - 1]: the buttons held on frame f (InputFrame::held bits)
   uint64_t hashEvery = 60;     // frames between recorded hashes (0: none)
   std::vector<ReplayHash> hashes;  // increasing frames
@@ -49,10 +59,14 @@ std::string formatReplay(const Replay& replay);
 // Writes through a temporary file and a rename, so a crash never leaves half a replay.
 void writeReplay(const Replay& replay, const std::string& path);
 
+// The hash a replay records of its scene's files: their contents in the order given (a file that
+// cannot be read counts as one that says so).
+uint64_t sceneFilesHash(const std::vector<std::string>& files);
+
 // Builds a replay while a run goes on: call frame() after each simulated frame.
 class ReplayRecorder {
  public:
-  ReplayRecorder(std::string scene, uint64_t hashEvery);
+  ReplayRecorder(std::string scene, uint64_t hashEvery, std::optional<uint64_t> sceneFiles = std::nullopt);
   void frame(uint8_t held, uint64_t stateHashAfter);
   // The replay so far, its last frame's hash included.
   Replay replay() const;

@@ -1,0 +1,350 @@
+// The platon program as CI and a person run it: `platon run` (worker processes, time limits,
+// crashes, malformed scenarios, JUnit, result lines, --record names, options), `platon play`
+// (exit status after script errors, --frames, a recording written on SIGTERM) and
+// `platon scenario` (any scene path). Each runs the built program in a temporary folder.
+// PLATON_EXE in the environment runs another build instead (to see these fail on an old one).
+#include <gtest/gtest.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "platon/testing/temp_folder.h"
+
+namespace {
+
+using Folder = platon::testing::TempFolder;
+using Clock = std::chrono::steady_clock;
+
+const std::string kRoot = PLATON_SOURCE_ROOT;
+
+std::string platonExe() {
+  const char* other = std::getenv("PLATON_EXE");
+  return other && *other ? other : PLATON_EXE;
+}
+
+std::string contents(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+struct Ran {
+  int status = -1;  // the exit status, or 128 + the signal that ended it
+  std::string out, err;
+  double seconds = 0;
+};
+
+// A running platon: its output is collected until it ends.
+class Process {
+ public:
+  Process(const std::vector<std::string>& args, const std::string& cwd) {
+    int out[2], err[2];
+    if (pipe(out) != 0 || pipe(err) != 0) throw std::runtime_error("pipe");
+    pid_ = fork();
+    if (pid_ == 0) {
+      dup2(out[1], 1), dup2(err[1], 2);
+      close(out[0]), close(err[0]), close(out[1]), close(err[1]);
+      if (chdir(cwd.c_str()) != 0) _exit(127);
+      std::vector<std::string> all{platonExe()};
+      all.insert(all.end(), args.begin(), args.end());
+      std::vector<char*> argv;
+      for (std::string& a : all) argv.push_back(a.data());
+      argv.push_back(nullptr);
+      execv(argv[0], argv.data());
+      _exit(127);
+    }
+    close(out[1]), close(err[1]);
+    out_ = out[0], err_ = err[0];
+  }
+  ~Process() {
+    if (pid_ > 0 && !ended_) kill(pid_, SIGKILL), finish(1);
+  }
+
+  // Reads what is there (waiting up to `ms`); true while the program's output is still open.
+  bool pump(int ms) {
+    pollfd fds[2] = {{out_, POLLIN, 0}, {err_, POLLIN, 0}};
+    if (out_ < 0 && err_ < 0) return false;
+    poll(fds, 2, ms);
+    const std::pair<int*, std::string*> streams[2] = {{&out_, &ran_.out}, {&err_, &ran_.err}};
+    for (int k = 0; k < 2; ++k) {
+      auto [fd, text] = streams[k];
+      if (*fd < 0 || !(fds[k].revents & (POLLIN | POLLHUP | POLLERR))) continue;  // read only what will not block
+      char buffer[65536];
+      const ssize_t n = read(*fd, buffer, sizeof buffer);
+      if (n > 0) text->append(buffer, static_cast<size_t>(n));
+      else if (n == 0) close(*fd), *fd = -1;
+    }
+    return out_ >= 0 || err_ >= 0;
+  }
+  bool awaitOutput(const std::string& text, double seconds) {
+    const Clock::time_point end = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
+    while (ran_.out.find(text) == std::string::npos && Clock::now() < end)
+      if (!pump(20)) break;
+    return ran_.out.find(text) != std::string::npos;
+  }
+  void signal(int s) { kill(pid_, s); }
+  // Waits for the end, killing the program after `seconds`.
+  Ran finish(double seconds) {
+    const Clock::time_point start = Clock::now();
+    const Clock::time_point end = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
+    while (Clock::now() < end && pump(50)) {
+    }
+    if (Clock::now() >= end) kill(pid_, SIGKILL);
+    int status = 0;
+    waitpid(pid_, &status, 0);
+    ended_ = true;
+    while (pump(0)) {
+    }
+    ran_.status = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    ran_.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    return ran_;
+  }
+
+ private:
+  pid_t pid_ = -1;
+  int out_ = -1, err_ = -1;
+  bool ended_ = false;
+  Ran ran_;
+};
+
+Ran platon(const std::vector<std::string>& args, const std::string& cwd, double seconds = 60) {
+  return Process(args, cwd).finish(seconds);
+}
+
+// A cube scene of its own in `folder`/`name`: a floor on every face, `tick` as the level's tick.
+std::string sceneWith(const Folder& folder, const std::string& name, const std::string& tick = "") {
+  folder.write(name + "/scene.lua",
+               "return { systems = { 'scripting' }, stage = { solid = 'cube', edge = 4096 },\n"
+               "  scripts = { preset = 'game', level = 'level.lua' } }\n");
+  folder.write(name + "/level.lua",
+               "local level = { start = { face = 0, x = 600, y = 700 } }\n"
+               "function level.build(game)\n"
+               "  for i = 1, game.world.faceCount() do game.world.line(game.world.face(i), 0, 512, 4096, 512) end\n"
+               "end\n"
+               "function level.tick(game, frame)\n" + tick + "\nend\nreturn level\n");
+  return name + "/scene.lua";
+}
+
+std::string scenario(const Folder& folder, const std::string& file, const std::string& scene, int frames = 60) {
+  return folder.write(file, "return { scene = '" + scene + "', frames = " + std::to_string(frames) +
+                                ", input = { { hold = 'right', from = 1, to = " + std::to_string(frames) + " } } }\n"),
+         file;
+}
+
+// The output's lines.
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::stringstream in(text);
+  for (std::string line; std::getline(in, line);) out.push_back(line);
+  return out;
+}
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+TEST(Run, ATimeLimitHoldsAtJ1AndTheNextScenarioStillRuns) {
+  Folder folder("cli_timeout");
+  const std::string scene = sceneWith(folder, "s");
+  folder.write("hang.lua", "while true do end\n");  // compiled: no hook stops it
+  scenario(folder, "ok.lua", scene);
+  const Ran r = platon({"run", "--timeout", "1", "hang.lua", "ok.lua"}, folder.path(), 30);
+  EXPECT_LT(r.seconds, 20);
+  EXPECT_EQ(r.status, 1) << r.out << r.err;
+  EXPECT_TRUE(contains(r.out, "FAIL hang.lua: not finished within the time limit of 1 s (killed)")) << r.out;
+  EXPECT_TRUE(contains(r.out, "PASS ok.lua: ")) << r.out;
+}
+
+TEST(Run, ACrashingWorkerFailsOnlyItsScenarioAtAnyJ) {
+  Folder folder("cli_crash");
+  const std::string scene = sceneWith(folder, "s");
+  folder.write("segv.lua", "local ffi = require('ffi')\nffi.cast('int*', 0)[0] = 1\nreturn {}\n");
+  scenario(folder, "a.lua", scene), scenario(folder, "b.lua", scene), scenario(folder, "c.lua", scene);
+  for (const char* jobs : {"1", "2", "3"}) {
+    const Ran r = platon({"run", "-j", jobs, "--timeout", "20", "--junit", "report.xml", "a.lua", "segv.lua", "b.lua", "c.lua"},
+                         folder.path());
+    EXPECT_EQ(r.status, 1) << r.out << r.err;
+    EXPECT_TRUE(contains(r.out, "FAIL segv.lua: worker crashed (signal 11) while running segv.lua")) << "-j " << jobs << "\n" << r.out;
+    for (const char* ok : {"PASS a.lua", "PASS b.lua", "PASS c.lua"}) EXPECT_TRUE(contains(r.out, ok)) << "-j " << jobs << "\n" << r.out;
+    EXPECT_TRUE(contains(r.out, "4 scenarios, 1 failed")) << r.out;
+    EXPECT_TRUE(contains(contents(folder.path("report.xml")), "worker crashed (signal 11)"));
+  }
+}
+
+TEST(Run, AMalformedScenarioFailsAloneWithItsPlace) {
+  Folder folder("cli_malformed");
+  const std::string scene = sceneWith(folder, "s");
+  folder.write("bad.lua", "return { scene = '" + scene + "', frames = 10,\n  input = { 5 } }\n");
+  folder.write("meta.lua", "return setmetatable({}, { __index = function(t, k) error('meta ' .. k) end })\n");
+  scenario(folder, "ok.lua", scene);
+  const Ran r = platon({"run", "--junit", "report.xml", "bad.lua", "meta.lua", "ok.lua"}, folder.path());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_TRUE(contains(r.out, "FAIL bad.lua: bad.lua:2:13: input[1]: expected")) << r.out;
+  EXPECT_TRUE(contains(r.out, "FAIL meta.lua: meta.lua:1: scenario: 'scene' (the manifest's path) is missing")) << r.out;
+  EXPECT_TRUE(contains(r.out, "PASS ok.lua")) << r.out;
+  EXPECT_TRUE(contains(contents(folder.path("report.xml")), "tests=\"3\" failures=\"2\""));
+}
+
+// Well-formed XML 1.0 text: valid UTF-8, no control characters but tab and line breaks, and
+// every '&' starting one of the five entities.
+std::string xmlProblem(const std::string& xml) {
+  for (size_t i = 0; i < xml.size(); ++i) {
+    const auto b = static_cast<unsigned char>(xml[i]);
+    if (b < 0x20 && b != '\t' && b != '\n' && b != '\r') return "control byte at " + std::to_string(i);
+    if (b >= 0x80) {
+      const size_t length = b >= 0xF0 ? 4 : b >= 0xE0 ? 3 : b >= 0xC2 ? 2 : 0;
+      if (length == 0 || i + length > xml.size()) return "invalid UTF-8 at " + std::to_string(i);
+      for (size_t k = 1; k < length; ++k)
+        if ((static_cast<unsigned char>(xml[i + k]) & 0xC0) != 0x80) return "invalid UTF-8 at " + std::to_string(i);
+      i += length - 1;
+    }
+    if (xml[i] == '&') {
+      bool entity = false;
+      for (const char* e : {"&amp;", "&lt;", "&gt;", "&quot;", "&apos;"}) entity = entity || xml.compare(i, std::strlen(e), e) == 0;
+      if (!entity) return "a bare & at " + std::to_string(i);
+    }
+  }
+  return "";
+}
+
+TEST(Run, TheJunitReportIsWellFormedWhateverTheMessagesHold) {
+  Folder folder("cli_junit");
+  const std::string scene = sceneWith(folder, "s", "  if frame == 5 then error('bad \\1\\27[31m <x> & \"q\" \\'s\\' \\255\\254 end') end");
+  scenario(folder, "ctrl.lua", scene);
+  scenario(folder, "x\xff\"y'.lua", scene);
+  const Ran r = platon({"run", "--junit", "report.xml", "ctrl.lua", "x\xff\"y'.lua"}, folder.path());
+  EXPECT_EQ(r.status, 1);
+  const std::string xml = contents(folder.path("report.xml"));
+  EXPECT_EQ(xmlProblem(xml), "") << xml;
+  EXPECT_TRUE(contains(xml, "bad \\x01\\x1b[31m &lt;x&gt; &amp; &quot;q&quot; &apos;s&apos; \\xff\\xfe end")) << xml;
+  EXPECT_TRUE(contains(xml, "name=\"x\\xff&quot;y&apos;.lua\"")) << xml;
+  // The terminal gets the same readable bytes.
+  EXPECT_TRUE(contains(r.out, "FAIL ctrl.lua: s/level.lua:6: bad \\x01\\x1b[31m <x> & \"q\" 's' \\xff\\xfe end")) << r.out;
+}
+
+TEST(Run, AFailureIsOneResultLineWithItsTracebackIndentedBelow) {
+  Folder folder("cli_lines");
+  const std::string scene = sceneWith(folder, "s", "  if frame == 5 then local t = nil; return t.x end");
+  scenario(folder, "tick.lua", scene);
+  scenario(folder, "ok.lua", scene, 3);
+  const Ran r = platon({"run", "tick.lua", "ok.lua"}, folder.path());
+  const std::vector<std::string> out = lines(r.out);
+  ASSERT_GE(out.size(), 4u) << r.out;
+  EXPECT_EQ(out[0].rfind("FAIL tick.lua: s/level.lua:6: attempt to index local 't' (a nil value)", 0), 0u) << r.out;
+  EXPECT_EQ(out[1], "    stack traceback:") << r.out;
+  size_t i = 1;
+  while (i < out.size() && out[i].rfind("    ", 0) == 0) ++i;
+  ASSERT_LT(i, out.size());
+  EXPECT_EQ(out[i].rfind("PASS ok.lua: ", 0), 0u) << r.out;
+}
+
+TEST(Run, AHugeMessageIsCut) {
+  Folder folder("cli_huge");
+  const std::string scene = sceneWith(folder, "s", "  if frame == 5 then error(string.rep('x', 4 * 1024 * 1024)) end");
+  scenario(folder, "huge.lua", scene);
+  const Ran r = platon({"run", "--junit", "report.xml", "huge.lua"}, folder.path());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_LT(r.out.size(), 16u * 1024) << "the whole message went out";
+  EXPECT_TRUE(contains(r.out, "bytes in all)")) << r.out.substr(0, 200);
+  EXPECT_LT(contents(folder.path("report.xml")).size(), 16u * 1024);
+}
+
+TEST(Run, RecordWritesOneReplayPerScenarioEvenForTheSameFileName) {
+  Folder folder("cli_record");
+  const std::string scene = sceneWith(folder, "s");
+  scenario(folder, "a/x.lua", scene, 30);
+  scenario(folder, "b/x.lua", scene, 90);
+  const Ran r = platon({"run", "-j", "2", "--record", "rec", "a/x.lua", "b/x.lua"}, folder.path());
+  ASSERT_EQ(r.status, 1) << "the record folder does not exist yet: " << r.out;  // refused, not silently lost
+  std::filesystem::create_directories(folder.path("rec"));
+  const Ran ok = platon({"run", "-j", "2", "--record", "rec", "a/x.lua", "b/x.lua"}, folder.path());
+  ASSERT_EQ(ok.status, 0) << ok.out << ok.err;
+  EXPECT_TRUE(contains(ok.out, "(recorded to rec/x.replay)")) << ok.out;
+  EXPECT_TRUE(contains(ok.out, "(recorded to rec/x-2.replay)")) << ok.out;
+  EXPECT_TRUE(contains(contents(folder.path("rec/x.replay")), "frames 30\n"));
+  EXPECT_TRUE(contains(contents(folder.path("rec/x-2.replay")), "frames 90\n"));
+  const Ran again = platon({"replay", "rec/x.replay", "rec/x-2.replay"}, folder.path());
+  EXPECT_EQ(again.status, 0) << again.out;
+}
+
+TEST(Run, BadOptionValuesAreRefused) {
+  Folder folder("cli_options");
+  scenario(folder, "ok.lua", sceneWith(folder, "s"));
+  const std::vector<std::vector<std::string>> bad = {
+      {"-j", "x"}, {"-j0"}, {"-j", "-3"}, {"-j", "300"}, {"--timeout", "0"}, {"--timeout", "abc"}, {"--timeout", "nan"},
+      {"--trace", "x"}, {"--hash-every", "-1"}, {"--hash-every", "ten"},
+  };
+  for (std::vector<std::string> args : bad) {
+    std::string shown;
+    for (const std::string& a : args) shown += a + " ";
+    args.insert(args.begin(), "run");
+    args.push_back("ok.lua");
+    const Ran r = platon(args, folder.path());
+    EXPECT_EQ(r.status, 2) << shown << r.out;
+    EXPECT_TRUE(contains(r.err, "usage: platon run")) << shown << r.err;
+    EXPECT_FALSE(contains(r.out, "PASS")) << shown << r.out;
+  }
+}
+
+TEST(Play, HeadlessExitsOneAfterAScriptError) {
+  Folder folder("cli_play_error");
+  const std::string broken = sceneWith(folder, "broken", "  if frame == 5 then local t = nil; return t.x end");
+  const std::string clean = sceneWith(folder, "clean");
+  const Ran r = platon({"play", broken, "--headless", "--fast", "--frames", "100"}, folder.path());
+  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_TRUE(contains(r.out, "frame 5: error (the game goes on):")) << r.out;
+  EXPECT_TRUE(contains(r.out, "1 frame(s) had a script error")) << r.out;
+  EXPECT_EQ(platon({"play", clean, "--headless", "--fast", "--frames", "100"}, folder.path()).status, 0);
+}
+
+TEST(Play, FramesMustBeAWholeNumberFromOne) {
+  Folder folder("cli_play_frames");
+  const std::string scene = sceneWith(folder, "s");
+  for (const char* frames : {"-1", "abc", "0", "10x", ""}) {
+    const Ran r = platon({"play", scene, "--headless", "--fast", "--frames", frames}, folder.path(), 10);
+    EXPECT_EQ(r.status, 2) << "--frames '" << frames << "': " << r.out;
+    EXPECT_TRUE(contains(r.err, "--frames")) << r.err;
+  }
+}
+
+TEST(Play, ASignalEndsThePlayAndTheRecordingIsWritten) {
+  Folder folder("cli_play_signal");
+  const std::string scene = sceneWith(folder, "s");
+  for (const int s : {SIGTERM, SIGINT}) {
+    std::filesystem::remove(folder.path("run.replay"));
+    Process play({"play", scene, "--headless", "--record", "run.replay"}, folder.path());  // never ends by itself
+    ASSERT_TRUE(play.awaitOutput("playing", 10));
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    play.signal(s);
+    const Ran r = play.finish(10);
+    EXPECT_EQ(r.status, 128 + s) << r.out << r.err;
+    EXPECT_TRUE(contains(r.out, "stopped by signal " + std::to_string(s))) << r.out;
+    ASSERT_TRUE(std::filesystem::exists(folder.path("run.replay"))) << r.out;
+    const Ran replay = platon({"replay", "run.replay"}, folder.path());
+    EXPECT_EQ(replay.status, 0) << replay.out;
+  }
+}
+
+TEST(Scenario, AnyScenePathReadsBackFromTheScenarioItWrites) {
+  Folder folder("cli_scenario_path");
+  const std::string scene = sceneWith(folder, "back\\slash", "");
+  const std::string replay = folder.write("run.replay", "platon replay 1\nscene \"" + scene +
+                                                            "\"\nframes 30\nhash_every 0\ninput\n30 right\nend\n");
+  (void)replay;
+  const Ran made = platon({"scenario", "run.replay", "-o", "made.lua"}, folder.path());
+  ASSERT_EQ(made.status, 0) << made.err;
+  const Ran r = platon({"run", "made.lua"}, folder.path());
+  EXPECT_EQ(r.status, 0) << contents(folder.path("made.lua")) << "\n" << r.out;
+}
+
+}  // namespace
