@@ -229,7 +229,7 @@ TEST(Run, TheJunitReportIsWellFormedWhateverTheMessagesHold) {
   EXPECT_TRUE(contains(xml, "bad \\x01\\x1b[31m &lt;x&gt; &amp; &quot;q&quot; &apos;s&apos; \\xff\\xfe end")) << xml;
   EXPECT_TRUE(contains(xml, "name=\"x\\xff&quot;y&apos;.lua\"")) << xml;
   // The terminal gets the same readable bytes.
-  EXPECT_TRUE(contains(r.out, "FAIL ctrl.lua: s/level.lua:6: bad \\x01\\x1b[31m <x> & \"q\" 's' \\xff\\xfe end")) << r.out;
+  EXPECT_TRUE(contains(r.out, "FAIL ctrl.lua: " + folder.path("s/level.lua") + ":6: bad \\x01\\x1b[31m <x> & \"q\" 's' \\xff\\xfe end")) << r.out;
 }
 
 TEST(Run, AFailureIsOneResultLineWithItsTracebackIndentedBelow) {
@@ -240,7 +240,7 @@ TEST(Run, AFailureIsOneResultLineWithItsTracebackIndentedBelow) {
   const Ran r = platon({"run", "tick.lua", "ok.lua"}, folder.path());
   const std::vector<std::string> out = lines(r.out);
   ASSERT_GE(out.size(), 4u) << r.out;
-  EXPECT_EQ(out[0].rfind("FAIL tick.lua: s/level.lua:6: attempt to index local 't' (a nil value)", 0), 0u) << r.out;
+  EXPECT_EQ(out[0].rfind("FAIL tick.lua: " + folder.path("s/level.lua") + ":6: attempt to index local 't' (a nil value)", 0), 0u) << r.out;
   EXPECT_EQ(out[1], "    stack traceback:") << r.out;
   size_t i = 1;
   while (i < out.size() && out[i].rfind("    ", 0) == 0) ++i;
