@@ -222,6 +222,8 @@ std::vector<int> faceOutline(const Surface& s, const detail::EdgeIndex& edges, c
       if (group[edges.find(b, a)->face] == g) continue;
       if (!next.emplace(a, b).second) fail(name + " is not a simple polygon (it touches itself at " + pointText(s.at(a)) + ")");
     }
+  // A group with no edge to another face is the whole surface in one plane: no volume.
+  if (next.empty()) fail(name + " is the whole mesh: every triangle lies in one plane, so it encloses no volume");
   int start = next.begin()->first;  // the corner the file's triangles use first: points are numbered so
   for (const auto& [a, b] : next) start = std::min(start, a);
   std::vector<int> cycle{start};
