@@ -16,7 +16,7 @@ using lua::pushEntity;
 constexpr const char* kTrampolines = R"lua(
 local ffi, address, callbacks = ...
 if not pcall(ffi.typeof, "struct platon_contact_slot") then
-  ffi.cdef "struct platon_contact_slot { double entity, tag, kind, part, line, nx, ny, other; };"
+  ffi.cdef "struct platon_contact_slot { double entity, tag, kind, part, line, nx, ny, other, answer; };"
 end
 local c = ffi.cast("struct platon_contact_slot*", address)
 local sqrt = math.sqrt
@@ -42,7 +42,14 @@ if contact then
     local length = sqrt(x * x + y * y)
     local nx, ny = 0, 0
     if length > 0 then nx, ny = x / length, y / length end
-    return contact(c.entity, c.tag, KINDS[c.kind], c.part, line, nx, ny, other)
+    -- The usual answers go back in the slot, so that the call returns nothing to read: nil (the
+    -- defaults) 0, false 1, true 2; anything else (a response table) is returned, answer 3.
+    local r = contact(c.entity, c.tag, KINDS[c.kind], c.part, line, nx, ny, other)
+    if r == nil then c.answer = 0 return end
+    if r == false then c.answer = 1 return end
+    if r == true then c.answer = 2 return end
+    c.answer = 3
+    return r
   end
 end
 for _, name in ipairs { "beginContact", "overContact", "endContact", "touchContact", "crushed" } do
@@ -200,14 +207,32 @@ void LuaRules::event(Callback which, const physics::Contact& c) {
 void LuaRules::contact(const physics::Contact& c, physics::ContactResponse& response) {
   if (!callbacks_[kContact].isSet() || skipped()) return;
   lua_State* L = host_.state();
-  const int top = lua_gettop(L);
-  callbacks_[kContact].push();
-  const int n = pushArguments(top, [&] {
-    int pushed = pushLine(c.entity, c.line);  // in this order: the arguments' order
-    pushed += pushNormal(c.normal);
-    return pushed + pushOther(c.other);
-  });
-  if (!invoke(n, 1)) return;
+  if (slot_ && sandbox_ == kNoSandbox) {  // the engine's own rules: the hot path, kept short
+    Slot& s = *slot_;
+    // The handles first: one out of range throws before anything is pushed.
+    s.entity = lua::handleNumber(c.entity.index, c.entity.generation);
+    s.other = c.other.isSet() ? lua::handleNumber(c.other.index, c.other.generation) : -1.0;
+    const bool withEntity = c.line.index == physics::kNoLine;
+    s.tag = c.line.tag, s.kind = withEntity ? 3 : static_cast<int>(c.line.kind), s.part = c.line.part;
+    s.line = withEntity ? -1.0 : static_cast<double>(c.line.index);
+    s.nx = static_cast<double>(c.normal.x), s.ny = static_cast<double>(c.normal.y);
+    callbacks_[kContact].push();
+    host_.call(0, LUA_MULTRET);  // the trampoline leaves nil, false and true in the slot
+    if (s.answer == 0) return;
+    if (s.answer < 3) {
+      response.slide = s.answer == 2;
+      return;
+    }
+  } else {
+    const int top = lua_gettop(L);
+    callbacks_[kContact].push();
+    const int n = pushArguments(top, [&] {
+      int pushed = pushLine(c.entity, c.line);  // in this order: the arguments' order
+      pushed += pushNormal(c.normal);
+      return pushed + pushOther(c.other);
+    });
+    if (!invoke(n, 1)) return;
+  }
   const int type = lua_type(L, -1);
   if (type == LUA_TNIL) {
     lua_pop(L, 1);

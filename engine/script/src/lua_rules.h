@@ -90,6 +90,7 @@ class LuaRules final : public physics::Rules {
   // normal as the world gives it; -1 for "no line" and "no other entity", which they turn into nil).
   struct Slot {
     double entity, tag, kind, part, line, nx, ny, other;
+    double answer;  // contact()'s, written back: 0 nil, 1 false, 2 true, 3 returned (a table or a mistake)
   };
 
   LuaHost& host_;
