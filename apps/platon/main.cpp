@@ -70,10 +70,10 @@ int main(int argc, char** argv) {
       frames = std::atoi(argv[++i]);
     } else {
       std::fprintf(stderr, "usage: %s [--frames N]      the headless demo\n"
-                           "       %s game [--campaign levels/campaign.txt]   the game in a window\n"
+                           "       %s game [--campaign levels/campaign.txt] [--progress file] [--record dir]   the game in a window\n"
                            "       %s shot LEVEL [--frame N] [--size WxH] [--input run.replay] --out file.png\n"
-                           "       %s run [-j N] [--junit report.xml] [--record dir] scenario.lua|run.replay...\n"
-                           "       %s play scene.lua [--frames N] [--input run.replay] [--record out.replay] [--watch] [--fast]\n"
+                           "       %s run [-j N] [--junit report.xml] [--timeout s] [--record dir] scenario.lua|run.replay...\n"
+                           "       %s play scene.lua [--frames N] [--input run.replay] [--record out.replay] [--watch] [--fast] [--headless]\n"
                            "       %s scenario run.replay [-o scenario.lua]\n"
                            "       %s check level.level...           errors and warnings a level designer wants\n"
                            "       %s net SOLID|level.level -o net.svg   the faces unfolded, numbered, with their axes\n",
