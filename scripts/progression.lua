@@ -5,19 +5,29 @@ local game = ...
 -- Private copies: nothing a script does to a table can swap what this file calls.
 local world = platon.world
 local position, destroyEntity, valid, refreshPierce = world.position, world.destroyEntity, world.valid, world.refreshPierce
-local pcall, tostring, error = pcall, tostring, error
+local pcall, tostring, error, rawget, rawset, type = pcall, tostring, error, rawget, rawset, type
 local DOOR = 1000
+-- Taken once, now: a level's own (sandboxed) player script shares `game` and may write to it, so
+-- nothing here calls a function found in `game` later, and what it reads there it reads raw.
+local Player = game.Player
+local start = game.level.start
 
 local progression = {}
 
+local function entityOf(p) return type(p) == "table" and rawget(p, "entity") or nil end
+local function switches() return rawget(game, "switches") end
+
 local function levelStartPoint()
-  local s = game.level.start or { face = 0, x = 0, y = 0 }
-  return s.face, s.x, s.y
+  if not start then return 0, 0, 0 end
+  return start.face, start.x, start.y
 end
 
 local function spawnPoint()
-  local c = game.checkpoint
-  if c then return c.face, c.x, c.y end
+  local c = rawget(game, "checkpoint")
+  if type(c) == "table" then
+    local face, x, y = rawget(c, "face"), rawget(c, "x"), rawget(c, "y")
+    if type(face) == "number" and type(x) == "number" and type(y) == "number" then return face, x, y end
+  end
   return levelStartPoint()
 end
 
@@ -27,27 +37,27 @@ progression.spawnPoint = spawnPoint
 -- (or gone); the old one is destroyed only once the new one is in the world. Without any place,
 -- the old player stays.
 function progression.respawn()
-  local old = game.player
-  local ok, player = pcall(game.Player.spawn, game, spawnPoint())
+  local old = entityOf(rawget(game, "player"))
+  local ok, player = pcall(Player.spawn, game, spawnPoint())
   if not ok and game.checkpoint then
     game.checkpoint = nil
     game.message = "the checkpoint's place is taken: back to the level's start"
-    ok, player = pcall(game.Player.spawn, game, levelStartPoint())
+    ok, player = pcall(Player.spawn, game, levelStartPoint())
   end
   if not ok then error("the player cannot respawn: " .. tostring(player), 0) end
   game.player = player
-  if old and valid(old.entity) then destroyEntity(old.entity) end
+  if old and valid(old) then destroyEntity(old) end
 end
 
 function progression.start()
-  game.player = game.Player.spawn(game, spawnPoint())
+  game.player = Player.spawn(game, spawnPoint())
 end
 
 -- The switches that are on, in increasing order (what the renderer's open doors follow).
 local function listOpen()
   local on = {}
   for id = 0, 999 do
-    if game.switches[id] then on[#on + 1] = id end
+    if rawget(switches(), id) then on[#on + 1] = id end
   end
   game.openSwitches = on
 end
@@ -55,25 +65,31 @@ end
 -- After a hot reload restored the switches: the new world's doors follow them (in id order).
 function progression.onReload()
   for id = 0, 999 do
-    if game.switches[id] ~= nil then refreshPierce(DOOR + id) end
+    if rawget(switches(), id) ~= nil then refreshPierce(DOOR + id) end
   end
   listOpen()
 end
 
 function progression.afterStep()
-  local toggles = game.pendingToggles
-  if #toggles > 0 then
-    for i = 1, #toggles do
-      local id = toggles[i]
-      game.switches[id] = not game.switches[id]
-      refreshPierce(DOOR + id)
-      toggles[i] = nil
+  local toggles = rawget(game, "pendingToggles")
+  if rawget(toggles, 1) ~= nil then
+    local on = switches()
+    local i = 1
+    while true do
+      local id = rawget(toggles, i)
+      if id == nil then break end
+      if type(id) == "number" then  -- levelApi.toggle checked it; a level's own player may write here too
+        rawset(on, id, not rawget(on, id))
+        refreshPierce(DOOR + id)
+      end
+      rawset(toggles, i, nil)
+      i = i + 1
     end
     listOpen()
   end
   if game.touchedCheckpoint then
     game.touchedCheckpoint = false
-    local face, x, y = position(game.player.entity)
+    local face, x, y = position(entityOf(rawget(game, "player")))
     game.checkpoint = { face = face, x = x, y = y }
   end
   if game.reachedGoal and not game.won then

@@ -12,8 +12,8 @@ local engine, setup = ...
 local world, drawApi = platon.world, platon.draw
 local valid, position, velocity, angle, setVelocity = world.valid, world.position, world.velocity, world.angle, world.setVelocity
 local destroyEntity, levelStart, faceCount, faceOf = world.destroyEntity, world.levelStart, world.faceCount, world.face
-local band, floor, type, tostring, error, pairs, ipairs, rawget, pcall =
-      bit.band, math.floor, type, tostring, error, pairs, ipairs, rawget, pcall
+local band, floor, type, tostring, error, pairs, ipairs, rawget, pcall, setmetatable, getmetatable =
+      bit.band, math.floor, type, tostring, error, pairs, ipairs, rawget, pcall, setmetatable, getmetatable
 local call, invoke, readonly, disabled, protect = engine.call, engine.invoke, engine.readonly, engine.disabled, engine.protect
 
 -- Level scripts and mods are sandboxed: their functions run with the JIT off (so the hooks can
@@ -67,6 +67,28 @@ local function sandboxedFunctions(t, id)
   return wrapped
 end
 
+-- What this file dispatches on, kept here and never read back from `game`: a level's own player
+-- or progression script (sandboxed) is handed the game state and may write to it, so a function
+-- found in `game` later could be its own, called outside its limits.
+local Level, Mods, PlayerModule, Progression = { name = "" }, {}, nil, {}
+
+-- A module as other scripts see it in `game` (game.Player, game.progression): its functions, none
+-- of it writable, nested tables too (Player.__index is Player itself).
+local function sealed(t, name, seen)
+  if type(t) ~= "table" then return t end
+  seen = seen or {}
+  if seen[t] then return seen[t] end
+  local entries = {}
+  local view = setmetatable({}, {
+    __index = entries,
+    __newindex = function(_, k) error(name .. " is read-only (tried to set " .. tostring(k) .. ")", 2) end,
+    __metatable = "locked",
+  })
+  seen[t] = view
+  for k, v in pairs(t) do entries[k] = sealed(v, name .. "." .. tostring(k), seen) end
+  return view
+end
+
 local function load(path, trusted, ...)
   if path == nil or path == "" then return nil end
   return engine.load(path, trusted, ...)
@@ -93,6 +115,22 @@ local game = {
             left = false, right = false, up = false, down = false, jump = false, restart = false, pause = false,
             reload = false },
 }
+
+-- The game state's own tables keep their metatables (none): a level's own player or progression
+-- script, handed `game`, cannot make reading them run its code.
+local LOCKED = { __metatable = "locked" }
+local function lock(t) if type(t) == "table" and getmetatable(t) == nil then setmetatable(t, LOCKED) end return t end
+lock(game)
+lock(game.input)
+lock(game.input.pressed)
+lock(game.switches)
+lock(game.pendingToggles)
+
+-- The player's entity, read raw (the player table may be a sandboxed script's).
+local function playerEntity()
+  local p = rawget(game, "player")
+  return type(p) == "table" and rawget(p, "entity") or nil
+end
 
 -- What level scripts and mods may do to the game, checked here: a bad value is an error at the
 -- script's own line, never a broken game later.
@@ -150,7 +188,7 @@ local levelApi = {
     game.checkpoint = { face = face, x = x, y = y }
   end,
   frame = function() return game.time end,  -- frames played: kept across hot reloads
-  player = function() return game.player and game.player.entity end,
+  player = function() return playerEntity() end,
   won = function() return game.won end,
 }
 game.levelApi = levelApi
@@ -170,7 +208,7 @@ local drawView = readonly(drawApi, "draw")
 -- The player's entity is the game's: a sandbox may not destroy or erase it (world_api.cpp).
 local protected
 local function protectPlayer()
-  local e = game.player and game.player.entity
+  local e = playerEntity()
   if e ~= protected then
     protect(e)
     protected = e
@@ -181,23 +219,28 @@ local scene = {}
 
 function scene.build()
   local level, levelId = load(setup.level, setup.trusted.level, levelView)
-  if setup.trusted.level then game.level = sandboxedModule(level, setup.level, nil) -- an engine script as the level
-  else game.level = sandboxedModule(level, setup.level, levelId) end
+  if setup.trusted.level then Level = sandboxedModule(level, setup.level, nil) -- an engine script as the level
+  else Level = sandboxedModule(level, setup.level, levelId) end
+  if not Level.start then  -- the level file's start, when the manifest names a level file
+    local face, x, y = levelStart()
+    if face then Level.start = { face = face, x = x, y = y } end
+  end
+  -- What the player and progression scripts see of the level: its start, as data.
+  local start = Level.start
+  game.level = { start = start and { face = start.face, x = start.x, y = start.y } }
   local Player, playerId = load(setup.player, setup.trusted.player, game)
-  game.Player = setup.trusted.player and Player or sandboxedFunctions(Player, playerId)
+  PlayerModule = setup.trusted.player and Player or sandboxedFunctions(Player, playerId)
+  game.Player = sealed(PlayerModule, "game.Player")
   local progression, progressionId = load(setup.progression, setup.trusted.progression, game)
-  game.progression = (setup.trusted.progression and progression or sandboxedFunctions(progression, progressionId)) or {}
-  game.mods = {}
+  Progression = (setup.trusted.progression and progression or sandboxedFunctions(progression, progressionId)) or {}
+  game.progression = sealed(Progression, "game.progression")
+  Mods = {}
   for i, path in ipairs(setup.mods) do
     local mod, id = load(path, false, levelView)
-    game.mods[i] = sandboxedModule(mod, path, id)
+    Mods[i] = sandboxedModule(mod, path, id)
   end
-  if not game.level.start then  -- the level file's start, when the manifest names a level file
-    local face, x, y = levelStart()
-    if face then game.level.start = { face = face, x = x, y = y } end
-  end
-  if game.level.id then run(game.level, "build", levelView)
-  elseif game.level.build then game.level.build(levelView) end
+  if Level.id then run(Level, "build", levelView)
+  elseif Level.build then Level.build(levelView) end
 end
 
 function scene.start()
@@ -208,7 +251,7 @@ function scene.start()
     local rules, id = load(setup.rules, false, rulesView)
     if rules then engine.setRules(rules, id) end
   end
-  if game.progression.start then game.progression.start(game) end
+  if Progression.start then Progression.start(game) end
   protectPlayer()
 end
 
@@ -221,18 +264,18 @@ function scene.beforeStep(held, pressed)
   local input = game.input
   decode(input, held)
   decode(input.pressed, pressed)
-  local p = game.player
-  if p and not valid(p.entity) and game.progression.respawn then
+  if rawget(game, "player") and not valid(playerEntity()) and Progression.respawn then
     -- Lost (nothing a sandbox may do destroys it): once, back at the last checkpoint.
     game.player = nil
-    game.progression.respawn(game)
-    game.message = game.player and "the player was lost: back at the last checkpoint" or "the player was lost"
+    Progression.respawn(game)
+    game.message = rawget(game, "player") and "the player was lost: back at the last checkpoint" or "the player was lost"
     protectPlayer()
   end
-  if game.player and game.Player then game.Player.tick(game.player, input) end
+  local p = rawget(game, "player")
+  if p and PlayerModule then PlayerModule.tick(p, input) end
   local frame = game.time + 1
-  if game.level.tick then tickLevel(game.level, frame) end
-  local mods = game.mods
+  if Level.tick then tickLevel(Level, frame) end
+  local mods = Mods
   for i = 1, #mods do
     if mods[i].tick then run(mods[i], "tick", levelView, frame) end
   end
@@ -240,8 +283,8 @@ end
 
 function scene.afterStep()
   game.time = game.time + 1
-  if game.progression.afterStep then game.progression.afterStep(game) end
-  if (game.player and game.player.entity) ~= protected then protectPlayer() end
+  if Progression.afterStep then Progression.afterStep(game) end
+  if playerEntity() ~= protected then protectPlayer() end
 end
 
 -- Hot reload: the old version's save() is copied as plain data into the new version's restore().
@@ -264,29 +307,29 @@ end
 function scene.save()
   local saved = { game = {}, mods = {} }
   for _, key in ipairs(KEPT) do saved.game[key] = game[key] end
-  local p = game.player
-  if p and valid(p.entity) then
-    local face, x, y = position(p.entity)
-    local vx, vy = velocity(p.entity)
-    saved.player = { face = face, x = x, y = y, vx = vx, vy = vy, angle = angle(p.entity),
-                     state = game.Player.save and game.Player.save(p) or plainFields(p) }
+  local p, e = rawget(game, "player"), playerEntity()
+  if e and valid(e) then
+    local face, x, y = position(e)
+    local vx, vy = velocity(e)
+    saved.player = { face = face, x = x, y = y, vx = vx, vy = vy, angle = angle(e),
+                     state = PlayerModule.save and PlayerModule.save(p) or plainFields(p) }
   end
-  saved.level = moduleHook(game.level, "save", levelView)
-  for i = 1, #game.mods do saved.mods[i] = run(game.mods[i], "save", levelView) end
+  saved.level = moduleHook(Level, "save", levelView)
+  for i = 1, #Mods do saved.mods[i] = run(Mods[i], "save", levelView) end
   return saved
 end
 
 -- Puts the player back where it was; where the new level has a wall there (or the face is gone),
 -- it stays at the level start where progression.start() put it.
 local function restorePlayer(saved)
-  if not saved or not game.player then return false end
-  local old = game.player
-  local ok, player = pcall(game.Player.spawn, game, saved.face, saved.x, saved.y)
-  if not ok then return false end
-  destroyEntity(old.entity)  -- only now: the new one is in the world
+  if not saved or not rawget(game, "player") then return false end
+  local old = playerEntity()
+  local ok, player = pcall(PlayerModule.spawn, game, saved.face, saved.x, saved.y)
+  if not ok or type(player) ~= "table" then return false end
+  if old and valid(old) then destroyEntity(old) end  -- only now: the new one is in the world
   game.player = player
-  setVelocity(player.entity, saved.vx, saved.vy)
-  if game.Player.onReload then game.Player.onReload(player, saved.state)
+  setVelocity(rawget(player, "entity"), saved.vx, saved.vy)
+  if PlayerModule.onReload then PlayerModule.onReload(player, saved.state)
   else
     for k, v in pairs(saved.state or {}) do if k ~= "entity" and type(player[k]) == type(v) then player[k] = v end end
   end
@@ -299,27 +342,30 @@ function scene.restore(saved, note)
   for _, key in ipairs(KEPT) do
     if saved.game[key] ~= nil then game[key] = saved.game[key] end
   end
+  lock(game.switches)
   if newMessage ~= "" then game.message = newMessage end
-  if game.progression.onReload then game.progression.onReload(game) end
+  if Progression.onReload then Progression.onReload(game) end
   game.restoredPlayer = restorePlayer(saved.player)
   if not game.restoredPlayer and saved.player then game.message = "reloaded: the player's place is gone, back to the start" end
   protectPlayer()
-  moduleHook(game.level, "onReload", levelView, saved.level)
-  for i = 1, #game.mods do run(game.mods[i], "onReload", levelView, saved.mods[i]) end
+  moduleHook(Level, "onReload", levelView, saved.level)
+  for i = 1, #Mods do run(Mods[i], "onReload", levelView, saved.mods[i]) end
   if note then levelApi.message(note) end
 end
 
 function scene.draw()
-  if game.player and game.Player and game.Player.draw then game.Player.draw(game.player, drawApi) end
-  if game.level.draw then moduleHook(game.level, "draw", levelView, drawView) end
+  local p = rawget(game, "player")
+  if p and PlayerModule and PlayerModule.draw then PlayerModule.draw(p, setup.trusted.player and drawApi or drawView) end
+  if Level.draw then moduleHook(Level, "draw", levelView, drawView) end
 end
 
 local status = {}
 function scene.status()
   status.won, status.wonFrame, status.deaths, status.message = game.won, game.wonFrame, game.deaths, game.message
   status.time = game.time
-  if game.player and valid(game.player.entity) then
-    status.face, status.x, status.y = position(game.player.entity)
+  local e = playerEntity()
+  if e and valid(e) then
+    status.face, status.x, status.y = position(e)
   end
   -- The doors the switches hold open (tag 1000 + n), for the renderer, in increasing order.
   local open = status.openTags or {}

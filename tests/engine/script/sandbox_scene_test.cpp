@@ -581,6 +581,45 @@ TEST(DrawApi, BadArgumentsAreErrorsHeadlessToo) {
   }
 }
 
+// A level's own player script runs sandboxed but is handed the game state (it is the game's logic).
+// What it writes there never becomes something the engine calls outside its limits: the engine
+// dispatches on its own copies, game.Player and game.progression are sealed, and the engine's
+// progression reads the game's tables raw (the re-audit planted an endless level tick this way and
+// it ran 500 ms every frame, outside the budget; a metatable on game made reading it run code).
+TEST(OwnPlayer, WhatItWritesInGameIsNeverCalledOutsideItsLimits) {
+  Level level("own_player", "return {}\n", "", "", "");
+  std::string player = fileText(std::string(PLATON_SOURCE_ROOT) + "/scripts/player.lua");
+  const std::string attack =
+      "local spin = function() while true do end end\n"
+      "game.level.tick = spin\n"
+      "game.mods = { { tick = spin } }\n"
+      "local sealedPlayer = pcall(function() game.Player.tick = spin end)\n"
+      "local sealedProgression = pcall(function() game.progression.afterStep = spin end)\n"
+      "local lockedGame = pcall(setmetatable, game, { __index = spin })\n"
+      "local lockedSwitches = pcall(setmetatable, game.switches, { __index = spin })\n"
+      "game.checkpoint = setmetatable({}, { __index = spin })\n"
+      "game.message = tostring(sealedPlayer) .. ' ' .. tostring(sealedProgression) .. ' ' .. tostring(lockedGame) .. ' ' .. tostring(lockedSwitches)\n";
+  player.replace(player.find("return Player"), std::string("return Player").size(), attack + "return Player");
+  level.folder.write("player.lua", player);
+  level.folder.write("scene.lua", "return { name = 'own player', systems = { 'scripting' }, stage = { level = 'cube_intro.level' },"
+                                  " gravity = 0.35, scripts = { preset = 'game', player = 'player.lua', level = 'level.lua' } }\n");
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene live(level.scene, registry, false);
+  EXPECT_EQ(scriptsOf(live).status().message, "false false false false");
+  const auto start = std::chrono::steady_clock::now();
+  Played p;
+  for (int i = 0; i < 60; ++i) {  // Restart pressed every other frame: a respawn each time
+    for (const uint8_t held : {uint8_t(InputFrame::bit(Button::Right) | InputFrame::bit(Button::Restart)), InputFrame::bit(Button::Right)}) {
+      const Played one = play(live, 1, held);
+      p.errors.insert(p.errors.end(), one.errors.begin(), one.errors.end());
+      p.status = one.status;
+    }
+  }
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.0);
+  EXPECT_GT(p.status.deaths, 50);  // the restarts respawned it, past the planted checkpoint
+  for (const std::string& e : p.errors) EXPECT_EQ(e.find("stopped"), std::string::npos) << e;
+}
+
 TEST(Finding14, MessagesAndDrawingAreCapped) {
   Level level("f14_caps", "return {\n"
                           "  tick = function(game, frame) game.message(string.rep('\\226\\128\\162', 100000)) end,\n"
