@@ -411,7 +411,7 @@ TEST(Finding9, AManifestCannotRaiseTheLimits) {
   EXPECT_NE(p.errors[0].find("mod.lua:1: script stopped: it ran longer than the frame's script budget of 250 ms"), std::string::npos)
       << p.errors[0];
   EXPECT_LT(p.slowestFrame, 1.0);
-  Level hog("f9_memory", "return {}\n", "local t = {} return { tick = function() for i = 1, 1e7 do t[i] = string.rep('x', 1000) .. i end end }\n", "",
+  Level hog("f9_memory", "return {}\n", "local t = {} return { tick = function() for i = 1, 1e5 do t[i] = string.rep('x', 1000000) .. i end end }\n", "",
             ", limits = { memory_mb = 4096 }");
   core::LiveScene live2(hog.scene, registry, false);
   const Played q = play(live2, 2);
