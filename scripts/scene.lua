@@ -246,10 +246,10 @@ end
 function scene.start()
   if setup.trusted.rules then
     local rules = load(setup.rules, true, game)
-    if rules then engine.setRules(rules) end
+    if rules then engine.setRules(rules, nil, setup.rules) end
   else
     local rules, id = load(setup.rules, false, rulesView)
-    if rules then engine.setRules(rules, id) end
+    if rules then engine.setRules(rules, id, setup.rules) end
   end
   if Progression.start then Progression.start(game) end
   protectPlayer()

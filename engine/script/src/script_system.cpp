@@ -113,7 +113,13 @@ int engineSetRules(lua_State* L) {
   state.rules.reset();
   if (!lua_isnil(L, 1)) {
     const LuaRules::Call how = state.ffi && sandbox == kNoSandbox ? LuaRules::Call::Ffi : LuaRules::Call::Classic;
-    state.rules = std::make_unique<LuaRules>(state.host, 1, how, sandbox);
+    try {
+      state.rules = std::make_unique<LuaRules>(state.host, 1, how, sandbox);
+    } catch (const ScriptError& e) {
+      // The rules script's name (its third argument) before what is wrong with its table.
+      if (lua_type(L, 3) != LUA_TSTRING) throw;
+      throw ScriptError(std::string(lua_tostring(L, 3)) + ": " + e.what(), e.traceback());
+    }
     state.scene->world().setRules(state.rules.get());
   }
   return 0;

@@ -620,6 +620,19 @@ TEST(OwnPlayer, WhatItWritesInGameIsNeverCalledOutsideItsLimits) {
   for (const std::string& e : p.errors) EXPECT_EQ(e.find("stopped"), std::string::npos) << e;
 }
 
+// A rules table whose callback is not a function names the rules script (it named nothing).
+TEST(RulesScript, ACallbackThatIsNoFunctionNamesTheScript) {
+  Level level("rules_not_fn", "return {}\n", "", "return { pierce = function() return true end, contact = 5 }\n");
+  const core::SystemRegistry registry = scripting();
+  try {
+    core::LiveScene live(level.scene, registry, false);
+    ADD_FAILURE() << "loaded";
+  } catch (const std::exception& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find(level.folder.path("rules.lua") + ": rules: 'contact' is a number, not a function"), std::string::npos) << m;
+  }
+}
+
 TEST(Finding14, MessagesAndDrawingAreCapped) {
   Level level("f14_caps", "return {\n"
                           "  tick = function(game, frame) game.message(string.rep('\\226\\128\\162', 100000)) end,\n"
