@@ -5,6 +5,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstdio>
 #include <cstdlib>
@@ -337,11 +338,34 @@ void budgetHook(lua_State* L, lua_Debug*) {
 // C++ side splits at. Runs where the error was raised. It calls no metamethod of a non-string error
 // object: for a stop that point is inside the hook, where no hook fires, and a script's __tostring
 // could loop there for ever.
+// An error message as text that prints whole: a NUL (which would end it early wherever it is shown
+// as a C string) becomes \0, and it is cut at 16 KB (a script may raise an error of megabytes).
+std::string printableMessage(lua_State* L, int index) {
+  size_t length = 0;
+  const char* raw = lua_tolstring(L, index, &length);
+  constexpr size_t kLongest = 16 * 1024;
+  std::string text;
+  text.reserve(std::min(length, kLongest) + 16);
+  for (size_t i = 0; i < length && text.size() < kLongest; ++i) {
+    if (raw[i] == '\0') text += "\\0";
+    else text += raw[i];
+  }
+  if (text.size() >= kLongest && length > kLongest) text += "... (cut: " + std::to_string(length) + " bytes in all)";
+  return text;
+}
+
 int tracebackHandler(lua_State* L) {
   LuaHost::Shared& s = sharedOf(L);
   OpenReserve reserve(s);
   // Room first: after a stack overflow LuaJIT leaves a little (a push without it fails in here).
   if (!lua_checkstack(L, 8)) return 1;
+  size_t length = 0;
+  if (const char* raw = lua_type(L, 1) == LUA_TSTRING ? lua_tolstring(L, 1, &length) : nullptr;
+      raw && (std::memchr(raw, '\0', length) || length > 16 * 1024)) {  // the traceback takes it as a C string
+    const std::string whole = printableMessage(L, 1);
+    lua_pushlstring(L, whole.data(), whole.size());
+    lua_replace(L, 1);
+  }
   const char* message = lua_tostring(L, 1);
   if (!message) message = lua_pushfstring(L, "(error object is a %s value)", luaL_typename(L, 1));
   if (!located(message) && (s.current != kNoSandbox || !lua_isstring(L, 1) || std::strstr(message, "stack overflow"))) {
@@ -375,7 +399,7 @@ int gameFrames(lua_State* L) {
 }
 
 ScriptError errorFromStack(lua_State* L, int status, const LuaHost::Shared& shared) {
-  std::string text = lua_isstring(L, -1) ? lua_tostring(L, -1) : "(error object is not a string)";
+  std::string text = lua_isstring(L, -1) ? printableMessage(L, -1) : "(error object is not a string)";
   if (status == LUA_ERRMEM) {
     return ScriptError("script stopped: its Lua state reached the memory limit of " +
                            std::to_string(shared.limits.memoryBytes >> 20) + " MB (" + text + ")",

@@ -633,6 +633,21 @@ TEST(RulesScript, ACallbackThatIsNoFunctionNamesTheScript) {
   }
 }
 
+// An error message with a NUL in it is shown whole (it was cut at the NUL), and a huge one is cut.
+TEST(ErrorMessages, ANulDoesNotCutAMessageAndAHugeOneIsCut) {
+  Level level("error_nul", "return { tick = function(game, frame)\n"
+                           "  if frame == 1 then error('before\\0after') end\n"
+                           "  if frame == 2 then error(string.rep('x', 1000000)) end\n"
+                           "end }\n");
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene live(level.scene, registry, false);
+  const Played p = play(live, 2);
+  ASSERT_EQ(p.errors.size(), 2u) << joined(p.errors);
+  EXPECT_NE(p.errors[0].find("level.lua:2: before\\0after"), std::string::npos) << p.errors[0];
+  EXPECT_LT(p.errors[1].size(), 20000u);
+  EXPECT_NE(p.errors[1].find("bytes in all)"), std::string::npos);
+}
+
 TEST(Finding14, MessagesAndDrawingAreCapped) {
   Level level("f14_caps", "return {\n"
                           "  tick = function(game, frame) game.message(string.rep('\\226\\128\\162', 100000)) end,\n"
