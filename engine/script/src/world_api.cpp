@@ -2,7 +2,9 @@
 // units (integers), velocities in units per frame, gravity in units per frame per frame (the
 // world's Q16 fixed point converted both ways, rounded to nearest), angles in degrees (binary
 // angles: 2^32 per turn, rounded to nearest).
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <cstdio>
 #include <optional>
 #include <vector>
@@ -118,8 +120,27 @@ std::optional<int64_t> integerField(lua_State* L, int table, const char* functio
 }
 
 // createEntity{circle = r [, sides = 16]} | {box = {halfWidth, halfHeight}} | {polygon = {x0, y0, ...}}
+// Refuses a key of option table `table` that is not one of `known` (a typo would be ignored).
+void onlyKnownKeys(lua_State* L, int table, const char* function, std::initializer_list<const char*> known) {
+  lua_pushnil(L);
+  while (lua_next(L, table)) {
+    lua_pop(L, 1);  // the value; the key stays for lua_next
+    bool ok = false;
+    if (lua_type(L, -1) == LUA_TSTRING)
+      for (const char* k : known) ok = ok || std::strcmp(lua_tostring(L, -1), k) == 0;
+    if (!ok) {
+      std::string list;
+      for (const char* k : known) list += std::string(list.empty() ? "" : ", ") + k;
+      const std::string key = lua::shownValue(L, -1);
+      lua_pop(L, 1);
+      throw lua::ArgError(std::string(function) + ": unknown field " + key + " (known: " + list + ")");
+    }
+  }
+}
+
 int createEntity(lua_State* L) {
   lua::checkTable(L, 1);
+  onlyKnownKeys(L, 1, "createEntity", {"circle", "sides", "box", "polygon"});
   if (worldOf(L).entityCount() >= kMaxEntities)
     throw lua::ArgError("createEntity: the world holds " + std::to_string(kMaxEntities) +
                         " entities, the most scripts may make (destroy some first)");
@@ -127,6 +148,8 @@ int createEntity(lua_State* L) {
   rawField(L, 1, "box");
   rawField(L, 1, "polygon");
   std::optional<physics::Convex> shape;
+  if (!lua_isnil(L, -3) + !lua_isnil(L, -2) + !lua_isnil(L, -1) > 1)
+    throw lua::ArgError("createEntity: one shape: circle, box or polygon, not two");
   if (!lua_isnil(L, -3)) {
     lua_pop(L, 2);
     const auto radius = static_cast<int32_t>(*integerField(L, 1, "createEntity", "circle", 1, 1 << 28));
@@ -173,11 +196,36 @@ int valid(lua_State* L) {
   return 1;
 }
 
+// Whether `p` lies on the face a part is (its warp edges closed into a loop), or beyond its edges
+// by at most `slack` units; parts that are no face take any point.
+bool onFace(const physics::MapPart& part, int64_t x, int64_t y, int64_t slack) {
+  for (const physics::LineIndex line : part.faceLoop()) {
+    const physics::Segment s = part.segments()[line];
+    const __int128 dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
+    const __int128 side = dx * (y - s.a.y) - dy * (x - s.a.x);
+    if (side < 0 && side * side > __int128{slack} * slack * (dx * dx + dy * dy)) return false;
+  }
+  return true;
+}
+
 int insert(lua_State* L) {
   const EntityId e = checkEntity(L, 1);
   const physics::MapPartId part = checkPart(L, 2);
   const physics::Vec2 at{checkInt32(L, 3), checkInt32(L, 4)};
   const physics::Angle angle = lua_isnoneornil(L, 5) ? 0 : toAngle(L, 5);
+  // On a stage's face the body's middle must be on the face, or over an edge by no more than the
+  // body's size (as while it crosses one): farther out, it would be taken for a body gone through
+  // a vertex and put back by a corner at once.
+  const physics::Convex turned = worldOf(L).entity(e).shape().rotated(angle);
+  int64_t cx = 0, cy = 0;
+  for (const physics::Vec2 v : turned.vertices()) cx += v.x, cy += v.y;
+  cx /= turned.size(), cy /= turned.size();
+  int64_t reach = 0;
+  for (const physics::Vec2 v : turned.vertices())
+    reach = std::max<int64_t>(reach, static_cast<int64_t>(std::ceil(std::hypot(double(v.x - cx), double(v.y - cy)))));
+  if (const physics::MapPart* p = worldOf(L).findMapPart(part); p && !onFace(*p, at.x + cx, at.y + cy, reach + 4))
+    throw lua::ArgError("insert: (" + std::to_string(at.x) + ", " + std::to_string(at.y) + ") is not on face " + std::to_string(part) +
+                        " (a body's middle goes on its face, or over an edge by at most the body's size)");
   worldOf(L).insert(e, part, at, angle);
   return 0;
 }
@@ -240,6 +288,7 @@ uint32_t optionalBits(lua_State* L, int table, const char* field) {
 int setFilter(lua_State* L) {
   const EntityId e = checkEntity(L, 1);
   lua::checkTable(L, 2);
+  onlyKnownKeys(L, 2, "setFilter", {"category", "solidWith", "overlapWith", "pushable"});
   physics::EntityFilter filter;
   filter.category = optionalBits(L, 2, "category");
   filter.solidWith = optionalBits(L, 2, "solidWith");

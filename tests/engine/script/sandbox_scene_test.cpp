@@ -648,6 +648,35 @@ TEST(ErrorMessages, ANulDoesNotCutAMessageAndAHugeOneIsCut) {
   EXPECT_NE(p.errors[1].find("bytes in all)"), std::string::npos);
 }
 
+// Option tables with a misspelt field or two shapes, and a body put off its face, are errors at the
+// script's line (they were taken silently: the typo ignored, the first shape used, the body put
+// back by a corner).
+TEST(WorldApi, TyposTwoShapesAndBodiesOffTheirFaceAreErrors) {
+  // One call a frame, its error (or "ok") the frame's message.
+  Level level("world_api_typos", "local e\n"
+                                 "local calls = {\n"
+                                 "  function(w) w.setFilter(e, { catgory = 1 }) end,\n"
+                                 "  function(w) w.createEntity { circle = 5, box = { 1, 1 } } end,\n"
+                                 "  function(w) w.insert(e, 0, -5000, 2500) end,\n"
+                                 "  function(w) w.insert(e, 0, 4096 + 20, 2000) end }\n"
+                                 "return { tick = function(game, frame)\n"
+                                 "  e = e or game.world.createEntity { circle = 20 }\n"
+                                 "  local ok, err = pcall(calls[frame], game.world)\n"
+                                 "  game.message(ok and 'ok' or err)\n"
+                                 "end }\n");
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene live(level.scene, registry, false);
+  const std::vector<std::string> expected = {
+      "level.lua:3: setFilter: unknown field \"catgory\" (known: category, solidWith, overlapWith, pushable)",
+      "level.lua:4: createEntity: one shape: circle, box or polygon, not two",
+      "level.lua:5: insert: (-5000, 2500) is not on face 0",
+      "ok"};  // 20 units over an edge, as while crossing it: fine
+  for (const std::string& e : expected) {
+    const Played p = play(live, 1);
+    EXPECT_NE(p.status.message.find(e), std::string::npos) << "expected: " << e << "\ngot: " << p.status.message;
+  }
+}
+
 TEST(Finding14, MessagesAndDrawingAreCapped) {
   Level level("f14_caps", "return {\n"
                           "  tick = function(game, frame) game.message(string.rep('\\226\\128\\162', 100000)) end,\n"
