@@ -234,6 +234,10 @@ class DataReader {
   int line_ = 1, column_ = 1;
 };
 
+std::string placeText(const std::string& file, const DataValue& v) {
+  return file + ":" + std::to_string(v.line) + ":" + std::to_string(v.column);
+}
+
 [[noreturn]] void fieldError(const std::string& file, const DataValue& v, const std::string& reason) {
   throw std::runtime_error(file + ":" + std::to_string(v.line) + ":" + std::to_string(v.column) + ": " + reason);
 }
@@ -344,6 +348,7 @@ SceneManifest loadManifest(const std::string& path) {
       if (p.empty() || p.find("..") != std::string::npos || p[0] == '/')
         fieldError(path, *level, "'" + p + "': a level file is a path inside the scene's folder (no '..', not absolute)");
       m.levelFile = insideFolder(path, m.directory, *level, p);
+      m.placeOf[m.levelFile] = placeText(path, *level);
     }
     m.solid = stringField(path, *stage, "solid", m.solid);
     if (!solidOfManifest(m.solid))
@@ -368,7 +373,9 @@ SceneManifest loadManifest(const std::string& path) {
         fieldError(path, *scripts->field(key),
                    "'" + p + "': a script is a .lua path inside the level's folder or under scripts/ (no '..', not absolute)");
       trusted = engine;
-      return engine ? p : insideFolder(path, m.directory, *scripts->field(key), p);
+      const std::string kept = engine ? p : insideFolder(path, m.directory, *scripts->field(key), p);
+      m.placeOf[kept] = placeText(path, *scripts->field(key));
+      return kept;
     };
     m.rules = script("rules", m.rulesTrusted);
     m.player = script("player", m.playerTrusted);
@@ -393,6 +400,7 @@ SceneManifest loadManifest(const std::string& path) {
             p->rfind("scripts/", 0) == 0 || (*p)[0] == '/')
           fieldError(path, v, "a mod is a .lua path inside the level's folder (no '..', not absolute, not under scripts/)");
         m.mods.push_back(insideFolder(path, m.directory, v, *p));
+        m.placeOf[m.mods.back()] = placeText(path, v);
       }
     }
     if (!m.rules.empty() || !m.player.empty() || !m.progression.empty() || !m.level.empty() || !m.mods.empty())

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <filesystem>
 #include <optional>
 #include <unordered_map>
 
@@ -90,8 +91,17 @@ int engineLoad(lua_State* L) {
   const std::string path(lua::checkString(L, 1));
   const bool trusted = lua::checkBoolean(L, 2);
   const int nargs = lua_gettop(L) - 2;
-  const std::string file = trusted ? engineScript(state.root, path) : path;
+  // A file that cannot be found is named at the manifest's line:column that names it.
+  const auto place = state.scene->manifest().placeOf.find(path);
+  const std::string named = place == state.scene->manifest().placeOf.end() ? "" : " (named at " + place->second + ")";
+  std::string file;
+  try {
+    file = trusted ? engineScript(state.root, path) : path;
+  } catch (const ScriptError& e) {
+    throw ScriptError(e.what() + named, e.traceback());
+  }
   state.files.push_back(file);
+  if (!trusted && !std::filesystem::is_regular_file(file)) throw ScriptError(file + ": cannot open the script" + named, "");
   const int sandbox = state.host.loadFile(file, trusted ? Trust::Trusted : Trust::Sandboxed);
   lua_insert(L, 3);
   if (trusted) {

@@ -677,6 +677,21 @@ TEST(WorldApi, TyposTwoShapesAndBodiesOffTheirFaceAreErrors) {
   }
 }
 
+// A mod the manifest names but the folder lacks is reported at the manifest's line:column.
+TEST(Manifests, AMissingModIsNamedAtTheManifestsPlace) {
+  Level level("missing_mod", "return {}\n");
+  level.folder.write("scene.lua", "return { name = 'x', systems = { 'scripting' }, stage = { level = 'cube_intro.level' },\n"
+                                  "  scripts = { preset = 'game', level = 'level.lua', mods = { 'gone.lua' } } }\n");
+  const core::SystemRegistry registry = scripting();
+  try {
+    core::LiveScene live(level.scene, registry, false);
+    ADD_FAILURE() << "loaded";
+  } catch (const std::exception& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("gone.lua: cannot open the script (named at " + level.scene + ":2:62)"), std::string::npos) << m;
+  }
+}
+
 TEST(Finding14, MessagesAndDrawingAreCapped) {
   Level level("f14_caps", "return {\n"
                           "  tick = function(game, frame) game.message(string.rep('\\226\\128\\162', 100000)) end,\n"

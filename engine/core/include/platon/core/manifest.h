@@ -51,6 +51,9 @@ struct SceneManifest {
   // Which of the four are engine scripts: decided by the parser from what the manifest wrote,
   // never from a joined path.
   bool rulesTrusted = false, playerTrusted = false, progressionTrusted = false, levelTrusted = false;
+  // Where the manifest names each of its scripts and the level file ("scene.lua:7:13"), by the
+  // path kept above: a file that cannot be opened is reported at that place.
+  std::map<std::string, std::string> placeOf;
   // limits = { memory_mb, call_ms }: the script system uses them only to lower its own limits.
   size_t memoryMegabytes = 128;
   double callMilliseconds = 250;
