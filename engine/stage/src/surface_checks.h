@@ -7,7 +7,9 @@
 // - across every edge the neighbouring face bends away (its corner after the edge lies behind this
 //   face's plane, within the tolerance): locally convex at the edges;
 // - the faces round every vertex make one fan that winds once round it (no bow-tie, no surface
-//   that wraps round a point twice).
+//   that wraps round a point twice), and the far end of each of its edges lies behind each of its
+//   faces' planes within the tolerance (inward bends under the tolerance at each edge must not
+//   add up round a vertex into a dent).
 //
 // A closed connected surface that is locally convex at every edge and vertex is the boundary of a
 // convex solid (its Gauss map covers the sphere once: Hadamard's theorem), so no vertex-against-
