@@ -67,4 +67,8 @@ void checkConnected(const Polyhedron& p, const EdgeIndex& edges, const SurfaceNa
 void checkLocallyConvex(const Polyhedron& p, const EdgeIndex& edges, const std::vector<Eigen::Vector3d>& normals,
                         double tolerance, const SurfaceNames& names);
 
+// validatePolyhedron (polyhedron.h) naming faces and points as `names` do: the mesh builder checks
+// the solid it merged so, in the file's triangles and coordinates.
+void validatePolyhedron(const Polyhedron& p, double tolerance, const SurfaceNames& names);
+
 }  // namespace platon::stage::detail
