@@ -38,7 +38,7 @@ std::vector<physics::Vec2> goalSquare(const Level& level) {
 
 void checkPoint(const Level& level, const Stage& stage, const LevelPoint& p, const char* what) {
   const SourcePosition at{level.file, p.sourceLine, p.sourceColumn};
-  if (p.face >= static_cast<int>(stage.faceCount()))
+  if (p.face < 0 || p.face >= static_cast<int>(stage.faceCount()))
     throw StageError(at, std::string(what) + " face " + std::to_string(p.face) + " does not exist (the stage has " +
                              std::to_string(stage.faceCount()) + " faces)");
   const auto& corners = stage.faces[static_cast<size_t>(p.face)].corners;

@@ -46,6 +46,16 @@ void warnNarrowFaces(const Level& level, const Stage& stage, CheckReport& report
   report.warnings.push_back(Finding{SourcePosition{level.file, level.faces[narrow[0]].sourceLine, 1}, message});
 }
 
+// Why the search could not tell: what it would have needed, and what a "no" with coarse cells means.
+std::string undecidedReach(const Level& level, const ReachAnswer& reach) {
+  const int cell = static_cast<int>(reach.finestCell);
+  return "could not decide whether a path reaches the goal: the level's " + std::to_string(reach.walls) +
+         " walls on faces of " + std::to_string(level.size) + " units need more cells of " +
+         std::to_string(static_cast<int>(kFinestCell)) + " units than the reachability search keeps, so it stopped at cells of " +
+         std::to_string(cell) + " units near walls, and with those it found no path; it may be behind a gap narrower than " +
+         std::to_string(static_cast<int>(2 * kPlayerRadius + 3 * reach.finestCell)) + " units (play the level to be sure)";
+}
+
 }  // namespace
 
 bool goalReachable(const Level& level, const Stage& stage) { return searchReach(level, stage).reachable; }
@@ -84,15 +94,12 @@ CheckReport checkLevel(const Level& level, const Stage& stage) {
     report.warnings.push_back(Finding{SourcePosition{level.file, firstEmptyLine, 1},
                                       (emptyCount == 1 ? "face " + empty + " has" : "faces " + empty + " have") + " no lines"});
   const ReachAnswer reach = searchReach(level, stage);
-  if (reach.finestCell > kFinestCell)
-    report.warnings.push_back({{level.file, level.goal.sourceLine, level.goal.sourceColumn},
-                               "the reachability search used cells of " + std::to_string(int(reach.finestCell)) +
-                                   " units near walls (the level's walls are very long): a gap narrower than " +
-                                   std::to_string(int(2 * kPlayerRadius + 3 * reach.finestCell)) + " units may count as closed"});
-  if (!reach.reachable)
-    report.errors.push_back({{level.file, level.goal.sourceLine, level.goal.sourceColumn},
-                             "no path reaches the goal from the start (walls seal it off; see docs/level-format.md, "
-                             "\"platon check\")"});
+  const SourcePosition goal{level.file, level.goal.sourceLine, level.goal.sourceColumn};
+  if (!reach.decided())
+    report.warnings.push_back({goal, undecidedReach(level, reach)});
+  else if (!reach.reachable)
+    report.errors.push_back({goal, "no path reaches the goal from the start (walls seal it off; see docs/level-format.md, "
+                                   "\"platon check\")"});
   return report;
 }
 

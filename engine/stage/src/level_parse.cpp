@@ -18,8 +18,9 @@ struct Token {
   int end() const { return column + static_cast<int>(text.size()); }  // the column just past it
 };
 
-// A token as a message shows it: bytes outside printable ASCII as \xHH (a NUL would end the
-// message, a byte order mark or a look-alike minus would hide), and at most 40 bytes of it.
+// A token as a message shows it: bytes outside printable ASCII as \x{HH} (a NUL would end the
+// message, a byte order mark or a look-alike minus would hide; the braces say where the escape
+// ends, so that a NUL before "00" cannot read as one four-digit escape), and at most 40 bytes.
 std::string shown(std::string_view token) {
   constexpr size_t kLongest = 40;
   std::string out;
@@ -30,13 +31,31 @@ std::string shown(std::string_view token) {
       continue;
     }
     char hex[8];
-    std::snprintf(hex, sizeof hex, "\\x%02X", byte);
+    std::snprintf(hex, sizeof hex, "\\x{%02X}", byte);
     out += hex;
   }
   return token.size() > kLongest ? out + "..." : out;
 }
 
-std::string quoted(std::string_view token) { return "'" + shown(token) + "'"; }
+// The blank-looking bytes that do not separate values (only spaces and tabs do): a value that
+// holds one is named, since it looks like two values.
+const char* hiddenSeparatorName(char c) {
+  switch (c) {
+    case '\v': return "a vertical tab (\\x{0B})";
+    case '\f': return "a form feed (\\x{0C})";
+    default: return nullptr;
+  }
+}
+
+// What a value that holds a hidden separator is: "" for most values.
+std::string hiddenSeparatorNote(std::string_view token) {
+  for (const char c : token)
+    if (const char* name = hiddenSeparatorName(c))
+      return std::string(" (it holds ") + name + ", which does not separate values: only spaces and tabs do)";
+  return "";
+}
+
+std::string quoted(std::string_view token) { return "'" + shown(token) + "'" + hiddenSeparatorNote(token); }
 
 struct TextLine {
   int number = 0;
@@ -171,8 +190,8 @@ class LineReader {
   TextLine current_;
 };
 
-// Face numbers are checked against the level's own face count once its '%' lines are read; here
-// only that they are whole numbers a face count could reach.
+// Face numbers are checked against the level's own face count once its '%' lines are read (a
+// mesh level's count is known only then); here only that they are whole numbers.
 constexpr int kMostFaces = 2147483647;
 
 class Parser {
@@ -192,8 +211,8 @@ class Parser {
     if (level.solid && faceTotal != faceCount(*level.solid))
       fail(level.endLine, 1, std::string(solidName(*level.solid)) + " has " + std::to_string(faceCount(*level.solid)) +
                                  " faces; the file describes " + std::to_string(faceTotal));
-    checkFaceIndex(level, level.start, "start");
-    checkFaceIndex(level, level.goal, "goal");
+    checkFaceIndex(level, level.start, "start", startFaceText_);
+    checkFaceIndex(level, level.goal, "goal", goalFaceText_);
     return level;
   }
 
@@ -211,8 +230,20 @@ class Parser {
     return *line;
   }
 
+  // Too few values on the line: at the column past its last value, or, when a value holds a byte
+  // that looks like a separator but is not (a vertical tab), at that byte, naming it.
+  [[noreturn]] void tooFewValues(const TextLine& line, const std::string& what) const {
+    for (const Token& t : line.tokens)
+      for (size_t i = 0; i < t.text.size(); ++i)
+        if (const char* name = hiddenSeparatorName(t.text[i]))
+          fail(line.number, t.column + static_cast<int>(i),
+               what + ": too few values: " + "'" + shown(t.text) + "' is one value; it holds " + name +
+                   ", which does not separate values (only spaces and tabs do)");
+    fail(line.number, line.tokens.back().end(), what + ": too few values");
+  }
+
   void expectCount(const TextLine& line, size_t lo, size_t hi, const char* what) const {
-    if (line.tokens.size() < lo) fail(line.number, line.tokens.back().end(), std::string(what) + ": too few values");
+    if (line.tokens.size() < lo) tooFewValues(line, what);
     if (line.tokens.size() > hi) fail(line, line.tokens[hi], std::string(what) + ": unexpected " + quoted(line.tokens[hi].text));
   }
 
@@ -249,7 +280,7 @@ class Parser {
       while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) ++i, ++exponent;
       if (exponent == 0) digits = 0;
     }
-    if (digits == 0 || i != s.size()) fail(line, t, std::string(what) + ": " + quoted(s) + " is not a number");
+    if (digits == 0 || i != s.size()) fail(line, t, std::string(what) + ": '" + shown(s) + "' is not a number" + hiddenSeparatorNote(s));
     const double v = std::strtod(s.c_str(), nullptr);
     if (!(v >= lo && v <= hi))
       fail(line, t, std::string(what) + ": " + shown(s) + " is out of range (" + format(lo) + " to " + format(hi) + ")");
@@ -282,6 +313,15 @@ class Parser {
     return static_cast<int>(v);
   }
 
+  // A face number: any whole number here (kept as -1 below 0 and kMostFaces above it, with its
+  // text for the message), checked against the level's faces by checkFaceIndex at the end.
+  int faceNumber(const TextLine& line, const Token& t, const char* what, std::string& text) const {
+    const double v = number(line, t, -INFINITY, INFINITY, what);
+    if (v != std::floor(v)) fail(line, t, std::string(what) + ": " + shown(t.text) + " is not a whole number");
+    text = shown(t.text);
+    return v < 0 ? -1 : v > kMostFaces ? kMostFaces : static_cast<int>(v);
+  }
+
   void solidLine(Level& level) {
     const TextLine& line = next("solid (the first line)");
     const Token& first = line.tokens[0];
@@ -307,7 +347,7 @@ class Parser {
   void startLine(Level& level) {
     const TextLine& line = next("start line (face x y [degrees])");
     expectCount(line, 3, 4, "start (face x y [degrees])");
-    level.start = {integer(line, line.tokens[0], 0, kMostFaces, "start face"), {unit(line, line.tokens[1], "start x"), unit(line, line.tokens[2], "start y")},
+    level.start = {faceNumber(line, line.tokens[0], "start face", startFaceText_), {unit(line, line.tokens[1], "start x"), unit(line, line.tokens[2], "start y")},
                    line.number, line.tokens[0].column};
     if (line.tokens.size() == 4)
       level.startMillidegrees = std::llround(number(line, line.tokens[3], -360, 360, "start rotation (degrees)") * 1000);
@@ -317,7 +357,8 @@ class Parser {
     const TextLine& line = next("goal line ([face] x y)");
     expectCount(line, 2, 3, "goal ([face] x y)");
     const size_t base = line.tokens.size() - 2;
-    const int face = base ? integer(line, line.tokens[0], 0, kMostFaces, "goal face") : level.start.face;
+    goalFaceText_ = startFaceText_;
+    const int face = base ? faceNumber(line, line.tokens[0], "goal face", goalFaceText_) : level.start.face;
     level.goal = {face, {unit(line, line.tokens[base], "goal x"), unit(line, line.tokens[base + 1], "goal y")}, line.number,
                   line.tokens[0].column};
   }
@@ -377,8 +418,7 @@ class Parser {
   }
 
   LevelLine segment(const TextLine& line) const {
-    if (line.tokens.size() < 4)
-      fail(line.number, line.tokens.back().end(), "a segment is x0 y0 x1 y1 [oneway] [tag]: too few values");
+    if (line.tokens.size() < 4) tooFewValues(line, "a segment is x0 y0 x1 y1 [oneway] [tag]");
     LevelLine out;
     out.sourceLine = line.number;
     out.sourceColumn = line.tokens[0].column;
@@ -422,14 +462,17 @@ class Parser {
     return out;
   }
 
-  void checkFaceIndex(const Level& level, const LevelPoint& p, const char* what) const {
-    if (!level.faces.empty() && p.face >= static_cast<int>(level.faces.size()))
-      fail(p.sourceLine, p.sourceColumn, std::string(what) + " face " + std::to_string(p.face) + " does not exist (faces 0 to " +
-                                             std::to_string(level.faces.size() - 1) + ")");
+  void checkFaceIndex(const Level& level, const LevelPoint& p, const char* what, const std::string& text) const {
+    const bool known = !level.faces.empty();
+    if (p.face >= 0 && (!known || p.face < static_cast<int>(level.faces.size()))) return;
+    fail(p.sourceLine, p.sourceColumn,
+         std::string(what) + " face " + text + " does not exist (" +
+             (known ? "faces 0 to " + std::to_string(level.faces.size() - 1) : std::string("faces are numbered from 0")) + ")");
   }
 
   std::string file_;
   LineReader reader_;
+  std::string startFaceText_, goalFaceText_;  // the face numbers as written, for checkFaceIndex
 };
 
 }  // namespace

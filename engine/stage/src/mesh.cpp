@@ -245,7 +245,7 @@ std::vector<int> faceOutline(const Surface& s, const detail::EdgeIndex& edges, c
 }
 
 // The solid of the coplanar groups' outlines, in the file's units.
-Polyhedron mergedFaces(const Surface& s, const detail::EdgeIndex& edges, double tolerance) {
+Polyhedron mergedFaces(const Surface& s, const detail::EdgeIndex& edges, double tolerance, std::vector<size_t>& firstTriangle) {
   const auto [group, groups] = coplanarGroups(s, edges, tolerance);
   std::vector<std::vector<size_t>> members(static_cast<size_t>(groups));
   for (size_t t = 0; t < s.triangles.size(); ++t) members[static_cast<size_t>(group[t])].push_back(t);
@@ -259,6 +259,7 @@ Polyhedron mergedFaces(const Surface& s, const detail::EdgeIndex& edges, double 
       face.push_back(at->second);
     }
     out.faces.push_back(std::move(face));
+    firstTriangle.push_back(s.fileTriangle[m[0]]);
     // The same flatness test validatePolyhedron makes, so that it never refuses what the merge made.
     if (const detail::OffPlane off = detail::worstOffPlane(out, out.faces.size() - 1); off.distance > tolerance)
       fail("the face of " + triangleName(s.fileTriangle[m[0]]) + " is not flat: its triangles each lie within " +
@@ -266,6 +267,20 @@ Polyhedron mergedFaces(const Surface& s, const detail::EdgeIndex& edges, double 
            " is " + amountText(off.distance) + " off the face's own plane (the mesh curves too gently to be one face or two)");
   }
   return out;
+}
+
+// What stageFromPolyhedron checks of the merged solid, checked here so that a refusal names the
+// file's triangles and points (the merged faces and vertices are the builder's own).
+// `firstTriangle`: each merged face's first triangle in the file.
+void checkMerged(const Polyhedron& merged, const std::vector<size_t>& firstTriangle, double tolerance) {
+  const detail::SurfaceNames names{[&](size_t f) { return "the face of " + triangleName(firstTriangle[f]); },
+                                   [&](int v) { return pointText(merged.vertices[size_t(v)]); }};
+  try {
+    detail::validatePolyhedron(merged, tolerance, names);
+  } catch (const StageError& e) {
+    fail("the faces merged from triangles within 1e-6 of the mesh's size of one plane do not make a convex solid (the "
+         "mesh bends too gently to tell its faces apart): " + e.reason());
+  }
 }
 
 }  // namespace
@@ -285,7 +300,9 @@ Polyhedron polyhedronFromMesh(const MeshData& mesh, double longestEdge) {
   Surface surface = weldedSurface(mesh, lo, extent);
   windOutward(surface);
   const detail::EdgeIndex edges = checkSolid(surface, tolerance);
-  Polyhedron out = mergedFaces(surface, edges, tolerance);
+  std::vector<size_t> firstTriangle;
+  Polyhedron out = mergedFaces(surface, edges, tolerance, firstTriangle);
+  checkMerged(out, firstTriangle, tolerance);
 
   // Scaled to units round the centre of the bounding box. stageFromPolyhedron validates the result
   // once more as a polyhedron (in linear time too).

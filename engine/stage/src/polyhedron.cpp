@@ -19,9 +19,10 @@ std::string vertexName(const Polyhedron& p, int v) {
 
 [[noreturn]] void fail(const std::string& reason) { throw StageError({}, reason); }
 
-void checkFaceShape(const Polyhedron& p, size_t f, double tolerance) {
+void checkFaceShape(const Polyhedron& p, size_t f, double tolerance, const detail::SurfaceNames& names) {
   const auto& cycle = p.faces[f];
-  const std::string name = "face " + std::to_string(f);
+  const std::string name = names.face(f);
+  auto vertexName = [&](const Polyhedron&, int v) { return names.point(v); };
   if (cycle.size() < 3) fail(name + " has " + std::to_string(cycle.size()) + " corners (at least 3)");
   for (const int v : cycle)
     if (v < 0 || static_cast<size_t>(v) >= p.vertices.size())
@@ -108,10 +109,14 @@ Eigen::Vector3d faceNormal(const Polyhedron& p, size_t face) {
 }
 
 void validatePolyhedron(const Polyhedron& p, double tolerance) {
+  detail::validatePolyhedron(p, tolerance, {[](size_t f) { return "face " + std::to_string(f); }, [&](int v) { return vertexName(p, v); }});
+}
+
+void detail::validatePolyhedron(const Polyhedron& p, double tolerance, const SurfaceNames& names) {
   if (p.faces.size() < 4) fail("a solid needs at least 4 faces, this one has " + std::to_string(p.faces.size()));
   for (size_t v = 0; v < p.vertices.size(); ++v)
     if (!p.vertices[v].allFinite()) fail("vertex " + std::to_string(v) + " is not a finite point");
-  for (size_t f = 0; f < p.faces.size(); ++f) checkFaceShape(p, f, tolerance);
+  for (size_t f = 0; f < p.faces.size(); ++f) checkFaceShape(p, f, tolerance, names);
 
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
   for (size_t f = 0; f < p.faces.size(); ++f) centre += faceCentre(p, f);
@@ -120,14 +125,12 @@ void validatePolyhedron(const Polyhedron& p, double tolerance) {
   for (size_t f = 0; f < p.faces.size(); ++f) {
     normals.push_back(faceNormal(p, f));
     if (normals.back().dot(faceCentre(p, f) - centre) <= 0)
-      fail("face " + std::to_string(f) + " faces inward (its corners run clockwise seen from outside)");
+      fail(names.face(f) + " faces inward (its corners run clockwise seen from outside)");
   }
 
-  const detail::SurfaceNames names{[](size_t f) { return "face " + std::to_string(f); },
-                                   [&](int v) { return vertexName(p, v); }};
   const detail::EdgeIndex edges(p, names);
   detail::checkClosed(p, edges, [&](int from, int to, size_t f) {
-    return "open solid: the edge from " + vertexName(p, from) + " to " + vertexName(p, to) + " has face " + std::to_string(f) +
+    return "open solid: the edge from " + names.point(from) + " to " + names.point(to) + " has " + names.face(f) +
            " on one side and nothing on the other";
   });
   detail::checkConnected(p, edges, names);

@@ -18,18 +18,29 @@ EdgeIndex::Use across(const Polyhedron& p, const EdgeIndex& edges, size_t face, 
   return *edges.find(cycle[next(corner, cycle.size())], cycle[corner]);  // checkClosed ran first
 }
 
+// The fan's faces whose planes each far end of its edges must lie behind: every one for a fan
+// of up to kEveryFace faces, else that many spread round it (a cone's apex may have 10^5).
+constexpr size_t kEveryFace = 32;
+
 // Walks the fan of faces round the vertex at `corner` of `face` (its outgoing edges, clockwise
-// seen from outside) and checks that it is the vertex's only fan and winds round it once.
+// seen from outside) and checks that it is the vertex's only fan, that the far end of each of its
+// edges lies at most `tolerance` in front of each of its faces' planes (so that inward bends each
+// under the tolerance at its edge cannot add up round a vertex into a dent), and that it winds
+// round the vertex once.
 void checkFan(const Polyhedron& p, const EdgeIndex& edges, const std::vector<Eigen::Vector3d>& normals, size_t face,
-              size_t corner, int outgoing, const SurfaceNames& names) {
+              size_t corner, int outgoing, double tolerance, const SurfaceNames& names) {
   const int v = p.faces[face][corner];
   const Eigen::Vector3d& at = p.vertices[size_t(v)];
   std::vector<Eigen::Vector3d> directions;  // unit vectors along the fan's edges
+  std::vector<int> ends;                    // the edges' far ends
+  std::vector<size_t> fanFaces;
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();
   size_t f = face, c = corner;
   do {
     const auto& cycle = p.faces[f];
-    directions.push_back((p.vertices[size_t(cycle[next(c, cycle.size())])] - at).normalized());
+    ends.push_back(cycle[next(c, cycle.size())]);
+    directions.push_back((p.vertices[size_t(ends.back())] - at).normalized());
+    fanFaces.push_back(f);
     normal += normals[f];
     // The face across the outgoing edge v -> b runs b -> v; its outgoing edge from v comes next.
     const EdgeIndex::Use back = across(p, edges, f, c);
@@ -40,17 +51,18 @@ void checkFan(const Polyhedron& p, const EdgeIndex& edges, const std::vector<Eig
   if (directions.size() != size_t(outgoing))
     fail("two fans of faces meet at the point " + names.point(v) + " (the surface pinches there): not a solid");
   // The winding is counted round an axis out of the solid whose opposite lies inside the cone of
-  // the fan's edges: for a fan flat within 1e-6 (inside a face, or on a straight edge between two
-  // faces) the mean normal; otherwise the mean edge direction reversed (the mean normal may lie
-  // outside a sharp, skewed corner's cone). Seen from outside the fan turns clockwise: -2 pi once.
+  // the fan's edges. A convex corner's cone is where every face's plane has it behind, so the
+  // mean normal serves whenever each face's normal leans toward it (every nearly flat fan: the
+  // mean edge direction would lie almost in the plane, and its winding mean nothing); a sharp,
+  // skewed corner, whose faces' normals spread wide, takes the mean edge direction reversed,
+  // which lies inside the cone of any convex corner. Seen from outside the fan turns clockwise:
+  // -2 pi once.
   normal.normalize();
   Eigen::Vector3d axis = Eigen::Vector3d::Zero();
-  double tilt = 0;
-  for (const auto& d : directions) {
-    axis -= d;
-    tilt = std::max(tilt, std::abs(d.dot(normal)));
-  }
-  axis = tilt <= 1e-6 ? normal : axis.normalized();
+  double leastLean = 1;
+  for (const auto& d : directions) axis -= d;
+  for (const size_t g : fanFaces) leastLean = std::min(leastLean, normals[g].dot(normal));
+  axis = leastLean > 0.5 ? normal : axis.normalized();
   double turn = 0;
   for (size_t i = 0; i < directions.size(); ++i) {
     const Eigen::Vector3d a = directions[i] - directions[i].dot(axis) * axis;
@@ -59,9 +71,23 @@ void checkFan(const Polyhedron& p, const EdgeIndex& edges, const std::vector<Eig
     turn += std::atan2(a.cross(b).dot(axis), a.dot(b));
   }
   const long winds = std::lround(-turn / (2 * M_PI));
-  if (winds != 1)
+  if (winds > 1)
     fail("not convex: the faces round the point " + names.point(v) + " wind round it " + std::to_string(winds) +
          " times, not once (the surface folds over itself)");
+  const size_t step = std::max<size_t>(1, fanFaces.size() / kEveryFace);
+  for (size_t i = 0; i < ends.size(); ++i)
+    for (size_t k = 0; k < fanFaces.size(); k += step) {
+      const double ahead = normals[fanFaces[k]].dot(p.vertices[size_t(ends[i])] - at);
+      if (ahead <= tolerance) continue;
+      char amount[32];
+      std::snprintf(amount, sizeof amount, "%.3g", ahead);
+      fail("not convex near the point " + names.point(v) + ": the point " + names.point(ends[i]) + " lies " + amount +
+           " in front of " + names.face(fanFaces[k]) + "'s plane (the surface curves inward round it: by less than the "
+           "tolerance at each edge, but more in all)");
+    }
+  if (winds != 1)
+    fail("not convex at the point " + names.point(v) + ": the faces round it wind round it " + std::to_string(winds) +
+         " times, not once");
 }
 
 }  // namespace
@@ -157,7 +183,7 @@ void checkLocallyConvex(const Polyhedron& p, const EdgeIndex& edges, const std::
       const int v = p.faces[f][i];
       if (done[size_t(v)]) continue;
       done[size_t(v)] = true;
-      checkFan(p, edges, normals, f, i, outgoing[size_t(v)], names);
+      checkFan(p, edges, normals, f, i, outgoing[size_t(v)], tolerance, names);
     }
 }
 

@@ -7,7 +7,9 @@
 // - across every edge the neighbouring face bends away (its corner after the edge lies behind this
 //   face's plane, within the tolerance): locally convex at the edges;
 // - the faces round every vertex make one fan that winds once round it (no bow-tie, no surface
-//   that wraps round a point twice).
+//   that wraps round a point twice), and the far end of each of its edges lies behind each of its
+//   faces' planes within the tolerance (inward bends under the tolerance at each edge must not
+//   add up round a vertex into a dent).
 //
 // A closed connected surface that is locally convex at every edge and vertex is the boundary of a
 // convex solid (its Gauss map covers the sphere once: Hadamard's theorem), so no vertex-against-
@@ -64,5 +66,9 @@ void checkConnected(const Polyhedron& p, const EdgeIndex& edges, const SurfaceNa
 // plane (`normals`: the faces' outward unit normals), and every vertex's fan winds round it once.
 void checkLocallyConvex(const Polyhedron& p, const EdgeIndex& edges, const std::vector<Eigen::Vector3d>& normals,
                         double tolerance, const SurfaceNames& names);
+
+// validatePolyhedron (polyhedron.h) naming faces and points as `names` do: the mesh builder checks
+// the solid it merged so, in the file's triangles and coordinates.
+void validatePolyhedron(const Polyhedron& p, double tolerance, const SurfaceNames& names);
 
 }  // namespace platon::stage::detail

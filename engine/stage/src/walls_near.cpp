@@ -1,5 +1,6 @@
 #include "walls_near.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "face_geometry.h"
@@ -44,7 +45,11 @@ std::vector<FlatWall> wallsNear(const Level& level, const Stage& stage, size_t f
     const StageFace& there = stage.faces[static_cast<size_t>(g)];
     const physics::Vec2 p = there.corners[static_cast<size_t>(j)], q = there.corners[(static_cast<size_t>(j) + 1) % there.corners.size()];
     const FlatMap map = unfoldAcross(stage, face, k);
+    // The edge's bounding box grown by the margin: a line whose own box misses it is not near.
+    const double x0 = std::min(p.x, q.x) - margin, x1 = std::max(p.x, q.x) + margin;
+    const double y0 = std::min(p.y, q.y) - margin, y1 = std::max(p.y, q.y) + margin;
     for (const LevelLine& l : level.faces[static_cast<size_t>(g)].lines) {
+      if (std::max(l.a.x, l.b.x) < x0 || std::min(l.a.x, l.b.x) > x1 || std::max(l.a.y, l.b.y) < y0 || std::min(l.a.y, l.b.y) > y1) continue;
       if (!counts(l, counting)) continue;
       // Near the edge: either end within the margin of it, or the line crossing its strip.
       const double ea = distanceToSegment(l.a.x, l.a.y, p, q), eb = distanceToSegment(l.b.x, l.b.y, p, q);

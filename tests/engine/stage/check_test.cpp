@@ -84,7 +84,7 @@ TEST(Check, WalledInGoalsAreRefusedAndOpenOnesAcceptedAtEverySize) {
           stage::checkLevelOnStage(*l, s);  // a valid level: only reachability is in question
         }
         const stage::CheckReport refused = stage::checkLevel(sealed, s);
-        ASSERT_EQ(refused.errors.size(), 1u);
+        ASSERT_EQ(refused.errors.size(), 1u) << (refused.warnings.empty() ? "" : refused.warnings.back().message);
         EXPECT_NE(refused.errors[0].message.find("no path reaches the goal"), std::string::npos);
         EXPECT_TRUE(stage::checkLevel(open, s).errors.empty());
         EXPECT_TRUE(stage::checkLevel(door, s).errors.empty());
@@ -191,3 +191,194 @@ TEST(Check, FacesTooNarrowForThePlayerAreWarnedOf) {
 }
 
 }  // namespace
+
+namespace {
+
+// The walls of a room's corner on the face of `p`, near its centre at a random place (so at every
+// alignment to the search's cells): a floor from the corner, a wall up from it when `twoWalls`,
+// each `length` long; `p` in the room, 100 to 110 units from each (a single floor: half way along
+// it). `square`: turned by a multiple of 90 degrees and exactly 100 units from each, as the
+// audit's room; otherwise at a random turn.
+void putInACorner(stage::Level& level, const stage::Stage& s, stage::LevelPoint& p, bool twoWalls, bool square,
+                  platon::testing::Rng& rng) {
+  const double length = std::min(800.0, 0.12 * level.size);
+  const Point c = centreOf(s.faces[size_t(p.face)]);
+  const double angle = square ? rng.between(0, 3) * M_PI / 2 : rng.uniform(0, 2 * M_PI), spread = 0.02 * level.size;
+  const Point o{c.x + rng.uniform(-spread, spread), c.y + rng.uniform(-spread, spread)};
+  const double cosine = std::round(std::cos(angle) * 1e12) / 1e12, sine = std::round(std::sin(angle) * 1e12) / 1e12;
+  const Vec2 corner = unit(o);
+  auto at = [&](double u, double v) { return unit({corner.x + u * cosine - v * sine, corner.y + u * sine + v * cosine}); };
+  auto& lines = level.faces[size_t(p.face)].lines;
+  lines.push_back({at(0, 0), at(length, 0), false, 0, 20, 1});
+  if (twoWalls) lines.push_back({at(0, 0), at(0, length), false, 0, 21, 1});
+  const double fromFloor = square ? 100 : rng.uniform(100.5, 110), fromWall = !twoWalls ? length / 2 : square ? 100 : rng.uniform(100.5, 110);
+  p.position = at(fromWall, fromFloor);
+}
+
+std::string findings(const stage::CheckReport& report) {
+  std::string out;
+  for (const auto& e : report.errors) out += "error: " + e.message + "\n";
+  for (const auto& w : report.warnings) out += "warning: " + w.message + "\n";
+  return out;
+}
+
+bool undecided(const stage::CheckReport& report) {
+  for (const auto& w : report.warnings)
+    if (w.message.find("could not decide") != std::string::npos) return true;
+  return false;
+}
+
+}  // namespace
+
+// A start in a room's corner 100 to 110 units from a floor and a wall (the least clearance the
+// doc allows), or beside one floor; and a goal so placed too: reachable on every solid at face
+// sizes from 1,000 to 2^24, at random places and turns. (With 100 units from both walls the start
+// had 4 units of room, less than a cell's diagonal, and the level was called sealed off.)
+TEST(Check, AStartOrGoalInARoomsCornerIsReachable) {
+  platon::testing::Rng rng{97};
+  int checked = 0;
+  for (const int32_t size : {1000, 4096, 65536, 1 << 24})
+    for (const stage::Solid solid : stage::kSolids) {
+      const stage::Stage s = stage::platonicStage(solid, size);
+      for (int i = 0; i < 24; ++i) {
+        stage::Level level = emptyLevel(solid, size, s);
+        putInACorner(level, s, level.start, i % 4 != 3, i % 3 == 0, rng);
+        if (i % 2) putInACorner(level, s, level.goal, i % 5 != 0, i % 3 == 1, rng);
+        try {
+          stage::checkLevelOnStage(level, s);
+        } catch (const stage::StageError&) {
+          continue;  // rounded to whole units, 99 units from a wall: not this test's question
+        }
+        ++checked;
+        const stage::CheckReport report = stage::checkLevel(level, s);
+        EXPECT_TRUE(report.errors.empty() && !undecided(report))
+            << stage::solidName(solid) << " size " << size << " case " << i << ": start (" << level.start.position.x << ", "
+            << level.start.position.y << ")\n" << findings(report);
+      }
+    }
+  EXPECT_GT(checked, 400);
+  // The audit's rooms: a floor and a wall along the face's axes, the start exactly 100 units from
+  // both, the corner moved a unit at a time over 16 units, so through every alignment to the
+  // cells (one of every eight was called sealed off).
+  for (const int32_t size : {1000, 4096, 65536, 1 << 24})
+    for (const stage::Solid solid : stage::kSolids) {
+      const stage::Stage s = stage::platonicStage(solid, size);
+      const Vec2 base = unit(centreOf(s.faces[0]));
+      const int32_t length = std::min(800, size / 8);
+      for (int32_t w = 0; w < 16; ++w) {
+        stage::Level level = emptyLevel(solid, size, s);
+        const Vec2 corner{base.x + w, base.y + w};
+        level.faces[0].lines = {{corner, {corner.x + length, corner.y}, false, 0, 20, 1}, {corner, {corner.x, corner.y + length}, false, 0, 21, 1}};
+        level.start.position = {corner.x + 100, corner.y + 100};
+        stage::checkLevelOnStage(level, s);
+        const stage::CheckReport report = stage::checkLevel(level, s);
+        EXPECT_TRUE(report.errors.empty() && !undecided(report))
+            << stage::solidName(solid) << " size " << size << " corner moved " << w << "\n" << findings(report);
+      }
+    }
+}
+
+namespace {
+
+// The audit's posts level: a cube of 2^24 units, on face 0 a floor and a bump between the start
+// and the goal (so that no straight line joins them), on faces 1 to 5 `posts` posts of one unit
+// on a lattice hundreds of thousands of units apart; `sealed` walls the goal in.
+std::string postsLevel(int posts, bool sealed) {
+  std::string text = "HEXAHEDRON\n0 150 200\n0 3000 260\n16777216\n%\n0 100 6000 100\n1500 100 1500 300\n";
+  if (sealed) text += "2600 100 2600 700\n2600 700 3400 700\n3400 700 3400 100\n";
+  const int perFace = posts / 5, k = static_cast<int>(std::sqrt(perFace)) + 1, step = ((1 << 24) - 800) / k;
+  for (int f = 1; f < 6; ++f) {
+    text += "%\n";
+    for (int c = 0; c < perFace; ++c) {
+      const int x = 400 + (c / k) * step, y = 400 + (c % k) * step;
+      text += std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(x + 1) + " " + std::to_string(y) + "\n";
+    }
+  }
+  return text;
+}
+
+}  // namespace
+
+// Many short walls far apart cost the search cells at every level from the face's size down (not
+// length: 10,000 one-unit posts on faces of 2^24 were taken for "very long" walls, searched with
+// cells of 64 units and called sealed off). With 0, 10,000 and 50,000 posts the open level is
+// reachable and the walled-in one refused, each decided.
+TEST(Check, ManyShortWallsFarApartLeaveTheAnswerDecided) {
+  for (const int posts : {0, 10000, 50000}) {
+    SCOPED_TRACE(std::to_string(posts) + " posts");
+    const stage::Level open = stage::parseLevel(postsLevel(posts, false), "posts.level");
+    const stage::CheckReport accepted = stage::checkLevel(open, stage::platonicStageOf(open));
+    EXPECT_TRUE(accepted.errors.empty() && !undecided(accepted)) << findings(accepted);
+    const stage::Level sealed = stage::parseLevel(postsLevel(posts, true), "posts.level");
+    const stage::CheckReport refused = stage::checkLevel(sealed, stage::platonicStageOf(sealed));
+    ASSERT_EQ(refused.errors.size(), 1u) << findings(refused);
+    EXPECT_EQ(stage::describe(refused.errors[0].where) + refused.errors[0].message,
+              "posts.level:3:1: no path reaches the goal from the start (walls seal it off; see docs/level-format.md, \"platon check\")");
+  }
+}
+
+// Where the search has to stop coarse (here 60,000 posts on faces of 2^24), a goal behind a gap it
+// cannot resolve (260 units, wider than the 216 the finest cells resolve) far from the start and
+// the goal is undecided: a warning saying so, never "no path". Without the posts the same level is
+// searched with the finest cells and reachable.
+TEST(Check, AGapTheCoarseCellsCannotResolveIsUndecidedNotSealed) {
+  auto level = [](int posts) {
+    // A box of 6,000 units round the goal, its only way in a gap of 260 units 3,000 units away.
+    std::string text = postsLevel(posts, false);
+    const std::string box = "8000 100 8000 3040\n8000 3300 8000 6100\n8000 6100 14000 6100\n14000 6100 14000 100\n";
+    text.replace(text.find("0 3000 260"), 10, "0 11000 3000");
+    text.replace(text.find("0 100 6000 100\n"), 15, "0 100 14000 100\n" + box);
+    return stage::parseLevel(text, "gap.level");
+  };
+  const stage::Level few = level(0);
+  const stage::CheckReport open = stage::checkLevel(few, stage::platonicStageOf(few));
+  EXPECT_TRUE(open.errors.empty() && !undecided(open)) << findings(open);
+  const stage::Level many = level(60000);
+  const stage::CheckReport report = stage::checkLevel(many, stage::platonicStageOf(many));
+  EXPECT_TRUE(report.errors.empty()) << findings(report);
+  EXPECT_TRUE(undecided(report)) << findings(report);
+}
+
+// The search takes walls on one line that overlap or touch as one (a floor drawn in thousands of
+// one-unit pieces, or drawn twice): a square round the goal drawn in pieces of 1 to 10 units,
+// each twice and some overlapping, seals the goal as the whole square does; the same with one
+// piece of each side left out (a hole of a few units, too narrow for the player) seals it too;
+// with 300 units of one side left out the goal is reachable.
+TEST(Check, WallsDrawnInPiecesSealAsWholeWallsDo) {
+  platon::testing::Rng rng{5};
+  for (const int32_t size : {4096, 65536})
+    for (const stage::Solid solid : {stage::Solid::Hexahedron, stage::Solid::Icosahedron}) {
+      const stage::Stage s = stage::platonicStage(solid, size);
+      const Vec2 g = unit(centreOf(s.faces[1]));
+      for (const int open : {0, 5, 300}) {
+        stage::Level level = emptyLevel(solid, size, s);
+        level.goal.position = g;
+        auto& lines = level.faces[1].lines;
+        const Vec2 corners[4] = {{g.x - 400, g.y - 400}, {g.x + 400, g.y - 400}, {g.x + 400, g.y + 400}, {g.x - 400, g.y + 400}};
+        for (int k = 0; k < 4; ++k) {
+          const Vec2 a = corners[k], b = corners[(k + 1) % 4];
+          const int32_t dx = (b.x - a.x) / 800, dy = (b.y - a.y) / 800;  // a unit step along the side
+          for (int32_t t = 0; t < 800;) {
+            const int32_t piece = std::min(800 - t, rng.between(1, 10));
+            const Vec2 from{a.x + dx * t, a.y + dy * t}, to{a.x + dx * (t + piece), a.y + dy * (t + piece)};
+            const bool left = open > 0 && t >= 200 && t < 200 + open;  // the hole, on every side
+            if (!left) {
+              lines.push_back({from, to, false, 0, 30, 1});
+              lines.push_back({to, from, false, 0, 31, 1});  // again, the other way
+              if (piece > 2) lines.push_back({{from.x + dx, from.y + dy}, {to.x + dx, to.y + dy}, false, 0, 32, 1});  // overlapping
+            }
+            t += piece;
+          }
+        }
+        stage::checkLevelOnStage(level, s);
+        const stage::CheckReport report = stage::checkLevel(level, s);
+        SCOPED_TRACE(std::string(stage::solidName(solid)) + " size " + std::to_string(size) + ", " + std::to_string(open) + " units left out");
+        if (open < 100) {
+          ASSERT_EQ(report.errors.size(), 1u) << findings(report);
+          EXPECT_NE(report.errors[0].message.find("no path reaches the goal"), std::string::npos);
+        } else {
+          EXPECT_TRUE(report.errors.empty() && !undecided(report)) << findings(report);
+        }
+      }
+    }
+}

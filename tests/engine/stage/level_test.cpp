@@ -112,7 +112,7 @@ TEST(LevelFormat, EveryMistakeNamesFileLineColumnAndWhy) {
 }
 
 // What the text itself can hide: a byte order mark (skipped), CR-only line ends (refused, saying
-// so), bytes a terminal does not show (escaped as \xHH, a NUL included, which used to end the
+// so), bytes a terminal does not show (escaped as \x{HH}, a NUL included, which used to end the
 // message), very long tokens (cut to 40 bytes), a gravity too small to keep; and every message
 // has a column, also for what is missing (the column just past the line's last value).
 TEST(LevelFormat, WhatTheTextHidesIsShownInTheMessage) {
@@ -126,7 +126,7 @@ TEST(LevelFormat, WhatTheTextHidesIsShownInTheMessage) {
       {"\xEF\xBB\xBF" + header + faces, "(accepted)"},
       {"\xEF\xBB\xBF" "CUBE\n", "t.level:1:1: unknown solid 'CUBE' (known: TETRAHEDRON, HEXAHEDRON, OCTAHEDRON, DODECAHEDRON, ICOSAHEDRON, or MESH file)"},
       {"\xEF\xBB\xBF\xEF\xBB\xBF" "HEXAHEDRON\n",
-       "t.level:1:1: unknown solid '\\xEF\\xBB\\xBFHEXAHEDRON' (known: TETRAHEDRON, HEXAHEDRON, OCTAHEDRON, DODECAHEDRON, ICOSAHEDRON, or MESH file)"},
+       "t.level:1:1: unknown solid '\\x{EF}\\x{BB}\\x{BF}HEXAHEDRON' (known: TETRAHEDRON, HEXAHEDRON, OCTAHEDRON, DODECAHEDRON, ICOSAHEDRON, or MESH file)"},
       {"HEXAHEDRON\r0 600 700\r0 2000 2000\r4096\r",
        "t.level:1:11: a CR (\\r) ends a line here without an LF: lines must end with LF or CR LF (CR-only line ends, as old Mac files have, are not read)"},
       {"HEXAHEDRON\r\n0 600\r700\r\n",
@@ -134,9 +134,9 @@ TEST(LevelFormat, WhatTheTextHidesIsShownInTheMessage) {
       {"HEXAHEDRON\r\n0 600 700 \r \r\n0\r2000 2000\r\n",
        "t.level:3:2: a CR (\\r) ends a line here without an LF: lines must end with LF or CR LF (CR-only line ends, as old Mac files have, are not read)"},
       {"HEXAHEDRON\r\n0 600 700\r\n0 2000 2000 \r\r\n4096\r\n" + faces, "(accepted)"},
-      {"HEXAHEDRON\n0 600\0 700\n"s, "t.level:2:3: start x: '600\\x00' is not a number"},
-      {"HEXAHEDRON\n0 \xE2\x88\x92" "600 700\n", "t.level:2:3: start x: '\\xE2\\x88\\x92" "600' is not a number"},
-      {"HEXA\xC3\x89" "DRON\n", "t.level:1:1: unknown solid 'HEXA\\xC3\\x89" "DRON' (known: TETRAHEDRON, HEXAHEDRON, OCTAHEDRON, DODECAHEDRON, ICOSAHEDRON, or MESH file)"},
+      {"HEXAHEDRON\n0 600\0 700\n"s, "t.level:2:3: start x: '600\\x{00}' is not a number"},
+      {"HEXAHEDRON\n0 \xE2\x88\x92" "600 700\n", "t.level:2:3: start x: '\\x{E2}\\x{88}\\x{92}" "600' is not a number"},
+      {"HEXA\xC3\x89" "DRON\n", "t.level:1:1: unknown solid 'HEXA\\x{C3}\\x{89}" "DRON' (known: TETRAHEDRON, HEXAHEDRON, OCTAHEDRON, DODECAHEDRON, ICOSAHEDRON, or MESH file)"},
       {"HEXAHEDRON\n0 " + digits + " 700\n", "t.level:2:3: start x: " + digits.substr(0, 40) + "... is out of range (-536870912 to 536870912)"},
       {"HEXAHEDRON\n0 " + letters + " 700\n", "t.level:2:3: start x: '" + letters.substr(0, 40) + "...' is not a number"},
       {header + "%\n1 2 3 4 " + letters + "\n", "t.level:6:9: unknown segment word '" + letters.substr(0, 40) + "...' (known: oneway, solid, hazard, goal, checkpoint, door N, switch N, tag N)"},
@@ -145,6 +145,25 @@ TEST(LevelFormat, WhatTheTextHidesIsShownInTheMessage) {
       {header + "% gravity 0 -0.00001\n%\n%\n%\n%\n%\n", "(accepted)"},  // 0.65 of a step: one step
       {"MESH\n", "t.level:1:5: MESH needs a file name"},
       {"HEXAHEDRON\n12000 600 700\n0 2000 2000\n4096\n" + faces, "t.level:2:1: start face 12000 does not exist (faces 0 to 5)"},
+      // A face number out of range names the level's faces, below 0 too (it said "0 to 2147483647").
+      {"HEXAHEDRON\n-1 600 700\n0 2000 2000\n4096\n" + faces, "t.level:2:1: start face -1 does not exist (faces 0 to 5)"},
+      {"HEXAHEDRON\n1e10 600 700\n0 2000 2000\n4096\n" + faces, "t.level:2:1: start face 1e10 does not exist (faces 0 to 5)"},
+      {"TETRAHEDRON\n0 600 700\n-3 2000 800\n4096\n%\n%\n%\n%\n", "t.level:3:1: goal face -3 does not exist (faces 0 to 3)"},
+      {"MESH m.obj\n-1 10 10\n0 10 10\n4096\n%\n%\n%\n%\n%\n", "t.level:2:1: start face -1 does not exist (faces 0 to 4)"},
+      {"MESH m.obj\n0 10 10\n-2 10 10\n4096\n", "t.level:3:1: goal face -2 does not exist (faces are numbered from 0)"},
+      {"HEXAHEDRON\n-0.5 600 700\n", "t.level:2:1: start face: -0.5 is not a whole number"},
+      // A NUL before digits: the braces end the escape ('2\x0000' read as one four-digit escape).
+      {header + "%\n100 200 300 2\0" "00\n"s, "t.level:6:13: y1: '2\\x{00}00' is not a number"},
+      // A vertical tab looks like a separator but is a value's byte: named where it is.
+      {header + "%\n100\v200 300 200\n",
+       "t.level:6:4: a segment is x0 y0 x1 y1 [oneway] [tag]: too few values: '100\\x{0B}200' is one value; it holds a "
+       "vertical tab (\\x{0B}), which does not separate values (only spaces and tabs do)"},
+      {header + "%\n100\v200 300 200 400\n",
+       "t.level:6:1: x0: '100\\x{0B}200' is not a number (it holds a vertical tab (\\x{0B}), which does not separate values: "
+       "only spaces and tabs do)"},
+      {"HEXAHEDRON\n0 600\f700\n",
+       "t.level:2:6: start (face x y [degrees]): too few values: '600\\x{0C}700' is one value; it holds a form feed (\\x{0C}), "
+       "which does not separate values (only spaces and tabs do)"},
   };
   for (const auto& c : cases) EXPECT_EQ(errorOf(c.text), c.expected) << c.text;
   // Face numbers go as far as the level's faces: a mesh level of 20,480 faces may start on the last.

@@ -2,6 +2,7 @@
 // checks agree with the brute-force test on random convex and dented solids, it refuses what is
 // not one convex solid, and a mesh of 20,480 triangles builds (bench/stage/mesh_load times it).
 #include <algorithm>
+#include <map>
 
 #include <gtest/gtest.h>
 
@@ -322,3 +323,163 @@ TEST(MeshBuilder, QuarterTurnsWithFloatNoiseGiveTheExactTurnsStage) {
 }
 
 }  // namespace
+
+namespace {
+
+// The cube [-1, 1]^3 with its top an N x N grid of triangles lowered by depth (1 - x^2)(1 - z^2)
+// (a smooth bowl), its sides fanned from a bottom corner over the top's rim: the re-audit's dent.
+stage::MeshData dentedCube(int n, double depth) {
+  stage::MeshData m;
+  auto point = [&](const Eigen::Vector3d& p) {
+    for (size_t i = 0; i < m.positions.size(); ++i)
+      if ((m.positions[i] - p).norm() < 1e-12) return int(i);
+    m.positions.push_back(p);
+    return int(m.positions.size() - 1);
+  };
+  auto grid = [&](int i, int j) {
+    const double x = -1 + 2.0 * i / n, z = -1 + 2.0 * j / n;
+    return point({x, 1 - depth * (1 - x * x) * (1 - z * z), z});
+  };
+  std::vector<std::array<int, 3>> t;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      t.push_back({grid(i, j), grid(i, j + 1), grid(i + 1, j)});
+      t.push_back({grid(i + 1, j), grid(i, j + 1), grid(i + 1, j + 1)});
+    }
+  auto side = [&](std::vector<int> rim, const Eigen::Vector3d& b0, const Eigen::Vector3d& b1) {
+    std::vector<int> poly{point(b0), point(b1)};
+    poly.insert(poly.end(), rim.begin(), rim.end());
+    for (size_t k = 1; k + 1 < poly.size(); ++k) t.push_back({poly[0], poly[k], poly[k + 1]});
+  };
+  std::vector<int> r0, r1, r2, r3;
+  for (int k = 0; k <= n; ++k) r0.push_back(grid(n, n - k)), r1.push_back(grid(0, k)), r2.push_back(grid(k, n)), r3.push_back(grid(n - k, 0));
+  side(r0, {1, -1, -1}, {1, -1, 1});
+  side(r1, {-1, -1, 1}, {-1, -1, -1});
+  side(r2, {1, -1, 1}, {-1, -1, 1});
+  side(r3, {-1, -1, -1}, {1, -1, -1});
+  const int b[4] = {point({-1, -1, -1}), point({1, -1, -1}), point({1, -1, 1}), point({-1, -1, 1})};
+  t.push_back({b[0], b[1], b[2]});
+  t.push_back({b[0], b[2], b[3]});
+  for (auto& tri : t) {  // each wound outward, away from the centre
+    const Eigen::Vector3d &p = m.positions[size_t(tri[0])], &q = m.positions[size_t(tri[1])], &r = m.positions[size_t(tri[2])];
+    if ((q - p).cross(r - p).dot(p + q + r) < 0) std::swap(tri[1], tri[2]);
+  }
+  m.triangles = t;
+  return m;
+}
+
+// How far, at most, the far corner of a triangle's neighbour lies in front of the triangle's plane
+// (what the builder's edge test measures; it scales with the dent's depth).
+double worstAhead(const stage::MeshData& m) {
+  std::map<std::pair<int, int>, size_t> owner;
+  for (size_t t = 0; t < m.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) owner[{m.triangles[t][size_t(k)], m.triangles[t][size_t((k + 1) % 3)]}] = t;
+  double worst = 0;
+  for (size_t t = 0; t < m.triangles.size(); ++t) {
+    const auto& c = m.triangles[t];
+    const Eigen::Vector3d& a = m.positions[size_t(c[0])];
+    const Eigen::Vector3d n = (m.positions[size_t(c[1])] - a).cross(m.positions[size_t(c[2])] - a).normalized();
+    for (int k = 0; k < 3; ++k) {
+      const auto& o = m.triangles[owner.at({c[size_t((k + 1) % 3)], c[size_t(k)]})];
+      for (const int v : o) worst = std::max(worst, n.dot(m.positions[size_t(v)] - a));
+    }
+  }
+  return worst;
+}
+
+}  // namespace
+
+// A smooth dent so shallow that every edge bends inward by less than the tolerance (1e-6 of the
+// mesh's size), at grids of 10 to 40: refused as not convex, naming where it curves inward; it
+// was refused as a surface that "folds over itself" (the winding round a nearly flat corner was
+// counted about an axis lying almost in its plane). Pushed out instead it is a saddle near the
+// top's corners, not convex either, and refused so too.
+TEST(MeshBuilder, AShallowDentIsRefusedAsCurvingInward) {
+  const double tolerance = 1e-6 * std::sqrt(12.0);
+  for (const int n : {10, 20, 40}) {
+    const double depth = 0.9 * tolerance / worstAhead(dentedCube(n, 1e-3)) * 1e-3;  // each edge bends 0.9 of the tolerance
+    const std::string dent = refusal(dentedCube(n, depth));
+    SCOPED_TRACE("grid " + std::to_string(n) + ": " + dent);
+    EXPECT_EQ(dent.rfind("not convex near the point (", 0), 0u);
+    EXPECT_NE(dent.find("the surface curves inward round it"), std::string::npos);
+    EXPECT_EQ(dent.find("folds over itself"), std::string::npos);
+    const std::string saddle = refusal(dentedCube(n, -depth));
+    EXPECT_EQ(saddle.rfind("not convex near the point (", 0), 0u) << saddle;
+  }
+}
+
+namespace {
+
+// The cube [-1, 1]^3 with a four-sided pyramid of height `height` on top, the top triangulated as
+// an n x n grid whose every triangle lies on one of the pyramid's planes (the re-audit's roof).
+stage::MeshData roofedCube(int n, double height) {
+  stage::MeshData m;
+  std::map<std::array<long long, 3>, int> index;
+  auto point = [&](const Eigen::Vector3d& p) {
+    const std::array<long long, 3> key{std::llround(p.x() * 1e12), std::llround(p.y() * 1e12), std::llround(p.z() * 1e12)};
+    const auto [at, added] = index.emplace(key, int(m.positions.size()));
+    if (added) m.positions.push_back(p);
+    return at->second;
+  };
+  auto grid = [&](int i, int j) {
+    const double x = -1 + 2.0 * i / n, z = -1 + 2.0 * j / n;
+    return point({x, 1 + height * std::min(1 - std::abs(x), 1 - std::abs(z)), z});
+  };
+  std::vector<std::array<int, 3>> t;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const bool sameSign = (i + 0.5 > n / 2.0) == (j + 0.5 > n / 2.0);  // the diagonal that keeps each half on one plane
+      if (sameSign) {
+        t.push_back({grid(i, j), grid(i, j + 1), grid(i + 1, j + 1)});
+        t.push_back({grid(i, j), grid(i + 1, j + 1), grid(i + 1, j)});
+      } else {
+        t.push_back({grid(i, j), grid(i, j + 1), grid(i + 1, j)});
+        t.push_back({grid(i + 1, j), grid(i, j + 1), grid(i + 1, j + 1)});
+      }
+    }
+  auto side = [&](std::vector<int> rim, const Eigen::Vector3d& b0, const Eigen::Vector3d& b1) {
+    std::vector<int> poly{point(b0), point(b1)};
+    poly.insert(poly.end(), rim.begin(), rim.end());
+    for (size_t k = 1; k + 1 < poly.size(); ++k) t.push_back({poly[0], poly[k], poly[k + 1]});
+  };
+  std::vector<int> r0, r1, r2, r3;
+  for (int k = 0; k <= n; ++k) r0.push_back(grid(n, n - k)), r1.push_back(grid(0, k)), r2.push_back(grid(k, n)), r3.push_back(grid(n - k, 0));
+  side(r0, {1, -1, -1}, {1, -1, 1});
+  side(r1, {-1, -1, 1}, {-1, -1, -1});
+  side(r2, {1, -1, 1}, {-1, -1, 1});
+  side(r3, {-1, -1, -1}, {1, -1, -1});
+  const int b[4] = {point({-1, -1, -1}), point({1, -1, -1}), point({1, -1, 1}), point({-1, -1, 1})};
+  t.push_back({b[0], b[1], b[2]});
+  t.push_back({b[0], b[2], b[3]});
+  for (auto& tri : t) {
+    const Eigen::Vector3d &p = m.positions[size_t(tri[0])], &q = m.positions[size_t(tri[1])], &r = m.positions[size_t(tri[2])];
+    if ((q - p).cross(r - p).dot(p + q + r) < 0) std::swap(tri[1], tri[2]);
+  }
+  m.triangles = t;
+  return m;
+}
+
+}  // namespace
+
+// Low pyramid roofs on a cube (heights 1e-6 to 1e-2 of its side, grids of 1 to 20): convex, so
+// accepted, except where the merge of nearly coplanar triangles cannot tell the roof's planes
+// apart (a known limit, docs/level-format.md "Mesh stages"); every refusal then names the file's
+// triangles and points, never the merged solid's own face and vertex numbers in stage units
+// ("face 0 is not convex at vertex 3 (0, 2048, 614.4)").
+TEST(MeshBuilder, LowRoofsAreAcceptedOrRefusedInTheFilesTerms) {
+  int accepted = 0;
+  for (const int n : {1, 2, 3, 4, 7, 10, 20})
+    for (const double height : {1e-6, 3e-6, 1e-5, 2e-5, 3e-5, 1e-4, 1e-3, 1e-2}) {
+      const std::string why = refusal(roofedCube(n, height));
+      SCOPED_TRACE("grid " + std::to_string(n) + " height " + std::to_string(height) + ": " + why);
+      if (why == "(accepted)") {
+        ++accepted;
+        continue;
+      }
+      EXPECT_NE(why.find("triangle "), std::string::npos);
+      EXPECT_EQ(why.find("vertex "), std::string::npos);
+      EXPECT_EQ(why.find("face 0"), std::string::npos);
+      EXPECT_LT(height, 1e-4);  // from 1e-4 the roof's planes are told apart
+    }
+  EXPECT_GT(accepted, 40);
+}

@@ -19,8 +19,9 @@ struct CheckReport {
 
 // Checks a parsed level on its stage: checkLevelOnStage's errors; a goal no path reaches (error);
 // lines lying along a face's edge, where they block the way to the next face, faces with no
-// lines, faces narrower than the default player, and a reachability search that had to coarsen
-// its cells (warnings).
+// lines, faces narrower than the default player, and a reachability search that could not decide
+// (it had to stop at coarse cells, and they neither join the goal nor seal it off: a warning,
+// never the error).
 //
 // Reachability is conservative (src/reach_search.h, docs/level-format.md "platon check"): free
 // space for the default player's disk (radius 96) as a quadtree per face, refined near walls down
