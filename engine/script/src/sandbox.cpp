@@ -162,18 +162,19 @@ stringMeta.__index = methods
 stringMeta.__metatable = "locked"
 
 -- A read-only view of an engine table, built once; nested tables are views too. A view of a view
--- is the view itself.
+-- is the view itself. Messages name keys by the sandbox's tostring: an address in an error would
+-- differ between runs and break replays.
 local views = setmetatable({}, { __mode = "k" })
 local function readonly(t, name)
   if views[t] then return t end
   local entries = {}
   for k, v in pairs(t) do
-    entries[k] = type(v) == "table" and readonly(v, name .. "." .. tostring(k)) or v
+    entries[k] = type(v) == "table" and readonly(v, name .. "." .. safeTostring(k)) or v
   end
   local view = setmetatable({}, {
     __index = entries,
     __newindex = function(_, k)
-      error(name .. " is read-only (tried to set " .. tostring(k) .. ")", 2)
+      error(name .. " is read-only (tried to set " .. safeTostring(k) .. ")", 2)
     end,
     __metatable = "locked",
   })

@@ -282,5 +282,18 @@ TEST(Errors, TheStackIsLeftAsItWas) {
   EXPECT_EQ(lua_gettop(host.state()), top);
 }
 
+// --- read-only views ---
+
+// A read-only view names the key it refused by the sandbox's tostring, never by an address
+// (re-audit N5: "tried to set table: 0x55..." gave a sandbox a number that differs per process).
+TEST(ReadOnlyViews, NameARefusedKeyWithoutAnAddress) {
+  EXPECT_EQ(runSandboxed("for _, key in ipairs { {}, print, coroutine.create(print) } do\n"
+                         "  local ok, e = pcall(function() platon[key] = 1 end)\n"
+                         "  assert(not ok and not e:find('0x'), e)\n"
+                         "  assert(e:find('^mod.lua:2: platon is read%-only %(tried to set ' .. type(key) .. ': #%d+%)$'), e)\n"
+                         "end"),
+            "");
+}
+
 }  // namespace
 }  // namespace platon::script
