@@ -230,9 +230,11 @@ stringMeta.__index = methods
 stringMeta.__metatable = "locked"
 
 -- A read-only view of an engine table, built once; nested tables are views too. A view of a view
--- is the view itself. Messages name keys by the sandbox's tostring: an address in an error would
--- differ between runs and break replays.
-local views = setmetatable({}, { __mode = "k" })
+-- is the view itself. The view is an empty table whose metatable reads `entries`; pairs, next and
+-- ipairs walk those entries (views[view].entries) without ever handing the table out, so a view
+-- lists what it shows and stays read-only. Messages name keys by the sandbox's tostring: an
+-- address in an error would differ between runs and break replays.
+local views = setmetatable({}, { __mode = "k" })  -- view -> { entries = what it shows, name = its name }
 local function readonly(t, name)
   if views[t] then return t end
   local entries = {}
@@ -246,15 +248,22 @@ local function readonly(t, name)
     end,
     __metatable = "locked",
   })
-  views[view] = true
+  views[view] = { entries = entries, name = name }
   return view
+end
+
+-- What pairs, next and ipairs walk: a view's entries, any other table itself.
+local function shownBy(t)
+  local view = views[t]
+  return view and view.entries or t
 end
 
 -- pairs and next in a fixed order (sandbox.cpp, orderedKeys): LuaJIT's order depends on the
 -- string hash's random seed and on addresses. pairs orders the keys once per traversal.
 local function safePairs(t)
   if type(t) ~= "table" then error("bad argument #1 to 'pairs' (table expected, got " .. type(t) .. ")", 2) end
-  local keys, why = orderedKeys(t)
+  local shown = shownBy(t)
+  local keys, why = orderedKeys(shown)
   if not keys then error(why, 2) end
   local i = 0
   return function()
@@ -262,7 +271,7 @@ local function safePairs(t)
       i = i + 1
       local k = keys[i]
       if k == nil then return nil end
-      local v = rawget(t, k)
+      local v = rawget(shown, k)
       if v ~= nil then return k, v end
     end
   end, t, nil
@@ -286,6 +295,7 @@ end
 local walks = setmetatable({}, { __mode = "k" })  -- t -> { keys, at, last = index of lastKey, lastKey }
 local function safeNext(t, k)
   if type(t) ~= "table" then error("bad argument #1 to 'next' (table expected, got " .. type(t) .. ")", 2) end
+  t = shownBy(t)
   if k == nil then
     local first, arrayLength = orderedKeys(t, true)
     if type(arrayLength) == "string" then error(arrayLength, 2) end
@@ -332,6 +342,16 @@ local function safeNext(t, k)
   end
 end
 
+-- ipairs over a view walks its entries; over any other table it is LuaJIT's.
+local function safeIpairs(t)
+  if not views[t] then return ipairs(t) end
+  local shown = views[t].entries
+  return function(_, i)
+    i = i + 1
+    local v = rawget(shown, i)
+    if v ~= nil then return i, v end
+  end, t, 0
+end
 
 -- table.sort runs in C, where no hook stops it: a bound on what one call may sort.
 local MAX_SORT = 1000000
@@ -409,7 +429,7 @@ local function deterministicRandom(m)
   end
 end
 
-local SAFE = { "assert", "error", "ipairs", "pcall", "select", "tonumber", "type", "unpack", "rawequal",
+local SAFE = { "assert", "error", "pcall", "select", "tonumber", "type", "unpack", "rawequal",
                "rawget", "getmetatable", "setmetatable" }
 
 -- LuaJIT runs an xpcall handler where the error was raised, before unwinding; for the error the
@@ -424,14 +444,14 @@ local function safeXpcall(f, handler, ...)
 end
 
 -- What a sandbox calls with its loops in them runs interpreted, so the hooks see them.
-for _, f in ipairs { safeTostring, safeFormat, safePairs, safeNext, safeSort, safeTime, safeDate, safeXpcall } do
+for _, f in ipairs { safeTostring, safeFormat, safePairs, safeNext, safeIpairs, safeSort, safeTime, safeDate, safeXpcall } do
   jit.off(f, true)
 end
 
 local function newSandbox(name, api)
   local env = {}
   for _, k in ipairs(SAFE) do env[k] = _G[k] end
-  env.pairs, env.next, env.tostring, env.xpcall = safePairs, safeNext, safeTostring, safeXpcall
+  env.pairs, env.next, env.ipairs, env.tostring, env.xpcall = safePairs, safeNext, safeIpairs, safeTostring, safeXpcall
   env._G = env
   env._VERSION = _VERSION
   env.string = copy(methods)
