@@ -166,8 +166,9 @@ int orderedKeys(lua_State* L) {
 //   string.dump: produces bytecode.
 // xpcall runs its handler after the stack unwound (see safeXpcall below).
 // Replays must be exact, so what would differ between runs or machines is the game's: math.random
-// is a deterministic generator per sandbox, os.time/clock/date read the game clock, pairs and next
-// walk keys in a fixed order, tostring names tables and functions by a counter, not an address.
+// is a deterministic generator per sandbox, os.time/clock/date read the game clock, pairs, next
+// and table.foreach walk keys in a fixed order, tostring names tables and functions by a counter,
+// not an address.
 // The pattern functions count their steps (lua_pattern.cpp); table.sort refuses huge tables (it
 // sorts in C, where no hook runs).
 // For every script: the shared string metatable is locked (getmetatable("") returns "locked"), and
@@ -353,9 +354,41 @@ local function safeIpairs(t)
   end, t, 0
 end
 
+-- table's functions read and write raw: on a view, insert would write past its read-only
+-- metatable into the table every sandbox is shown (a mod's note in the level's `game`), and
+-- foreach would walk LuaJIT's order, which differs between processes.
+local function refuseView(t, what)
+  local view = views[t]
+  if view then error(view.name .. " is read-only (tried to " .. what .. " in it)", 3) end
+end
+local insert, remove = table.insert, table.remove
+local function safeInsert(t, ...)
+  refuseView(t, "insert")
+  return insert(t, ...)
+end
+local function safeRemove(t, ...)
+  refuseView(t, "remove")
+  return remove(t, ...)
+end
+local function safeForeach(t, f)
+  if type(t) ~= "table" then error("bad argument #1 to 'foreach' (table expected, got " .. type(t) .. ")", 2) end
+  if type(f) ~= "function" then error("bad argument #2 to 'foreach' (function expected, got " .. type(f) .. ")", 2) end
+  local shown = shownBy(t)
+  local keys, why = orderedKeys(shown)
+  if not keys then error(why, 2) end
+  for i = 1, #keys do
+    local v = rawget(shown, keys[i])
+    if v ~= nil then
+      local r = f(keys[i], v)
+      if r ~= nil then return r end
+    end
+  end
+end
+
 -- table.sort runs in C, where no hook stops it: a bound on what one call may sort.
 local MAX_SORT = 1000000
 local function safeSort(t, less)
+  refuseView(t, "sort")
   if type(t) == "table" and #t > MAX_SORT then
     error("table.sort: at most " .. MAX_SORT .. " items in a sandbox (this table has " .. #t .. ")", 2)
   end
@@ -444,7 +477,8 @@ local function safeXpcall(f, handler, ...)
 end
 
 -- What a sandbox calls with its loops in them runs interpreted, so the hooks see them.
-for _, f in ipairs { safeTostring, safeFormat, safePairs, safeNext, safeIpairs, safeSort, safeTime, safeDate, safeXpcall } do
+for _, f in ipairs { safeTostring, safeFormat, safePairs, safeNext, safeIpairs, safeForeach, safeSort, safeTime, safeDate,
+                     safeXpcall } do
   jit.off(f, true)
 end
 
@@ -456,7 +490,7 @@ local function newSandbox(name, api)
   env._VERSION = _VERSION
   env.string = copy(methods)
   env.table = copy(table)
-  env.table.sort = safeSort
+  env.table.sort, env.table.insert, env.table.remove, env.table.foreach = safeSort, safeInsert, safeRemove, safeForeach
   env.math = copy(math)
   deterministicRandom(env.math)
   env.bit = copy(bit)

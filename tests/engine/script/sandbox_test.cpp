@@ -440,5 +440,41 @@ TEST(PairsAndNext, EmptinessChecksAndClearLoopsFitTheFramesBudget) {
             "");
 }
 
+// table.insert, remove and sort write raw, past a view's metatable: into the table every sandbox
+// is shown (platon[1] was then "x" for every sandbox of the state). They refuse a view.
+TEST(ReadOnlyViews, TableFunctionsCannotWriteIntoAView) {
+  LuaHost host;
+  const char* attempts[][2] = {
+      {"table.insert(platon, 'x')", "mod.lua:1: platon is read-only (tried to insert in it)"},
+      {"table.insert(platon, 1, 'x')", "mod.lua:1: platon is read-only (tried to insert in it)"},
+      {"table.remove(platon)", "mod.lua:1: platon is read-only (tried to remove in it)"},
+      {"table.sort(platon)", "mod.lua:1: platon is read-only (tried to sort in it)"},
+  };
+  for (const auto& [code, message] : attempts) {
+    const std::string error = runSandboxed(host, code);
+    EXPECT_EQ(error.rfind(message, 0), 0u) << code << "\n" << error;
+  }
+  EXPECT_EQ(runSandboxed(host, "assert(platon[1] == nil and rawget(platon, 1) == nil)"), "");
+  // On other tables they are LuaJIT's, errors at the caller's line included.
+  EXPECT_EQ(runSandboxed(host, "local t = {} table.insert(t, 'a') table.insert(t, 1, 'b') table.sort(t)\n"
+                               "assert(table.remove(t) == 'b' and #t == 1)"),
+            "");
+  EXPECT_EQ(runSandboxed(host, "\ntable.insert(nil, 1)").rfind("mod.lua:2: bad argument #1 to 'insert' (table expected, got nil)", 0), 0u);
+}
+
+// table.foreach walked LuaJIT's order, which changes from one process to the next (string hashes
+// are seeded at random, other keys hash by address): it walks pairs' order, and refuses what
+// pairs refuses.
+TEST(PairsAndNext, TableForeachWalksTheFixedOrder) {
+  EXPECT_EQ(runSandboxed("local t = {} for i = 1, 12 do t['k' .. i] = i end t[2.5] = 0 t[true] = 0 t[1] = 0\n"
+                         "local a, b = {}, {}\n"
+                         "table.foreach(t, function(k) a[#a + 1] = tostring(k) end)\n"
+                         "for k in pairs(t) do b[#b + 1] = tostring(k) end\n"
+                         "assert(table.concat(a, ' ') == table.concat(b, ' '), table.concat(a, ' '))\n"
+                         "assert(table.foreach(t, function(k, v) if k == 'k3' then return v end end) == 3)"),
+            "");
+  EXPECT_EQ(runSandboxed("\ntable.foreach({ [{}] = 1 }, print)").rfind("mod.lua:2: pairs over table keys has no fixed order", 0), 0u);
+}
+
 }  // namespace
 }  // namespace platon::script
