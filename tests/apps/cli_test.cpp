@@ -14,6 +14,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -348,6 +349,45 @@ TEST(Scenario, AnyScenePathReadsBackFromTheScenarioItWrites) {
   ASSERT_EQ(made.status, 0) << made.err;
   const Ran r = platon({"run", "made.lua"}, folder.path());
   EXPECT_EQ(r.status, 0) << contents(folder.path("made.lua")) << "\n" << r.out;
+}
+
+// Re-audit N4: a --record path that cannot take the replay aborted play at the very end (exit
+// 134, the session lost). It is refused before anything is played.
+TEST(Play, ARecordPathThatCannotBeWrittenIsRefusedBeforePlaying) {
+  Folder folder("cli_play_record_path");
+  const std::string scene = sceneWith(folder, "s");
+  const std::string quoted = sceneWith(folder, "say \"hi\"");
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"play", scene, "--headless", "--fast", "--frames", "5", "--record", "missing/x.replay"},
+       "platon play: --record missing/x.replay: cannot write missing/x.replay.partial: No such file or directory"},
+      {{"play", scene, "--headless", "--fast", "--frames", "5", "--record", "s"}, "platon play: --record s: is a folder"},
+      {{"play", quoted, "--headless", "--fast", "--frames", "5", "--record", "x.replay"},
+       "platon play: --record x.replay: a scene path with '\"' or a line break cannot be written in a replay"},
+  };
+  for (const auto& [args, message] : cases) {
+    const Ran r = platon(args, folder.path(), 20);
+    EXPECT_EQ(r.status, 2) << args.back() << "\n" << r.out << r.err;
+    EXPECT_TRUE(contains(r.err, message)) << r.err;
+    EXPECT_FALSE(contains(r.out, "playing")) << r.out;
+  }
+  EXPECT_FALSE(std::filesystem::exists(folder.path("x.replay.partial")));
+}
+
+// A recording that still cannot be written at the end (here a folder took its place while the
+// game ran) is reported with where the written replay was left, and play exits 1: no abort.
+TEST(Play, ARecordingThatCannotBeWrittenAtTheEndIsReportedNotAnAbort) {
+  Folder folder("cli_play_record_lost");
+  const std::string scene = sceneWith(folder, "s");
+  Process play({"play", scene, "--headless", "--record", "run.replay"}, folder.path());
+  ASSERT_TRUE(play.awaitOutput("playing", 10));
+  std::filesystem::create_directories(folder.path("run.replay/in_the_way"));
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  play.signal(SIGTERM);
+  const Ran r = play.finish(10);
+  EXPECT_EQ(r.status, 1) << r.out << r.err;
+  EXPECT_TRUE(contains(r.err, "platon play: run.replay: cannot write the replay; this run's recording is left in run.replay.partial"))
+      << r.err;
+  EXPECT_EQ(contents(folder.path("run.replay.partial")).rfind("platon replay 1\n", 0), 0u);
 }
 
 }  // namespace
