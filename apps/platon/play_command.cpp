@@ -7,6 +7,7 @@
 #include "play_command.h"
 
 #include <signal.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -34,7 +35,30 @@ namespace {
 // that a recording is still written (an endless headless play is stopped by a signal).
 volatile sig_atomic_t stopSignal = 0;
 
-void onStopSignal(int signal) { stopSignal = signal; }
+// A frame that never ends (a trusted script's compiled endless loop, a C call that runs for hours)
+// never gets back to the loop that reads stopSignal. So a second signal, or kStopGraceSeconds
+// after the first (`timeout` sends one), ends the process at once by the signal's default action.
+// No recording is written then: the frame may be changing it, and a signal handler cannot safely
+// write a file from it.
+constexpr unsigned kStopGraceSeconds = 3;
+
+void endNow(int signal) {
+  constexpr char kNote[] = "platon play: the frame did not end: stopped at once, without writing a recording\n";
+  (void)!write(STDERR_FILENO, kNote, sizeof kNote - 1);
+  struct sigaction action {};
+  action.sa_handler = SIG_DFL;
+  sigemptyset(&action.sa_mask);
+  sigaction(signal, &action, nullptr);
+  raise(signal);  // delivered when this handler returns (or at once, from the grace alarm)
+}
+
+void onStopSignal(int signal) {
+  if (stopSignal) return endNow(signal);
+  stopSignal = signal;
+  alarm(kStopGraceSeconds);
+}
+
+void onGraceOver(int) { endNow(stopSignal); }
 
 void stopOnSignals() {
   struct sigaction action {};
@@ -42,6 +66,8 @@ void stopOnSignals() {
   sigemptyset(&action.sa_mask);
   sigaction(SIGINT, &action, nullptr);
   sigaction(SIGTERM, &action, nullptr);
+  action.sa_handler = onGraceOver;
+  sigaction(SIGALRM, &action, nullptr);
 }
 
 // Why `path` cannot take a replay of the scene at `scenePath`, or "" if it can: checked before
@@ -97,7 +123,9 @@ int usage() {
                "  --headless   no window, even when the scene names \"rendering\"; exits 1 if a frame had a\n"
                "               script error\n"
                "  --shot F     save the last frame shown to F (PNG) at the end\n"
-               "keys in the window: arrows or WASD move, Space jumps, R restarts, F3 frame rate, F11 fullscreen, Esc quits\n");
+               "keys in the window: arrows or WASD move, Space jumps, R restarts, F3 frame rate, F11 fullscreen, Esc quits\n"
+               "SIGINT or SIGTERM ends the play after the frame; if the frame does not end, a second signal, or\n"
+               "3 s after the first, ends it at once, without writing the recording\n");
   return 2;
 }
 
@@ -255,6 +283,7 @@ int playCommand(int argc, char** argv) {
     if (won && frames == 0 && !watch && !display) break;
     if (!fast && due == 0) std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
+  alarm(0);  // the loop ended: no grace period runs out while the recording is written
   if (stopSignal) std::printf("stopped by signal %d at frame %llu\n", static_cast<int>(stopSignal), static_cast<unsigned long long>(frame));
   if (recorder) {
     std::fflush(stdout);
