@@ -7,12 +7,15 @@
 #include "play_command.h"
 
 #include <signal.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <string>
 #include <thread>
 
@@ -32,7 +35,30 @@ namespace {
 // that a recording is still written (an endless headless play is stopped by a signal).
 volatile sig_atomic_t stopSignal = 0;
 
-void onStopSignal(int signal) { stopSignal = signal; }
+// A frame that never ends (a trusted script's compiled endless loop, a C call that runs for hours)
+// never gets back to the loop that reads stopSignal. So a second signal, or kStopGraceSeconds
+// after the first (`timeout` sends one), ends the process at once by the signal's default action.
+// No recording is written then: the frame may be changing it, and a signal handler cannot safely
+// write a file from it.
+constexpr unsigned kStopGraceSeconds = 3;
+
+void endNow(int signal) {
+  constexpr char kNote[] = "platon play: the frame did not end: stopped at once, without writing a recording\n";
+  (void)!write(STDERR_FILENO, kNote, sizeof kNote - 1);
+  struct sigaction action {};
+  action.sa_handler = SIG_DFL;
+  sigemptyset(&action.sa_mask);
+  sigaction(signal, &action, nullptr);
+  raise(signal);  // delivered when this handler returns (or at once, from the grace alarm)
+}
+
+void onStopSignal(int signal) {
+  if (stopSignal) return endNow(signal);
+  stopSignal = signal;
+  alarm(kStopGraceSeconds);
+}
+
+void onGraceOver(int) { endNow(stopSignal); }
 
 void stopOnSignals() {
   struct sigaction action {};
@@ -40,6 +66,41 @@ void stopOnSignals() {
   sigemptyset(&action.sa_mask);
   sigaction(SIGINT, &action, nullptr);
   sigaction(SIGTERM, &action, nullptr);
+  action.sa_handler = onGraceOver;
+  sigaction(SIGALRM, &action, nullptr);
+}
+
+// Why `path` cannot take a replay of the scene at `scenePath`, or "" if it can: checked before
+// playing, so a session is not played to the end and then lost. The file is written next to
+// `path` (path.partial, then renamed), so that is what is tried.
+std::string whyUnrecordable(const std::string& scenePath, const std::string& path) {
+  if (scenePath.find_first_of("\"\n\r") != std::string::npos)
+    return "a scene path with '\"' or a line break cannot be written in a replay (rename its folder)";
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) return "is a folder";
+  const std::string partial = path + ".partial";
+  const bool existed = std::filesystem::exists(partial, error);
+  FILE* probe = std::fopen(partial.c_str(), "ab");
+  if (!probe) return "cannot write " + partial + ": " + std::strerror(errno);
+  std::fclose(probe);
+  if (!existed) std::remove(partial.c_str());
+  return "";
+}
+
+// Writes the recording; false (after saying why, and where what was written is) if it cannot.
+bool writeRecording(const core::Replay& replay, const std::string& path) {
+  try {
+    core::writeReplay(replay, path);
+    return true;
+  } catch (const std::exception& e) {
+    std::error_code error;
+    const std::string partial = path + ".partial";
+    if (std::filesystem::file_size(partial, error) > 0 && !error)
+      std::fprintf(stderr, "platon play: %s; this run's recording is left in %s\n", e.what(), partial.c_str());
+    else
+      std::fprintf(stderr, "platon play: %s; this run's recording is lost\n", e.what());
+    return false;
+  }
 }
 
 // --frames N: a whole number from 1 (strtoull took "-1" as 2^64 - 1 and "abc" as 0, unlimited).
@@ -56,13 +117,15 @@ int usage() {
                "  --frames N   stop after N frames, N >= 1 (default: at the goal, or never with --watch)\n"
                "  --input F    the buttons of a recorded run (nothing held without it)\n"
                "  --record F   write this run's input and hashes to F as a replay (also when stopped by\n"
-               "               SIGINT or SIGTERM)\n"
+               "               SIGINT or SIGTERM; F is checked before playing)\n"
                "  --watch      reload the scene when its files are saved\n"
                "  --fast       do not wait for real time\n"
                "  --headless   no window, even when the scene names \"rendering\"; exits 1 if a frame had a\n"
                "               script error\n"
                "  --shot F     save the last frame shown to F (PNG) at the end\n"
-               "keys in the window: arrows or WASD move, Space jumps, R restarts, F3 frame rate, F11 fullscreen, Esc quits\n");
+               "keys in the window: arrows or WASD move, Space jumps, R restarts, F3 frame rate, F11 fullscreen, Esc quits\n"
+               "SIGINT or SIGTERM ends the play after the frame; if the frame does not end, a second signal, or\n"
+               "3 s after the first, ends it at once, without writing the recording\n");
   return 2;
 }
 
@@ -119,6 +182,10 @@ int playCommand(int argc, char** argv) {
     if (inputPath.empty()) return usage();
     scenePath = input.scene;
   }
+  if (!recordPath.empty()) {
+    if (const std::string why = whyUnrecordable(scenePath, recordPath); !why.empty())
+      return std::fprintf(stderr, "platon play: --record %s: %s\n", recordPath.c_str(), why.c_str()), 2;
+  }
 
   core::SystemRegistry registry = engineRegistry(headless ? Presentation::Headless : Presentation::Window);
   std::optional<core::LiveScene> live;
@@ -145,6 +212,7 @@ int playCommand(int argc, char** argv) {
   std::fflush(stdout);
 
   std::optional<core::ReplayRecorder> recorder;
+  bool recordFailed = false;
   if (!recordPath.empty()) recorder.emplace(scenePath, 60, core::sceneFilesHash(core::sceneSourceFiles(live->scene())));
   stopOnSignals();
   uint64_t frameErrors = 0;  // frames whose scripts raised an error
@@ -169,7 +237,8 @@ int playCommand(int argc, char** argv) {
         std::printf("reloaded in %.1f ms (%s)\n", r->milliseconds, r->files.empty() ? "" : r->files.front().c_str());
         if (recorder) {
           std::printf("recording stops at frame %llu: the reload changed the scene\n", static_cast<unsigned long long>(frame));
-          core::writeReplay(recorder->replay(), recordPath);
+          std::fflush(stdout);
+          if (!writeRecording(recorder->replay(), recordPath)) recordFailed = true;
           recorder.reset();
         }
       } else {
@@ -214,10 +283,14 @@ int playCommand(int argc, char** argv) {
     if (won && frames == 0 && !watch && !display) break;
     if (!fast && due == 0) std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
+  alarm(0);  // the loop ended: no grace period runs out while the recording is written
   if (stopSignal) std::printf("stopped by signal %d at frame %llu\n", static_cast<int>(stopSignal), static_cast<unsigned long long>(frame));
   if (recorder) {
-    core::writeReplay(recorder->replay(), recordPath);
-    std::printf("recorded %llu frames to %s\n", static_cast<unsigned long long>(recorder->replay().frames()), recordPath.c_str());
+    std::fflush(stdout);
+    if (writeRecording(recorder->replay(), recordPath))
+      std::printf("recorded %llu frames to %s\n", static_cast<unsigned long long>(recorder->replay().frames()), recordPath.c_str());
+    else
+      recordFailed = true;
   }
   if (display && !shotPath.empty()) {
     try {
@@ -235,6 +308,7 @@ int playCommand(int argc, char** argv) {
     std::printf("%llu frame(s) had a script error\n", static_cast<unsigned long long>(frameErrors));
     return 1;
   }
+  if (recordFailed) return 1;
   return stopSignal ? 128 + stopSignal : 0;
 }
 

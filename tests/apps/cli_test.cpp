@@ -1,6 +1,7 @@
 // The platon program as CI and a person run it: `platon run` (worker processes, time limits,
 // crashes, malformed scenarios, JUnit, result lines, --record names, options), `platon play`
-// (exit status after script errors, --frames, a recording written on SIGTERM) and
+// (exit status after script errors, --frames, a recording written on SIGTERM, a --record path
+// checked before playing, a stuck frame ended by a second signal or the grace period) and
 // `platon scenario` (any scene path). Each runs the built program in a temporary folder.
 // PLATON_EXE in the environment runs another build instead (to see these fail on an old one).
 #include <gtest/gtest.h>
@@ -14,6 +15,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -348,6 +350,104 @@ TEST(Scenario, AnyScenePathReadsBackFromTheScenarioItWrites) {
   ASSERT_EQ(made.status, 0) << made.err;
   const Ran r = platon({"run", "made.lua"}, folder.path());
   EXPECT_EQ(r.status, 0) << contents(folder.path("made.lua")) << "\n" << r.out;
+}
+
+// A scene whose level is a trusted script (an engine script under a PLATON_ROOT of the folder's
+// own) that loops without end in frame 3: the JIT compiles the loop, and compiled code runs no
+// hook, so the frame never returns to play's loop.
+std::string stuckScene(const Folder& folder) {
+  std::filesystem::create_directories(folder.path("root"));
+  std::filesystem::copy(kRoot + "/scripts", folder.path("root/scripts"), std::filesystem::copy_options::recursive);
+  folder.write("root/scripts/stuck.lua",
+               "local level = { start = { face = 0, x = 600, y = 700 } }\n"
+               "function level.build(game)\n"
+               "  for i = 1, game.world.faceCount() do game.world.line(game.world.face(i), 0, 512, 4096, 512) end\n"
+               "end\n"
+               "function level.tick(game, frame)\n"
+               "  if frame == 3 then print('stuck in frame 3') io.stdout:flush() local n = 0 while true do n = n + 1 end end\n"
+               "end\n"
+               "return level\n");
+  folder.write("scene.lua", "return { systems = { 'scripting' }, stage = { solid = 'cube', edge = 4096 },\n"
+                            "  scripts = { preset = 'game', level = 'scripts/stuck.lua' } }\n");
+  return "scene.lua";
+}
+
+// Plays stuckScene until it is stuck.
+std::unique_ptr<Process> playStuck(const Folder& folder) {
+  const std::string scene = stuckScene(folder);
+  setenv("PLATON_ROOT", folder.path("root").c_str(), 1);
+  auto play = std::make_unique<Process>(std::vector<std::string>{"play", scene, "--headless", "--fast", "--record", "run.replay"},
+                                        folder.path());
+  unsetenv("PLATON_ROOT");
+  return play;
+}
+
+// Re-audit N3: SIGTERM and SIGINT only set a flag the loop reads between frames, so a stuck frame
+// could not be stopped (not by `timeout`, not by Ctrl-C). A second signal ends it at once.
+TEST(Play, ASecondSignalEndsAStuckFrameAtOnce) {
+  Folder folder("cli_play_stuck_twice");
+  std::unique_ptr<Process> play = playStuck(folder);
+  ASSERT_TRUE(play->awaitOutput("stuck in frame 3", 20));
+  play->signal(SIGTERM);
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  play->signal(SIGINT);
+  const Ran r = play->finish(10);
+  EXPECT_EQ(r.status, 128 + SIGINT) << r.out << r.err;
+  EXPECT_LT(r.seconds, 1.5);
+  EXPECT_TRUE(contains(r.err, "platon play: the frame did not end: stopped at once, without writing a recording")) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(folder.path("run.replay")));
+}
+
+// One signal (what `timeout` sends) ends a stuck frame after the grace period of 3 s.
+TEST(Play, OneSignalEndsAStuckFrameAfterTheGracePeriod) {
+  Folder folder("cli_play_stuck_once");
+  std::unique_ptr<Process> play = playStuck(folder);
+  ASSERT_TRUE(play->awaitOutput("stuck in frame 3", 20));
+  play->signal(SIGTERM);
+  const Ran r = play->finish(10);
+  EXPECT_EQ(r.status, 128 + SIGTERM) << r.out << r.err;
+  EXPECT_GT(r.seconds, 2.5);
+  EXPECT_LT(r.seconds, 6.0);
+  EXPECT_TRUE(contains(r.err, "stopped at once, without writing a recording")) << r.err;
+}
+
+// Re-audit N4: a --record path that cannot take the replay aborted play at the very end (exit
+// 134, the session lost). It is refused before anything is played.
+TEST(Play, ARecordPathThatCannotBeWrittenIsRefusedBeforePlaying) {
+  Folder folder("cli_play_record_path");
+  const std::string scene = sceneWith(folder, "s");
+  const std::string quoted = sceneWith(folder, "say \"hi\"");
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"play", scene, "--headless", "--fast", "--frames", "5", "--record", "missing/x.replay"},
+       "platon play: --record missing/x.replay: cannot write missing/x.replay.partial: No such file or directory"},
+      {{"play", scene, "--headless", "--fast", "--frames", "5", "--record", "s"}, "platon play: --record s: is a folder"},
+      {{"play", quoted, "--headless", "--fast", "--frames", "5", "--record", "x.replay"},
+       "platon play: --record x.replay: a scene path with '\"' or a line break cannot be written in a replay"},
+  };
+  for (const auto& [args, message] : cases) {
+    const Ran r = platon(args, folder.path(), 20);
+    EXPECT_EQ(r.status, 2) << args.back() << "\n" << r.out << r.err;
+    EXPECT_TRUE(contains(r.err, message)) << r.err;
+    EXPECT_FALSE(contains(r.out, "playing")) << r.out;
+  }
+  EXPECT_FALSE(std::filesystem::exists(folder.path("x.replay.partial")));
+}
+
+// A recording that still cannot be written at the end (here a folder took its place while the
+// game ran) is reported with where the written replay was left, and play exits 1: no abort.
+TEST(Play, ARecordingThatCannotBeWrittenAtTheEndIsReportedNotAnAbort) {
+  Folder folder("cli_play_record_lost");
+  const std::string scene = sceneWith(folder, "s");
+  Process play({"play", scene, "--headless", "--record", "run.replay"}, folder.path());
+  ASSERT_TRUE(play.awaitOutput("playing", 10));
+  std::filesystem::create_directories(folder.path("run.replay/in_the_way"));
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  play.signal(SIGTERM);
+  const Ran r = play.finish(10);
+  EXPECT_EQ(r.status, 1) << r.out << r.err;
+  EXPECT_TRUE(contains(r.err, "platon play: run.replay: cannot write the replay; this run's recording is left in run.replay.partial"))
+      << r.err;
+  EXPECT_EQ(contents(folder.path("run.replay.partial")).rfind("platon replay 1\n", 0), 0u);
 }
 
 }  // namespace

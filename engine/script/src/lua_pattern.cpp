@@ -14,6 +14,7 @@
 // needs more than kPatternStepBudget steps is refused.
 #include "lua_pattern.h"
 
+#include <array>
 #include <cstddef>
 #include <cstring>
 
@@ -24,6 +25,7 @@ constexpr int kMaxCaptures = 32;       // as LuaJIT: "too many captures"
 constexpr int kMaxDepth = 200;         // nested backtracking points: "pattern too complex"
 constexpr ptrdiff_t kOpen = -1;        // a capture still open
 constexpr ptrdiff_t kPosition = -2;    // a () capture: a position, not text
+constexpr int kSetCacheBits = 5;       // a call keeps up to 32 compiled [sets] (Matcher::setAt)
 constexpr char kSpecials[] = "^$*+?.([%-";  // a find() pattern without any of these is plain text
 
 // Raised by the matcher (which holds nothing that needs freeing) and turned into a Lua error by
@@ -66,26 +68,65 @@ bool classMatches(int c, int letter) {
   return isUpper(letter) ? !yes : yes;
 }
 
-// c against the set [first ... last] (first at '[', last at its ']').
-bool setMatches(int c, const char* first, const char* last) {
-  const char* p = first + 1;
-  bool yes = true;
-  if (*p == '^') {
-    yes = false;
-    ++p;
+// The characters a single class or a [set] admits: 256 bits, so testing a character costs one
+// lookup however long the set is (a set is compiled once per call, see Matcher::setAt).
+class CharSet {
+ public:
+  bool has(int c) const { return (bits_[c >> 6] >> (c & 63)) & 1; }
+  void add(int c) { bits_[c >> 6] |= uint64_t{1} << (c & 63); }
+  void add(const CharSet& other) {
+    for (int i = 0; i < 4; ++i) bits_[i] |= other.bits_[i];
   }
+  // lo..hi inclusive, a word at a time (a set of many wide ranges stays linear in its length).
+  void addRange(int lo, int hi) {
+    for (int word = lo >> 6; lo <= hi && word < 4; ++word) {
+      const int first = lo & 63, last = hi >> 6 == word ? hi & 63 : 63;
+      const uint64_t upToLast = last == 63 ? ~uint64_t{0} : (uint64_t{1} << (last + 1)) - 1;
+      bits_[word] |= upToLast & ~((uint64_t{1} << first) - 1);
+      lo = (word + 1) << 6;
+    }
+  }
+  void invert() {
+    for (uint64_t& word : bits_) word = ~word;
+  }
+
+ private:
+  uint64_t bits_[4] = {};
+};
+
+// What "%x" admits inside a set, for every byte x: the class's characters, or x itself.
+const CharSet& classSet(int letter) {
+  static const auto sets = [] {
+    std::array<CharSet, 256> all;
+    for (int x = 0; x < 256; ++x)
+      for (int c = 0; c < 256; ++c)
+        if (classMatches(c, x)) all[x].add(c);
+    return all;
+  }();
+  return sets[letter];
+}
+
+// The set [first ... last] (first at '[', last at its ']'), read as LuaJIT's matchbracketclass
+// reads it: '^' first negates, "%x" is a class or x, "a-z" a range unless the '-' is last, any
+// other byte is itself.
+CharSet compileSet(const char* first, const char* last) {
+  CharSet set;
+  const char* p = first + 1;
+  const bool negated = *p == '^';
+  if (negated) ++p;
   for (; p < last; ++p) {
     if (*p == '%' && p + 1 < last) {
       ++p;
-      if (classMatches(c, uc(*p))) return yes;
+      set.add(classSet(uc(*p)));
     } else if (p[1] == '-' && p + 2 < last) {
-      if (uc(p[0]) <= c && c <= uc(p[2])) return yes;
+      set.addRange(uc(p[0]), uc(p[2]));
       p += 2;
-    } else if (uc(*p) == c) {
-      return yes;
+    } else {
+      set.add(uc(*p));
     }
   }
-  return !yes;
+  if (negated) set.invert();
+  return set;
 }
 
 struct Capture {
@@ -100,6 +141,7 @@ class Matcher {
   Matcher(const char* subject, size_t subjectLength, const char* pattern, size_t patternLength)
       : subject_(subject),
         subjectEnd_(subject + subjectLength),
+        pattern_(pattern),
         patternEnd_(pattern + strnlen(pattern, patternLength)) {}
 
   const char* patternEnd() const { return patternEnd_; }
@@ -128,31 +170,59 @@ class Matcher {
     ~Depth() { --depth; }
   };
 
-  bool single(int c, const char* p, const char* ep) const {
+  // A [set] of the pattern, compiled: where it ends and what it admits.
+  struct CompiledSet {
+    const char* start = nullptr;  // its '[' (nullptr: an empty slot)
+    const char* end = nullptr;    // past its ']'
+    CharSet chars;
+  };
+
+  bool single(int c, const char* p) {
     switch (*p) {
       case '.': return true;
       case '%': return classMatches(c, uc(p[1]));
-      case '[': return setMatches(c, p, ep - 1);
+      case '[': return setAt(p).chars.has(c);
       default: return uc(*p) == c;
     }
   }
 
   // Past the class that starts at p.
-  const char* classEnd(const char* p) const {
+  const char* classEnd(const char* p) {
+    if (*p == '[') return setAt(p).end;
     const char c = *p++;
     if (c == '%') {
       if (p >= patternEnd_) throw Refusal{"malformed pattern (ends with '%')"};
       return p + 1;
     }
-    if (c == '[') {
-      if (p < patternEnd_ && *p == '^') ++p;
-      do {  // the set's first character is itself, even a ']'
-        if (p >= patternEnd_) throw Refusal{"malformed pattern (missing ']')"};
-        if (*p++ == '%' && p < patternEnd_) ++p;
-      } while (p >= patternEnd_ || *p != ']');
-      return p + 1;
-    }
     return p;
+  }
+
+  // Past the ']' of the set whose '[' is at p.
+  const char* setEnd(const char* p) const {
+    ++p;
+    if (p < patternEnd_ && *p == '^') ++p;
+    do {  // the set's first character is itself, even a ']'
+      if (p >= patternEnd_) throw Refusal{"malformed pattern (missing ']')"};
+      if (*p++ == '%' && p < patternEnd_) ++p;
+    } while (p >= patternEnd_ || *p != ']');
+    return p + 1;
+  }
+
+  // The set whose '[' is at p, compiled on first use in this call and kept in a small cache keyed
+  // by its place in the pattern. A set is read every time a character is tried against it, so a
+  // set of a megabyte read for each character of the subject would be hours of work in C, where
+  // no hook stops it; compiled, each test is one lookup, and each compilation is charged a step
+  // per byte of the set (a pattern with more sets than the cache holds pays for each rereading).
+  const CompiledSet& setAt(const char* p) {
+    const auto offset = static_cast<uint64_t>(p - pattern_);
+    CompiledSet& slot = sets_[(offset * 0x9E3779B97F4A7C15u) >> (64 - kSetCacheBits)];
+    if (slot.start == p) return slot;
+    const char* end = setEnd(p);
+    step(static_cast<uint64_t>(end - p));
+    slot.start = p;
+    slot.end = end;
+    slot.chars = compileSet(p, end - 1);
+    return slot;
   }
 
   const char* match(const char* s, const char* p) {
@@ -177,12 +247,12 @@ class Matcher {
           if (p + 1 < patternEnd_ && p[1] == 'f') {
             const char* set = p + 2;
             if (set >= patternEnd_ || *set != '[') throw Refusal{"missing '[' after '%f' in pattern"};
-            const char* ep = classEnd(set);
+            const CompiledSet& frontier = setAt(set);
             const int before = s == subject_ ? 0 : uc(s[-1]);
             const int here = s < subjectEnd_ ? uc(*s) : 0;
             step();
-            if (setMatches(before, set, ep - 1) || !setMatches(here, set, ep - 1)) return nullptr;
-            p = ep;
+            if (frontier.chars.has(before) || !frontier.chars.has(here)) return nullptr;
+            p = frontier.end;
             continue;
           }
           if (p + 1 < patternEnd_ && isDigit(uc(p[1]))) {
@@ -196,7 +266,7 @@ class Matcher {
       }
       const char* ep = classEnd(p);
       step();
-      const bool here = s < subjectEnd_ && single(uc(*s), p, ep);
+      const bool here = s < subjectEnd_ && single(uc(*s), p);
       const char next = ep < patternEnd_ ? *ep : '\0';
       switch (next) {
         case '?':
@@ -220,7 +290,7 @@ class Matcher {
   // The longest run of the class at p, then shorter ones until the rest matches.
   const char* longest(const char* s, const char* p, const char* ep) {
     ptrdiff_t n = 0;
-    while (s + n < subjectEnd_ && single(uc(s[n]), p, ep)) {
+    while (s + n < subjectEnd_ && single(uc(s[n]), p)) {
       step();
       ++n;
     }
@@ -236,7 +306,7 @@ class Matcher {
     for (;;) {
       step();
       if (const char* r = match(s, ep + 1)) return r;
-      if (s < subjectEnd_ && single(uc(*s), p, ep)) ++s;
+      if (s < subjectEnd_ && single(uc(*s), p)) ++s;
       else return nullptr;
     }
   }
@@ -290,11 +360,13 @@ class Matcher {
 
   const char* subject_;
   const char* subjectEnd_;
+  const char* pattern_;
   const char* patternEnd_;
   int level_ = 0;
   int depth_ = 0;
   uint64_t steps_ = 0;
   Capture capture_[kMaxCaptures];
+  std::array<CompiledSet, size_t{1} << kSetCacheBits> sets_{};
 };
 
 // Capture i of a match from s to e (the whole match when the pattern has no captures and i is 0).

@@ -5,7 +5,8 @@
 //
 // LuaJIT's own pattern functions backtrack in C, where no hook runs, so one call can take hours
 // (".-.-.-.-b" on 40 characters). These count their steps (every character tried against a pattern
-// item, every start position, every character a back-reference or a replacement copies) and give
+// item, every start position, every character a back-reference or a replacement copies, every byte
+// of a [set] read; a set is read once per call into a 256-bit table, not once per character) and give
 // up with "pattern too costly (more than 10000000 steps)" past kPatternStepBudget: about 10-30 ms
 // of work, whatever the pattern. The engine installs them in every sandbox's `string` and behind
 // the shared string metatable (s:find(...)), for every script; trusted code keeps LuaJIT's own in

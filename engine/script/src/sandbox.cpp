@@ -8,83 +8,151 @@
 
 namespace platon::script {
 
+namespace {
+
+// How many keys 1, 2, ... the table at index 1 holds in a row (at most kMaxOrderedKeys): the
+// array part the fixed order walks first.
+size_t arrayLength(lua_State* L) {
+  size_t n = 0;
+  for (;; ++n) {
+    lua_rawgeti(L, 1, static_cast<int>(n + 1));
+    const bool present = !lua_isnil(L, -1);
+    lua_pop(L, 1);
+    if (!present || n >= kMaxOrderedKeys) return n;
+  }
+}
+
+// A key of the fixed order outside the array part: a number, a string or a boolean.
+struct Key {
+  int kind;
+  double number = 0;
+  const char* text = nullptr;  // the table's own string: alive while the table is unchanged
+  size_t length = 0;
+  bool boolean = false;
+};
+
+bool bytesBefore(const Key& a, const Key& b) {
+  const int c = std::memcmp(a.text, b.text, std::min(a.length, b.length));
+  return c != 0 ? c < 0 : a.length < b.length;
+}
+
+// Calls visit(key) for every key of the table at index 1 outside its array part 1..n; returns why
+// the keys have no fixed order ("" when they have one).
+template <class Visit>
+std::string visitKeys(lua_State* L, size_t n, Visit&& visit) {
+  size_t others = 0;
+  lua_pushnil(L);
+  while (lua_next(L, 1)) {
+    lua_pop(L, 1);
+    if (++others > kMaxOrderedKeys) {
+      lua_pop(L, 1);
+      return "pairs over more than 1000000 keys in a sandbox (it would take too long to order them)";
+    }
+    Key key{lua_type(L, -1)};
+    if (key.kind == LUA_TNUMBER) {
+      key.number = lua_tonumber(L, -1);
+      if (key.number >= 1 && key.number <= static_cast<double>(n) && key.number == std::floor(key.number)) {
+        --others;  // in the array part
+        continue;
+      }
+    } else if (key.kind == LUA_TSTRING) {
+      key.text = lua_tolstring(L, -1, &key.length);
+    } else if (key.kind == LUA_TBOOLEAN) {
+      key.boolean = lua_toboolean(L, -1);
+    } else {
+      const std::string why = std::string("pairs over ") + lua_typename(L, key.kind) +
+                              " keys has no fixed order in a replayable game (key the table by numbers, strings or booleans)";
+      lua_pop(L, 1);
+      return why;
+    }
+    visit(key);
+  }
+  return "";
+}
+
+void pushKey(lua_State* L, const Key& key) {
+  if (key.kind == LUA_TNUMBER) lua_pushnumber(L, key.number);
+  else if (key.kind == LUA_TSTRING) lua_pushlstring(L, key.text, key.length);
+  else lua_pushboolean(L, key.boolean);
+}
+
+int refuse(lua_State* L, const std::string& why) {
+  lua_pushnil(L);
+  lua_pushlstring(L, why.data(), why.size());
+  return 2;
+}
+
+// The first key of the fixed order and the array part's length, in one pass that builds nothing:
+// next(t) (what "is it empty?" asks) costs a walk over the keys, not a sort. Every key is still
+// visited, so a table whose keys have no fixed order is refused by next(t) as by pairs(t).
+int firstKey(lua_State* L) {
+  const size_t n = arrayLength(L);
+  bool any = false;
+  Key first{LUA_TNIL};
+  auto rank = [](const Key& k) { return k.kind == LUA_TNUMBER ? 0 : k.kind == LUA_TSTRING ? 1 : k.boolean ? 3 : 2; };
+  const std::string why = visitKeys(L, n, [&](const Key& key) {
+    const bool before = !any || rank(key) < rank(first) ||
+                        (rank(key) == rank(first) &&
+                         (key.kind == LUA_TNUMBER ? key.number < first.number
+                                                  : key.kind == LUA_TSTRING && bytesBefore(key, first)));
+    if (before) first = key;
+    any = true;
+  });
+  if (!why.empty()) return refuse(L, why);
+  if (n > 0) lua_pushnumber(L, 1);
+  else if (any) pushKey(L, first);
+  else lua_pushnil(L);
+  lua_pushnumber(L, static_cast<double>(n));
+  return 2;
+}
+
+}  // namespace
+
 int orderedKeys(lua_State* L) {
   luaL_checktype(L, 1, LUA_TTABLE);
-  const char* problem = nullptr;
-  std::string why;
-  {
-    size_t n = 0;  // the array part: 1, 2, ... while present
-    for (;; ++n) {
-      lua_rawgeti(L, 1, static_cast<int>(n + 1));
-      const bool present = !lua_isnil(L, -1);
-      lua_pop(L, 1);
-      if (!present || n >= kMaxOrderedKeys) break;
-    }
-    std::vector<double> numbers;
-    std::vector<std::pair<const char*, size_t>> strings;  // the table's own keys: alive while it is unchanged
-    bool hasFalse = false, hasTrue = false;
-    size_t total = n;
-    lua_pushnil(L);
-    while (lua_next(L, 1)) {
-      lua_pop(L, 1);
-      if (++total > kMaxOrderedKeys + n) {
-        lua_pop(L, 1);
-        problem = "pairs over more than 1000000 keys in a sandbox (it would take too long to order them)";
-        break;
-      }
-      const int kind = lua_type(L, -1);
-      if (kind == LUA_TNUMBER) {
-        const double d = lua_tonumber(L, -1);
-        if (d >= 1 && d <= static_cast<double>(n) && d == std::floor(d)) --total;  // in the array part
-        else numbers.push_back(d);
-      } else if (kind == LUA_TSTRING) {
-        size_t length = 0;
-        const char* text = lua_tolstring(L, -1, &length);
-        strings.emplace_back(text, length);
-      } else if (kind == LUA_TBOOLEAN) {
-        (lua_toboolean(L, -1) ? hasTrue : hasFalse) = true;
-      } else {
-        why = std::string("pairs over ") + lua_typename(L, kind) +
-              " keys has no fixed order in a replayable game (key the table by numbers, strings or booleans)";
-        lua_pop(L, 1);
-        break;
-      }
-    }
-    if (!problem && why.empty()) {
-      std::sort(numbers.begin(), numbers.end());
-      std::sort(strings.begin(), strings.end(), [](const auto& a, const auto& b) {
-        const int c = std::memcmp(a.first, b.first, std::min(a.second, b.second));
-        return c != 0 ? c < 0 : a.second < b.second;
-      });
-      lua_createtable(L, static_cast<int>(total), 0);
-      int k = 0;
-      for (size_t i = 1; i <= n; ++i) {
-        lua_pushnumber(L, static_cast<double>(i));
-        lua_rawseti(L, -2, ++k);
-      }
-      for (const double d : numbers) {
-        lua_pushnumber(L, d);
-        lua_rawseti(L, -2, ++k);
-      }
-      for (const auto& [text, length] : strings) {
-        lua_pushlstring(L, text, length);
-        lua_rawseti(L, -2, ++k);
-      }
-      if (hasFalse) {
-        lua_pushboolean(L, 0);
-        lua_rawseti(L, -2, ++k);
-      }
-      if (hasTrue) {
-        lua_pushboolean(L, 1);
-        lua_rawseti(L, -2, ++k);
-      }
-      return 1;
-    }
+  if (lua_isboolean(L, 2) && lua_toboolean(L, 2)) return firstKey(L);
+  // The array part the walk began with, when a walk's first key came from firstKey: its keys keep
+  // their place even if one of them was removed since (the rest would sort among the numbers).
+  const size_t n = lua_isnumber(L, 2) ? static_cast<size_t>(std::clamp(lua_tonumber(L, 2), 0.0, double(kMaxOrderedKeys)))
+                                      : arrayLength(L);
+  std::vector<double> numbers;
+  std::vector<Key> strings;
+  bool hasFalse = false, hasTrue = false;
+  const std::string why = visitKeys(L, n, [&](const Key& key) {
+    if (key.kind == LUA_TNUMBER) numbers.push_back(key.number);
+    else if (key.kind == LUA_TSTRING) strings.push_back(key);
+    else (key.boolean ? hasTrue : hasFalse) = true;
+  });
+  if (!why.empty()) return refuse(L, why);
+  std::sort(numbers.begin(), numbers.end());
+  std::sort(strings.begin(), strings.end(), bytesBefore);
+  lua_createtable(L, static_cast<int>(n + numbers.size() + strings.size() + 2), 0);
+  int k = 0;
+  for (size_t i = 1; i <= n; ++i) {
+    lua_rawgeti(L, 1, static_cast<int>(i));
+    const bool present = !lua_isnil(L, -1);
+    lua_pop(L, 1);
+    if (!present) continue;
+    lua_pushnumber(L, static_cast<double>(i));
+    lua_rawseti(L, -2, ++k);
   }
-  lua_pushnil(L);
-  if (problem) lua_pushstring(L, problem);
-  else lua_pushlstring(L, why.data(), why.size());
-  return 2;
+  for (const double d : numbers) {
+    lua_pushnumber(L, d);
+    lua_rawseti(L, -2, ++k);
+  }
+  for (const Key& key : strings) {
+    pushKey(L, key);
+    lua_rawseti(L, -2, ++k);
+  }
+  if (hasFalse) {
+    lua_pushboolean(L, 0);
+    lua_rawseti(L, -2, ++k);
+  }
+  if (hasTrue) {
+    lua_pushboolean(L, 1);
+    lua_rawseti(L, -2, ++k);
+  }
+  return 1;
 }
 
 // What a sandbox holds, and why each thing it lacks is missing (docs/scripting.md, "Sandbox"):
@@ -98,8 +166,9 @@ int orderedKeys(lua_State* L) {
 //   string.dump: produces bytecode.
 // xpcall runs its handler after the stack unwound (see safeXpcall below).
 // Replays must be exact, so what would differ between runs or machines is the game's: math.random
-// is a deterministic generator per sandbox, os.time/clock/date read the game clock, pairs and next
-// walk keys in a fixed order, tostring names tables and functions by a counter, not an address.
+// is a deterministic generator per sandbox, os.time/clock/date read the game clock, pairs, next
+// and table.foreach walk keys in a fixed order, tostring names tables and functions by a counter,
+// not an address.
 // The pattern functions count their steps (lua_pattern.cpp); table.sort refuses huge tables (it
 // sorts in C, where no hook runs).
 // For every script: the shared string metatable is locked (getmetatable("") returns "locked"), and
@@ -162,30 +231,40 @@ stringMeta.__index = methods
 stringMeta.__metatable = "locked"
 
 -- A read-only view of an engine table, built once; nested tables are views too. A view of a view
--- is the view itself.
-local views = setmetatable({}, { __mode = "k" })
+-- is the view itself. The view is an empty table whose metatable reads `entries`; pairs, next and
+-- ipairs walk those entries (views[view].entries) without ever handing the table out, so a view
+-- lists what it shows and stays read-only. Messages name keys by the sandbox's tostring: an
+-- address in an error would differ between runs and break replays.
+local views = setmetatable({}, { __mode = "k" })  -- view -> { entries = what it shows, name = its name }
 local function readonly(t, name)
   if views[t] then return t end
   local entries = {}
   for k, v in pairs(t) do
-    entries[k] = type(v) == "table" and readonly(v, name .. "." .. tostring(k)) or v
+    entries[k] = type(v) == "table" and readonly(v, name .. "." .. safeTostring(k)) or v
   end
   local view = setmetatable({}, {
     __index = entries,
     __newindex = function(_, k)
-      error(name .. " is read-only (tried to set " .. tostring(k) .. ")", 2)
+      error(name .. " is read-only (tried to set " .. safeTostring(k) .. ")", 2)
     end,
     __metatable = "locked",
   })
-  views[view] = true
+  views[view] = { entries = entries, name = name }
   return view
 end
 
+-- What pairs, next and ipairs walk: a view's entries, any other table itself.
+local function shownBy(t)
+  local view = views[t]
+  return view and view.entries or t
+end
+
 -- pairs and next in a fixed order (sandbox.cpp, orderedKeys): LuaJIT's order depends on the
--- string hash's random seed and on addresses.
+-- string hash's random seed and on addresses. pairs orders the keys once per traversal.
 local function safePairs(t)
   if type(t) ~= "table" then error("bad argument #1 to 'pairs' (table expected, got " .. type(t) .. ")", 2) end
-  local keys, why = orderedKeys(t)
+  local shown = shownBy(t)
+  local keys, why = orderedKeys(shown)
   if not keys then error(why, 2) end
   local i = 0
   return function()
@@ -193,38 +272,123 @@ local function safePairs(t)
       i = i + 1
       local k = keys[i]
       if k == nil then return nil end
-      local v = rawget(t, k)
+      local v = rawget(shown, k)
       if v ~= nil then return k, v end
     end
   end, t, nil
 end
 
-local walks = setmetatable({}, { __mode = "k" })  -- t -> { keys, position of each key }
+-- The keys of t in the fixed order, and the position of each (arrayLength: see orderedKeys).
+local function orderOf(t, arrayLength)
+  local keys, why = orderedKeys(t, arrayLength)
+  if not keys then return nil, why end
+  local at = {}
+  for i = 1, #keys do at[keys[i]] = i end
+  return { keys = keys, at = at }
+end
+
+-- next in the same order. next(t) finds the first key in one pass that builds nothing (the "is it
+-- empty?" idiom must not sort); the walk it starts orders the keys at its second call and keeps
+-- them (walks[t]), so next(t, k) with the key the last call returned costs O(1) amortized, and the
+-- walk is dropped at its end. Any other k orders the keys again (a new traversal sees the keys
+-- added since), unless k was removed after this walk returned it (as Lua allows). Keys added
+-- during a traversal are not seen by it; keys whose value became nil are skipped.
+local walks = setmetatable({}, { __mode = "k" })  -- t -> { keys, at, last = index of lastKey, lastKey }
 local function safeNext(t, k)
   if type(t) ~= "table" then error("bad argument #1 to 'next' (table expected, got " .. type(t) .. ")", 2) end
-  local walk = walks[t]
-  if k == nil or not walk or not walk.at[k] then
-    if k ~= nil and rawget(t, k) == nil then error("invalid key to 'next'", 2) end
-    local keys, why = orderedKeys(t)
-    if not keys then error(why, 2) end
-    local at = {}
-    for i = 1, #keys do at[keys[i]] = i end
-    walk = { keys = keys, at = at }
-    walks[t] = walk
+  t = shownBy(t)
+  if k == nil then
+    local first, arrayLength = orderedKeys(t, true)
+    if type(arrayLength) == "string" then error(arrayLength, 2) end
+    if first == nil then
+      walks[t] = nil
+      return nil
+    end
+    walks[t] = { lastKey = first, arrayLength = arrayLength }  -- ordered at the next call, if any
+    return first, rawget(t, first)
   end
-  local i = k == nil and 0 or walk.at[k]
+  local walk, i = walks[t], nil
+  if walk and rawequal(walk.lastKey, k) then
+    if not walk.keys then
+      local ordered, why = orderOf(t, walk.arrayLength)
+      if not ordered then error(why, 2) end
+      walk.keys, walk.at = ordered.keys, ordered.at
+      walk.last = walk.at[k] or 0  -- k was the first key: if it was removed, every key comes after it
+    end
+    i = walk.last
+  elseif rawget(t, k) ~= nil then
+    local why
+    walk, why = orderOf(t)
+    if not walk then error(why, 2) end
+    walks[t] = walk
+    i = walk.at[k]
+  elseif walk and walk.at and walk.at[k] then
+    i = walk.at[k]
+  else
+    error("invalid key to 'next'", 2)
+  end
+  local keys = walk.keys
   while true do
     i = i + 1
-    local key = walk.keys[i]
-    if key == nil then return nil end
+    local key = keys[i]
+    if key == nil then
+      walks[t] = nil
+      return nil
+    end
     local v = rawget(t, key)
-    if v ~= nil then return key, v end
+    if v ~= nil then
+      walk.last, walk.lastKey = i, key
+      return key, v
+    end
+  end
+end
+
+-- ipairs over a view walks its entries; over any other table it is LuaJIT's.
+local function safeIpairs(t)
+  if not views[t] then return ipairs(t) end
+  local shown = views[t].entries
+  return function(_, i)
+    i = i + 1
+    local v = rawget(shown, i)
+    if v ~= nil then return i, v end
+  end, t, 0
+end
+
+-- table's functions read and write raw: on a view, insert would write past its read-only
+-- metatable into the table every sandbox is shown (a mod's note in the level's `game`), and
+-- foreach would walk LuaJIT's order, which differs between processes.
+local function refuseView(t, what)
+  local view = views[t]
+  if view then error(view.name .. " is read-only (tried to " .. what .. " in it)", 3) end
+end
+local insert, remove = table.insert, table.remove
+local function safeInsert(t, ...)
+  refuseView(t, "insert")
+  return insert(t, ...)
+end
+local function safeRemove(t, ...)
+  refuseView(t, "remove")
+  return remove(t, ...)
+end
+local function safeForeach(t, f)
+  if type(t) ~= "table" then error("bad argument #1 to 'foreach' (table expected, got " .. type(t) .. ")", 2) end
+  if type(f) ~= "function" then error("bad argument #2 to 'foreach' (function expected, got " .. type(f) .. ")", 2) end
+  local shown = shownBy(t)
+  local keys, why = orderedKeys(shown)
+  if not keys then error(why, 2) end
+  for i = 1, #keys do
+    local v = rawget(shown, keys[i])
+    if v ~= nil then
+      local r = f(keys[i], v)
+      if r ~= nil then return r end
+    end
   end
 end
 
 -- table.sort runs in C, where no hook stops it: a bound on what one call may sort.
 local MAX_SORT = 1000000
 local function safeSort(t, less)
+  refuseView(t, "sort")
   if type(t) == "table" and #t > MAX_SORT then
     error("table.sort: at most " .. MAX_SORT .. " items in a sandbox (this table has " .. #t .. ")", 2)
   end
@@ -298,7 +462,7 @@ local function deterministicRandom(m)
   end
 end
 
-local SAFE = { "assert", "error", "ipairs", "pcall", "select", "tonumber", "type", "unpack", "rawequal",
+local SAFE = { "assert", "error", "pcall", "select", "tonumber", "type", "unpack", "rawequal",
                "rawget", "getmetatable", "setmetatable" }
 
 -- LuaJIT runs an xpcall handler where the error was raised, before unwinding; for the error the
@@ -313,19 +477,20 @@ local function safeXpcall(f, handler, ...)
 end
 
 -- What a sandbox calls with its loops in them runs interpreted, so the hooks see them.
-for _, f in ipairs { safeTostring, safeFormat, safePairs, safeNext, safeSort, safeTime, safeDate, safeXpcall } do
+for _, f in ipairs { safeTostring, safeFormat, safePairs, safeNext, safeIpairs, safeForeach, safeSort, safeTime, safeDate,
+                     safeXpcall } do
   jit.off(f, true)
 end
 
 local function newSandbox(name, api)
   local env = {}
   for _, k in ipairs(SAFE) do env[k] = _G[k] end
-  env.pairs, env.next, env.tostring, env.xpcall = safePairs, safeNext, safeTostring, safeXpcall
+  env.pairs, env.next, env.ipairs, env.tostring, env.xpcall = safePairs, safeNext, safeIpairs, safeTostring, safeXpcall
   env._G = env
   env._VERSION = _VERSION
   env.string = copy(methods)
   env.table = copy(table)
-  env.table.sort = safeSort
+  env.table.sort, env.table.insert, env.table.remove, env.table.foreach = safeSort, safeInsert, safeRemove, safeForeach
   env.math = copy(math)
   deterministicRandom(env.math)
   env.bit = copy(bit)

@@ -13,6 +13,8 @@ std::string_view sandboxPrelude();
 // orderedKeys(t) -> the keys of t in a fixed order (the array part 1..n, then the other numbers
 // increasing, strings in byte order, false, true), or nil and why there is none (a key of another
 // type, or more than kMaxOrderedKeys keys). What a sandbox's pairs and next walk.
+// orderedKeys(t, true) -> only the first key of that order (nil for an empty table), found in one
+// pass that builds nothing, or nil and why (the same refusals): what next(t) returns.
 int orderedKeys(lua_State* L);
 inline constexpr size_t kMaxOrderedKeys = 1'000'000;
 

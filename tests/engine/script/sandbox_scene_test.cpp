@@ -881,5 +881,32 @@ TEST(Finding20, SortRefusesHugeTables) {
   EXPECT_EQ(scriptsOf(live).status().message, "table.sort: at most 1000000 items in a sandbox (this table has 1000001) / 1,2,3");
 }
 
+// --- re-audit N7: a read-only view lists what it shows ---
+
+// pairs, next and ipairs over game, game.world and platon walk the entries the view shows (they
+// saw nothing before), in the fixed order; what they hand out is what indexing gives (functions
+// and views), so the view stays read-only, and a copy of the API works.
+TEST(ReAuditN7, PairsNextAndIpairsWalkAViewsEntriesAndItStaysReadOnly) {
+  Level level("n7_views", "return { build = function(game)\n"
+                          "  local names = {}\n"
+                          "  for k, v in pairs(game) do names[#names + 1] = k .. ':' .. type(v) end\n"
+                          "  local viaPairs, viaNext = {}, {}\n"
+                          "  for k, v in pairs(game.world) do viaPairs[#viaPairs + 1] = k assert(v == game.world[k]) end\n"
+                          "  local k = next(game.world) while k ~= nil do viaNext[#viaNext + 1] = k k = next(game.world, k) end\n"
+                          "  assert(#viaPairs > 10 and table.concat(viaPairs, ' ') == table.concat(viaNext, ' '))\n"
+                          "  local _, state = pairs(game) assert(rawequal(state, game), 'pairs handed out the entries')\n"
+                          "  local n = 0 for _ in ipairs(game) do n = n + 1 end\n"
+                          "  for k, v in pairs(game) do assert(not pcall(function() game[k] = v end)) end\n"
+                          "  assert(not pcall(function() for k, v in pairs(platon) do v.x = 1 end end))\n"
+                          "  local copy = {} for k, v in pairs(game) do copy[k] = v end\n"
+                          "  local drawNames = {} for k in pairs(platon.draw) do drawNames[#drawNames + 1] = k end\n"
+                          "  copy.message(names[1] .. ' ' .. names[#names] .. ' ' .. n .. ' ' .. #game .. ' ' .. tostring((next(platon))) .. ' ' ..\n"
+                          "               table.concat(drawNames, ','))\n"
+                          "end }\n");
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene live(level.scene, registry, false);
+  EXPECT_EQ(scriptsOf(live).status().message, "checkpoint:function world:table 0 0 draw circle,enabled,line,polygon,text");
+}
+
 }  // namespace
 }  // namespace platon::script

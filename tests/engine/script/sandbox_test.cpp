@@ -282,5 +282,199 @@ TEST(Errors, TheStackIsLeftAsItWas) {
   EXPECT_EQ(lua_gettop(host.state()), top);
 }
 
+// --- read-only views ---
+
+// A read-only view names the key it refused by the sandbox's tostring, never by an address
+// (re-audit N5: "tried to set table: 0x55..." gave a sandbox a number that differs per process).
+TEST(ReadOnlyViews, NameARefusedKeyWithoutAnAddress) {
+  EXPECT_EQ(runSandboxed("for _, key in ipairs { {}, print, coroutine.create(print) } do\n"
+                         "  local ok, e = pcall(function() platon[key] = 1 end)\n"
+                         "  assert(not ok and not e:find('0x'), e)\n"
+                         "  assert(e:find('^mod.lua:2: platon is read%-only %(tried to set ' .. type(key) .. ': #%d+%)$'), e)\n"
+                         "end"),
+            "");
+}
+
+// --- pairs and next: the documented order, and what it costs ---
+
+// Random tables (an array part with holes after it, other integers, fractions, strings with
+// shared prefixes, NULs and high bytes, false and true): pairs, a walk with next and next(t) give
+// the order docs/scripting.md states, computed here from the keys put in, also while a walk
+// removes keys and after keys were added between walks.
+TEST(PairsAndNext, WalkTheDocumentedOrderOverRandomTables) {
+  const char* check = R"lua(
+    local state = 12345
+    local function rand(n)
+      state = bit.bxor(state, bit.lshift(state, 13))
+      state = bit.bxor(state, bit.rshift(state, 17))
+      state = bit.bxor(state, bit.lshift(state, 5))
+      return state % n + 1
+    end
+    local function randomKey()
+      local r = rand(10)
+      if r <= 3 then return rand(40) end
+      if r == 4 then return rand(2000) - 1000 end
+      if r == 5 then return (rand(200) - 100) / 8 end
+      if r == 6 then return rand(2) == 1 end
+      local parts = {}
+      for i = 1, rand(4) - 1 do parts[i] = ({ "a", "b", "ab", "\0", "\255", "A", "1" })[rand(7)] end
+      return table.concat(parts)
+    end
+    local function bytesBefore(a, b)
+      for i = 1, math.min(#a, #b) do
+        local x, y = a:byte(i), b:byte(i)
+        if x ~= y then return x < y end
+      end
+      return #a < #b
+    end
+    -- The documented order of `keys` (the keys t holds).
+    local function expected(t, keys)
+      local n = 0
+      while rawget(t, n + 1) ~= nil do n = n + 1 end
+      local numbers, strings, order = {}, {}, {}
+      local hasFalse, hasTrue = false, false
+      for _, k in ipairs(keys) do
+        if type(k) == "number" then
+          if not (k >= 1 and k <= n and k == math.floor(k)) then numbers[#numbers + 1] = k end
+        elseif type(k) == "string" then strings[#strings + 1] = k
+        elseif k then hasTrue = true else hasFalse = true end
+      end
+      table.sort(numbers)
+      table.sort(strings, bytesBefore)
+      for i = 1, n do order[#order + 1] = i end
+      for _, k in ipairs(numbers) do order[#order + 1] = k end
+      for _, k in ipairs(strings) do order[#order + 1] = k end
+      if hasFalse then order[#order + 1] = false end
+      if hasTrue then order[#order + 1] = true end
+      return order
+    end
+    local function shown(list)
+      local out = {}
+      for i, k in ipairs(list) do out[i] = type(k) == "string" and string.format("%q", k) or tostring(k) end
+      return table.concat(out, " ")
+    end
+    local function keysOf(t, universe)
+      local keys = {}
+      for _, k in ipairs(universe) do if rawget(t, k) ~= nil then keys[#keys + 1] = k end end
+      return keys
+    end
+    local problems = {}
+    local function expect(what, got, want)
+      if shown(got) ~= shown(want) and #problems < 5 then
+        problems[#problems + 1] = what .. ": got " .. shown(got) .. "; want " .. shown(want)
+      end
+    end
+    for round = 1, 300 do
+      local t, universe, known = {}, {}, {}
+      local function put(k)
+        t[k] = round
+        if known[k] == nil then
+          known[k] = true
+          universe[#universe + 1] = k
+        end
+      end
+      for _ = 1, rand(60) - 1 do put(randomKey()) end
+      local want = expected(t, keysOf(t, universe))
+      local viaPairs, viaNext = {}, {}
+      for k in pairs(t) do viaPairs[#viaPairs + 1] = k end
+      local k = next(t)
+      while k ~= nil do
+        viaNext[#viaNext + 1] = k
+        k = next(t, k)
+      end
+      expect("pairs, round " .. round, viaPairs, want)
+      expect("next, round " .. round, viaNext, want)
+      -- A walk that removes keys: the current one, or one still ahead (never visited then).
+      local removed, visited, seen = {}, {}, {}
+      k = next(t)
+      while k ~= nil do
+        visited[#visited + 1] = k
+        seen[k] = true
+        if rand(3) == 1 then t[k] = nil end
+        if rand(4) == 1 then
+          local ahead = want[rand(#want)]
+          if t[ahead] ~= nil and not seen[ahead] then
+            t[ahead] = nil
+            removed[ahead] = true
+          end
+        end
+        k = next(t, k)
+      end
+      local wantVisited = {}
+      for _, key in ipairs(want) do if not removed[key] then wantVisited[#wantVisited + 1] = key end end
+      expect("removing walk, round " .. round, visited, wantVisited)
+      -- Keys added after a walk are seen by the next one.
+      for _ = 1, rand(8) do put(randomKey()) end
+      want = expected(t, keysOf(t, universe))
+      viaNext = {}
+      k = next(t)
+      while k ~= nil do
+        viaNext[#viaNext + 1] = k
+        k = next(t, k)
+      end
+      expect("next after adding, round " .. round, viaNext, want)
+      if (next(t)) ~= want[1] then expect("next(t), round " .. round, { (next(t)) }, { want[1] }) end
+    end
+    assert(#problems == 0, table.concat(problems, "\n"))
+  )lua";
+  EXPECT_EQ(runSandboxed(check), "");
+}
+
+// next(t) is one pass over the keys, not a sort (re-audit N6: each call on 100,000 keys took more
+// than 25 ms, so fewer than 10 fitted in a frame's 250 ms budget), and a walk with next costs one
+// sort: a clear loop over 100,000 keys fits in the budget with room to spare.
+TEST(PairsAndNext, EmptinessChecksAndClearLoopsFitTheFramesBudget) {
+  LuaHost host;
+  EXPECT_EQ(runSandboxed(host, "local t = {} for i = 1, 1e5 do t['key' .. i] = i end\n"
+                               "for i = 1, 20 do assert(next(t) == 'key1') end"),
+            "");
+  EXPECT_EQ(runSandboxed(host, "local t = {} for i = 1, 1e5 do t['key' .. i] = i end\n"
+                               "local k = next(t) while k ~= nil do t[k] = nil k = next(t, k) end\n"
+                               "assert(next(t) == nil)"),
+            "");
+  EXPECT_EQ(runSandboxed(host, "local t = {} for i = 1, 1e5 do t[i / 4] = i end\n"
+                               "for k in next, t do t[k] = nil end assert(next(t) == nil)"),
+            "");
+  EXPECT_EQ(runSandboxed(host, "local t = {} for i = 1, 1e5 do t['key' .. i] = i end\n"
+                               "local n = 0 for k, v in pairs(t) do n = n + 1 t[k] = nil end assert(n == 1e5 and next(t) == nil)"),
+            "");
+}
+
+// table.insert, remove and sort write raw, past a view's metatable: into the table every sandbox
+// is shown (platon[1] was then "x" for every sandbox of the state). They refuse a view.
+TEST(ReadOnlyViews, TableFunctionsCannotWriteIntoAView) {
+  LuaHost host;
+  const char* attempts[][2] = {
+      {"table.insert(platon, 'x')", "mod.lua:1: platon is read-only (tried to insert in it)"},
+      {"table.insert(platon, 1, 'x')", "mod.lua:1: platon is read-only (tried to insert in it)"},
+      {"table.remove(platon)", "mod.lua:1: platon is read-only (tried to remove in it)"},
+      {"table.sort(platon)", "mod.lua:1: platon is read-only (tried to sort in it)"},
+  };
+  for (const auto& [code, message] : attempts) {
+    const std::string error = runSandboxed(host, code);
+    EXPECT_EQ(error.rfind(message, 0), 0u) << code << "\n" << error;
+  }
+  EXPECT_EQ(runSandboxed(host, "assert(platon[1] == nil and rawget(platon, 1) == nil)"), "");
+  // On other tables they are LuaJIT's, errors at the caller's line included.
+  EXPECT_EQ(runSandboxed(host, "local t = {} table.insert(t, 'a') table.insert(t, 1, 'b') table.sort(t)\n"
+                               "assert(table.remove(t) == 'b' and #t == 1)"),
+            "");
+  EXPECT_EQ(runSandboxed(host, "\ntable.insert(nil, 1)").rfind("mod.lua:2: bad argument #1 to 'insert' (table expected, got nil)", 0), 0u);
+}
+
+// table.foreach walked LuaJIT's order, which changes from one process to the next (string hashes
+// are seeded at random, other keys hash by address): it walks pairs' order, and refuses what
+// pairs refuses.
+TEST(PairsAndNext, TableForeachWalksTheFixedOrder) {
+  EXPECT_EQ(runSandboxed("local t = {} for i = 1, 12 do t['k' .. i] = i end t[2.5] = 0 t[true] = 0 t[1] = 0\n"
+                         "local a, b = {}, {}\n"
+                         "table.foreach(t, function(k) a[#a + 1] = tostring(k) end)\n"
+                         "for k in pairs(t) do b[#b + 1] = tostring(k) end\n"
+                         "assert(table.concat(a, ' ') == table.concat(b, ' '), table.concat(a, ' '))\n"
+                         "assert(table.foreach(t, function(k, v) if k == 'k3' then return v end end) == 3)"),
+            "");
+  EXPECT_EQ(runSandboxed("\ntable.foreach({ [{}] = 1 }, print)").rfind("mod.lua:2: pairs over table keys has no fixed order", 0), 0u);
+}
+
 }  // namespace
 }  // namespace platon::script
