@@ -26,13 +26,8 @@ LUA
 XDG_DATA_HOME="$data" "$platon" game --campaign "$data/levels/campaign.txt" > "$log" 2>&1 &
 pid=$!
 fail() { echo "$1"; cat "$log"; kill "$pid" 2>/dev/null; rm -rf "$data"; exit 1; }
-window=""
-for _ in $(seq 100); do
-  window=$(xdotool search --name "Platon" 2>/dev/null | head -n 1) && [ -n "$window" ] && break
-  sleep 0.1
-done
-[ -n "$window" ] || fail "no window appeared"
-xdotool windowactivate --sync "$window" 2>/dev/null || xdotool windowfocus "$window"
+. "$(dirname "$0")/focus_window.sh"
+focus_window || fail "no window appeared"
 sleep 0.3
 xdotool key Return
 for _ in $(seq 100); do grep -q "^playing broken" "$log" && break; sleep 0.1; done

@@ -16,13 +16,8 @@ await() {  # a line of the log, for up to $2 tenths of a second
   for _ in $(seq "$2"); do grep -q "$1" "$log" && return 0; kill -0 "$pid" 2>/dev/null || fail "the game ended"; sleep 0.1; done
   fail "no line '$1' in the log"
 }
-window=""
-for _ in $(seq 100); do  # up to 10 s for the window to appear
-  window=$(xdotool search --name "Platon" 2>/dev/null | head -n 1) && [ -n "$window" ] && break
-  sleep 0.1
-done
-[ -n "$window" ] || fail "no window appeared"
-xdotool windowactivate --sync "$window" 2>/dev/null || xdotool windowfocus "$window"
+. "$(dirname "$0")/focus_window.sh"
+focus_window || fail "no window appeared"
 sleep 0.3
 # The first level to its goal: written there.
 xdotool key Return

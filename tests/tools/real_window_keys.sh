@@ -9,13 +9,8 @@ unset SDL_VIDEODRIVER  # the X server xvfb-run started, not offscreen
 log=$(mktemp)
 "$platon" play levels/cube_intro/scene.lua --frames 600 > "$log" 2>&1 &
 pid=$!
-window=""
-for _ in $(seq 100); do  # up to 10 s for the window to appear
-  window=$(xdotool search --name "Platon" 2>/dev/null | head -n 1) && [ -n "$window" ] && break
-  sleep 0.1
-done
-[ -n "$window" ] || { echo "no window appeared"; cat "$log"; kill "$pid"; exit 1; }
-xdotool windowactivate --sync "$window" 2>/dev/null || xdotool windowfocus "$window"
+. "$(dirname "$0")/focus_window.sh"
+focus_window || { echo "no window appeared"; cat "$log"; kill "$pid"; exit 1; }
 xdotool keydown Right
 wait "$pid" || { cat "$log"; exit 1; }
 xdotool keyup Right 2>/dev/null || true
