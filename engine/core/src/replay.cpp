@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "platon/core/input.h"
+#include "platon/core/visible_text.h"
 
 namespace platon::core {
 namespace {
@@ -54,22 +55,7 @@ class LineReader {
 
   int line() const { return line_; }
   [[noreturn]] void failAt(int line, int column, const std::string& reason) const {
-    throw std::runtime_error(file_ + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + visible(reason));
-  }
-  // The reason quotes the file's words: a control byte in them (a NUL would end what() there)
-  // is shown as \xNN.
-  static std::string visible(const std::string& text) {
-    std::string out;
-    for (const char c : text) {
-      if (static_cast<unsigned char>(c) < 0x20 && c != '\t') {
-        char escaped[8];
-        std::snprintf(escaped, sizeof escaped, "\\x%02x", static_cast<unsigned char>(c));
-        out += escaped;
-      } else {
-        out += c;
-      }
-    }
-    return out;
+    throw std::runtime_error(file_ + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + visibleText(reason));
   }
   [[noreturn]] void fail(int column, const std::string& reason) const { failAt(line_, column, reason); }
   // An empty file has no line to name: its line 1 is where the missing text belongs.

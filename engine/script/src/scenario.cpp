@@ -16,6 +16,7 @@
 #include "lua_host.h"
 #include "platon/core/input.h"
 #include "platon/core/live_scene.h"
+#include "platon/core/visible_text.h"
 #include "platon/script/script_system.h"
 
 namespace platon::script {
@@ -40,21 +41,6 @@ struct Datum {
   int line = 0, column = 0;
 };
 
-// A string as an error shows it: control bytes as \xNN (a NUL would end the message there).
-std::string visible(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    if (static_cast<unsigned char>(c) < 0x20) {
-      char escaped[8];
-      std::snprintf(escaped, sizeof escaped, "\\x%02x", static_cast<unsigned char>(c));
-      out += escaped;
-    } else {
-      out += c;
-    }
-  }
-  return out;
-}
-
 std::string describe(const Datum& d) {
   char number[64];
   switch (d.kind) {
@@ -64,7 +50,7 @@ std::string describe(const Datum& d) {
       if (std::isnan(d.number)) return "nan";
       std::snprintf(number, sizeof number, "%.17g", d.number);
       return number;
-    case Datum::Kind::String: return "'" + visible(d.text.substr(0, 40)) + (d.text.size() > 40 ? "...'" : "'") + " (a string)";
+    case Datum::Kind::String: return "'" + core::visibleText(d.text.substr(0, 40)) + (d.text.size() > 40 ? "...'" : "'") + " (a string)";
     case Datum::Kind::Table: return "a table";
     case Datum::Kind::Other: return d.text;
   }
@@ -73,7 +59,7 @@ std::string describe(const Datum& d) {
 
 // A table key as a scenario writes it: 'name' or a number.
 std::string keyText(const Datum& key) {
-  if (key.kind == Datum::Kind::String) return "'" + visible(key.text) + "'";
+  if (key.kind == Datum::Kind::String) return "'" + core::visibleText(key.text) + "'";
   if (key.kind == Datum::Kind::Number) return describe(key);
   return describe(key);
 }
