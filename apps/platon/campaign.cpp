@@ -1,14 +1,13 @@
 #include "campaign.h"
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <cstdio>
 #include <cstdlib>
+#include <fcntl.h>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace platon::app {
 namespace {
@@ -43,7 +42,8 @@ std::vector<CampaignLevel> readCampaign(const std::string& path) {
     const std::string folder = trim(line.substr(0, line.find('#')));
     if (folder.empty()) continue;
     if (folder.find_first_of(" \t") != std::string::npos)
-      throw std::runtime_error(path + ":" + std::to_string(number) + ":1: '" + folder + "': one folder a line, no spaces in its name");
+      throw std::runtime_error(path + ":" + std::to_string(number) + ":1: '" + folder +
+                               "': one folder a line, no spaces in its name");
     const std::string scene = base + folder + "/scene.lua";
     if (!isFile(scene))
       throw std::runtime_error(path + ":" + std::to_string(number) + ":1: level '" + folder + "' has no " + scene);
@@ -93,15 +93,18 @@ bool Progress::finish(const std::string& folder, uint64_t frames, int deaths) {
   if (slash != std::string::npos) makeFolders(path_.substr(0, slash));
   const std::string temporary = path_ + ".new";
   std::string text = "# Platon progress: level, best time in frames (60 a second), fewest deaths\n";
-  for (const auto& [name, r] : records_) text += name + " " + std::to_string(r.bestFrames) + " " + std::to_string(r.fewestDeaths) + "\n";
+  for (const auto& [name, r] : records_)
+    text += name + " " + std::to_string(r.bestFrames) + " " + std::to_string(r.fewestDeaths) + "\n";
   // Written whole and flushed to the disk before the rename, so that even a power cut leaves the
   // old file or the new one.
   const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   bool written = fd >= 0;
   for (size_t done = 0; written && done < text.size();) {
     const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-    if (n <= 0) written = false;
-    else done += static_cast<size_t>(n);
+    if (n <= 0)
+      written = false;
+    else
+      done += static_cast<size_t>(n);
   }
   written = written && ::fsync(fd) == 0;
   if (fd >= 0) ::close(fd);

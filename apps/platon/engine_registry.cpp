@@ -1,9 +1,8 @@
 #include "engine_registry.h"
 
-#include <unistd.h>
-
 #include <climits>
 #include <string>
+#include <unistd.h>
 
 #include "platon/script/script_system.h"
 

@@ -71,7 +71,8 @@ class LevelRecorder {
     } catch (const std::exception& e) {
       return std::string("recording not written: ") + e.what();
     }
-    std::printf("recorded %s: %llu frames to %s\n", level_.c_str(), static_cast<unsigned long long>(replay.frames()), path.c_str());
+    std::printf("recorded %s: %llu frames to %s\n", level_.c_str(), static_cast<unsigned long long>(replay.frames()),
+                path.c_str());
     std::fflush(stdout);
     return "";
   }
@@ -144,7 +145,7 @@ class Game {
   int menuItem_ = 0;
   bool quit_ = false;
   bool showFps_ = false;
-  std::string notice_;  // a line under the heads-up text (a failed save, a refused reload)
+  std::string notice_;          // a line under the heads-up text (a failed save, a refused reload)
   std::string lastFrameError_;  // printed once, not on every frame it repeats
   LevelRecorder recording_;
 };
@@ -182,7 +183,9 @@ std::vector<std::string> Game::titleLines() const {
   for (size_t i = 0; i < levels_.size(); ++i) {
     const LevelRecord* r = progress_.record(levels_[i].folder);
     std::string line = (i == selected_ ? "> " : "  ") + std::to_string(i + 1) + ". " + names_[i];
-    if (r) line += "   done " + clockText(r->bestFrames) + ", " + std::to_string(r->fewestDeaths) + (r->fewestDeaths == 1 ? " death" : " deaths");
+    if (r)
+      line += "   done " + clockText(r->bestFrames) + ", " + std::to_string(r->fewestDeaths) +
+              (r->fewestDeaths == 1 ? " death" : " deaths");
     if (i == selected_) line += " <";
     lines.push_back(line);
   }
@@ -201,7 +204,8 @@ void Game::handle(const core::WindowInput& input) {
         if ((key == core::Key::Up || key == core::Key::Down) && levels_.size() > 1) {
           // The cursor moves whether or not the level loads (a broken one says why on the HUD);
           // behind the title, the chosen level's stage when it does.
-          selected_ = key == core::Key::Up ? (selected_ + levels_.size() - 1) % levels_.size() : (selected_ + 1) % levels_.size();
+          selected_ = key == core::Key::Up ? (selected_ + levels_.size() - 1) % levels_.size()
+                                           : (selected_ + 1) % levels_.size();
           load(selected_);
         }
         if (key == core::Key::Enter && load(selected_)) play();
@@ -245,7 +249,8 @@ void Game::stepSimulation(int due, uint8_t held) {
     const script::GameStatus st = status();
     view_.step(live_->scene(), st, 1.0 / clock_.hz());
     if (st.won) {
-      std::printf("level complete: %s in %s with %d deaths\n", levels_[level_].folder.c_str(), clockText(st.wonFrame).c_str(), st.deaths);
+      std::printf("level complete: %s in %s with %d deaths\n", levels_[level_].folder.c_str(),
+                  clockText(st.wonFrame).c_str(), st.deaths);
       std::fflush(stdout);
       if (!progress_.finish(levels_[level_].folder, st.wonFrame, st.deaths)) notice_ = progress_.lastError();
       screen_ = Screen::Complete;
@@ -268,23 +273,30 @@ void Game::draw(double alpha) {
   }
   if (!notice_.empty()) view.hud.push_back(notice_);
   switch (screen_) {
-    case Screen::Title: view.centreText = titleLines(); break;
+    case Screen::Title:
+      view.centreText = titleLines();
+      break;
     case Screen::Paused:
       view.centreText = {"Paused"};
-      for (int i = 0; i < 4; ++i) view.centreText.push_back((i == menuItem_ ? "> " : "  ") + std::string(kPauseItems[i]) + (i == menuItem_ ? " <" : ""));
+      for (int i = 0; i < 4; ++i)
+        view.centreText.push_back((i == menuItem_ ? "> " : "  ") + std::string(kPauseItems[i]) +
+                                  (i == menuItem_ ? " <" : ""));
       break;
     case Screen::Complete:
       view.centreText = {"Level complete!", clockText(st.wonFrame) + "    " + std::to_string(st.deaths) + " deaths",
-                         level_ + 1 < levels_.size() ? "Enter: next level    Esc: level select" : "The campaign is done. Enter: level select"};
+                         level_ + 1 < levels_.size() ? "Enter: next level    Esc: level select"
+                                                     : "The campaign is done. Enter: level select"};
       break;
-    case Screen::Playing: break;
+    case Screen::Playing:
+      break;
   }
   d->present(view, view_.drawing(alpha));
 }
 
 int Game::run(bool quitAfterFirstFrame, const std::string& firstFrameShot) {
   const size_t firstOpen = static_cast<size_t>(
-      std::find_if(levels_.begin(), levels_.end(), [&](const CampaignLevel& l) { return !progress_.done(l.folder); }) - levels_.begin());
+      std::find_if(levels_.begin(), levels_.end(), [&](const CampaignLevel& l) { return !progress_.done(l.folder); }) -
+      levels_.begin());
   // The first level not done yet behind the title; if it will not load, the next that does.
   selected_ = firstOpen < levels_.size() ? firstOpen : 0;
   bool any = false;
@@ -326,8 +338,8 @@ int Game::run(bool quitAfterFirstFrame, const std::string& firstFrameShot) {
   }
   finishRecording();
   const script::GameStatus st = status();
-  std::printf("quit on %s: face %u at (%d, %d), %llu frames played\n", levels_[level_].folder.c_str(), st.face, st.x, st.y,
-              static_cast<unsigned long long>(st.time));
+  std::printf("quit on %s: face %u at (%d, %d), %llu frames played\n", levels_[level_].folder.c_str(), st.face, st.x,
+              st.y, static_cast<unsigned long long>(st.time));
   return 0;
 }
 
@@ -341,16 +353,22 @@ int gameCommand(int argc, char** argv) {
   std::string recordFolder;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--campaign" && i + 1 < argc) campaignPath = argv[++i];
-    else if (a == "--progress" && i + 1 < argc) progressPath = argv[++i];
-    else if (a == "--quit-after-first-frame") quitAfterFirstFrame = true;  // for start-up benchmarks
-    else if (a == "--first-frame-shot" && i + 1 < argc) firstFrameShot = argv[++i], quitAfterFirstFrame = true;
-    else if (a == "--record" && i + 1 < argc) recordFolder = argv[++i];
+    if (a == "--campaign" && i + 1 < argc)
+      campaignPath = argv[++i];
+    else if (a == "--progress" && i + 1 < argc)
+      progressPath = argv[++i];
+    else if (a == "--quit-after-first-frame")
+      quitAfterFirstFrame = true;  // for start-up benchmarks
+    else if (a == "--first-frame-shot" && i + 1 < argc)
+      firstFrameShot = argv[++i], quitAfterFirstFrame = true;
+    else if (a == "--record" && i + 1 < argc)
+      recordFolder = argv[++i];
     else {
-      std::fprintf(stderr, "usage: platon game [--campaign levels/campaign.txt] [--progress file] [--record dir]\n"
-                           "  --record DIR  write a replay of each level played to DIR/<level>.replay\n"
-                           "  keys: arrows or WASD move, Space jumps, R restarts, Esc pauses, F5 reloads,\n"
-                           "        F3 frame rate, F11 fullscreen; a gamepad works too\n");
+      std::fprintf(stderr,
+                   "usage: platon game [--campaign levels/campaign.txt] [--progress file] [--record dir]\n"
+                   "  --record DIR  write a replay of each level played to DIR/<level>.replay\n"
+                   "  keys: arrows or WASD move, Space jumps, R restarts, Esc pauses, F5 reloads,\n"
+                   "        F3 frame rate, F11 fullscreen; a gamepad works too\n");
       return 2;
     }
   }

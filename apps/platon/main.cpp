@@ -4,11 +4,11 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "platon/core/scene.h"
 #include "game_command.h"
+#include "platon/core/scene.h"
 #include "play_command.h"
-#include "shot_command.h"
 #include "run_command.h"
+#include "shot_command.h"
 #include "stage_commands.h"
 
 using namespace platon;
@@ -69,15 +69,18 @@ int main(int argc, char** argv) {
     if (std::strcmp(argv[i], "--frames") == 0 && i + 1 < argc) {
       frames = std::atoi(argv[++i]);
     } else {
-      std::fprintf(stderr, "usage: %s [--frames N]      the headless demo\n"
-                           "       %s game [--campaign levels/campaign.txt] [--progress file] [--record dir]   the game in a window\n"
-                           "       %s shot LEVEL [--frame N] [--size WxH] [--input run.replay] --out file.png\n"
-                           "       %s run [-j N] [--junit report.xml] [--timeout s] [--record dir] scenario.lua|run.replay...\n"
-                           "       %s play scene.lua [--frames N] [--input run.replay] [--record out.replay] [--watch] [--fast] [--headless]\n"
-                           "       %s scenario run.replay [-o scenario.lua]\n"
-                           "       %s check level.level...           errors and warnings a level designer wants\n"
-                           "       %s net SOLID|level.level -o net.svg   the faces unfolded, numbered, with their axes\n",
-                           argv[0], argv[0], argv[0], argv[0], argv[0], argv[0], argv[0], argv[0]);
+      std::fprintf(
+          stderr,
+          "usage: %s [--frames N]      the headless demo\n"
+          "       %s game [--campaign levels/campaign.txt] [--progress file] [--record dir]   the game in a window\n"
+          "       %s shot LEVEL [--frame N] [--size WxH] [--input run.replay] --out file.png\n"
+          "       %s run [-j N] [--junit report.xml] [--timeout s] [--record dir] scenario.lua|run.replay...\n"
+          "       %s play scene.lua [--frames N] [--input run.replay] [--record out.replay] [--watch] [--fast] "
+          "[--headless]\n"
+          "       %s scenario run.replay [-o scenario.lua]\n"
+          "       %s check level.level...           errors and warnings a level designer wants\n"
+          "       %s net SOLID|level.level -o net.svg   the faces unfolded, numbered, with their axes\n",
+          argv[0], argv[0], argv[0], argv[0], argv[0], argv[0], argv[0], argv[0]);
       return 2;
     }
   }

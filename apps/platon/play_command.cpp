@@ -6,9 +6,6 @@
 // too) and the last good version goes on.
 #include "play_command.h"
 
-#include <signal.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cerrno>
 #include <charconv>
@@ -16,8 +13,10 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <signal.h>
 #include <string>
 #include <thread>
+#include <unistd.h>
 
 #include "engine_registry.h"
 #include "game_view.h"
@@ -111,21 +110,22 @@ bool frameCount(const char* text, uint64_t& out) {
 }
 
 int usage() {
-  std::fprintf(stderr,
-               "usage: platon play scene.lua [--frames N] [--input run.replay] [--record out.replay]\n"
-               "                             [--watch] [--fast] [--headless] [--shot out.png]\n"
-               "  --frames N   stop after N frames, N >= 1 (default: at the goal, or never with --watch)\n"
-               "  --input F    the buttons of a recorded run (nothing held without it)\n"
-               "  --record F   write this run's input and hashes to F as a replay (also when stopped by\n"
-               "               SIGINT or SIGTERM; F is checked before playing)\n"
-               "  --watch      reload the scene when its files are saved\n"
-               "  --fast       do not wait for real time\n"
-               "  --headless   no window, even when the scene names \"rendering\"; exits 1 if a frame had a\n"
-               "               script error\n"
-               "  --shot F     save the last frame shown to F (PNG) at the end\n"
-               "keys in the window: arrows or WASD move, Space jumps, R restarts, F3 frame rate, F11 fullscreen, Esc quits\n"
-               "SIGINT or SIGTERM ends the play after the frame; if the frame does not end, a second signal, or\n"
-               "3 s after the first, ends it at once, without writing the recording\n");
+  std::fprintf(
+      stderr,
+      "usage: platon play scene.lua [--frames N] [--input run.replay] [--record out.replay]\n"
+      "                             [--watch] [--fast] [--headless] [--shot out.png]\n"
+      "  --frames N   stop after N frames, N >= 1 (default: at the goal, or never with --watch)\n"
+      "  --input F    the buttons of a recorded run (nothing held without it)\n"
+      "  --record F   write this run's input and hashes to F as a replay (also when stopped by\n"
+      "               SIGINT or SIGTERM; F is checked before playing)\n"
+      "  --watch      reload the scene when its files are saved\n"
+      "  --fast       do not wait for real time\n"
+      "  --headless   no window, even when the scene names \"rendering\"; exits 1 if a frame had a\n"
+      "               script error\n"
+      "  --shot F     save the last frame shown to F (PNG) at the end\n"
+      "keys in the window: arrows or WASD move, Space jumps, R restarts, F3 frame rate, F11 fullscreen, Esc quits\n"
+      "SIGINT or SIGTERM ends the play after the frame; if the frame does not end, a second signal, or\n"
+      "3 s after the first, ends it at once, without writing the recording\n");
   return 2;
 }
 
@@ -141,8 +141,8 @@ void show(core::Display& display, core::LiveScene& live, const GameView& gameVie
   const uint64_t seconds = status.time / 60;
   char line[160];
   std::snprintf(line, sizeof line, "%s    %llu:%02llu    deaths %d%s", scene.manifest().name.c_str(),
-                static_cast<unsigned long long>(seconds / 60), static_cast<unsigned long long>(seconds % 60), status.deaths,
-                status.won ? "    goal reached!" : "");
+                static_cast<unsigned long long>(seconds / 60), static_cast<unsigned long long>(seconds % 60),
+                status.deaths, status.won ? "    goal reached!" : "");
   view.hud.push_back(line);
   if (!status.message.empty()) view.hud.push_back(status.message);
   view.error = live.lastError();
@@ -160,16 +160,24 @@ int playCommand(int argc, char** argv) {
     const std::string a = argv[i];
     if (a == "--frames" && i + 1 < argc) {
       if (!frameCount(argv[++i], frames))
-        return std::fprintf(stderr, "platon play: --frames %s: expected a whole number of frames from 1\n", argv[i]), usage();
-    }
-    else if (a == "--input" && i + 1 < argc) inputPath = argv[++i];
-    else if (a == "--record" && i + 1 < argc) recordPath = argv[++i];
-    else if (a == "--watch") watch = true;
-    else if (a == "--fast") fast = true;
-    else if (a == "--headless") headless = true;
-    else if (a == "--shot" && i + 1 < argc) shotPath = argv[++i];
-    else if (scenePath.empty() && !a.empty() && a[0] != '-') scenePath = a;
-    else return usage();
+        return std::fprintf(stderr, "platon play: --frames %s: expected a whole number of frames from 1\n", argv[i]),
+               usage();
+    } else if (a == "--input" && i + 1 < argc)
+      inputPath = argv[++i];
+    else if (a == "--record" && i + 1 < argc)
+      recordPath = argv[++i];
+    else if (a == "--watch")
+      watch = true;
+    else if (a == "--fast")
+      fast = true;
+    else if (a == "--headless")
+      headless = true;
+    else if (a == "--shot" && i + 1 < argc)
+      shotPath = argv[++i];
+    else if (scenePath.empty() && !a.empty() && a[0] != '-')
+      scenePath = a;
+    else
+      return usage();
   }
   core::Replay input;
   try {
@@ -208,7 +216,8 @@ int playCommand(int argc, char** argv) {
     std::fprintf(stderr, "--shot needs a window: the scene names no \"rendering\", or there is no display\n");
     return 1;
   }
-  std::printf("playing %s%s\n", live->scene().manifest().name.c_str(), watch ? " (watching its files: save one to reload)" : "");
+  std::printf("playing %s%s\n", live->scene().manifest().name.c_str(),
+              watch ? " (watching its files: save one to reload)" : "");
   std::fflush(stdout);
 
   std::optional<core::ReplayRecorder> recorder;
@@ -236,7 +245,8 @@ int playCommand(int argc, char** argv) {
       if (r->ok) {
         std::printf("reloaded in %.1f ms (%s)\n", r->milliseconds, r->files.empty() ? "" : r->files.front().c_str());
         if (recorder) {
-          std::printf("recording stops at frame %llu: the reload changed the scene\n", static_cast<unsigned long long>(frame));
+          std::printf("recording stops at frame %llu: the reload changed the scene\n",
+                      static_cast<unsigned long long>(frame));
           std::fflush(stdout);
           if (!writeRecording(recorder->replay(), recordPath)) recordFailed = true;
           recorder.reset();
@@ -249,7 +259,9 @@ int playCommand(int argc, char** argv) {
     display = displayOf(live->scene()) && display ? displayOf(live->scene()) : nullptr;  // a reload replaces it
     if (display) {
       const core::WindowInput events = display->pollEvents();
-      auto pressed = [&](core::Key k) { return std::find(events.pressed.begin(), events.pressed.end(), k) != events.pressed.end(); };
+      auto pressed = [&](core::Key k) {
+        return std::find(events.pressed.begin(), events.pressed.end(), k) != events.pressed.end();
+      };
       if (events.closed || pressed(core::Key::Escape)) break;
       if (pressed(core::Key::ShowFps)) showFps = !showFps;
       keys = events.held;
@@ -260,7 +272,8 @@ int playCommand(int argc, char** argv) {
       if (std::optional<std::string> error = live->step(edges.next(held))) {
         ++frameErrors;
         if (*error != lastError)
-          std::printf("frame %llu: error (the game goes on):\n%s\n", static_cast<unsigned long long>(frame), error->c_str());
+          std::printf("frame %llu: error (the game goes on):\n%s\n", static_cast<unsigned long long>(frame),
+                      error->c_str());
         lastError = *error;
       }
       if (recorder) recorder->frame(held, live->scene().world().stateHash());
@@ -274,8 +287,9 @@ int playCommand(int argc, char** argv) {
       }
       if (status.won && !won) {
         won = true;
-        std::printf("goal reached at frame %llu: %.2f s played, %d deaths\n", static_cast<unsigned long long>(status.wonFrame),
-                    static_cast<double>(status.time) / 60.0, status.deaths);
+        std::printf("goal reached at frame %llu: %.2f s played, %d deaths\n",
+                    static_cast<unsigned long long>(status.wonFrame), static_cast<double>(status.time) / 60.0,
+                    status.deaths);
       }
     }
     if (display) show(*display, *live, gameView, fast ? 1.0 : clock.alpha(), showFps);
@@ -284,11 +298,14 @@ int playCommand(int argc, char** argv) {
     if (!fast && due == 0) std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
   alarm(0);  // the loop ended: no grace period runs out while the recording is written
-  if (stopSignal) std::printf("stopped by signal %d at frame %llu\n", static_cast<int>(stopSignal), static_cast<unsigned long long>(frame));
+  if (stopSignal)
+    std::printf("stopped by signal %d at frame %llu\n", static_cast<int>(stopSignal),
+                static_cast<unsigned long long>(frame));
   if (recorder) {
     std::fflush(stdout);
     if (writeRecording(recorder->replay(), recordPath))
-      std::printf("recorded %llu frames to %s\n", static_cast<unsigned long long>(recorder->replay().frames()), recordPath.c_str());
+      std::printf("recorded %llu frames to %s\n", static_cast<unsigned long long>(recorder->replay().frames()),
+                  recordPath.c_str());
     else
       recordFailed = true;
   }
@@ -302,7 +319,8 @@ int playCommand(int argc, char** argv) {
       return 1;
     }
   }
-  std::printf("state hash %016llx after %llu frames\n", static_cast<unsigned long long>(live->scene().world().stateHash()),
+  std::printf("state hash %016llx after %llu frames\n",
+              static_cast<unsigned long long>(live->scene().world().stateHash()),
               static_cast<unsigned long long>(frame));
   if (!display && frameErrors > 0) {  // headless is how CI plays: a script error must fail it
     std::printf("%llu frame(s) had a script error\n", static_cast<unsigned long long>(frameErrors));

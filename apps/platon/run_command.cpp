@@ -6,13 +6,6 @@
 // Results print in the order the scenarios were given: the same output at any -j.
 #include "run_command.h"
 
-#include "engine_registry.h"
-
-#include <poll.h>
-#include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cerrno>
 #include <charconv>
@@ -23,9 +16,14 @@
 #include <cstring>
 #include <fstream>
 #include <map>
+#include <poll.h>
+#include <signal.h>
 #include <string>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <vector>
 
+#include "engine_registry.h"
 #include "platon/core/visible_text.h"
 #include "platon/script/scenario.h"
 
@@ -94,20 +92,31 @@ std::string workerDied(int status, const std::string& file) {
     const int signal = WTERMSIG(status);
     return "worker crashed (signal " + std::to_string(signal) + ") while running " + file + ": " + strsignal(signal);
   }
-  return "worker exited with status " + std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + " while running " +
-         file + " and gave no result";
+  return "worker exited with status " + std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) +
+         " while running " + file + " and gave no result";
 }
 
 std::string xmlEscape(const std::string& s) {
   std::string out;
   for (const char c : printable(s)) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -168,8 +177,10 @@ std::vector<std::string> recordPaths(const std::vector<std::string>& files, cons
 }
 
 // One file: a scenario or a replay; with a record path, its run is written there as a replay.
-script::ScenarioResult runOne(const std::string& file, const script::RunOptions& options, const std::string& recordPath) {
-  script::ScenarioResult r = endsWith(file, ".replay") ? script::runReplay(file, options) : script::runScenario(file, options);
+script::ScenarioResult runOne(const std::string& file, const script::RunOptions& options,
+                              const std::string& recordPath) {
+  script::ScenarioResult r =
+      endsWith(file, ".replay") ? script::runReplay(file, options) : script::runScenario(file, options);
   if (!recordPath.empty() && r.recorded) {
     try {
       core::writeReplay(*r.recorded, recordPath);
@@ -220,8 +231,7 @@ std::string startWorker(size_t index, const std::string& file, const script::Run
 Outcome finishWorker(Worker& w, const std::string& file, bool killedAfterTimeout, double timeout) {
   close(w.fd);
   int status = 0;
-  while (waitpid(w.pid, &status, 0) < 0 && errno == EINTR) {
-  }
+  while (waitpid(w.pid, &status, 0) < 0 && errno == EINTR) {}
   Outcome o;
   o.done = true;
   if (killedAfterTimeout) {
@@ -250,7 +260,8 @@ void runInWorkers(const std::vector<std::string>& files, const script::RunOption
     const auto now = Clock::now();
     for (const Worker& w : workers) {
       fds.push_back({w.fd, POLLIN, 0});
-      wait = std::min(wait, std::chrono::duration_cast<std::chrono::milliseconds>(std::max(w.deadline - now, Clock::duration::zero())) +
+      wait = std::min(wait, std::chrono::duration_cast<std::chrono::milliseconds>(
+                                std::max(w.deadline - now, Clock::duration::zero())) +
                                 std::chrono::milliseconds(1));
     }
     if (poll(fds.data(), fds.size(), static_cast<int>(wait.count())) < 0 && errno != EINTR) std::perror("poll");
@@ -260,8 +271,10 @@ void runInWorkers(const std::vector<std::string>& files, const script::RunOption
       if (fds[k].revents & (POLLIN | POLLHUP | POLLERR)) {
         char buffer[65536];
         const ssize_t n = read(w.fd, buffer, sizeof buffer);
-        if (n > 0) w.data.append(buffer, static_cast<size_t>(n));
-        else if (n == 0 || errno != EINTR) ended = true;
+        if (n > 0)
+          w.data.append(buffer, static_cast<size_t>(n));
+        else if (n == 0 || errno != EINTR)
+          ended = true;
       }
       if (!ended && Clock::now() > w.deadline) {
         kill(w.pid, SIGKILL);
@@ -287,7 +300,8 @@ void printResult(const std::string& file, const script::ScenarioResult& r) {
   }
   for (size_t at = eol; at != std::string::npos && at + 1 < message.size();) {
     const size_t end = message.find('\n', at + 1);
-    std::printf("    %s\n", message.substr(at + 1, end == std::string::npos ? std::string::npos : end - at - 1).c_str());
+    std::printf("    %s\n",
+                message.substr(at + 1, end == std::string::npos ? std::string::npos : end - at - 1).c_str());
     at = end;
   }
 }
@@ -332,7 +346,8 @@ int runCommand(int argc, char** argv) {
     } else if (a == "--timeout" && hasValue) {
       if (!seconds(argv[++i], timeout)) return badValue("--timeout", argv[i], "a number of seconds above 0");
     } else if (a == "--trace" && hasValue) {
-      if (!wholeNumber(argv[++i], 1, UINT64_MAX, options.traceEvery)) return badValue("--trace", argv[i], "a whole number of frames from 1");
+      if (!wholeNumber(argv[++i], 1, UINT64_MAX, options.traceEvery))
+        return badValue("--trace", argv[i], "a whole number of frames from 1");
     } else if (a == "--record" && hasValue) {
       recordDir = argv[++i], options.record = true;
     } else if (a == "--hash-every" && hasValue) {
@@ -356,7 +371,8 @@ int runCommand(int argc, char** argv) {
     failed += o.result.passed ? 0 : 1;
     printResult(files[i], o.result);
   }
-  std::printf("%zu scenarios, %d failed, %.2f s with -j %llu\n", files.size(), failed, elapsed, static_cast<unsigned long long>(jobs));
+  std::printf("%zu scenarios, %d failed, %.2f s with -j %llu\n", files.size(), failed, elapsed,
+              static_cast<unsigned long long>(jobs));
   std::fflush(stdout);
   if (!junit.empty() && !writeJunit(junit, files, outcomes, elapsed)) {
     std::fprintf(stderr, "%s: cannot write the JUnit report\n", junit.c_str());
@@ -369,9 +385,12 @@ int scenarioCommand(int argc, char** argv) {
   std::string replayPath, out;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if ((a == "-o" || a == "--out") && i + 1 < argc) out = argv[++i];
-    else if (replayPath.empty() && !a.empty() && a[0] != '-') replayPath = a;
-    else return std::fprintf(stderr, "usage: platon scenario run.replay [-o scenario.lua]\n"), 2;
+    if ((a == "-o" || a == "--out") && i + 1 < argc)
+      out = argv[++i];
+    else if (replayPath.empty() && !a.empty() && a[0] != '-')
+      replayPath = a;
+    else
+      return std::fprintf(stderr, "usage: platon scenario run.replay [-o scenario.lua]\n"), 2;
   }
   if (replayPath.empty()) return std::fprintf(stderr, "usage: platon scenario run.replay [-o scenario.lua]\n"), 2;
   try {
@@ -390,8 +409,8 @@ int scenarioCommand(int argc, char** argv) {
     } else {
       std::ofstream file(out, std::ios::binary | std::ios::trunc);
       if (!(file << text).flush()) return std::fprintf(stderr, "%s: cannot write\n", out.c_str()), 1;
-      std::fprintf(stderr, "wrote %s (%llu frames, %s)\n", out.c_str(), static_cast<unsigned long long>(replay.frames()),
-                   outcome.message.c_str());
+      std::fprintf(stderr, "wrote %s (%llu frames, %s)\n", out.c_str(),
+                   static_cast<unsigned long long>(replay.frames()), outcome.message.c_str());
     }
     return 0;
   } catch (const std::exception& e) {

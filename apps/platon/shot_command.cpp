@@ -4,11 +4,10 @@
 // the same picture on every run and machine with the same GL driver.
 #include "shot_command.h"
 
-#include <sys/stat.h>
-
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <sys/stat.h>
 
 #include "engine_registry.h"
 #include "game_view.h"
@@ -59,16 +58,20 @@ int shotCommand(int argc, char** argv) {
         return 2;
       }
       frames = std::stoull(n);
-    }
-    else if (a == "--size" && i + 1 < argc) {
-      if (std::sscanf(argv[++i], "%dx%d", &width, &height) != 2 || width < 16 || height < 16 || width > 8192 || height > 8192) {
+    } else if (a == "--size" && i + 1 < argc) {
+      if (std::sscanf(argv[++i], "%dx%d", &width, &height) != 2 || width < 16 || height < 16 || width > 8192 ||
+          height > 8192) {
         std::fprintf(stderr, "--size %s: want WxH, 16 to 8192 pixels each way\n", argv[i]);
         return 2;
       }
-    } else if (a == "--input" && i + 1 < argc) inputPath = argv[++i];
-    else if (a == "--out" && i + 1 < argc) out = argv[++i];
-    else if (level.empty() && !a.empty() && a[0] != '-') level = a;
-    else return usage();
+    } else if (a == "--input" && i + 1 < argc)
+      inputPath = argv[++i];
+    else if (a == "--out" && i + 1 < argc)
+      out = argv[++i];
+    else if (level.empty() && !a.empty() && a[0] != '-')
+      level = a;
+    else
+      return usage();
   }
   if (level.empty() || out.empty()) return usage();
   setenv("SDL_VIDEODRIVER", "offscreen", 0);
@@ -77,7 +80,8 @@ int shotCommand(int argc, char** argv) {
     if (!inputPath.empty()) input = core::readReplay(inputPath);
     const core::SystemRegistry registry = engineRegistry(Presentation::Window);
     core::LiveScene live(scenePathOf(level), registry, false);
-    if (!displayOf(live.scene())) throw std::runtime_error(scenePathOf(level) + ": the scene does not name \"rendering\"");
+    if (!displayOf(live.scene()))
+      throw std::runtime_error(scenePathOf(level) + ": the scene does not name \"rendering\"");
     core::Display& display = *displayOf(live.scene());
     display.resize(width, height);
     auto status = [&] { return statusOf(live.scene()); };
@@ -101,7 +105,8 @@ int shotCommand(int argc, char** argv) {
       throw std::runtime_error(out + ": the window came out " + std::to_string(w) + "x" + std::to_string(h) + ", not " +
                                std::to_string(width) + "x" + std::to_string(height));
     display.saveScreenshot(out);
-    std::printf("%s: %dx%d, frame %llu of %s\n", out.c_str(), w, h, static_cast<unsigned long long>(frames), scenePathOf(level).c_str());
+    std::printf("%s: %dx%d, frame %llu of %s\n", out.c_str(), w, h, static_cast<unsigned long long>(frames),
+                scenePathOf(level).c_str());
     return 0;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s\n", core::errorReport(e).c_str());

@@ -11,18 +11,17 @@
 //
 // usage: SDL_VIDEODRIVER=offscreen build/bench/render_frames [--frames N] [--runs R]
 #include <SDL2/SDL.h>
-#include <epoxy/gl.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <epoxy/gl.h>
 #include <fstream>
 #include <string>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <vector>
 
 #include "platon/camera/camera.h"
@@ -173,7 +172,8 @@ Frames measureLevel(const std::string& scenePath, const std::string& replayPath,
       GLint samples = 0;
       glGetIntegerv(GL_SAMPLES, &samples);
       static bool told = false;
-      if (!told) std::printf("GL: %s | %s | %d samples a pixel\n", glGetString(GL_RENDERER), glGetString(GL_VERSION), samples);
+      if (!told)
+        std::printf("GL: %s | %s | %d samples a pixel\n", glGetString(GL_RENDERER), glGetString(GL_VERSION), samples);
       told = true;
     }
     std::vector<render::LitVertex> triangles = mesh.fixed();
@@ -218,8 +218,10 @@ std::pair<double, double> startUp(const std::string& platon) {
 int main(int argc, char** argv) {
   int frames = 300, runs = 5;
   for (int i = 1; i + 1 < argc; ++i) {
-    if (std::strcmp(argv[i], "--frames") == 0) frames = std::atoi(argv[++i]);
-    else if (std::strcmp(argv[i], "--runs") == 0) runs = std::atoi(argv[++i]);
+    if (std::strcmp(argv[i], "--frames") == 0)
+      frames = std::atoi(argv[++i]);
+    else if (std::strcmp(argv[i], "--runs") == 0)
+      runs = std::atoi(argv[++i]);
   }
   setenv("SDL_VIDEODRIVER", "offscreen", 0);
   if (chdir(PLATON_SOURCE_ROOT) != 0) return 1;
@@ -245,8 +247,8 @@ int main(int argc, char** argv) {
 
   std::printf("render_frames: %d frames a level at 1280x720, glFinish after each\n", frames);
   Floor* floor = nullptr;
-  std::printf("%-34s %9s %9s %9s %9s %9s %7s %6s\n", "level", "triangles", "ours mean", "ours p99", "floor mean", "floor p99", "ratio",
-              "drawn");
+  std::printf("%-34s %9s %9s %9s %9s %9s %7s %6s\n", "level", "triangles", "ours mean", "ours p99", "floor mean",
+              "floor p99", "ratio", "drawn");
   std::vector<double> ratios, worstMeans;
   for (const auto& [scene, replay] : levels) {
     floor = nullptr;  // each level's scene opens its own window and GL context: a floor in each (the
@@ -255,8 +257,8 @@ int main(int argc, char** argv) {
     const double ratio = mean(f.ours) / std::max(mean(f.floor), 1e-9);
     ratios.push_back(ratio);
     worstMeans.push_back(mean(f.ours));
-    std::printf("%-34s %9zu %7.2fms %7.2fms %8.2fms %8.2fms %6.2fx %5.0f%%\n", scene.c_str(), f.triangles, mean(f.ours), p99(f.ours),
-                mean(f.floor), p99(f.floor), ratio, f.floorCoverage * 100);
+    std::printf("%-34s %9zu %7.2fms %7.2fms %8.2fms %8.2fms %6.2fx %5.0f%%\n", scene.c_str(), f.triangles, mean(f.ours),
+                p99(f.ours), mean(f.floor), p99(f.floor), ratio, f.floorCoverage * 100);
     std::fflush(stdout);
   }
   std::printf("ratio to the floor: median %s; worst mean frame %.2f ms (goal: <= 1.5x, <= 7 ms)\n",
@@ -270,6 +272,7 @@ int main(int argc, char** argv) {
   }
   std::printf("start-up to the first frame (platon game, fork to exit), %d runs: %s ms (goal: <= 300)\n", runs,
               bench::Spread::of(startMs).show("%.0f").c_str());
-  std::printf("the game's peak memory (max RSS of that process): %s MiB\n", bench::Spread::of(rssMiB).show("%.1f").c_str());
+  std::printf("the game's peak memory (max RSS of that process): %s MiB\n",
+              bench::Spread::of(rssMiB).show("%.1f").c_str());
   return 0;
 }

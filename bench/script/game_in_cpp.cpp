@@ -71,9 +71,12 @@ class Game final : public core::System, public physics::Rules {
   }
   void beginContact(const physics::Contact& c) override {
     if (c.entity != player_) return;
-    if (c.line.tag == kGoal) reachedGoal_ = true;
-    else if (c.line.tag == kCheckpoint) touchedCheckpoint_ = true;
-    else if (c.line.tag >= kSwitch && c.line.tag < kSwitch + 1000) pendingToggles_.push_back(c.line.tag - kSwitch);
+    if (c.line.tag == kGoal)
+      reachedGoal_ = true;
+    else if (c.line.tag == kCheckpoint)
+      touchedCheckpoint_ = true;
+    else if (c.line.tag >= kSwitch && c.line.tag < kSwitch + 1000)
+      pendingToggles_.push_back(c.line.tag - kSwitch);
   }
   void contact(const physics::Contact& c, physics::ContactResponse&) override {
     if (c.line.tag == kHazard && c.entity == player_) killed_ = true;
@@ -117,25 +120,32 @@ class Game final : public core::System, public physics::Rules {
       const double nx = length > 0 ? cx / length : 0, ny = length > 0 ? cy / length : 0;
       if (-(nx * dx + ny * dy) > kGroundCos) grounded_ = true;
     }
-    if (grounded_) coyote_ = kCoyote;
-    else if (coyote_ > 0) --coyote_;
-    if (input.wasPressed(core::Button::Jump)) buffer_ = kBuffer;
-    else if (buffer_ > 0) --buffer_;
+    if (grounded_)
+      coyote_ = kCoyote;
+    else if (coyote_ > 0)
+      --coyote_;
+    if (input.wasPressed(core::Button::Jump))
+      buffer_ = kBuffer;
+    else if (buffer_ > 0)
+      --buffer_;
 
     const double vx = static_cast<double>(e.velocity().x) / kQ16, vy = static_cast<double>(e.velocity().y) / kQ16;
     double along = vx * rx + vy * ry;
     double fall = vx * dx + vy * dy;
     const int dir = (input.isHeld(core::Button::Right) ? 1 : 0) - (input.isHeld(core::Button::Left) ? 1 : 0);
     const double accel = grounded_ ? kGroundAccel : kAirAccel;
-    if (dir != 0) along = approach(along, dir * kWalk, accel);
-    else if (grounded_) along = approach(along, 0, kBrake);
+    if (dir != 0)
+      along = approach(along, dir * kWalk, accel);
+    else if (grounded_)
+      along = approach(along, 0, kBrake);
     if (buffer_ > 0 && coyote_ > 0) {
       fall = -kJump;
       buffer_ = coyote_ = 0;
     } else if (!input.isHeld(core::Button::Jump) && fall < -kCut) {
       fall = -kCut;
     }
-    world_->setVelocity(player_, {std::llround((rx * along + dx * fall) * kQ16), std::llround((ry * along + dy * fall) * kQ16)});
+    world_->setVelocity(player_,
+                        {std::llround((rx * along + dx * fall) * kQ16), std::llround((ry * along + dy * fall) * kQ16)});
   }
 
   physics::World* world_ = nullptr;

@@ -29,7 +29,8 @@ template <class F>
 double nanosecondsPerCall(uint64_t calls, F&& f) {
   const auto start = std::chrono::steady_clock::now();
   for (uint64_t i = 0; i < calls; ++i) f(i);
-  return std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count() / static_cast<double>(calls);
+  return std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count() /
+         static_cast<double>(calls);
 }
 
 }  // namespace
@@ -40,10 +41,11 @@ int main(int argc, char** argv) {
   script::LuaHost host;
   lua_State* L = host.state();
   // scripts/rules/game.lua's hazard rule, alone.
-  const std::string hazardRule = "local player, killed = 7, false\n"
-                                 "return { contact = function(entity, tag, kind, part, line, nx, ny, other)\n"
-                                 "  if tag == 1 and entity == player then killed = true end\n"
-                                 "end }";
+  const std::string hazardRule =
+      "local player, killed = 7, false\n"
+      "return { contact = function(entity, tag, kind, part, line, nx, ny, other)\n"
+      "  if tag == 1 and entity == player then killed = true end\n"
+      "end }";
   host.loadString(hazardRule + ", function() end\n", "=bench", script::Trust::Trusted);
   host.call(0, 2);
   script::LuaRules luaRules(host, -2, script::LuaRules::Call::Classic);
@@ -105,16 +107,24 @@ int main(int argc, char** argv) {
   }
   std::printf("one contact callback, %llu calls a run, %d interleaved runs; median (min-max) ns per call\n",
               static_cast<unsigned long long>(calls), runs);
-  std::printf("  Lua rule, classic (8 arguments pushed, traceback handler, budget)   : %s\n", bench::Spread::of(lua).show("%.1f").c_str());
-  std::printf("  Lua rule, FFI (struct written, JIT-compiled trampoline; the engine's): %s\n", bench::Spread::of(ffi).show("%.1f").c_str());
-  std::printf("  sandboxed rule (a mod's: JIT off, so the classic path)            : %s\n", bench::Spread::of(sandboxClassic).show("%.1f").c_str());
-  std::printf("  C++ rule (virtual call)                                             : %s\n", bench::Spread::of(cpp).show("%.1f").c_str());
-  std::printf("  bare lua_pcall of an empty function                                 : %s\n", bench::Spread::of(bare).show("%.1f").c_str());
+  std::printf("  Lua rule, classic (8 arguments pushed, traceback handler, budget)   : %s\n",
+              bench::Spread::of(lua).show("%.1f").c_str());
+  std::printf("  Lua rule, FFI (struct written, JIT-compiled trampoline; the engine's): %s\n",
+              bench::Spread::of(ffi).show("%.1f").c_str());
+  std::printf("  sandboxed rule (a mod's: JIT off, so the classic path)            : %s\n",
+              bench::Spread::of(sandboxClassic).show("%.1f").c_str());
+  std::printf("  C++ rule (virtual call)                                             : %s\n",
+              bench::Spread::of(cpp).show("%.1f").c_str());
+  std::printf("  bare lua_pcall of an empty function                                 : %s\n",
+              bench::Spread::of(bare).show("%.1f").c_str());
   std::printf("  classic Lua rule / bare lua_pcall: %s\n", bench::Spread::of(ratio).show("%.2f").c_str());
-  std::printf("  FFI Lua rule / bare lua_pcall    : %s (goal <= 2: %s)\n", bench::Spread::of(ffiRatio).show("%.2f").c_str(),
+  std::printf("  FFI Lua rule / bare lua_pcall    : %s (goal <= 2: %s)\n",
+              bench::Spread::of(ffiRatio).show("%.2f").c_str(),
               bench::runsMet(ffiRatio.size(), [&](size_t i) { return ffiRatio[i] <= 2.0; }).c_str());
-  std::printf("  lua_pcall with a traceback handler and one result                  : %s\n", bench::Spread::of(handled).show("%.1f").c_str());
-  std::printf("  FFI Lua rule / that lua_pcall    : %s (<= 2: %s)\n", bench::Spread::of(ffiHandledRatio).show("%.2f").c_str(),
+  std::printf("  lua_pcall with a traceback handler and one result                  : %s\n",
+              bench::Spread::of(handled).show("%.1f").c_str());
+  std::printf("  FFI Lua rule / that lua_pcall    : %s (<= 2: %s)\n",
+              bench::Spread::of(ffiHandledRatio).show("%.2f").c_str(),
               bench::runsMet(ffiHandledRatio.size(), [&](size_t i) { return ffiHandledRatio[i] <= 2.0; }).c_str());
   return 0;
 }

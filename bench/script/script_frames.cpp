@@ -10,14 +10,13 @@
 // timed beside them and shows what such a tick adds.
 //   build/bench/script_frames [frames] [runs]
 #include <chrono>
-#include <filesystem>
-#include <fstream>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <string>
-#include <vector>
-
 #include <unistd.h>
+#include <vector>
 
 #include "game_in_cpp.h"
 #include "platon/core/scene.h"
@@ -31,7 +30,8 @@ namespace {
 // Walk right and left in turns of 300 frames, a jump held 20 frames in every 70: the player runs
 // along floors, falls off them, jumps onto platforms and crosses the cube's edges.
 uint8_t heldOn(uint64_t frame) {
-  uint8_t held = (frame / 300) % 2 == 0 ? core::InputFrame::bit(core::Button::Right) : core::InputFrame::bit(core::Button::Left);
+  uint8_t held =
+      (frame / 300) % 2 == 0 ? core::InputFrame::bit(core::Button::Right) : core::InputFrame::bit(core::Button::Left);
   if (frame % 70 < 20) held |= core::InputFrame::bit(core::Button::Jump);
   return held;
 }
@@ -69,12 +69,14 @@ int main(int argc, char** argv) {
     for (int r = 0; r < runs; ++r) {
       core::SystemRegistry registry;
       registry.add("scripting", script::makeScriptSystem);
-      std::unique_ptr<core::Scene> scene = only == "lua" ? core::loadScene(std::string(PLATON_SOURCE_ROOT) + "/levels/cube_intro/scene.lua", registry)
-                                                         : bench::cubeIntroInCpp();
+      std::unique_ptr<core::Scene> scene =
+          only == "lua" ? core::loadScene(std::string(PLATON_SOURCE_ROOT) + "/levels/cube_intro/scene.lua", registry)
+                        : bench::cubeIntroInCpp();
       if (const char* code = std::getenv("PLATON_BENCH_LUA"); code && only == "lua")  // an experiment's setup
         dynamic_cast<script::ScriptSystem&>(*scene->findSystem("scripting")).evaluate(code, "=experiment");
       const Run run = play(*scene, frames);
-      std::printf("%s: warm-up %.2f ms, then %.0f ns/frame\n", only.c_str(), run.warmUpMilliseconds, run.nanosecondsPerFrame);
+      std::printf("%s: warm-up %.2f ms, then %.0f ns/frame\n", only.c_str(), run.warmUpMilliseconds,
+                  run.nanosecondsPerFrame);
     }
     return 0;
   }
@@ -86,12 +88,14 @@ int main(int argc, char** argv) {
   const fs::path ticking = fs::temp_directory_path() / ("platon_ticking_level_" + std::to_string(::getpid()));
   fs::create_directories(ticking);
   for (const char* file : {"scene.lua", "cube_intro.level"})
-    fs::copy_file(fs::path(PLATON_SOURCE_ROOT) / "levels/cube_intro" / file, ticking / file, fs::copy_options::overwrite_existing);
-  std::ofstream(ticking / "level.lua") << "local level = {}\n"
-                                          "function level.tick(game, frame)\n"
-                                          "  if frame == 1 then game.message(\"walk right: every edge turns the cube\") end\n"
-                                          "end\n"
-                                          "return level\n";
+    fs::copy_file(fs::path(PLATON_SOURCE_ROOT) / "levels/cube_intro" / file, ticking / file,
+                  fs::copy_options::overwrite_existing);
+  std::ofstream(ticking / "level.lua")
+      << "local level = {}\n"
+         "function level.tick(game, frame)\n"
+         "  if frame == 1 then game.message(\"walk right: every edge turns the cube\") end\n"
+         "end\n"
+         "return level\n";
 
   std::vector<double> lua, cpp, ratio, luaWarm, cppWarm, tick, tickRatio;
   uint64_t luaHash = 0, cppHash = 0, tickHash = 0;
@@ -130,11 +134,13 @@ int main(int argc, char** argv) {
   std::printf("  game in C++ : %s ns/frame\n", cppNs.show("%.0f").c_str());
   std::printf("  Lua / C++   : %s   (goal <= 1.5: %s)\n", ratios.show("%.2f").c_str(),
               bench::runsMet(ratio.size(), [&](size_t i) { return ratio[i] <= 1.5; }).c_str());
-  std::printf("  frames/s >= 100,000: %s\n", bench::runsMet(lua.size(), [&](size_t i) { return lua[i] <= 10000; }).c_str());
+  std::printf("  frames/s >= 100,000: %s\n",
+              bench::runsMet(lua.size(), [&](size_t i) { return lua[i] <= 10000; }).c_str());
   std::printf("  same state hash: %s (Lua %016llx, C++ %016llx)\n", luaHash == cppHash ? "yes" : "NO: the games differ",
               static_cast<unsigned long long>(luaHash), static_cast<unsigned long long>(cppHash));
-  std::printf("  with a level script that ticks every frame: %s ns/frame, / C++ %s%s\n", bench::Spread::of(tick).show("%.0f").c_str(),
-              bench::Spread::of(tickRatio).show("%.2f").c_str(), tickHash == cppHash ? "" : "  (NO: its game differs)");
+  std::printf("  with a level script that ticks every frame: %s ns/frame, / C++ %s%s\n",
+              bench::Spread::of(tick).show("%.0f").c_str(), bench::Spread::of(tickRatio).show("%.2f").c_str(),
+              tickHash == cppHash ? "" : "  (NO: its game differs)");
   fs::remove_all(ticking);
   return luaHash == cppHash && tickHash == cppHash ? 0 : 1;
 }

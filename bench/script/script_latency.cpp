@@ -5,17 +5,16 @@
 // frame. And 1,000 scenarios through `platon run -j 2` against -j 1.
 // Goals (issue 9): reload <= 100 ms; start to first frame <= 50 ms.
 //   build/bench/script_latency [reloads] [starts] [scenarios]
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
+#include <spawn.h>
 #include <string>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <vector>
 
 #include "platon/core/live_scene.h"
@@ -76,8 +75,7 @@ int main(int argc, char** argv) {
     write(work / "level/level.lua", level + "\n-- edit " + std::to_string(i) + "\n");
     const auto saved = std::chrono::steady_clock::now();
     std::optional<core::ReloadReport> report;
-    while (!(report = live.poll(1))) {
-    }
+    while (!(report = live.poll(1))) {}
     latency.push_back(secondsSince(saved) * 1e3);
     loading.push_back(report->milliseconds);
     if (!report->ok) return std::fprintf(stderr, "reload failed: %s\n", report->error.c_str()), 1;
@@ -86,11 +84,13 @@ int main(int argc, char** argv) {
 
   // Start-up.
   const std::string platon = PLATON_EXECUTABLE;
-  write(work / "one_frame.lua", "return { scene = '" + (root / "levels/cube_intro/scene.lua").string() + "', frames = 1 }");
+  write(work / "one_frame.lua",
+        "return { scene = '" + (root / "levels/cube_intro/scene.lua").string() + "', frames = 1 }");
   std::vector<double> start;
   for (int i = 0; i < starts; ++i) {
     const auto t = std::chrono::steady_clock::now();
-    if (runQuiet({platon, "run", (work / "one_frame.lua").string()}) != 0) return std::fprintf(stderr, "platon run failed\n"), 1;
+    if (runQuiet({platon, "run", (work / "one_frame.lua").string()}) != 0)
+      return std::fprintf(stderr, "platon run failed\n"), 1;
     start.push_back(secondsSince(t) * 1e3);
   }
 

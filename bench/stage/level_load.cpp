@@ -11,12 +11,7 @@
 // goal on face 2, so that the search runs. Goal: well under a second each.
 //
 // Usage: level_load [--runs=N] [--segments=N] [--check-only]
-#include <malloc.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <new>
-
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -24,7 +19,10 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <malloc.h>
+#include <new>
 #include <string>
+#include <unistd.h>
 
 #include "mesh_system.h"
 #include "platon/core/scene.h"
@@ -96,7 +94,8 @@ std::string bigLevel(int count) {
       }
       const double a = rng.uniform(0, 6.283), len = rng.uniform(20, 120);
       text += std::to_string(std::lround(x)) + " " + std::to_string(std::lround(y)) + " " +
-              std::to_string(std::lround(x + len * std::cos(a))) + " " + std::to_string(std::lround(y + len * std::sin(a))) + "\n";
+              std::to_string(std::lround(x + len * std::cos(a))) + " " +
+              std::to_string(std::lround(y + len * std::sin(a))) + "\n";
     }
   }
   return text;
@@ -151,8 +150,8 @@ void physicsOnly(const Lines& in) {
 // 200) on face 2, which the border strips join).
 std::string checkLevelText(const std::string& kind, int count, int32_t size) {
   testing::Rng rng{7};
-  std::string text = "HEXAHEDRON\n0 150 150\n2 " + std::to_string(size - 200) + " " + std::to_string(size - 200) + "\n" +
-                     std::to_string(size) + "\n";
+  std::string text = "HEXAHEDRON\n0 150 150\n2 " + std::to_string(size - 200) + " " + std::to_string(size - 200) +
+                     "\n" + std::to_string(size) + "\n";
   auto segment = [&](long x0, long y0, long x1, long y1) {
     text += std::to_string(x0) + " " + std::to_string(y0) + " " + std::to_string(x1) + " " + std::to_string(y1) + "\n";
   };
@@ -162,14 +161,18 @@ std::string checkLevelText(const std::string& kind, int count, int32_t size) {
     text += "%\n";
     if (kind == "posts") {  // one unit each, on a square lattice
       const long k = static_cast<long>(std::sqrt(perFace)) + 1;
-      for (long c = 0; c < perFace; ++c) segment(lo + (c / k) * span / k, lo + (c % k) * span / k, lo + (c / k) * span / k + 1, lo + (c % k) * span / k);
+      for (long c = 0; c < perFace; ++c)
+        segment(lo + (c / k) * span / k, lo + (c % k) * span / k, lo + (c / k) * span / k + 1, lo + (c % k) * span / k);
     } else if (kind == "random") {  // 10 to 400 units long, any way
       for (int c = 0; c < perFace; ++c) {
         const double a = rng.uniform(0, 6.283), length = rng.uniform(10, 400);
-        const long x0 = lo + long(rng.uniform(0, double(span - 400))) + 200, y0 = lo + long(rng.uniform(0, double(span - 400))) + 200;
+        const long x0 = lo + long(rng.uniform(0, double(span - 400))) + 200,
+                   y0 = lo + long(rng.uniform(0, double(span - 400))) + 200;
         const long x1 = x0 + std::lround(length * std::cos(a)), y1 = y0 + std::lround(length * std::sin(a));
-        if (x1 == x0 && y1 == y0) segment(x0, y0, x0 + 1, y0);
-        else segment(x0, y0, x1, y1);
+        if (x1 == x0 && y1 == y0)
+          segment(x0, y0, x0 + 1, y0);
+        else
+          segment(x0, y0, x1, y1);
       }
     } else {  // "pieces": floors across the face, 400 units apart at most, drawn in one-unit pieces, each twice
       const long rows = std::max(1L, std::min(span / 400, long(perFace / 2) / std::max(1L, span) + 1));
@@ -187,7 +190,9 @@ std::string checkLevelText(const std::string& kind, int count, int32_t size) {
 
 // What `platon check` takes for the levels of (3), in ms, and what it says.
 void checkSpeed(int runs) {
-  std::printf("platon check of cube levels (parse, stage, check with the reachability search), %d runs, median (min-max):\n", runs);
+  std::printf(
+      "platon check of cube levels (parse, stage, check with the reachability search), %d runs, median (min-max):\n",
+      runs);
   for (const int count : {100000, 1000000})
     for (const int32_t size : {4096, 1 << 24})
       for (const std::string kind : {"posts", "random", "pieces"}) {
@@ -202,8 +207,8 @@ void checkSpeed(int runs) {
             for (const auto& w : report.warnings)
               if (w.message.find("could not decide") != std::string::npos) said = "undecided";
           }));
-        std::printf("  %7d %-6s at size %8d: %s ms  (%s)\n", count, kind.c_str(), size, bench::Spread::of(times).show("%.0f").c_str(),
-                    said.c_str());
+        std::printf("  %7d %-6s at size %8d: %s ms  (%s)\n", count, kind.c_str(), size,
+                    bench::Spread::of(times).show("%.0f").c_str(), said.c_str());
       }
 }
 
@@ -246,10 +251,12 @@ int main(int argc, char** argv) {
               static_cast<size_t>(std::filesystem::file_size(path)), runs);
   std::printf("  file -> built world (read, parse, check, build, initialize): %s ms, peak heap %ld kB\n",
               bench::Spread::of(loader).show("%.1f").c_str(), loaderKb);
-  std::printf("    read %s, parse %s, stage %s, check %s, build + initialize %s ms\n", bench::Spread::of(readMs).show("%.2f").c_str(),
-              bench::Spread::of(parseMs).show("%.2f").c_str(), bench::Spread::of(stageMs).show("%.2f").c_str(),
-              bench::Spread::of(checkMs).show("%.2f").c_str(), bench::Spread::of(buildMs).show("%.2f").c_str());
-  std::printf("    read + parse on their own:                               %s ms\n", bench::Spread::of(parse).show("%.1f").c_str());
+  std::printf("    read %s, parse %s, stage %s, check %s, build + initialize %s ms\n",
+              bench::Spread::of(readMs).show("%.2f").c_str(), bench::Spread::of(parseMs).show("%.2f").c_str(),
+              bench::Spread::of(stageMs).show("%.2f").c_str(), bench::Spread::of(checkMs).show("%.2f").c_str(),
+              bench::Spread::of(buildMs).show("%.2f").c_str());
+  std::printf("    read + parse on their own:                               %s ms\n",
+              bench::Spread::of(parse).show("%.1f").c_str());
   std::printf("  physics alone (parts, warps, lines in bulk, initialize):   %s ms, peak heap %ld kB\n",
               bench::Spread::of(physics).show("%.1f").c_str(), physicsKb);
   std::printf("  ratio loader / physics: %s (time), %.2f (memory)\n", bench::Spread::of(ratio).show("%.2f").c_str(),
@@ -275,7 +282,8 @@ int main(int argc, char** argv) {
       }));
     const bench::Spread t = bench::Spread::of(times);
     allMet = allMet && t.high <= 10;
-    std::printf("  %-45s %s ms\n", std::filesystem::relative(entry.path(), PLATON_SOURCE_ROOT).c_str(), t.show("%.2f").c_str());
+    std::printf("  %-45s %s ms\n", std::filesystem::relative(entry.path(), PLATON_SOURCE_ROOT).c_str(),
+                t.show("%.2f").c_str());
   }
   std::printf("goal <= 10 ms per shipped level: %s\n\n", allMet ? "met in every run" : "MISSED in some run");
   checkSpeed(std::min(runs, 5));

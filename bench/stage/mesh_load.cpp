@@ -5,14 +5,13 @@
 // Exits 1 when the goal is missed.
 //
 // Usage: mesh_load [--runs=N]
-#include <unistd.h>
-
 #include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <functional>
 #include <string>
+#include <unistd.h>
 
 #include "mesh_system.h"
 #include "platon/core/scene.h"

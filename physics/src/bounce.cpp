@@ -56,8 +56,8 @@ Bounce bounceOff(Vec2w v, Vec2w g, Vec2w r, Vec2w normal, Fraction restitution) 
     // Held to twice the largest velocity: any more is clamped away below anyway, and it keeps
     // dr in range for restitutions up to the largest fraction.
     const i128 dvLimit = i128{kMaxMove} << 17;
-    const i128 dv =
-        std::clamp<i128>(roundDiv(along * (i128{restitution.num} + restitution.den), restitution.den), -dvLimit, dvLimit);
+    const i128 dv = std::clamp<i128>(roundDiv(along * (i128{restitution.num} + restitution.den), restitution.den),
+                                     -dvLimit, dvLimit);
     const i128 dr = roundDiv(2 * dv * tauQ30, i128{1} << kQ30Bits);  // Q16 per frame times frames, in Q17
     (k == 0 ? out.velocityQ16.x : out.velocityQ16.y) += static_cast<int64_t>(dv);
     (k == 0 ? out.remainingQ17.x : out.remainingQ17.y) += static_cast<int64_t>(dr);

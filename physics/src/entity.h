@@ -21,8 +21,8 @@ struct Instance {
   // Where a non-anchor instance should be, in Q30 (2^30 per unit): the anchor's position mapped
   // through the warps. Each sub-move aims at it, so rounding never accumulates into drift.
   Vec2w idealQ30;
-  std::vector<Vec2> shape;              // vertices relative to position: the entity shape turned by angle + frame
-  Vec2 low, high;                       // the shape's bounding box, relative to position (setShape keeps it)
+  std::vector<Vec2> shape;  // vertices relative to position: the entity shape turned by angle + frame
+  Vec2 low, high;           // the shape's bounding box, relative to position (setShape keeps it)
   // A point inside the shape, relative to position: the mean of its vertices, rounded. Which face
   // an instance is on is decided by this point, not by the origin, which a shape need not contain.
   Vec2 centre;

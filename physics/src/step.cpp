@@ -386,7 +386,8 @@ class SubMove {
     // crease whose sides are both within a unit: every rounded step toward the hit meets the other
     // side), going again would find the same hit forever and the frame would end with nothing
     // moved and no contact: the hit is met where the body stands, and the slide along it moves on.
-    if (pulledBack() && std::any_of(steps_.begin(), steps_.end(), [](Vec2w s) { return s != Vec2w{}; })) return Next::Again;
+    if (pulledBack() && std::any_of(steps_.begin(), steps_.end(), [](Vec2w s) { return s != Vec2w{}; }))
+      return Next::Again;
     if (hit_.kind == HitKind::None) return Next::Stop;
     if (hit_.kind == HitKind::Warp) return Next::Again;
     return Next::Respond;

@@ -139,7 +139,8 @@ bool WorldImpl::snapKeepsTouches(const Entity& e, Instance& inst, Vec2w gap) {
   for (const LineIndex line : inst.region.lines()) {
     const Segment s = p.segments()[line];
     if (overlapsInterior(before, s) != overlapsInterior(after, s)) return false;
-    if (p.lines()[line].kind == LineKind::Warp && !touchesOrOverlaps(before, s) && touchesOrOverlaps(after, s)) return false;
+    if (p.lines()[line].kind == LineKind::Warp && !touchesOrOverlaps(before, s) && touchesOrOverlaps(after, s))
+      return false;
   }
   return true;
 }
@@ -368,8 +369,10 @@ void WorldImpl::keepOnFace(Move& move) {
   const Vec2w outDir = out.b - out.a, inDir = in.b - in.a;
   const Vec2w outNormal{outDir.y, -outDir.x}, inNormal{inDir.y, -inDir.x};
   const Vec2w v = e.velocityQ16;
-  const int64_t outLength = static_cast<int64_t>(isqrt(static_cast<u128>(i128{outDir.x} * outDir.x + i128{outDir.y} * outDir.y)));
-  const int64_t inLength = static_cast<int64_t>(isqrt(static_cast<u128>(i128{inDir.x} * inDir.x + i128{inDir.y} * inDir.y)));
+  const int64_t outLength =
+      static_cast<int64_t>(isqrt(static_cast<u128>(i128{outDir.x} * outDir.x + i128{outDir.y} * outDir.y)));
+  const int64_t inLength =
+      static_cast<int64_t>(isqrt(static_cast<u128>(i128{inDir.x} * inDir.x + i128{inDir.y} * inDir.y)));
   const i128 leaveOut = (i128{v.x} * outNormal.x + i128{v.y} * outNormal.y) * inLength;
   const i128 leaveIn = (i128{v.x} * inNormal.x + i128{v.y} * inNormal.y) * outLength;
   const bool byOut = leaveOut >= leaveIn;
@@ -383,14 +386,17 @@ void WorldImpl::keepOnFace(Move& move) {
   const i128 towardVertex = -(i128{v.x} * away.x + i128{v.y} * away.y);
   const i128 across = -(i128{v.x} * inward.x + i128{v.y} * inward.y);
   int64_t meet = 4;
-  if (towardVertex > 0 && across > 0) meet += static_cast<int64_t>(std::min<i128>(towardVertex * 2 / across + 1, length / 4));
+  if (towardVertex > 0 && across > 0)
+    meet += static_cast<int64_t>(std::min<i128>(towardVertex * 2 / across + 1, length / 4));
   // And far enough that the next frame's motion (at most this speed and its gravity) ends within
   // this face or the neighbour across the edge, clear of their other edges at the vertex: a body
   // put back closer goes through the same vertex again and is put back at the same place every
   // frame, frozen while its velocity grows.
   const Vec2w g = face.gravity();
   const int64_t reach = static_cast<int64_t>((isqrt(static_cast<u128>(i128{v.x} * v.x + i128{v.y} * v.y)) +
-                                              isqrt(static_cast<u128>(i128{g.x} * g.x + i128{g.y} * g.y))) / kQ16) + 8;
+                                              isqrt(static_cast<u128>(i128{g.x} * g.x + i128{g.y} * g.y))) /
+                                             kQ16) +
+                        8;
   int64_t clear = alongForClearance(face, corner, reach);
   const Line& crossed = face.lines()[loop[byOut ? corner : (corner + loop.size() - 1) % loop.size()]];
   if (crossed.kind == LineKind::Warp) {
@@ -412,8 +418,9 @@ void WorldImpl::keepOnFace(Move& move) {
     if (k > 0 && candidates[k] == candidates[k - 1]) continue;
     along = std::min<int64_t>(candidates[k], length / 2);
     // The centre goes there (the origin may lie outside the shape).
-    anchor.position = {vertex.x - anchor.centre.x + static_cast<int32_t>(roundDiv(i128{away.x} * along + i128{inward.x} * 2, length)),
-                       vertex.y - anchor.centre.y + static_cast<int32_t>(roundDiv(i128{away.y} * along + i128{inward.y} * 2, length))};
+    anchor.position = {
+        vertex.x - anchor.centre.x + static_cast<int32_t>(roundDiv(i128{away.x} * along + i128{inward.x} * 2, length)),
+        vertex.y - anchor.centre.y + static_cast<int32_t>(roundDiv(i128{away.y} * along + i128{inward.y} * 2, length))};
     worldVertices(anchor, verts);
     coverMotion(anchor, {});  // the lines around the new place, for the walls there and the warps to cross
     if (insideFace(face, centreOf(anchor)) && isFree(e, anchor, verts)) break;

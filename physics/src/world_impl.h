@@ -216,7 +216,8 @@ struct WorldImpl {
   // pierce_events.cpp
   void updatePierceState(Entity& e, const Path& path);
   void fireOverContacts();
-  Contact makeContact(const Entity& e, MapPartId part, LineIndex line, Fraction t, Vec2w normal, ContactPoints points) const;
+  Contact makeContact(const Entity& e, MapPartId part, LineIndex line, Fraction t, Vec2w normal,
+                      ContactPoints points) const;
   Contact makeContact(const Entity& e, const Instance& inst, LineIndex line, Fraction t, Vec2w normal,
                       ContactPoints points) const {
     return makeContact(e, inst.part, line, t, normal, points);

@@ -2,14 +2,15 @@
 // does not; progress survives a damaged file (the lines it cannot read are dropped, the rest kept),
 // keeps the best time and fewest deaths, lives in the XDG data folder, and a failed save leaves
 // the old file whole and the game going.
-#include <gtest/gtest.h>
+#include "campaign.h"
 
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
-#include "campaign.h"
+#include <gtest/gtest.h>
+
 #include "platon/testing/temp_folder.h"
 
 using namespace platon::app;
@@ -50,7 +51,8 @@ TEST(Campaign, AMissingLevelIsNamedWithItsLine) {
     readCampaign(folder.write("spaces.txt", "a\nmy level\n"));
     FAIL() << "a folder with a space accepted (the progress file could not hold it)";
   } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("spaces.txt:2:1: 'my level': one folder a line, no spaces"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("spaces.txt:2:1: 'my level': one folder a line, no spaces"), std::string::npos)
+        << e.what();
   }
   EXPECT_THROW(readCampaign(folder.path("no_such_file.txt")), std::runtime_error);
 }
@@ -69,8 +71,9 @@ TEST(Progress, KeepsTheBestAndSurvivesADamagedFile) {
   EXPECT_EQ(again.record("cube_intro")->bestFrames, 1200u);
   EXPECT_EQ(again.record("cube_intro")->fewestDeaths, 0);
   // Damage: garbage, a negative count, a half line. The good line survives; the rest is dropped.
-  std::ofstream(path, std::ios::app) << "\x01\x02 garbage\nprism -5 0\nicosa_drop 18446744073709551615 0\nsoccer_ball 77\n"
-                                          "cube_lift 5 0 extra\nocta_ring 900 1\n";
+  std::ofstream(path, std::ios::app)
+      << "\x01\x02 garbage\nprism -5 0\nicosa_drop 18446744073709551615 0\nsoccer_ball 77\n"
+         "cube_lift 5 0 extra\nocta_ring 900 1\n";
   Progress damaged(path);
   EXPECT_TRUE(damaged.done("cube_intro"));
   EXPECT_TRUE(damaged.done("octa_ring"));

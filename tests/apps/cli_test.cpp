@@ -4,22 +4,22 @@
 // checked before playing, a stuck frame ended by a second signal or the grace period) and
 // `platon scenario` (any scene path). Each runs the built program in a temporary folder.
 // PLATON_EXE in the environment runs another build instead (to see these fail on an old one).
-#include <gtest/gtest.h>
-#include <poll.h>
-#include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <poll.h>
+#include <signal.h>
 #include <sstream>
 #include <string>
+#include <sys/wait.h>
 #include <thread>
+#include <unistd.h>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "platon/testing/temp_folder.h"
 
@@ -85,13 +85,16 @@ class Process {
       if (*fd < 0 || !(fds[k].revents & (POLLIN | POLLHUP | POLLERR))) continue;  // read only what will not block
       char buffer[65536];
       const ssize_t n = read(*fd, buffer, sizeof buffer);
-      if (n > 0) text->append(buffer, static_cast<size_t>(n));
-      else if (n == 0) close(*fd), *fd = -1;
+      if (n > 0)
+        text->append(buffer, static_cast<size_t>(n));
+      else if (n == 0)
+        close(*fd), *fd = -1;
     }
     return out_ >= 0 || err_ >= 0;
   }
   bool awaitOutput(const std::string& text, double seconds) {
-    const Clock::time_point end = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
+    const Clock::time_point end =
+        Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
     while (ran_.out.find(text) == std::string::npos && Clock::now() < end)
       if (!pump(20)) break;
     return ran_.out.find(text) != std::string::npos;
@@ -100,15 +103,14 @@ class Process {
   // Waits for the end, killing the program after `seconds`.
   Ran finish(double seconds) {
     const Clock::time_point start = Clock::now();
-    const Clock::time_point end = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
-    while (Clock::now() < end && pump(50)) {
-    }
+    const Clock::time_point end =
+        start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
+    while (Clock::now() < end && pump(50)) {}
     if (Clock::now() >= end) kill(pid_, SIGKILL);
     int status = 0;
     waitpid(pid_, &status, 0);
     ended_ = true;
-    while (pump(0)) {
-    }
+    while (pump(0)) {}
     ran_.status = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
     ran_.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     return ran_;
@@ -135,7 +137,8 @@ std::string sceneWith(const Folder& folder, const std::string& name, const std::
                "function level.build(game)\n"
                "  for i = 1, game.world.faceCount() do game.world.line(game.world.face(i), 0, 512, 4096, 512) end\n"
                "end\n"
-               "function level.tick(game, frame)\n" + tick + "\nend\nreturn level\n");
+               "function level.tick(game, frame)\n" +
+                   tick + "\nend\nreturn level\n");
   return name + "/scene.lua";
 }
 
@@ -173,14 +176,17 @@ TEST(Run, ACrashingWorkerFailsOnlyItsScenarioAtAnyJ) {
   folder.write("segv.lua", "local ffi = require('ffi')\nffi.cast('int*', 0)[0] = 1\nreturn {}\n");
   scenario(folder, "a.lua", scene), scenario(folder, "b.lua", scene), scenario(folder, "c.lua", scene);
   for (const char* jobs : {"1", "2", "3"}) {
-    const Ran r = platon({"run", "-j", jobs, "--timeout", "20", "--junit", "report.xml", "a.lua", "segv.lua", "b.lua", "c.lua"},
-                         folder.path());
+    const Ran r =
+        platon({"run", "-j", jobs, "--timeout", "20", "--junit", "report.xml", "a.lua", "segv.lua", "b.lua", "c.lua"},
+               folder.path());
     EXPECT_EQ(r.status, 1) << r.out << r.err;
     // signal 11, or 6 where a sanitizer catches the fault and aborts
     EXPECT_TRUE(contains(r.out, "FAIL segv.lua: worker crashed (signal 11) while running segv.lua") ||
                 contains(r.out, "FAIL segv.lua: worker crashed (signal 6) while running segv.lua"))
-        << "-j " << jobs << "\n" << r.out;
-    for (const char* ok : {"PASS a.lua", "PASS b.lua", "PASS c.lua"}) EXPECT_TRUE(contains(r.out, ok)) << "-j " << jobs << "\n" << r.out;
+        << "-j " << jobs << "\n"
+        << r.out;
+    for (const char* ok : {"PASS a.lua", "PASS b.lua", "PASS c.lua"})
+      EXPECT_TRUE(contains(r.out, ok)) << "-j " << jobs << "\n" << r.out;
     EXPECT_TRUE(contains(r.out, "4 scenarios, 1 failed")) << r.out;
     EXPECT_TRUE(contains(contents(folder.path("report.xml")), "worker crashed (signal "));
   }
@@ -195,7 +201,8 @@ TEST(Run, AMalformedScenarioFailsAloneWithItsPlace) {
   const Ran r = platon({"run", "--junit", "report.xml", "bad.lua", "meta.lua", "ok.lua"}, folder.path());
   EXPECT_EQ(r.status, 1);
   EXPECT_TRUE(contains(r.out, "FAIL bad.lua: bad.lua:2:13: input[1]: expected")) << r.out;
-  EXPECT_TRUE(contains(r.out, "FAIL meta.lua: meta.lua:1: scenario: 'scene' (the manifest's path) is missing")) << r.out;
+  EXPECT_TRUE(contains(r.out, "FAIL meta.lua: meta.lua:1: scenario: 'scene' (the manifest's path) is missing"))
+      << r.out;
   EXPECT_TRUE(contains(r.out, "PASS ok.lua")) << r.out;
   EXPECT_TRUE(contains(contents(folder.path("report.xml")), "tests=\"3\" failures=\"2\""));
 }
@@ -215,7 +222,8 @@ std::string xmlProblem(const std::string& xml) {
     }
     if (xml[i] == '&') {
       bool entity = false;
-      for (const char* e : {"&amp;", "&lt;", "&gt;", "&quot;", "&apos;"}) entity = entity || xml.compare(i, std::strlen(e), e) == 0;
+      for (const char* e : {"&amp;", "&lt;", "&gt;", "&quot;", "&apos;"})
+        entity = entity || xml.compare(i, std::strlen(e), e) == 0;
       if (!entity) return "a bare & at " + std::to_string(i);
     }
   }
@@ -224,7 +232,8 @@ std::string xmlProblem(const std::string& xml) {
 
 TEST(Run, TheJunitReportIsWellFormedWhateverTheMessagesHold) {
   Folder folder("cli_junit");
-  const std::string scene = sceneWith(folder, "s", "  if frame == 5 then error('bad \\1\\27[31m <x> & \"q\" \\'s\\' \\255\\254 end') end");
+  const std::string scene =
+      sceneWith(folder, "s", "  if frame == 5 then error('bad \\1\\27[31m <x> & \"q\" \\'s\\' \\255\\254 end') end");
   scenario(folder, "ctrl.lua", scene);
   scenario(folder, "x\xff\"y'.lua", scene);
   const Ran r = platon({"run", "--junit", "report.xml", "ctrl.lua", "x\xff\"y'.lua"}, folder.path());
@@ -234,7 +243,9 @@ TEST(Run, TheJunitReportIsWellFormedWhateverTheMessagesHold) {
   EXPECT_TRUE(contains(xml, "bad \\x01\\x1b[31m &lt;x&gt; &amp; &quot;q&quot; &apos;s&apos; \\xff\\xfe end")) << xml;
   EXPECT_TRUE(contains(xml, "name=\"x\\xff&quot;y&apos;.lua\"")) << xml;
   // The terminal gets the same readable bytes.
-  EXPECT_TRUE(contains(r.out, "FAIL ctrl.lua: " + folder.path("s/level.lua") + ":6: bad \\x01\\x1b[31m <x> & \"q\" 's' \\xff\\xfe end")) << r.out;
+  EXPECT_TRUE(contains(
+      r.out, "FAIL ctrl.lua: " + folder.path("s/level.lua") + ":6: bad \\x01\\x1b[31m <x> & \"q\" 's' \\xff\\xfe end"))
+      << r.out;
 }
 
 TEST(Run, AFailureIsOneResultLineWithItsTracebackIndentedBelow) {
@@ -245,7 +256,10 @@ TEST(Run, AFailureIsOneResultLineWithItsTracebackIndentedBelow) {
   const Ran r = platon({"run", "tick.lua", "ok.lua"}, folder.path());
   const std::vector<std::string> out = lines(r.out);
   ASSERT_GE(out.size(), 4u) << r.out;
-  EXPECT_EQ(out[0].rfind("FAIL tick.lua: " + folder.path("s/level.lua") + ":6: attempt to index local 't' (a nil value)", 0), 0u) << r.out;
+  EXPECT_EQ(
+      out[0].rfind("FAIL tick.lua: " + folder.path("s/level.lua") + ":6: attempt to index local 't' (a nil value)", 0),
+      0u)
+      << r.out;
   EXPECT_EQ(out[1], "    stack traceback:") << r.out;
   size_t i = 1;
   while (i < out.size() && out[i].rfind("    ", 0) == 0) ++i;
@@ -286,8 +300,16 @@ TEST(Run, BadOptionValuesAreRefused) {
   Folder folder("cli_options");
   scenario(folder, "ok.lua", sceneWith(folder, "s"));
   const std::vector<std::vector<std::string>> bad = {
-      {"-j", "x"}, {"-j0"}, {"-j", "-3"}, {"-j", "300"}, {"--timeout", "0"}, {"--timeout", "abc"}, {"--timeout", "nan"},
-      {"--trace", "x"}, {"--hash-every", "-1"}, {"--hash-every", "ten"},
+      {"-j", "x"},
+      {"-j0"},
+      {"-j", "-3"},
+      {"-j", "300"},
+      {"--timeout", "0"},
+      {"--timeout", "abc"},
+      {"--timeout", "nan"},
+      {"--trace", "x"},
+      {"--hash-every", "-1"},
+      {"--hash-every", "ten"},
   };
   for (std::vector<std::string> args : bad) {
     std::string shown;
@@ -343,8 +365,8 @@ TEST(Play, ASignalEndsThePlayAndTheRecordingIsWritten) {
 TEST(Scenario, AnyScenePathReadsBackFromTheScenarioItWrites) {
   Folder folder("cli_scenario_path");
   const std::string scene = sceneWith(folder, "back\\slash", "");
-  const std::string replay = folder.write("run.replay", "platon replay 1\nscene \"" + scene +
-                                                            "\"\nframes 30\nhash_every 0\ninput\n30 right\nend\n");
+  const std::string replay = folder.write(
+      "run.replay", "platon replay 1\nscene \"" + scene + "\"\nframes 30\nhash_every 0\ninput\n30 right\nend\n");
   (void)replay;
   const Ran made = platon({"scenario", "run.replay", "-o", "made.lua"}, folder.path());
   ASSERT_EQ(made.status, 0) << made.err;
@@ -358,17 +380,19 @@ TEST(Scenario, AnyScenePathReadsBackFromTheScenarioItWrites) {
 std::string stuckScene(const Folder& folder) {
   std::filesystem::create_directories(folder.path("root"));
   std::filesystem::copy(kRoot + "/scripts", folder.path("root/scripts"), std::filesystem::copy_options::recursive);
-  folder.write("root/scripts/stuck.lua",
-               "local level = { start = { face = 0, x = 600, y = 700 } }\n"
-               "function level.build(game)\n"
-               "  for i = 1, game.world.faceCount() do game.world.line(game.world.face(i), 0, 512, 4096, 512) end\n"
-               "end\n"
-               "function level.tick(game, frame)\n"
-               "  if frame == 3 then print('stuck in frame 3') io.stdout:flush() local n = 0 while true do n = n + 1 end end\n"
-               "end\n"
-               "return level\n");
-  folder.write("scene.lua", "return { systems = { 'scripting' }, stage = { solid = 'cube', edge = 4096 },\n"
-                            "  scripts = { preset = 'game', level = 'scripts/stuck.lua' } }\n");
+  folder.write(
+      "root/scripts/stuck.lua",
+      "local level = { start = { face = 0, x = 600, y = 700 } }\n"
+      "function level.build(game)\n"
+      "  for i = 1, game.world.faceCount() do game.world.line(game.world.face(i), 0, 512, 4096, 512) end\n"
+      "end\n"
+      "function level.tick(game, frame)\n"
+      "  if frame == 3 then print('stuck in frame 3') io.stdout:flush() local n = 0 while true do n = n + 1 end end\n"
+      "end\n"
+      "return level\n");
+  folder.write("scene.lua",
+               "return { systems = { 'scripting' }, stage = { solid = 'cube', edge = 4096 },\n"
+               "  scripts = { preset = 'game', level = 'scripts/stuck.lua' } }\n");
   return "scene.lua";
 }
 
@@ -376,8 +400,8 @@ std::string stuckScene(const Folder& folder) {
 std::unique_ptr<Process> playStuck(const Folder& folder) {
   const std::string scene = stuckScene(folder);
   setenv("PLATON_ROOT", folder.path("root").c_str(), 1);
-  auto play = std::make_unique<Process>(std::vector<std::string>{"play", scene, "--headless", "--fast", "--record", "run.replay"},
-                                        folder.path());
+  auto play = std::make_unique<Process>(
+      std::vector<std::string>{"play", scene, "--headless", "--fast", "--record", "run.replay"}, folder.path());
   unsetenv("PLATON_ROOT");
   return play;
 }
@@ -394,7 +418,8 @@ TEST(Play, ASecondSignalEndsAStuckFrameAtOnce) {
   const Ran r = play->finish(10);
   EXPECT_EQ(r.status, 128 + SIGINT) << r.out << r.err;
   EXPECT_LT(r.seconds, 1.5);
-  EXPECT_TRUE(contains(r.err, "platon play: the frame did not end: stopped at once, without writing a recording")) << r.err;
+  EXPECT_TRUE(contains(r.err, "platon play: the frame did not end: stopped at once, without writing a recording"))
+      << r.err;
   EXPECT_FALSE(std::filesystem::exists(folder.path("run.replay")));
 }
 
@@ -420,7 +445,8 @@ TEST(Play, ARecordPathThatCannotBeWrittenIsRefusedBeforePlaying) {
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
       {{"play", scene, "--headless", "--fast", "--frames", "5", "--record", "missing/x.replay"},
        "platon play: --record missing/x.replay: cannot write missing/x.replay.partial: No such file or directory"},
-      {{"play", scene, "--headless", "--fast", "--frames", "5", "--record", "s"}, "platon play: --record s: is a folder"},
+      {{"play", scene, "--headless", "--fast", "--frames", "5", "--record", "s"},
+       "platon play: --record s: is a folder"},
       {{"play", quoted, "--headless", "--fast", "--frames", "5", "--record", "x.replay"},
        "platon play: --record x.replay: a scene path with '\"' or a line break cannot be written in a replay"},
   };
@@ -445,7 +471,8 @@ TEST(Play, ARecordingThatCannotBeWrittenAtTheEndIsReportedNotAnAbort) {
   play.signal(SIGTERM);
   const Ran r = play.finish(10);
   EXPECT_EQ(r.status, 1) << r.out << r.err;
-  EXPECT_TRUE(contains(r.err, "platon play: run.replay: cannot write the replay; this run's recording is left in run.replay.partial"))
+  EXPECT_TRUE(contains(
+      r.err, "platon play: run.replay: cannot write the replay; this run's recording is left in run.replay.partial"))
       << r.err;
   EXPECT_EQ(contents(folder.path("run.replay.partial")).rfind("platon replay 1\n", 0), 0u);
 }

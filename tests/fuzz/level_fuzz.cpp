@@ -36,7 +36,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   try {
     level = stage::parseLevel(text, "f.level");
   } catch (const stage::StageError& e) {
-    if (e.where().file != "f.level" || e.where().line <= 0) bug(std::string("a refusal without a position: ") + e.what(), text);
+    if (e.where().file != "f.level" || e.where().line <= 0)
+      bug(std::string("a refusal without a position: ") + e.what(), text);
     return 0;
   }
   if (!(stage::parseLevel(stage::writeLevel(level), "f.level") == level)) bug("writeLevel does not round-trip", text);

@@ -24,7 +24,8 @@ stage::MeshData rawMesh(FuzzedDataProvider& in) {
   stage::MeshData m;
   const int points = in.ConsumeIntegralInRange(0, 40);
   for (int i = 0; i < points; ++i) {
-    const double x = in.ConsumeIntegralInRange(-8, 8), y = in.ConsumeIntegralInRange(-8, 8), z = in.ConsumeIntegralInRange(-8, 8);
+    const double x = in.ConsumeIntegralInRange(-8, 8), y = in.ConsumeIntegralInRange(-8, 8),
+                 z = in.ConsumeIntegralInRange(-8, 8);
     m.positions.emplace_back(x, y, z);
   }
   const int triangles = in.ConsumeIntegralInRange(0, 80);
@@ -53,7 +54,8 @@ stage::MeshData solidMesh(FuzzedDataProvider& in) {
         break;
       }
       case 2:  // drop a triangle
-        if (m.triangles.size() > 1) m.triangles.erase(m.triangles.begin() + in.ConsumeIntegralInRange<long>(0, long(m.triangles.size()) - 1));
+        if (m.triangles.size() > 1)
+          m.triangles.erase(m.triangles.begin() + in.ConsumeIntegralInRange<long>(0, long(m.triangles.size()) - 1));
         break;
       case 3: {  // split a triangle at its centre
         const auto t = m.triangles[in.ConsumeIntegralInRange<size_t>(0, m.triangles.size() - 1)];
@@ -100,7 +102,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const auto& c = stage.faces[0].corners;
     physics::Vec2w centre{0, 0};
     for (const auto p : c) centre = centre + physics::Vec2w{p.x, p.y};
-    const physics::Vec2 at{static_cast<int32_t>(centre.x / int64_t(c.size())), static_cast<int32_t>(centre.y / int64_t(c.size()))};
+    const physics::Vec2 at{static_cast<int32_t>(centre.x / int64_t(c.size())),
+                           static_cast<int32_t>(centre.y / int64_t(c.size()))};
     const physics::EntityId body = world.createEntity(physics::Convex::regular(8, 1));
     world.insert(body, stage.part(0), at, 0);
     world.setVelocity(body, {65536 * 7, 65536 * 3});

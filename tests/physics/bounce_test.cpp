@@ -201,7 +201,8 @@ TEST(Bounce, SuperElasticBouncesAtTheLargestSpeedsStayInRange) {
     const int size = between(rng, 1, 1 << 28);
     const EntityId body = world.createEntity(Convex::box(size, size));
     world.insert(body, 1, {between(rng, -1000, 1000), between(rng, -1000, 1000)}, 0);
-    world.setVelocity(body, {between(rng, 0, 1) ? limitQ16 : -limitQ16, limitQ16 / 65536 * between(rng, -65536, 65536)});
+    world.setVelocity(body,
+                      {between(rng, 0, 1) ? limitQ16 : -limitQ16, limitQ16 / 65536 * between(rng, -65536, 65536)});
     for (int f = 0; f < 48; ++f) {
       world.solve();
       ASSERT_EQ(world.countOverlaps(), 0u) << "trial " << trial << " frame " << f;

@@ -260,5 +260,6 @@ TEST(GoldenHash, EveryBuildAndEveryRefactoringGivesTheRecordedMotion) {
   EXPECT_GT(activity.pierceEvents, 1000u);
   std::printf("golden scenes: %llu hits, %llu warps created, %llu pierce events, %llu corner returns\n",
               static_cast<unsigned long long>(activity.hits), static_cast<unsigned long long>(activity.warps),
-              static_cast<unsigned long long>(activity.pierceEvents), static_cast<unsigned long long>(activity.cornerReturns));
+              static_cast<unsigned long long>(activity.pierceEvents),
+              static_cast<unsigned long long>(activity.cornerReturns));
 }

@@ -24,13 +24,15 @@ TEST(ObtuseCrease, ABodyThatSlidDownALeaningWallWalksAwayAlongTheFloor) {
     // The floor ends at the wall's foot; the wall leans away by 5 to 70 degrees from upright.
     const double lean = between(rng, 5, 70) * M_PI / 180;
     const Vec2 foot{between(rng, 2000, 6000), between(rng, 100, 900)};
-    const Vec2 top{foot.x + static_cast<int32_t>(4000 * std::sin(lean)), foot.y + static_cast<int32_t>(4000 * std::cos(lean))};
+    const Vec2 top{foot.x + static_cast<int32_t>(4000 * std::sin(lean)),
+                   foot.y + static_cast<int32_t>(4000 * std::cos(lean))};
     part.line({foot.x - 5000, foot.y}, foot);
     part.line(foot, top);
     part.setGravity({0, -between(rng, 15000, 40000)});
     part.initialize();
-    const Convex shape = trial % 2 ? Convex::regular(between(rng, 8, 24), between(rng, 40, 160))
-                                   : platon::testing::randomConvex(rng, between(rng, 40, 160), platon::testing::Turn::MaybeTurned);
+    const Convex shape =
+        trial % 2 ? Convex::regular(between(rng, 8, 24), between(rng, 40, 160))
+                  : platon::testing::randomConvex(rng, between(rng, 40, 160), platon::testing::Turn::MaybeTurned);
     const EntityId body = world.createEntity(shape);
     // High on the wall's side, moving into it and down.
     const int32_t height = between(rng, 1500, 3000);
@@ -57,8 +59,8 @@ TEST(ObtuseCrease, ABodyThatSlidDownALeaningWallWalksAwayAlongTheFloor) {
     const Vec2 after = world.entity(body).position();
     if (before.x - after.x < 300) {
       ++frozen;
-      ADD_FAILURE() << "trial " << trial << ": lean " << lean * 180 / M_PI << " deg, from (" << before.x << ", " << before.y
-                    << ") only to (" << after.x << ", " << after.y << ")";
+      ADD_FAILURE() << "trial " << trial << ": lean " << lean * 180 / M_PI << " deg, from (" << before.x << ", "
+                    << before.y << ") only to (" << after.x << ", " << after.y << ")";
     }
   }
   EXPECT_GT(trials, 800);

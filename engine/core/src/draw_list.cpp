@@ -50,7 +50,8 @@ DrawList DrawList::between(const DrawList& from, const DrawList& to, float t) {
     b.at = mix(a.at, b.at);
     b.size = a.size + (b.size - a.size) * t;
     if (b.kind == ShapeKind::Polygon || b.kind == ShapeKind::Line)
-      for (uint32_t k = 0; k < b.count; ++k) out.points_[b.first + k] = mix(from.points_[a.first + k], out.points_[b.first + k]);
+      for (uint32_t k = 0; k < b.count; ++k)
+        out.points_[b.first + k] = mix(from.points_[a.first + k], out.points_[b.first + k]);
   }
   return out;
 }

@@ -1,14 +1,13 @@
 #include "platon/core/file_watch.h"
 
-#include <poll.h>
-#include <sys/inotify.h>
-#include <unistd.h>
-
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <poll.h>
 #include <set>
 #include <stdexcept>
+#include <sys/inotify.h>
+#include <unistd.h>
 
 namespace platon::core {
 namespace {
@@ -22,7 +21,8 @@ std::filesystem::path normalPath(const std::string& file) { return std::filesyst
 }  // namespace
 
 FileWatcher::FileWatcher() : fd_(inotify_init1(IN_NONBLOCK | IN_CLOEXEC)) {
-  if (fd_ < 0) throw std::runtime_error(std::string("file watching (inotify) is not available: ") + std::strerror(errno));
+  if (fd_ < 0)
+    throw std::runtime_error(std::string("file watching (inotify) is not available: ") + std::strerror(errno));
 }
 
 FileWatcher::~FileWatcher() { close(fd_); }

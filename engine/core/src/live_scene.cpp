@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <system_error>
-
 #include <time.h>
 
 #include "platon/core/error.h"
@@ -34,8 +33,8 @@ std::filesystem::file_time_type fileClockNow() {
   timespec now{};
   clock_gettime(CLOCK_REALTIME_COARSE, &now);
   const auto sinceEpoch = std::chrono::seconds(now.tv_sec) + std::chrono::nanoseconds(now.tv_nsec);
-  return std::chrono::file_clock::from_sys(
-      std::chrono::system_clock::time_point(std::chrono::duration_cast<std::chrono::system_clock::duration>(sinceEpoch)));
+  return std::chrono::file_clock::from_sys(std::chrono::system_clock::time_point(
+      std::chrono::duration_cast<std::chrono::system_clock::duration>(sinceEpoch)));
 }
 
 }  // namespace

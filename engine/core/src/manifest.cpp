@@ -1,14 +1,13 @@
 #include "platon/core/manifest.h"
 
-#include <limits.h>
-#include <stdlib.h>
-
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <limits.h>
 #include <sstream>
 #include <stdexcept>
+#include <stdlib.h>
 
 namespace platon::core {
 
@@ -48,8 +47,10 @@ class DataReader {
   }
   char peek() const { return pos_ < text_.size() ? text_[pos_] : '\0'; }
   void advance() {
-    if (text_[pos_] == '\n') ++line_, column_ = 1;
-    else ++column_;
+    if (text_[pos_] == '\n')
+      ++line_, column_ = 1;
+    else
+      ++column_;
     ++pos_;
   }
   void skipSpace() {
@@ -205,10 +206,19 @@ class DataReader {
         const char e = peek();
         advance();
         switch (e) {
-          case 'n': c = '\n'; break;
-          case 't': c = '\t'; break;
-          case '\\': case '"': case '\'': c = e; break;
-          default: fail(std::string("unknown escape '\\") + e + "'");
+          case 'n':
+            c = '\n';
+            break;
+          case 't':
+            c = '\t';
+            break;
+          case '\\':
+          case '"':
+          case '\'':
+            c = e;
+            break;
+          default:
+            fail(std::string("unknown escape '\\") + e + "'");
         }
       }
       out += c;
@@ -261,14 +271,18 @@ double numberField(const std::string& file, const DataValue& table, const char* 
   if (!v) return fallback;
   if (!v->number()) fieldError(file, *v, std::string("'") + key + "' must be a number");
   if (*v->number() < low || *v->number() > high)
-    fieldError(file, *v, std::string("'") + key + "' must be within [" + shown(low) + ", " + shown(high) + "], not " + shown(*v->number()));
+    fieldError(file, *v,
+               std::string("'") + key + "' must be within [" + shown(low) + ", " + shown(high) + "], not " +
+                   shown(*v->number()));
   return *v->number();
 }
 
 // A whole number within [low, high] (an edge, a seed, a limit: 4096.7 is a mistake, not 4096).
-double wholeField(const std::string& file, const DataValue& table, const char* key, double fallback, double low, double high) {
+double wholeField(const std::string& file, const DataValue& table, const char* key, double fallback, double low,
+                  double high) {
   const double v = numberField(file, table, key, fallback, low, high);
-  if (v != std::floor(v)) fieldError(file, *table.field(key), std::string("'") + key + "' must be a whole number, not " + shown(v));
+  if (v != std::floor(v))
+    fieldError(file, *table.field(key), std::string("'") + key + "' must be a whole number, not " + shown(v));
   return v;
 }
 
@@ -305,7 +319,9 @@ std::string insideFolder(const std::string& manifest, const std::string& folder,
 
 }  // namespace
 
-DataValue parseDataFile(std::string_view text, const std::string& fileName) { return DataReader(text, fileName).file(); }
+DataValue parseDataFile(std::string_view text, const std::string& fileName) {
+  return DataReader(text, fileName).file();
+}
 
 bool SceneManifest::needs(std::string_view system) const {
   for (const auto& s : systems)
@@ -346,7 +362,8 @@ SceneManifest loadManifest(const std::string& path) {
         fieldError(path, *level, "a level file gives the solid and its size: no 'solid' or 'edge' beside 'level'");
       const std::string p = stringField(path, *stage, "level", "");
       if (p.empty() || p.find("..") != std::string::npos || p[0] == '/')
-        fieldError(path, *level, "'" + p + "': a level file is a path inside the scene's folder (no '..', not absolute)");
+        fieldError(path, *level,
+                   "'" + p + "': a level file is a path inside the scene's folder (no '..', not absolute)");
       m.levelFile = insideFolder(path, m.directory, *level, p);
       m.placeOf[m.levelFile] = placeText(path, *level);
     }
@@ -370,8 +387,9 @@ SceneManifest loadManifest(const std::string& path) {
       if (p.empty()) return p;
       const bool engine = p.rfind("scripts/", 0) == 0;
       if (p.find("..") != std::string::npos || p[0] == '/' || p.size() < 5 || p.substr(p.size() - 4) != ".lua")
-        fieldError(path, *scripts->field(key),
-                   "'" + p + "': a script is a .lua path inside the level's folder or under scripts/ (no '..', not absolute)");
+        fieldError(
+            path, *scripts->field(key),
+            "'" + p + "': a script is a .lua path inside the level's folder or under scripts/ (no '..', not absolute)");
       trusted = engine;
       const std::string kept = engine ? p : insideFolder(path, m.directory, *scripts->field(key), p);
       m.placeOf[kept] = placeText(path, *scripts->field(key));
@@ -394,11 +412,13 @@ SceneManifest loadManifest(const std::string& path) {
       if (!mods->table()) fieldError(path, *mods, "'mods' must be a list of paths");
       int index = 0;
       for (const auto& [key, v] : *mods->table()) {
-        if (key != std::to_string(++index)) fieldError(path, v, "'mods' must be a list of paths ({ \"a.lua\", \"b.lua\" }), not keyed");
+        if (key != std::to_string(++index))
+          fieldError(path, v, "'mods' must be a list of paths ({ \"a.lua\", \"b.lua\" }), not keyed");
         const std::string* p = v.string();
         if (!p || p->size() < 5 || p->substr(p->size() - 4) != ".lua" || p->find("..") != std::string::npos ||
             p->rfind("scripts/", 0) == 0 || (*p)[0] == '/')
-          fieldError(path, v, "a mod is a .lua path inside the level's folder (no '..', not absolute, not under scripts/)");
+          fieldError(path, v,
+                     "a mod is a .lua path inside the level's folder (no '..', not absolute, not under scripts/)");
         m.mods.push_back(insideFolder(path, m.directory, v, *p));
         m.placeOf[m.mods.back()] = placeText(path, v);
       }

@@ -1,10 +1,9 @@
 // Systems in shared modules: the heavy ones (the window and GL renderer, mesh loading) are not linked
 // into the engine, so a process that never needs them never maps their libraries (SDL2's video,
 // libGL, assimp). A headless scenario proves it by reading /proc/self/maps.
-#include <dlfcn.h>
-
 #include <algorithm>
 #include <cstdlib>
+#include <dlfcn.h>
 #include <stdexcept>
 
 #include "platon/core/system.h"
@@ -54,7 +53,8 @@ void SystemRegistry::addPlugin(std::string name, std::string module, std::vector
     if (!entry) entry = findEntry(name, module, folders);
     char error[512] = "";
     System* system = entry(scene, error, sizeof error);
-    if (!system) throw std::runtime_error("system '" + name + "': " + (error[0] ? error : "its plugin refused the scene"));
+    if (!system)
+      throw std::runtime_error("system '" + name + "': " + (error[0] ? error : "its plugin refused the scene"));
     return std::unique_ptr<System>(system);
   });
 }

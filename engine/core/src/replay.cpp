@@ -55,7 +55,8 @@ class LineReader {
 
   int line() const { return line_; }
   [[noreturn]] void failAt(int line, int column, const std::string& reason) const {
-    throw std::runtime_error(file_ + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + visibleText(reason));
+    throw std::runtime_error(file_ + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " +
+                             visibleText(reason));
   }
   [[noreturn]] void fail(int column, const std::string& reason) const { failAt(line_, column, reason); }
   // An empty file has no line to name: its line 1 is where the missing text belongs.
@@ -74,8 +75,10 @@ class LineReader {
   }
 
   void expect(const std::vector<Word>& words, const char* keyword, size_t count, const char* usage) const {
-    if (words[0].text != keyword) fail(words[0].column, "expected '" + std::string(usage) + "', got '" + words[0].text + "'");
-    if (words.size() != count) fail(words[std::min(words.size(), count) - 1].column, std::string("expected '") + usage + "'");
+    if (words[0].text != keyword)
+      fail(words[0].column, "expected '" + std::string(usage) + "', got '" + words[0].text + "'");
+    if (words.size() != count)
+      fail(words[std::min(words.size(), count) - 1].column, std::string("expected '") + usage + "'");
   }
 
  private:
@@ -102,7 +105,8 @@ void readInput(LineReader& in, std::vector<Word>& w, uint64_t frames, Replay& r)
       if (w[i].text == "-" && w.size() == 2) continue;
       Button b{};
       if (!buttonFromName(w[i].text, b))
-        in.fail(w[i].column, "unknown button '" + w[i].text + "' (left, right, up, down, jump, restart, pause, reload, or - for none)");
+        in.fail(w[i].column, "unknown button '" + w[i].text +
+                                 "' (left, right, up, down, jump, restart, pause, reload, or - for none)");
       if (held & InputFrame::bit(b)) in.fail(w[i].column, "'" + w[i].text + "' is given twice");
       held |= InputFrame::bit(b);
     }
@@ -111,7 +115,8 @@ void readInput(LineReader& in, std::vector<Word>& w, uint64_t frames, Replay& r)
     r.held.insert(r.held.end(), count, held);
   }
   if (r.held.size() != frames)
-    in.fail(w[0].column, "the input covers " + std::to_string(r.held.size()) + " frames, 'frames' says " + std::to_string(frames));
+    in.fail(w[0].column,
+            "the input covers " + std::to_string(r.held.size()) + " frames, 'frames' says " + std::to_string(frames));
 }
 
 // The frame after `frame` that carries a hash: the next multiple of hashEvery, or the last frame.
@@ -135,7 +140,10 @@ void readHashes(LineReader& in, std::vector<Word>& w, Replay& r) {
     if (frame == 0) in.fail(w[1].column, "hash frame 0: frames count from 1 (a hash is the state after its frame)");
     if (!r.hashes.empty() && frame <= r.hashes.back().frame) in.fail(w[1].column, "hash frames must increase");
     if (!isHash(w[2].text)) in.fail(w[2].column, "a hash is 16 lower-case hex digits");
-    if (frame != expected) in.fail(w[1].column, frame > expected ? implies(expected) : "hash_every " + std::to_string(r.hashEvery) + " implies no hash at frame " + std::to_string(frame));
+    if (frame != expected)
+      in.fail(w[1].column, frame > expected ? implies(expected)
+                                            : "hash_every " + std::to_string(r.hashEvery) +
+                                                  " implies no hash at frame " + std::to_string(frame));
     r.hashes.push_back({frame, std::stoull(w[2].text, nullptr, 16)});
     expected = frame == frames ? 0 : nextHashFrame(frame, r.hashEvery, frames);
   }
@@ -158,7 +166,9 @@ Replay parseReplay(const std::string& text, const std::string& fileName) {
   LineReader in(text, fileName);
   std::vector<Word> w;
   auto line = [&](const char* what) {
-    if (!in.next(w)) in.failAtEnd(in.line() == 0 ? "an empty file, not a replay: missing 'platon replay 1'" : "missing '" + std::string(what) + "'");
+    if (!in.next(w))
+      in.failAtEnd(in.line() == 0 ? "an empty file, not a replay: missing 'platon replay 1'"
+                                  : "missing '" + std::string(what) + "'");
   };
   Replay r;
   line("platon replay 1");
@@ -173,7 +183,9 @@ Replay parseReplay(const std::string& text, const std::string& fileName) {
   if (!w[1].quoted) in.fail(w[1].column, "the scene path is written in double quotes");
   if (r.scene.empty()) in.fail(w[1].column, "empty scene path");
   if (hasParentStep(r.scene))
-    in.fail(w[1].column, "'" + r.scene + "': a replay's scene path may not contain '..' (replays are shared: it names the scene's own path)");
+    in.fail(w[1].column,
+            "'" + r.scene +
+                "': a replay's scene path may not contain '..' (replays are shared: it names the scene's own path)");
   line("frames N");
   if (w[0].text == "scene_files") {  // optional
     in.expect(w, "scene_files", 2, "scene_files HEX16");
@@ -271,7 +283,8 @@ void ReplayRecorder::frame(uint8_t held, uint64_t stateHashAfter) {
 
 Replay ReplayRecorder::replay() const {
   Replay r = replay_;
-  if (r.frames() > 0 && (r.hashes.empty() || r.hashes.back().frame != r.frames())) r.hashes.push_back({r.frames(), lastHash_});
+  if (r.frames() > 0 && (r.hashes.empty() || r.hashes.back().frame != r.frames()))
+    r.hashes.push_back({r.frames(), lastHash_});
   return r;
 }
 

@@ -47,13 +47,16 @@ void Scene::draw(DrawList& out) const {
 }
 
 namespace {
-stage::Solid manifestSolid(const SceneManifest& manifest) { return solidOfManifest(manifest.solid).value_or(stage::Solid::Hexahedron); }
+stage::Solid manifestSolid(const SceneManifest& manifest) {
+  return solidOfManifest(manifest.solid).value_or(stage::Solid::Hexahedron);
+}
 
 // A mesh level's stage: the mesh file read by the meshes plugin, which the manifest must name.
 stage::Stage meshStage(const stage::Level& level, const SceneManifest& manifest, const SystemRegistry& registry,
                        Scene& scene) {
   if (!manifest.needs("meshes"))
-    throw stage::StageError({level.file, 1, 1}, "the level is drawn on a mesh: the scene's manifest must list \"meshes\" in its systems");
+    throw stage::StageError({level.file, 1, 1},
+                            "the level is drawn on a mesh: the scene's manifest must list \"meshes\" in its systems");
   if (!scene.findSystem("meshes")) scene.addSystem(registry.create("meshes", scene), "meshes");
   MeshSource* source = scene.findSystem("meshes")->meshSource();
   if (!source) throw stage::StageError({level.file, 1, 1}, "the meshes system reads no meshes");
@@ -71,8 +74,7 @@ std::string systemEntry(const SceneManifest& manifest, const std::string& system
       for (const auto& [key, v] : *list->table())
         if (v.string() && *v.string() == system)
           return manifest.path + ":" + std::to_string(v.line) + ":" + std::to_string(v.column);
-  } catch (const std::exception&) {
-  }
+  } catch (const std::exception&) {}
   return manifest.path;
 }
 
@@ -93,8 +95,9 @@ bool shouldCreate(const std::string& name, const SceneManifest& manifest, const 
   if (name == "audio") throw std::runtime_error(systemEntry(manifest, name) + ": audio: no audio system in this build");
   std::string known;
   for (const std::string& n : registry.names()) known += (known.empty() ? "" : ", ") + n;
-  throw std::runtime_error(systemEntry(manifest, name) + ": " + name + ": this program provides no such system (it provides: " +
-                           (known.empty() ? "none" : known) + ")");
+  throw std::runtime_error(systemEntry(manifest, name) + ": " + name +
+                           ": this program provides no such system (it provides: " + (known.empty() ? "none" : known) +
+                           ")");
 }
 
 }  // namespace
@@ -115,7 +118,8 @@ namespace {
 // link could still lead anywhere, /dev/zero or /etc/passwd included).
 std::string meshFileOf(const stage::Level& level) {
   namespace fs = std::filesystem;
-  const fs::path folder = fs::path(level.file).parent_path().empty() ? fs::path(".") : fs::path(level.file).parent_path();
+  const fs::path folder =
+      fs::path(level.file).parent_path().empty() ? fs::path(".") : fs::path(level.file).parent_path();
   const std::string shown = level.file.substr(0, level.file.find_last_of('/') + 1) + level.mesh;
   auto refuse = [&](const std::string& why) { throw stage::StageError({level.file, 1, 6}, shown + ": " + why); };
   std::error_code error;
@@ -125,7 +129,8 @@ std::string meshFileOf(const stage::Level& level) {
   if (error) refuse("cannot find the mesh file");
   const fs::path inside = file.lexically_relative(root);
   if (inside.empty() || *inside.begin() == "..")
-    refuse("the mesh file leads out of the level's folder (to " + file.string() + "): it must be a file in that folder");
+    refuse("the mesh file leads out of the level's folder (to " + file.string() +
+           "): it must be a file in that folder");
   if (!fs::is_regular_file(file, error)) refuse("the mesh file is not a regular file (" + file.string() + ")");
   return file.string();
 }

@@ -89,7 +89,8 @@ std::shared_ptr<const StageView> stageView(const stage::Stage& net, const physic
   return view;
 }
 
-camera::CameraTarget cameraTarget(const StageView& stage, const Scene& scene, physics::MapPartId part, float x, float y) {
+camera::CameraTarget cameraTarget(const StageView& stage, const Scene& scene, physics::MapPartId part, float x,
+                                  float y) {
   const physics::MapPart* found = scene.world().findMapPart(part);
   return cameraTarget(stage, part, x, y, found ? found->gravity() : physics::Vec2w{});
 }

@@ -13,10 +13,14 @@ size_t utf8Length(std::string_view text, size_t i) {
   size_t length = 0;
   uint32_t code = 0;
   if (b < 0x80) return 1;
-  if (b >= 0xC2 && b <= 0xDF) length = 2, code = b & 0x1F;
-  else if (b >= 0xE0 && b <= 0xEF) length = 3, code = b & 0x0F;
-  else if (b >= 0xF0 && b <= 0xF4) length = 4, code = b & 0x07;
-  else return 0;
+  if (b >= 0xC2 && b <= 0xDF)
+    length = 2, code = b & 0x1F;
+  else if (b >= 0xE0 && b <= 0xEF)
+    length = 3, code = b & 0x0F;
+  else if (b >= 0xF0 && b <= 0xF4)
+    length = 4, code = b & 0x07;
+  else
+    return 0;
   if (i + length > text.size()) return 0;
   for (size_t k = 1; k < length; ++k) {
     if ((byte(i + k) & 0xC0) != 0x80) return 0;

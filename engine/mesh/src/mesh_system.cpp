@@ -1,10 +1,9 @@
 #include "mesh_system.h"
 
-#include <assimp/postprocess.h>
-#include <assimp/scene.h>
-
 #include <array>
 #include <assimp/Importer.hpp>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -15,7 +14,9 @@ namespace {
 
 using Transform = std::array<std::array<double, 4>, 4>;  // row-major, acting on column vectors
 
-[[noreturn]] void fail(const std::string& path, const std::string& reason) { throw std::runtime_error(path + ": " + reason); }
+[[noreturn]] void fail(const std::string& path, const std::string& reason) {
+  throw std::runtime_error(path + ": " + reason);
+}
 
 Transform identity() {
   Transform t{};
@@ -25,7 +26,8 @@ Transform identity() {
 
 // parent * node's own matrix, in double (assimp keeps node matrices as floats).
 Transform compose(const Transform& parent, const aiMatrix4x4& m) {
-  const float own[4][4] = {{m.a1, m.a2, m.a3, m.a4}, {m.b1, m.b2, m.b3, m.b4}, {m.c1, m.c2, m.c3, m.c4}, {m.d1, m.d2, m.d3, m.d4}};
+  const float own[4][4] = {
+      {m.a1, m.a2, m.a3, m.a4}, {m.b1, m.b2, m.b3, m.b4}, {m.c1, m.c2, m.c3, m.c4}, {m.d1, m.d2, m.d3, m.d4}};
   Transform out{};
   for (size_t i = 0; i < 4; ++i)
     for (size_t j = 0; j < 4; ++j)
@@ -78,7 +80,8 @@ class Flattener {
     const auto base = static_cast<int32_t>(out_.positions.size() / 3);
     for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
       const double p[3] = {mesh.mVertices[v].x, mesh.mVertices[v].y, mesh.mVertices[v].z};
-      for (size_t r = 0; r < 3; ++r) out_.positions.push_back(t[r][0] * p[0] + t[r][1] * p[1] + t[r][2] * p[2] + t[r][3]);
+      for (size_t r = 0; r < 3; ++r)
+        out_.positions.push_back(t[r][0] * p[0] + t[r][1] * p[1] + t[r][2] * p[2] + t[r][3]);
     }
     const bool mirrored = determinant3(t) < 0;  // a mirroring node turns the winding over: turn it back
     for (unsigned f = 0; f < mesh.mNumFaces; ++f) {

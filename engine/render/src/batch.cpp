@@ -62,7 +62,9 @@ void Batch::polygon(std::span<const core::Point2> points, core::Color color) {
 }
 
 void Batch::rectangle(core::Point2 topLeft, core::Point2 size, core::Color color) {
-  const core::Point2 corners[4] = {topLeft, {topLeft.x + size.x, topLeft.y}, {topLeft.x + size.x, topLeft.y + size.y},
+  const core::Point2 corners[4] = {topLeft,
+                                   {topLeft.x + size.x, topLeft.y},
+                                   {topLeft.x + size.x, topLeft.y + size.y},
                                    {topLeft.x, topLeft.y + size.y}};
   polygon(corners, color);
 }
@@ -73,7 +75,8 @@ void Batch::flush(float width, float height) {
   glUniform2f(screenSize_, width, height);
   glBindVertexArray(vao_);
   glBindBuffer(GL_ARRAY_BUFFER, vbo_);
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices_.size() * sizeof(Vertex)), vertices_.data(), GL_STREAM_DRAW);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices_.size() * sizeof(Vertex)), vertices_.data(),
+               GL_STREAM_DRAW);
   glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(vertices_.size()));
   glBindVertexArray(0);
   vertices_.clear();

@@ -1,10 +1,9 @@
 #include "render_system.h"
 
 #include <SDL2/SDL_image.h>
-#include <epoxy/gl.h>
-
 #include <algorithm>
 #include <cstdio>
+#include <epoxy/gl.h>
 #include <stdexcept>
 
 #include "batch.h"
@@ -90,7 +89,8 @@ std::vector<uint8_t> RenderSystem::capture(int& width, int& height) {
 void RenderSystem::saveScreenshot(const std::string& path) {
   int width = 0, height = 0;
   std::vector<uint8_t> pixels = capture(width, height);
-  SDL_Surface* surface = SDL_CreateRGBSurfaceWithFormatFrom(pixels.data(), width, height, 32, width * 4, SDL_PIXELFORMAT_ABGR8888);
+  SDL_Surface* surface =
+      SDL_CreateRGBSurfaceWithFormatFrom(pixels.data(), width, height, 32, width * 4, SDL_PIXELFORMAT_ABGR8888);
   if (!surface) throw std::runtime_error(path + ": " + SDL_GetError());
   const int status = IMG_SavePNG(surface, path.c_str());
   SDL_FreeSurface(surface);
@@ -119,7 +119,9 @@ void RenderSystem::paint(const core::View& view, const core::DrawList& draw) {
     }
     auto at = [&](Point2 p) { return Point2{p.x * dpi, p.y * dpi}; };
     switch (s.kind) {
-      case core::ShapeKind::Circle: g.batch.circle(at(s.at), s.size * dpi, s.color); break;
+      case core::ShapeKind::Circle:
+        g.batch.circle(at(s.at), s.size * dpi, s.color);
+        break;
       case core::ShapeKind::Line:
         for (uint32_t i = 1; i < s.count; ++i)
           g.batch.line(at(points[s.first + i - 1]), at(points[s.first + i]), std::max(1.0f, s.size * dpi), s.color);
@@ -130,7 +132,9 @@ void RenderSystem::paint(const core::View& view, const core::DrawList& draw) {
         g.batch.polygon(p, s.color);
         break;
       }
-      case core::ShapeKind::Text: g.text.draw(std::string(draw.text(s)), at(s.at), std::max(6.0f, s.size * dpi), s.color); break;
+      case core::ShapeKind::Text:
+        g.text.draw(std::string(draw.text(s)), at(s.at), std::max(6.0f, s.size * dpi), s.color);
+        break;
     }
   }
   g.batch.flush(width, height);
@@ -142,7 +146,8 @@ void RenderSystem::paint(const core::View& view, const core::DrawList& draw) {
     const float lines = static_cast<float>(view.centreText.size()) + 1.5f;
     const float size = std::min(30 * dpi, height * 0.9f / (lines * 1.4f)), step = size * 1.4f;
     const float top = height / 2 - step * static_cast<float>(view.centreText.size()) / 2;
-    g.batch.rectangle({0, top - size}, {width, step * static_cast<float>(view.centreText.size()) + 2 * size}, {0, 0, 0, 170});
+    g.batch.rectangle({0, top - size}, {width, step * static_cast<float>(view.centreText.size()) + 2 * size},
+                      {0, 0, 0, 170});
     g.batch.flush(width, height);
     for (size_t i = 0; i < view.centreText.size(); ++i) {
       const float lineSize = i == 0 ? size * 1.3f : size;

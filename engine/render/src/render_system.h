@@ -31,11 +31,11 @@ class RenderSystem final : public core::System, public core::Display {
   Gl& gl();
   void paint(const core::View& view, const core::DrawList& draw);
 
-  std::shared_ptr<Gl> gl_;  // shared across a hot reload (carryOver)
+  std::shared_ptr<Gl> gl_;                     // shared across a hot reload (carryOver)
   int firstWidth_ = 1280, firstHeight_ = 720;  // the window's size when it opens
   std::optional<core::View> lastView_;
-  uint64_t lastPresent_ = 0;     // SDL's performance counter at the last present
-  double frameSeconds_ = 0;      // smoothed time between presents, for the frame-rate counter
+  uint64_t lastPresent_ = 0;  // SDL's performance counter at the last present
+  double frameSeconds_ = 0;   // smoothed time between presents, for the frame-rate counter
   core::DrawList lastDraw_{true};
 };
 

@@ -39,7 +39,8 @@ const std::vector<Vector3f>& unitSphere() {
   static const std::vector<Vector3f> sphere = [] {
     constexpr int kRings = 10, kSegments = 16;
     auto at = [](int ring, int seg) {
-      const float theta = static_cast<float>(M_PI * ring / kRings), phi = static_cast<float>(2 * M_PI * seg / kSegments);
+      const float theta = static_cast<float>(M_PI * ring / kRings),
+                  phi = static_cast<float>(2 * M_PI * seg / kSegments);
       return Vector3f(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
     };
     std::vector<Vector3f> v;
@@ -56,8 +57,8 @@ const std::vector<Vector3f>& unitSphere() {
 
 }  // namespace
 
-void addTriangle(std::vector<LitVertex>& out, const Vector3f& a, const Vector3f& b, const Vector3f& c, const Vector3f& normal,
-                 Color color) {
+void addTriangle(std::vector<LitVertex>& out, const Vector3f& a, const Vector3f& b, const Vector3f& c,
+                 const Vector3f& normal, Color color) {
   const bool flip = (b - a).cross(c - a).dot(normal) < 0;
   for (const Vector3f* p : {&a, flip ? &c : &b, flip ? &b : &c})
     out.push_back({p->x(), p->y(), p->z(), normal.x(), normal.y(), normal.z(), color.r, color.g, color.b, color.a});
@@ -108,7 +109,9 @@ bool StageMesh::normalOf(physics::MapPartId part, Vector3f& out) const {
 
 void StageMesh::addFace(const core::ViewFace& face, size_t index) {
   const Frame& f = frames_[index];
-  auto at = [&](core::Point2 p, float lift) { return Vector3f(f.origin + p.x * f.xAxis + p.y * f.yAxis + lift * edge_ * f.normal); };
+  auto at = [&](core::Point2 p, float lift) {
+    return Vector3f(f.origin + p.x * f.xAxis + p.y * f.yAxis + lift * edge_ * f.normal);
+  };
   const size_t n = face.corners.size();
   if (n < 3) return;
   // The face, with a rim: the outer polygon dark, the inner one (pulled toward the centre) in the
@@ -134,8 +137,10 @@ void StageMesh::addFace(const core::ViewFace& face, size_t index) {
   }
   for (const core::ViewLine& line : face.lines) {
     if (line.kind == 1) continue;  // warp lines are the face's own edges: the rim shows them
-    if (line.tag >= 1000 && line.tag < 2000) doors_.push_back({index, line});
-    else addWall(f, line, fixed_);
+    if (line.tag >= 1000 && line.tag < 2000)
+      doors_.push_back({index, line});
+    else
+      addWall(f, line, fixed_);
   }
 }
 
@@ -146,9 +151,12 @@ void StageMesh::addDoors(std::span<const uint32_t> openTags, std::vector<LitVert
   }
 }
 
-void StageMesh::addWall(const Frame& f, const core::ViewLine& line, std::vector<LitVertex>& out, float heightScale) const {
+void StageMesh::addWall(const Frame& f, const core::ViewLine& line, std::vector<LitVertex>& out,
+                        float heightScale) const {
   Color color = wallColor(line);
-  if (heightScale < 1) color = {static_cast<uint8_t>(color.r / 2), static_cast<uint8_t>(color.g / 2), static_cast<uint8_t>(color.b / 2), 255};
+  if (heightScale < 1)
+    color = {static_cast<uint8_t>(color.r / 2), static_cast<uint8_t>(color.g / 2), static_cast<uint8_t>(color.b / 2),
+             255};
   const bool oneWay = line.kind == 2;
   const float height = (oneWay ? 0.008f : 0.02f) * edge_ * heightScale, halfWidth = (oneWay ? 0.004f : 0.006f) * edge_;
   const Vector3f a = f.origin + line.a.x * f.xAxis + line.a.y * f.yAxis;
@@ -174,7 +182,9 @@ void StageMesh::addShapes(const core::DrawList& draw, physics::MapPartId onlyFac
     if (flat_ && s.place.face != onlyFace) continue;
     const Frame* f = frameOf(s.place.face);
     if (!f) continue;
-    auto at = [&](core::Point2 p, float lift) { return Vector3f(f->origin + p.x * f->xAxis + p.y * f->yAxis + lift * edge_ * f->normal); };
+    auto at = [&](core::Point2 p, float lift) {
+      return Vector3f(f->origin + p.x * f->xAxis + p.y * f->yAxis + lift * edge_ * f->normal);
+    };
     switch (s.kind) {
       case core::ShapeKind::Circle: {
         // A ball resting on the face.
@@ -189,8 +199,8 @@ void StageMesh::addShapes(const core::DrawList& draw, physics::MapPartId onlyFac
       }
       case core::ShapeKind::Polygon:
         for (uint32_t i = 1; i + 1 < s.count; ++i)
-          addTriangle(out, at(points[s.first], 0.003f), at(points[s.first + i], 0.003f), at(points[s.first + i + 1], 0.003f),
-                      f->normal, s.color);
+          addTriangle(out, at(points[s.first], 0.003f), at(points[s.first + i], 0.003f),
+                      at(points[s.first + i + 1], 0.003f), f->normal, s.color);
         break;
       case core::ShapeKind::Line:
         for (uint32_t i = 1; i < s.count; ++i) {
@@ -198,11 +208,12 @@ void StageMesh::addShapes(const core::DrawList& draw, physics::MapPartId onlyFac
           const float dx = q.x - p.x, dy = q.y - p.y, len = std::hypot(dx, dy);
           if (len <= 0) continue;
           const float hx = -dy / len * s.size / 2, hy = dx / len * s.size / 2;
-          quad(out, at({p.x - hx, p.y - hy}, 0.004f), at({q.x - hx, q.y - hy}, 0.004f), at({q.x + hx, q.y + hy}, 0.004f),
-               at({p.x + hx, p.y + hy}, 0.004f), f->normal, s.color);
+          quad(out, at({p.x - hx, p.y - hy}, 0.004f), at({q.x - hx, q.y - hy}, 0.004f),
+               at({q.x + hx, q.y + hy}, 0.004f), at({p.x + hx, p.y + hy}, 0.004f), f->normal, s.color);
         }
         break;
-      case core::ShapeKind::Text: break;
+      case core::ShapeKind::Text:
+        break;
     }
   }
 }

@@ -63,12 +63,12 @@ class StageMesh {
   std::vector<LitVertex> fixed_;
   float scale_ = 1;
   Eigen::Vector3d centre_ = Eigen::Vector3d::Zero();  // the solid's centre, level units
-  float edge_ = 1;  // the longest edge, in stage units
+  float edge_ = 1;                                    // the longest edge, in stage units
   bool flat_ = false;
 };
 
 // Emits triangle a b c wound so that its front faces along `normal`.
-void addTriangle(std::vector<LitVertex>& out, const Eigen::Vector3f& a, const Eigen::Vector3f& b, const Eigen::Vector3f& c,
-                 const Eigen::Vector3f& normal, core::Color color);
+void addTriangle(std::vector<LitVertex>& out, const Eigen::Vector3f& a, const Eigen::Vector3f& b,
+                 const Eigen::Vector3f& c, const Eigen::Vector3f& normal, core::Color color);
 
 }  // namespace platon::render

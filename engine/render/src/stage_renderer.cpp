@@ -13,7 +13,8 @@ void describeLitVertices() {
   glEnableVertexAttribArray(1);
   glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(LitVertex), reinterpret_cast<void*>(offsetof(LitVertex, nx)));
   glEnableVertexAttribArray(2);
-  glVertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(LitVertex), reinterpret_cast<void*>(offsetof(LitVertex, r)));
+  glVertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(LitVertex),
+                        reinterpret_cast<void*>(offsetof(LitVertex, r)));
 }
 
 StageRenderer::StageRenderer() : program_(shaders::lit_vert, shaders::lit_frag, "lit") {
@@ -95,7 +96,8 @@ void StageRenderer::draw(const core::View& view, const core::DrawList& draw, int
   glDisable(GL_DEPTH_TEST);
 }
 
-bool StageRenderer::project(physics::MapPartId part, core::Point2 p, float height, core::Point2& pixel, float& pixels) const {
+bool StageRenderer::project(physics::MapPartId part, core::Point2 p, float height, core::Point2& pixel,
+                            float& pixels) const {
   Eigen::Vector3f at, above, normal;
   if (!mesh_ || !mesh_->toStage(part, p, 0.01f, at) || !mesh_->toStage(part, {p.x, p.y + height}, 0.01f, above) ||
       !mesh_->normalOf(part, normal))

@@ -1,10 +1,9 @@
 #include "text.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cstddef>
 #include <stdexcept>
+#include <unistd.h>
 #include <vector>
 
 #include "shaders.h"
@@ -23,7 +22,8 @@ Text::Text() : program_(shaders::text_vert, shaders::text_frag, "text") {
   for (const char* file : kFontFiles)
     if (access(file, R_OK) == 0) fontFile_ = file;
   if (fontFile_.empty())
-    throw std::runtime_error(std::string("no font: ") + kFontFiles[0] + " is missing (Debian package fonts-dejavu-core)");
+    throw std::runtime_error(std::string("no font: ") + kFontFiles[0] +
+                             " is missing (Debian package fonts-dejavu-core)");
   screenSize_ = program_.uniform("screenSize");
   glGenVertexArrays(1, &vao_);
   glGenBuffers(1, &vbo_);
@@ -61,7 +61,8 @@ const Text::Texture* Text::texture(const std::string& text, int pixels, core::Co
     it->second.lastFrame = frame_;
     return &it->second;
   }
-  SDL_Surface* rendered = TTF_RenderUTF8_Blended(font(pixels), text.c_str(), SDL_Color{color.r, color.g, color.b, color.a});
+  SDL_Surface* rendered =
+      TTF_RenderUTF8_Blended(font(pixels), text.c_str(), SDL_Color{color.r, color.g, color.b, color.a});
   if (!rendered) return nullptr;  // an empty string, say
   SDL_Surface* rgbaSurface = SDL_ConvertSurfaceFormat(rendered, SDL_PIXELFORMAT_ABGR8888, 0);
   SDL_FreeSurface(rendered);
@@ -115,8 +116,8 @@ void Text::flush(float screenWidth, float screenHeight) {
     glBindBuffer(GL_ARRAY_BUFFER, vbo_);
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     for (const Quad& q : queued_) {
-      const float v[] = {q.x, q.y, 0, 0, q.x + q.w, q.y, 1, 0, q.x + q.w, q.y + q.h, 1, 1,
-                         q.x, q.y, 0, 0, q.x + q.w, q.y + q.h, 1, 1, q.x, q.y + q.h, 0, 1};
+      const float v[] = {q.x, q.y, 0, 0, q.x + q.w, q.y,       1, 0, q.x + q.w, q.y + q.h, 1, 1,
+                         q.x, q.y, 0, 0, q.x + q.w, q.y + q.h, 1, 1, q.x,       q.y + q.h, 0, 1};
       glBufferData(GL_ARRAY_BUFFER, sizeof v, v, GL_STREAM_DRAW);
       glBindTexture(GL_TEXTURE_2D, q.texture);
       glDrawArrays(GL_TRIANGLES, 0, 6);

@@ -3,7 +3,6 @@
 // flushes (a frame flushes up to three times: scene, heads-up lines, error overlay) are dropped.
 #pragma once
 #include <SDL2/SDL_ttf.h>
-
 #include <map>
 #include <memory>
 #include <string>

@@ -1,11 +1,10 @@
 #include "window.h"
 
-#include <epoxy/gl.h>
-
 #include <algorithm>
+#include <cstddef>
 #include <cstdlib>
 #include <cstring>
-#include <cstddef>
+#include <epoxy/gl.h>
 #include <optional>
 #include <stdexcept>
 
@@ -63,7 +62,8 @@ Window::Window(const std::string& title, int width, int height) {
   // A software rasterizer (Mesa's llvmpipe) has multisampling but pays for it on every pixel, about
   // twice the frame: without a say from PLATON_MULTISAMPLE, such a context is made again without it.
   const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  const bool software = renderer && (std::strstr(renderer, "llvmpipe") || std::strstr(renderer, "softpipe") || std::strstr(renderer, "swrast"));
+  const bool software = renderer && (std::strstr(renderer, "llvmpipe") || std::strstr(renderer, "softpipe") ||
+                                     std::strstr(renderer, "swrast"));
   if (software && !wanted && first > 0) {
     SDL_GL_DeleteContext(context_);
     SDL_DestroyWindow(window_);
@@ -99,34 +99,52 @@ namespace {
 
 std::optional<core::Key> keyOf(SDL_Keycode key) {
   switch (key) {
-    case SDLK_ESCAPE: return core::Key::Escape;
+    case SDLK_ESCAPE:
+      return core::Key::Escape;
     case SDLK_RETURN:
-    case SDLK_KP_ENTER: return core::Key::Enter;
+    case SDLK_KP_ENTER:
+      return core::Key::Enter;
     case SDLK_UP:
-    case SDLK_w: return core::Key::Up;
+    case SDLK_w:
+      return core::Key::Up;
     case SDLK_DOWN:
-    case SDLK_s: return core::Key::Down;
+    case SDLK_s:
+      return core::Key::Down;
     case SDLK_LEFT:
-    case SDLK_a: return core::Key::Left;
+    case SDLK_a:
+      return core::Key::Left;
     case SDLK_RIGHT:
-    case SDLK_d: return core::Key::Right;
-    case SDLK_r: return core::Key::Restart;
-    case SDLK_F5: return core::Key::Reload;
-    case SDLK_F3: return core::Key::ShowFps;
-    default: return std::nullopt;
+    case SDLK_d:
+      return core::Key::Right;
+    case SDLK_r:
+      return core::Key::Restart;
+    case SDLK_F5:
+      return core::Key::Reload;
+    case SDLK_F3:
+      return core::Key::ShowFps;
+    default:
+      return std::nullopt;
   }
 }
 
 std::optional<core::Key> keyOf(SDL_GameControllerButton button) {
   switch (button) {
-    case SDL_CONTROLLER_BUTTON_START: return core::Key::Escape;
-    case SDL_CONTROLLER_BUTTON_A: return core::Key::Enter;
-    case SDL_CONTROLLER_BUTTON_DPAD_UP: return core::Key::Up;
-    case SDL_CONTROLLER_BUTTON_DPAD_DOWN: return core::Key::Down;
-    case SDL_CONTROLLER_BUTTON_DPAD_LEFT: return core::Key::Left;
-    case SDL_CONTROLLER_BUTTON_DPAD_RIGHT: return core::Key::Right;
-    case SDL_CONTROLLER_BUTTON_BACK: return core::Key::Restart;
-    default: return std::nullopt;
+    case SDL_CONTROLLER_BUTTON_START:
+      return core::Key::Escape;
+    case SDL_CONTROLLER_BUTTON_A:
+      return core::Key::Enter;
+    case SDL_CONTROLLER_BUTTON_DPAD_UP:
+      return core::Key::Up;
+    case SDL_CONTROLLER_BUTTON_DPAD_DOWN:
+      return core::Key::Down;
+    case SDL_CONTROLLER_BUTTON_DPAD_LEFT:
+      return core::Key::Left;
+    case SDL_CONTROLLER_BUTTON_DPAD_RIGHT:
+      return core::Key::Right;
+    case SDL_CONTROLLER_BUTTON_BACK:
+      return core::Key::Restart;
+    default:
+      return std::nullopt;
   }
 }
 
@@ -155,7 +173,9 @@ core::WindowInput Window::pollEvents() {
   SDL_Event event;
   while (SDL_PollEvent(&event)) {
     switch (event.type) {
-      case SDL_QUIT: input.closed = true; break;
+      case SDL_QUIT:
+        input.closed = true;
+        break;
       case SDL_KEYDOWN:
         if (event.key.repeat) break;
         if (event.key.keysym.sym == SDLK_F11) {
@@ -177,9 +197,11 @@ core::WindowInput Window::pollEvents() {
           }
         break;
       case SDL_CONTROLLERBUTTONDOWN:
-        if (const auto key = keyOf(static_cast<SDL_GameControllerButton>(event.cbutton.button))) input.pressed.push_back(*key);
+        if (const auto key = keyOf(static_cast<SDL_GameControllerButton>(event.cbutton.button)))
+          input.pressed.push_back(*key);
         break;
-      default: break;
+      default:
+        break;
     }
   }
   input.held = heldButtons();

@@ -2,7 +2,6 @@
 // multisampling when the driver has them. Keyboard and gamepad state become the engine's buttons.
 #pragma once
 #include <SDL2/SDL.h>
-
 #include <cstdint>
 #include <string>
 #include <vector>

@@ -90,7 +90,8 @@ int polygon(lua_State* L) {
     const double x = lua_tonumber(L, -2), y = lua_tonumber(L, -1);
     if (lua_type(L, -2) != LUA_TNUMBER || lua_type(L, -1) != LUA_TNUMBER || !(std::fabs(x) <= 1073741824.0) ||
         !(std::fabs(y) <= 1073741824.0))
-      throw lua::ArgError("polygon: argument 2: point " + std::to_string(i / 2 + 1) + " is not two numbers within +-2^30");
+      throw lua::ArgError("polygon: argument 2: point " + std::to_string(i / 2 + 1) +
+                          " is not two numbers within +-2^30");
     points.push_back({static_cast<float>(x), static_cast<float>(y)});
     lua_pop(L, 2);
   }
@@ -99,8 +100,9 @@ int polygon(lua_State* L) {
     const core::Point2 a = points[i], b = points[(i + 1) % points.size()], c = points[(i + 2) % points.size()];
     const double turn = (double(b.x) - a.x) * (double(c.y) - b.y) - (double(b.y) - a.y) * (double(c.x) - b.x);
     if (turn < 0)
-      throw lua::ArgError("polygon: argument 2: the points must go counter-clockwise round a convex shape (it turns right at point " +
-                          std::to_string((i + 1) % points.size() + 1) + ")");
+      throw lua::ArgError(
+          "polygon: argument 2: the points must go counter-clockwise round a convex shape (it turns right at point " +
+          std::to_string((i + 1) % points.size() + 1) + ")");
   }
   const core::Color colour = checkColor(L, 3);
   core::DrawList* out = contextOf(L).draw;
@@ -127,7 +129,7 @@ int enabled(lua_State* L) {
 }
 
 constexpr luaL_Reg kDraw[] = {
-    {"circle", lua::bound<circle>}, {"line", lua::bound<line>}, {"polygon", lua::bound<polygon>},
+    {"circle", lua::bound<circle>}, {"line", lua::bound<line>},       {"polygon", lua::bound<polygon>},
     {"text", lua::bound<text>},     {"enabled", lua::bound<enabled>}, {nullptr, nullptr},
 };
 

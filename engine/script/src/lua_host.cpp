@@ -1,16 +1,15 @@
 #include "lua_host.h"
 
-#include <luajit.h>
-#include <signal.h>
-#include <time.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <atomic>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <luajit.h>
 #include <mutex>
+#include <signal.h>
+#include <time.h>
+#include <unistd.h>
 
 #include "lua_pattern.h"
 #include "sandbox.h"
@@ -249,7 +248,8 @@ std::string milliseconds(int64_t nanoseconds) { return std::to_string((nanosecon
 
 std::string memoryStopText(const LuaHost::Shared& s) {
   return "script stopped: the sandboxes reached their memory limit of " + std::to_string(s.sandboxLimit() >> 20) +
-         " MB (of the Lua state's " + std::to_string(s.limits.memoryBytes >> 20) + " MB; the rest is kept for the engine)";
+         " MB (of the Lua state's " + std::to_string(s.limits.memoryBytes >> 20) +
+         " MB; the rest is kept for the engine)";
 }
 
 // Raises the stop the hook decided on (the same message at every instruction until the sandboxed
@@ -299,8 +299,8 @@ void budgetHook(lua_State* L, lua_Debug*) {
       if (at.empty()) at = s.sandboxes[s.current].name + ": ";
       const std::string budget = milliseconds(s.limits.callNanoseconds);
       if (hog == s.current) {
-        s.stopMessage = at + "script stopped: it ran longer than the frame's script budget of " + budget +
-                        " (an endless loop?)";
+        s.stopMessage =
+            at + "script stopped: it ran longer than the frame's script budget of " + budget + " (an endless loop?)";
       } else {
         s.stopMessage = at + "script stopped: the frame's script budget of " + budget + " is spent (" +
                         s.sandboxes[hog].name + " ran " + milliseconds(s.sandboxes[hog].spent) + " of it)";
@@ -347,8 +347,10 @@ std::string printableMessage(lua_State* L, int index) {
   std::string text;
   text.reserve(std::min(length, kLongest) + 16);
   for (size_t i = 0; i < length && text.size() < kLongest; ++i) {
-    if (raw[i] == '\0') text += "\\0";
-    else text += raw[i];
+    if (raw[i] == '\0')
+      text += "\\0";
+    else
+      text += raw[i];
   }
   if (text.size() >= kLongest && length > kLongest) text += "... (cut: " + std::to_string(length) + " bytes in all)";
   return text;
@@ -464,8 +466,8 @@ void LuaHost::pushReadOnly(int index, std::string_view name) {
 }
 
 int LuaHost::newSandbox(const std::string& chunkName) {
-  const std::string name = chunkName.size() > 1 && (chunkName[0] == '@' || chunkName[0] == '=') ? chunkName.substr(1)
-                                                                                                 : chunkName;
+  const std::string name =
+      chunkName.size() > 1 && (chunkName[0] == '@' || chunkName[0] == '=') ? chunkName.substr(1) : chunkName;
   lua_getfield(L_, LUA_REGISTRYINDEX, "platon.newSandbox");
   lua_pushlstring(L_, name.data(), name.size());
   pushApi();
@@ -484,8 +486,8 @@ int LuaHost::loadString(std::string_view code, const std::string& chunkName, Tru
     throw ScriptError(chunkName.substr(chunkName[0] == '@' || chunkName[0] == '=' ? 1 : 0) +
                           ": a compiled (bytecode) chunk: sandboxed scripts load from text only",
                       "");
-  const int status = luaL_loadbufferx(L_, code.data(), code.size(), chunkName.c_str(),
-                                      trust == Trust::Sandboxed ? "t" : "bt");
+  const int status =
+      luaL_loadbufferx(L_, code.data(), code.size(), chunkName.c_str(), trust == Trust::Sandboxed ? "t" : "bt");
   if (status != 0) {
     ScriptError error = errorFromStack(L_, status, *shared_);
     lua_settop(L_, top);
@@ -523,7 +525,8 @@ void LuaHost::call(int nargs, int nresults) {
   const int status = lua_pcall(L_, nargs, nresults, kTracebackSlot);
   depth_ = 0;
   shared.inCall = false;
-  if (status != 0 || shared.trustedExpired) [[unlikely]] afterFailedCall(status, lua_gettop(L_) - 1);
+  if (status != 0 || shared.trustedExpired) [[unlikely]]
+    afterFailedCall(status, lua_gettop(L_) - 1);
 }
 
 void LuaHost::callNested(int nargs, int nresults) {
@@ -581,9 +584,10 @@ bool LuaHost::callSandboxed(int sandbox, int nargs, int nresults) {
     if (s.frameSpent >= s.limits.callNanoseconds) {  // the frame's budget is spent: skipped
       lua_pop(L_, nargs + 1);
       if (!s.skipNoted && !s.stopNoted)
-        keepError(ScriptError(box.name + ": skipped: the frame's script budget of " + milliseconds(s.limits.callNanoseconds) +
-                                 " is spent (the level's scripts and mods share it; their other calls this frame are skipped)",
-                             ""));
+        keepError(ScriptError(
+            box.name + ": skipped: the frame's script budget of " + milliseconds(s.limits.callNanoseconds) +
+                " is spent (the level's scripts and mods share it; their other calls this frame are skipped)",
+            ""));
       s.skipNoted = true;
       return false;
     }
@@ -618,7 +622,8 @@ bool LuaHost::callSandboxed(int sandbox, int nargs, int nresults) {
   s.inSandbox = 0;
   const bool stopped = s.expired || s.memoryStop != kNoSandbox;
   if (s.hookFast) hookAtNormalRate(s);
-  if (status == 0 && !stopped) [[likely]] return true;
+  if (status == 0 && !stopped) [[likely]]
+    return true;
   // An error, or a stop. A stop disables the sandbox that ran over: the one whose allocation was
   // refused, or the one that spent the most of the frame's time.
   std::string message, traceback;
@@ -631,7 +636,8 @@ bool LuaHost::callSandboxed(int sandbox, int nargs, int nresults) {
       // LuaJIT may not run the handler after an overflow in a metamethod (it says "stack
       // overflow", with no place and no traceback), and leaves the stack grown: a collection
       // shrinks it back.
-      if (!located(message.c_str())) message = box.name + ": " + message + " (a function or metamethod that calls itself without end?)";
+      if (!located(message.c_str()))
+        message = box.name + ": " + message + " (a function or metamethod that calls itself without end?)";
       lua_gc(L_, LUA_GCCOLLECT, 0);
     } else if (!located(message.c_str())) {
       message = box.name + ": " + message;
@@ -644,8 +650,10 @@ bool LuaHost::callSandboxed(int sandbox, int nargs, int nresults) {
   if (s.memoryStop != kNoSandbox && (status == LUA_ERRMEM || message.empty()))
     message = s.sandboxes[static_cast<size_t>(s.memoryStop)].name + ": " + memoryStopText(s);
   int off = kNoSandbox;
-  if (s.memoryStop != kNoSandbox) off = s.memoryStop;
-  else if (s.expired) off = s.hog != kNoSandbox ? s.hog : sandbox;
+  if (s.memoryStop != kNoSandbox)
+    off = s.memoryStop;
+  else if (s.expired)
+    off = s.hog != kNoSandbox ? s.hog : sandbox;
   if (s.expired && s.memoryStop == kNoSandbox) {
     s.frameSpent = s.limits.callNanoseconds;  // the rest of the frame's sandboxed calls are skipped
     s.stopNoted = true;
@@ -682,7 +690,8 @@ int LuaHost::luaCallSandboxed(lua_State* L) {
   auto* host = static_cast<LuaHost*>(lua_touserdata(L, lua_upvalueindex(1)));
   const int sandbox = static_cast<int>(luaL_checkinteger(L, 1));
   luaL_checktype(L, 2, LUA_TFUNCTION);
-  if (sandbox < 0 || sandbox >= static_cast<int>(host->shared_->sandboxes.size())) luaL_argerror(L, 1, "no such sandbox");
+  if (sandbox < 0 || sandbox >= static_cast<int>(host->shared_->sandboxes.size()))
+    luaL_argerror(L, 1, "no such sandbox");
   lua_remove(L, 1);
   bool ran = false;
   try {
@@ -720,7 +729,9 @@ bool LuaHost::disabled(int sandbox) const {
          shared_->sandboxes[static_cast<size_t>(sandbox)].disabled;
 }
 
-const std::string& LuaHost::sandboxName(int sandbox) const { return shared_->sandboxes.at(static_cast<size_t>(sandbox)).name; }
+const std::string& LuaHost::sandboxName(int sandbox) const {
+  return shared_->sandboxes.at(static_cast<size_t>(sandbox)).name;
+}
 
 int LuaHost::runningSandbox() const { return shared_->current; }
 

@@ -21,11 +21,11 @@
 namespace platon::script {
 namespace {
 
-constexpr int kMaxCaptures = 32;       // as LuaJIT: "too many captures"
-constexpr int kMaxDepth = 200;         // nested backtracking points: "pattern too complex"
-constexpr ptrdiff_t kOpen = -1;        // a capture still open
-constexpr ptrdiff_t kPosition = -2;    // a () capture: a position, not text
-constexpr int kSetCacheBits = 5;       // a call keeps up to 32 compiled [sets] (Matcher::setAt)
+constexpr int kMaxCaptures = 32;            // as LuaJIT: "too many captures"
+constexpr int kMaxDepth = 200;              // nested backtracking points: "pattern too complex"
+constexpr ptrdiff_t kOpen = -1;             // a capture still open
+constexpr ptrdiff_t kPosition = -2;         // a () capture: a position, not text
+constexpr int kSetCacheBits = 5;            // a call keeps up to 32 compiled [sets] (Matcher::setAt)
 constexpr char kSpecials[] = "^$*+?.([%-";  // a find() pattern without any of these is plain text
 
 // Raised by the matcher (which holds nothing that needs freeing) and turned into a Lua error by
@@ -52,18 +52,41 @@ bool isHex(int c) { return isDigit(c) || (c >= 'a' && c <= 'f') || (c >= 'A' && 
 bool classMatches(int c, int letter) {
   bool yes;
   switch (letter | 0x20) {  // a letter's lower case (no other character maps onto a class letter)
-    case 'a': yes = isAlpha(c); break;
-    case 'c': yes = isControl(c); break;
-    case 'd': yes = isDigit(c); break;
-    case 'g': yes = isGraph(c); break;
-    case 'l': yes = isLower(c); break;
-    case 'p': yes = isPunct(c); break;
-    case 's': yes = isSpace(c); break;
-    case 'u': yes = isUpper(c); break;
-    case 'w': yes = isAlnum(c); break;
-    case 'x': yes = isHex(c); break;
-    case 'z': yes = c == 0; break;
-    default: return letter == c;  // %x for any other x: that character
+    case 'a':
+      yes = isAlpha(c);
+      break;
+    case 'c':
+      yes = isControl(c);
+      break;
+    case 'd':
+      yes = isDigit(c);
+      break;
+    case 'g':
+      yes = isGraph(c);
+      break;
+    case 'l':
+      yes = isLower(c);
+      break;
+    case 'p':
+      yes = isPunct(c);
+      break;
+    case 's':
+      yes = isSpace(c);
+      break;
+    case 'u':
+      yes = isUpper(c);
+      break;
+    case 'w':
+      yes = isAlnum(c);
+      break;
+    case 'x':
+      yes = isHex(c);
+      break;
+    case 'z':
+      yes = c == 0;
+      break;
+    default:
+      return letter == c;  // %x for any other x: that character
   }
   return isUpper(letter) ? !yes : yes;
 }
@@ -179,10 +202,14 @@ class Matcher {
 
   bool single(int c, const char* p) {
     switch (*p) {
-      case '.': return true;
-      case '%': return classMatches(c, uc(p[1]));
-      case '[': return setAt(p).chars.has(c);
-      default: return uc(*p) == c;
+      case '.':
+        return true;
+      case '%':
+        return classMatches(c, uc(p[1]));
+      case '[':
+        return setAt(p).chars.has(c);
+      default:
+        return uc(*p) == c;
     }
   }
 
@@ -233,7 +260,8 @@ class Matcher {
         case '(':
           if (p + 1 < patternEnd_ && p[1] == ')') return openCapture(s, p + 2, kPosition);
           return openCapture(s, p + 1, kOpen);
-        case ')': return closeCapture(s, p + 1);
+        case ')':
+          return closeCapture(s, p + 1);
         case '$':
           if (p + 1 == patternEnd_) return s == subjectEnd_ ? s : nullptr;
           break;
@@ -262,7 +290,8 @@ class Matcher {
             continue;
           }
           break;
-        default: break;
+        default:
+          break;
       }
       const char* ep = classEnd(p);
       step();
@@ -275,9 +304,12 @@ class Matcher {
           }
           p = ep + 1;
           continue;
-        case '*': return longest(s, p, ep);
-        case '+': return here ? longest(s + 1, p, ep) : nullptr;
-        case '-': return shortest(s, p, ep);
+        case '*':
+          return longest(s, p, ep);
+        case '+':
+          return here ? longest(s + 1, p, ep) : nullptr;
+        case '-':
+          return shortest(s, p, ep);
         default:
           if (!here) return nullptr;
           ++s;
@@ -306,8 +338,10 @@ class Matcher {
     for (;;) {
       step();
       if (const char* r = match(s, ep + 1)) return r;
-      if (s < subjectEnd_ && single(uc(*s), p)) ++s;
-      else return nullptr;
+      if (s < subjectEnd_ && single(uc(*s), p))
+        ++s;
+      else
+        return nullptr;
     }
   }
 
@@ -405,8 +439,10 @@ int64_t optInt32(lua_State* L, int index, int64_t fallback) {
 // The start position of find and match: init counts from 1, negative from the end, clamped.
 size_t startOf(lua_State* L, int index, size_t length) {
   int64_t start = optInt32(L, index, 1);
-  if (start < 0) start += static_cast<int64_t>(length);
-  else start -= 1;
+  if (start < 0)
+    start += static_cast<int64_t>(length);
+  else
+    start -= 1;
   if (start < 0) start = 0;
   return static_cast<size_t>(start) > length ? length : static_cast<size_t>(start);
 }
@@ -420,8 +456,10 @@ int refusing(lua_State* L, F&& f) {
   try {
     return f();
   } catch (const Refusal& r) {
-    if (r.message) message = r.message;
-    else costly = true;
+    if (r.message)
+      message = r.message;
+    else
+      costly = true;
   }
   if (costly) return luaL_error(L, "pattern too costly (more than %d steps)", static_cast<int>(kPatternStepBudget));
   return luaL_error(L, "%s", message);

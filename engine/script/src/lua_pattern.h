@@ -12,9 +12,8 @@
 // the shared string metatable (s:find(...)), for every script; trusted code keeps LuaJIT's own in
 // its global `string`.
 #pragma once
-#include <lua.hpp>
-
 #include <cstdint>
+#include <lua.hpp>
 
 namespace platon::script {
 

@@ -5,7 +5,7 @@
 namespace platon::script {
 namespace {
 
-constexpr const char* kNames[] = {"pierce", "beginContact", "overContact", "endContact",
+constexpr const char* kNames[] = {"pierce",  "beginContact", "overContact", "endContact",
                                   "contact", "touchContact", "crushed"};
 using lua::pushEntity;
 
@@ -78,7 +78,8 @@ LuaRules::LuaRules(LuaHost& host, int index, Call how, int sandbox) : host_(host
     lua_pushstring(L, kNames[i]);
     lua_rawget(L, index);
     if (!lua_isfunction(L, -1) && !lua_isnil(L, -1))
-      throw ScriptError(std::string("rules: '") + kNames[i] + "' is a " + luaL_typename(L, -1) + ", not a function", "");
+      throw ScriptError(std::string("rules: '") + kNames[i] + "' is a " + luaL_typename(L, -1) + ", not a function",
+                        "");
     if (lua_isfunction(L, -1)) {
       // Where the callback is written, for errors about what it returns (file:line of its start).
       lua_Debug ar;
@@ -139,8 +140,10 @@ inline int LuaRules::pushLine(physics::EntityId entity, const physics::LineRef& 
   lua_pushnumber(L, line.tag);
   kindNames_[kind].push();
   lua_pushnumber(L, line.part);
-  if (withEntity) lua_pushnil(L);
-  else lua_pushnumber(L, line.index);
+  if (withEntity)
+    lua_pushnil(L);
+  else
+    lua_pushnumber(L, line.index);
   return 5;
 }
 
@@ -198,10 +201,12 @@ void LuaRules::event(Callback which, const physics::Contact& c) {
   if (!callbacks_[which].isSet() || skipped()) return;
   const int top = lua_gettop(host_.state());
   callbacks_[which].push();
-  invoke(pushArguments(top, [&] {
-    const int n = pushLine(c.entity, c.line);  // in this order: the arguments' order
-    return n + pushOther(c.other);
-  }), 0);
+  invoke(pushArguments(top,
+                       [&] {
+                         const int n = pushLine(c.entity, c.line);  // in this order: the arguments' order
+                         return n + pushOther(c.other);
+                       }),
+         0);
 }
 
 void LuaRules::contact(const physics::Contact& c, physics::ContactResponse& response) {

@@ -4,12 +4,11 @@
 // through a C++ frame that holds a live object: checks throw ArgError inside the try block,
 // the wrapper leaves it, and only then raises the Lua error.
 #pragma once
-#include <lua.hpp>
-
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <cstdint>
+#include <lua.hpp>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -53,7 +52,8 @@ inline std::string shownValue(lua_State* L, int index) {
 }
 
 [[noreturn]] inline void argError(lua_State* L, int index, std::string_view expected) {
-  throw ArgError("argument " + std::to_string(index) + ": expected " + std::string(expected) + ", got " + shownValue(L, index));
+  throw ArgError("argument " + std::to_string(index) + ": expected " + std::string(expected) + ", got " +
+                 shownValue(L, index));
 }
 
 inline double checkNumber(lua_State* L, int index) {

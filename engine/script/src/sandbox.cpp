@@ -60,8 +60,9 @@ std::string visitKeys(lua_State* L, size_t n, Visit&& visit) {
     } else if (key.kind == LUA_TBOOLEAN) {
       key.boolean = lua_toboolean(L, -1);
     } else {
-      const std::string why = std::string("pairs over ") + lua_typename(L, key.kind) +
-                              " keys has no fixed order in a replayable game (key the table by numbers, strings or booleans)";
+      const std::string why =
+          std::string("pairs over ") + lua_typename(L, key.kind) +
+          " keys has no fixed order in a replayable game (key the table by numbers, strings or booleans)";
       lua_pop(L, 1);
       return why;
     }
@@ -71,9 +72,12 @@ std::string visitKeys(lua_State* L, size_t n, Visit&& visit) {
 }
 
 void pushKey(lua_State* L, const Key& key) {
-  if (key.kind == LUA_TNUMBER) lua_pushnumber(L, key.number);
-  else if (key.kind == LUA_TSTRING) lua_pushlstring(L, key.text, key.length);
-  else lua_pushboolean(L, key.boolean);
+  if (key.kind == LUA_TNUMBER)
+    lua_pushnumber(L, key.number);
+  else if (key.kind == LUA_TSTRING)
+    lua_pushlstring(L, key.text, key.length);
+  else
+    lua_pushboolean(L, key.boolean);
 }
 
 int refuse(lua_State* L, const std::string& why) {
@@ -91,17 +95,20 @@ int firstKey(lua_State* L) {
   Key first{LUA_TNIL};
   auto rank = [](const Key& k) { return k.kind == LUA_TNUMBER ? 0 : k.kind == LUA_TSTRING ? 1 : k.boolean ? 3 : 2; };
   const std::string why = visitKeys(L, n, [&](const Key& key) {
-    const bool before = !any || rank(key) < rank(first) ||
-                        (rank(key) == rank(first) &&
-                         (key.kind == LUA_TNUMBER ? key.number < first.number
-                                                  : key.kind == LUA_TSTRING && bytesBefore(key, first)));
+    const bool before =
+        !any || rank(key) < rank(first) ||
+        (rank(key) == rank(first) &&
+         (key.kind == LUA_TNUMBER ? key.number < first.number : key.kind == LUA_TSTRING && bytesBefore(key, first)));
     if (before) first = key;
     any = true;
   });
   if (!why.empty()) return refuse(L, why);
-  if (n > 0) lua_pushnumber(L, 1);
-  else if (any) pushKey(L, first);
-  else lua_pushnil(L);
+  if (n > 0)
+    lua_pushnumber(L, 1);
+  else if (any)
+    pushKey(L, first);
+  else
+    lua_pushnil(L);
   lua_pushnumber(L, static_cast<double>(n));
   return 2;
 }
@@ -113,15 +120,19 @@ int orderedKeys(lua_State* L) {
   if (lua_isboolean(L, 2) && lua_toboolean(L, 2)) return firstKey(L);
   // The array part the walk began with, when a walk's first key came from firstKey: its keys keep
   // their place even if one of them was removed since (the rest would sort among the numbers).
-  const size_t n = lua_isnumber(L, 2) ? static_cast<size_t>(std::clamp(lua_tonumber(L, 2), 0.0, double(kMaxOrderedKeys)))
-                                      : arrayLength(L);
+  const size_t n = lua_isnumber(L, 2)
+                       ? static_cast<size_t>(std::clamp(lua_tonumber(L, 2), 0.0, double(kMaxOrderedKeys)))
+                       : arrayLength(L);
   std::vector<double> numbers;
   std::vector<Key> strings;
   bool hasFalse = false, hasTrue = false;
   const std::string why = visitKeys(L, n, [&](const Key& key) {
-    if (key.kind == LUA_TNUMBER) numbers.push_back(key.number);
-    else if (key.kind == LUA_TSTRING) strings.push_back(key);
-    else (key.boolean ? hasTrue : hasFalse) = true;
+    if (key.kind == LUA_TNUMBER)
+      numbers.push_back(key.number);
+    else if (key.kind == LUA_TSTRING)
+      strings.push_back(key);
+    else
+      (key.boolean ? hasTrue : hasFalse) = true;
   });
   if (!why.empty()) return refuse(L, why);
   std::sort(numbers.begin(), numbers.end());

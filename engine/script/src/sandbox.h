@@ -1,7 +1,6 @@
 // The sandbox's environment factory, written in Lua and run once per state as trusted code.
 #pragma once
 #include <lua.hpp>
-
 #include <string_view>
 
 namespace platon::script {

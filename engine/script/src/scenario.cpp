@@ -36,7 +36,7 @@ struct Datum {
   Kind kind = Kind::Nil;
   bool boolean = false;
   double number = 0;
-  std::string text;  // a string's bytes; for Other, what it is ("a function")
+  std::string text;                              // a string's bytes; for Other, what it is ("a function")
   std::vector<std::pair<Datum, Datum>> entries;  // a table's keys and values, in file order
   int line = 0, column = 0;
 };
@@ -44,15 +44,20 @@ struct Datum {
 std::string describe(const Datum& d) {
   char number[64];
   switch (d.kind) {
-    case Datum::Kind::Nil: return "nil";
-    case Datum::Kind::Boolean: return d.boolean ? "true" : "false";
+    case Datum::Kind::Nil:
+      return "nil";
+    case Datum::Kind::Boolean:
+      return d.boolean ? "true" : "false";
     case Datum::Kind::Number:
       if (std::isnan(d.number)) return "nan";
       std::snprintf(number, sizeof number, "%.17g", d.number);
       return number;
-    case Datum::Kind::String: return "'" + core::visibleText(d.text.substr(0, 40)) + (d.text.size() > 40 ? "...'" : "'") + " (a string)";
-    case Datum::Kind::Table: return "a table";
-    case Datum::Kind::Other: return d.text;
+    case Datum::Kind::String:
+      return "'" + core::visibleText(d.text.substr(0, 40)) + (d.text.size() > 40 ? "...'" : "'") + " (a string)";
+    case Datum::Kind::Table:
+      return "a table";
+    case Datum::Kind::Other:
+      return d.text;
   }
   return "?";
 }
@@ -91,8 +96,10 @@ class LiteralReader {
  private:
   char peek(size_t ahead = 0) const { return pos_ + ahead < text_.size() ? text_[pos_ + ahead] : '\0'; }
   void advance() {
-    if (text_[pos_] == '\n') ++line_, column_ = 1;
-    else ++column_;
+    if (text_[pos_] == '\n')
+      ++line_, column_ = 1;
+    else
+      ++column_;
     ++pos_;
   }
   void skip(size_t n) {
@@ -171,7 +178,8 @@ class LiteralReader {
       throw NotALiteral{};
     }
     skipSpace();
-    if (peek() != ',' && peek() != ';' && peek() != '}' && peek() != ']' && peek() != '\0') throw NotALiteral{};  // an operator
+    if (peek() != ',' && peek() != ';' && peek() != '}' && peek() != ']' && peek() != '\0')
+      throw NotALiteral{};  // an operator
     return d;
   }
 
@@ -210,10 +218,13 @@ class LiteralReader {
         keyed = true;
       }
       if (!keyed) key.kind = Datum::Kind::Number, key.number = nextIndex++;
-      if (!keys.insert((key.kind == Datum::Kind::String ? "s" + key.text : "n" + describe(key))).second) throw RepeatedKey{key};
+      if (!keys.insert((key.kind == Datum::Kind::String ? "s" + key.text : "n" + describe(key))).second)
+        throw RepeatedKey{key};
       t.entries.emplace_back(std::move(key), value(depth + 1));
-      if (peek() == ',' || peek() == ';') advance();
-      else if (peek() != '}') throw NotALiteral{};
+      if (peek() == ',' || peek() == ';')
+        advance();
+      else if (peek() != '}')
+        throw NotALiteral{};
     }
   }
 
@@ -231,14 +242,25 @@ class LiteralReader {
         if (pos_ >= text_.size()) throw NotALiteral{};
         advance();
         switch (e) {
-          case 'n': c = '\n'; break;
-          case 't': c = '\t'; break;
-          case 'r': c = '\r'; break;
-          case '\\': case '"': case '\'': c = e; break;
+          case 'n':
+            c = '\n';
+            break;
+          case 't':
+            c = '\t';
+            break;
+          case 'r':
+            c = '\r';
+            break;
+          case '\\':
+          case '"':
+          case '\'':
+            c = e;
+            break;
           default: {
             if (!std::isdigit(static_cast<unsigned char>(e))) throw NotALiteral{};  // \x, \z, ...: Lua reads them
             int byte = e - '0';
-            for (int k = 0; k < 2 && std::isdigit(static_cast<unsigned char>(peek())); ++k) byte = byte * 10 + (peek() - '0'), advance();
+            for (int k = 0; k < 2 && std::isdigit(static_cast<unsigned char>(peek())); ++k)
+              byte = byte * 10 + (peek() - '0'), advance();
             if (byte > 255) throw NotALiteral{};
             c = static_cast<char>(byte);
           }
@@ -299,9 +321,14 @@ Datum datumOf(lua_State* L, int index, int depth, int line) {
   Datum d;
   d.line = line;
   switch (lua_type(L, index)) {
-    case LUA_TNIL: break;
-    case LUA_TBOOLEAN: d.kind = Datum::Kind::Boolean, d.boolean = lua_toboolean(L, index) != 0; break;
-    case LUA_TNUMBER: d.kind = Datum::Kind::Number, d.number = lua_tonumber(L, index); break;
+    case LUA_TNIL:
+      break;
+    case LUA_TBOOLEAN:
+      d.kind = Datum::Kind::Boolean, d.boolean = lua_toboolean(L, index) != 0;
+      break;
+    case LUA_TNUMBER:
+      d.kind = Datum::Kind::Number, d.number = lua_tonumber(L, index);
+      break;
     case LUA_TSTRING: {
       size_t length = 0;
       const char* text = lua_tolstring(L, index, &length);
@@ -322,10 +349,13 @@ Datum datumOf(lua_State* L, int index, int depth, int line) {
         const bool an = a.first.kind == Datum::Kind::Number, bn = b.first.kind == Datum::Kind::Number;
         if (an != bn) return an;
         if (an) return a.first.number < b.first.number;
-        return a.first.kind == Datum::Kind::String && b.first.kind == Datum::Kind::String && a.first.text < b.first.text;
+        return a.first.kind == Datum::Kind::String && b.first.kind == Datum::Kind::String &&
+               a.first.text < b.first.text;
       });
       break;
-    default: d.kind = Datum::Kind::Other, d.text = std::string("a ") + lua_typename(L, lua_type(L, index)); break;
+    default:
+      d.kind = Datum::Kind::Other, d.text = std::string("a ") + lua_typename(L, lua_type(L, index));
+      break;
   }
   return d;
 }
@@ -353,7 +383,8 @@ Datum runScenarioFile(const std::string& path, std::string_view text) {
   lua_pushlightuserdata(L, &job);
   lua_pushvalue(L, -3);
   host.call(2, 0);
-  if (!job.error.empty()) throw ScriptError(path + (job.line ? ":" + std::to_string(job.line) : "") + ": " + job.error, "");
+  if (!job.error.empty())
+    throw ScriptError(path + (job.line ? ":" + std::to_string(job.line) : "") + ": " + job.error, "");
   return std::move(job.out);
 }
 
@@ -370,8 +401,8 @@ Datum readScenarioFile(const std::string& path) {
   } catch (const NotALiteral&) {
     return runScenarioFile(path, text);
   } catch (const RepeatedKey& repeated) {
-    throw ScriptError(path + ":" + std::to_string(repeated.key.line) + ":" + std::to_string(repeated.key.column) + ": " +
-                          "the key " + keyText(repeated.key) + " is given twice in one table",
+    throw ScriptError(path + ":" + std::to_string(repeated.key.line) + ":" + std::to_string(repeated.key.column) +
+                          ": " + "the key " + keyText(repeated.key) + " is given twice in one table",
                       "");
   }
 }
@@ -484,15 +515,17 @@ class PlanReader {
   }
   // A list: keys 1, 2, ... n with no holes, each a table.
   std::vector<const Datum*> list(const Datum& d, const std::string& where, const char* ofWhat) const {
-    if (d.kind != Datum::Kind::Table) fail(d, where, std::string("expected a list of ") + ofWhat + ", got " + describe(d));
+    if (d.kind != Datum::Kind::Table)
+      fail(d, where, std::string("expected a list of ") + ofWhat + ", got " + describe(d));
     std::vector<const Datum*> items;
     for (const auto& [key, value] : d.entries) {
       const std::string item = where + "[" + keyText(key) + "]";
       if (key.kind != Datum::Kind::Number || key.number != static_cast<double>(items.size() + 1))
         fail(key.line ? key : value, item,
-             std::string("not item ") + std::to_string(items.size() + 1) + " of a list (" + where + " is a list of " + ofWhat +
-                 ", items 1, 2, 3... with no holes)");
-      if (value.kind != Datum::Kind::Table) fail(value, item, std::string("expected ") + ofWhat + ", got " + describe(value));
+             std::string("not item ") + std::to_string(items.size() + 1) + " of a list (" + where + " is a list of " +
+                 ofWhat + ", items 1, 2, 3... with no holes)");
+      if (value.kind != Datum::Kind::Table)
+        fail(value, item, std::string("expected ") + ofWhat + ", got " + describe(value));
       items.push_back(&value);
     }
     return items;
@@ -504,13 +537,15 @@ class PlanReader {
   core::Button button(const Datum& d, const std::string& where) const {
     core::Button b{};
     if (d.kind != Datum::Kind::String || !core::buttonFromName(d.text, b))
-      fail(d, where, "unknown button " + (d.kind == Datum::Kind::String ? keyText(d) : describe(d)) +
-                         " (left, right, up, down, jump, restart, pause, reload)");
+      fail(d, where,
+           "unknown button " + (d.kind == Datum::Kind::String ? keyText(d) : describe(d)) +
+               " (left, right, up, down, jump, restart, pause, reload)");
     return b;
   }
 
   void readInput(const Datum& input, Plan& plan) const {
-    const std::vector<const Datum*> items = list(input, "input", "{ hold = \"button\", from =, to = } or { press = \"button\", at =, frames = }");
+    const std::vector<const Datum*> items =
+        list(input, "input", "{ hold = \"button\", from =, to = } or { press = \"button\", at =, frames = }");
     for (size_t i = 0; i < items.size(); ++i) {
       const Datum& item = *items[i];
       const std::string where = "input[" + std::to_string(i + 1) + "]";
@@ -525,7 +560,9 @@ class PlanReader {
         b = button(*hold, where);
         from = wholeNumber(required(item, "from", where), where + ".from", 1, last);
         to = wholeNumber(required(item, "to", where), where + ".to", 1, last);
-        if (to < from) fail(required(item, "to", where), where + ".to", "frame " + std::to_string(to) + " is before from = " + std::to_string(from));
+        if (to < from)
+          fail(required(item, "to", where), where + ".to",
+               "frame " + std::to_string(to) + " is before from = " + std::to_string(from));
       } else if (press) {
         knownKeys(item, where, {"press", "at", "frames"});
         b = button(*press, where);
@@ -533,7 +570,9 @@ class PlanReader {
         const Datum* count = field(item, "frames");
         to = from + (count ? wholeNumber(*count, where + ".frames", 1, last) : 1) - 1;
         if (to > plan.frames)
-          fail(*count, where + ".frames", "the press runs to frame " + std::to_string(to) + ", past the scenario's " + std::to_string(plan.frames) + " frames");
+          fail(*count, where + ".frames",
+               "the press runs to frame " + std::to_string(to) + ", past the scenario's " +
+                   std::to_string(plan.frames) + " frames");
       } else {
         fail(item, where, "give hold = \"button\" (from, to) or press = \"button\" (at, frames)");
       }
@@ -548,14 +587,16 @@ class PlanReader {
   }
 
   void readExpect(const Datum& expect, Plan& plan) const {
-    if (expect.kind != Datum::Kind::Table) fail(expect, "expect", "expected a table of checks, got " + describe(expect));
+    if (expect.kind != Datum::Kind::Table)
+      fail(expect, "expect", "expected a table of checks, got " + describe(expect));
     knownKeys(expect, "expect", {"goal_by", "deaths", "face", "inside", "hash"});
     const auto last = static_cast<double>(plan.frames);
     if (const Datum* goal = field(expect, "goal_by")) plan.goalBy = wholeNumber(*goal, "expect.goal_by", 1, last);
     if (const Datum* deaths = field(expect, "deaths"))
       plan.deaths = static_cast<int>(wholeNumber(*deaths, "expect.deaths", 0, 2147483647.0));
     if (const Datum* face = field(expect, "face")) {
-      if (face->kind != Datum::Kind::Table) fail(*face, "expect.face", "expected { [frame] = face, ... }, got " + describe(*face));
+      if (face->kind != Datum::Kind::Table)
+        fail(*face, "expect.face", "expected { [frame] = face, ... }, got " + describe(*face));
       for (const auto& [key, value] : face->entries) {
         const std::string where = "expect.face[" + keyText(key) + "]";
         const uint64_t f = frameKey(key, value, where, plan);
@@ -564,18 +605,21 @@ class PlanReader {
       }
     }
     if (const Datum* hash = field(expect, "hash")) {
-      if (hash->kind != Datum::Kind::Table) fail(*hash, "expect.hash", "expected { [frame] = \"16 hex digits\", ... }, got " + describe(*hash));
+      if (hash->kind != Datum::Kind::Table)
+        fail(*hash, "expect.hash", "expected { [frame] = \"16 hex digits\", ... }, got " + describe(*hash));
       for (const auto& [key, value] : hash->entries) {
         const std::string where = "expect.hash[" + keyText(key) + "]";
         const uint64_t f = frameKey(key, value, where, plan);
         if (value.kind != Datum::Kind::String || value.text.size() != 16 ||
             value.text.find_first_not_of("0123456789abcdef") != std::string::npos)
-          fail(value, where, "frame " + std::to_string(f) + ": state hash " + describe(value) + " is not 16 lower-case hex digits");
+          fail(value, where,
+               "frame " + std::to_string(f) + ": state hash " + describe(value) + " is not 16 lower-case hex digits");
         plan.hashAt[f] = value.text;
       }
     }
     if (const Datum* inside = field(expect, "inside")) {
-      const std::vector<const Datum*> items = list(*inside, "expect.inside", "{ frame =, face =, box = { x0, y0, x1, y1 } }");
+      const std::vector<const Datum*> items =
+          list(*inside, "expect.inside", "{ frame =, face =, box = { x0, y0, x1, y1 } }");
       for (size_t i = 0; i < items.size(); ++i) {
         const Datum& item = *items[i];
         const std::string where = "expect.inside[" + std::to_string(i + 1) + "]";
@@ -587,10 +631,13 @@ class PlanReader {
         const Datum& box = required(item, "box", where);
         const std::vector<std::pair<Datum, Datum>>& corners = box.entries;
         bool isList = box.kind == Datum::Kind::Table && corners.size() == 4;
-        for (size_t k = 0; isList && k < 4; ++k) isList = corners[k].first.kind == Datum::Kind::Number && corners[k].first.number == static_cast<double>(k + 1);
+        for (size_t k = 0; isList && k < 4; ++k)
+          isList =
+              corners[k].first.kind == Datum::Kind::Number && corners[k].first.number == static_cast<double>(k + 1);
         if (!isList) fail(box, where + ".box", "expected { x0, y0, x1, y1 }, got " + describe(box));
         int32_t* out[] = {&b.x0, &b.y0, &b.x1, &b.y1};
-        for (size_t k = 0; k < 4; ++k) *out[k] = coordinate(corners[k].second, where + ".box[" + std::to_string(k + 1) + "]");
+        for (size_t k = 0; k < 4; ++k)
+          *out[k] = coordinate(corners[k].second, where + ".box[" + std::to_string(k + 1) + "]");
         if (b.x1 < b.x0 || b.y1 < b.y0)
           fail(box, where + ".box", "an inverted box: x0 <= x1 and y0 <= y1 (corners lower left, upper right)");
         plan.inside.push_back(b);
@@ -610,7 +657,8 @@ void checkFaces(const Plan& plan, const core::Scene& scene) {
   auto check = [&](physics::MapPartId face, const std::string& where) {
     if (face >= faces)
       throw ScriptError(where + "face " + std::to_string(face) + " does not exist (the stage's faces are 0.." +
-                            std::to_string(faces == 0 ? 0 : faces - 1) + ")", "");
+                            std::to_string(faces == 0 ? 0 : faces - 1) + ")",
+                        "");
   };
   for (const auto& [frame, face] : plan.faceAt) check(face, plan.faceWhere.at(frame));
   for (const Box& b : plan.inside) check(b.face, b.where);
@@ -622,7 +670,6 @@ std::string hex(uint64_t value) {
   return text;
 }
 
-
 // The checks of frame f; "" when they pass.
 // `filesNote`: said before a hash mismatch ("" or why the recorded hashes may no longer hold).
 std::string checkFrame(const Plan& plan, uint64_t f, core::Scene& scene, ScriptSystem* scripts, uint64_t traceEvery,
@@ -630,8 +677,8 @@ std::string checkFrame(const Plan& plan, uint64_t f, core::Scene& scene, ScriptS
   const std::string at = "frame " + std::to_string(f) + ": ";
   if (traceEvery > 0 && scripts && f % traceEvery == 0) {
     const GameStatus s = scripts->status();
-    std::fprintf(stderr, "%s: frame %llu: face %u at (%d, %d)%s\n", path.c_str(), static_cast<unsigned long long>(f), s.face,
-                 s.x, s.y, s.won ? ", won" : "");
+    std::fprintf(stderr, "%s: frame %llu: face %u at (%d, %d)%s\n", path.c_str(), static_cast<unsigned long long>(f),
+                 s.face, s.x, s.y, s.won ? ", won" : "");
   }
   if (const size_t overlaps = scene.world().countOverlaps(); overlaps != 0)
     return at + std::to_string(overlaps) + " instance(s) overlap a solid line";
@@ -713,11 +760,13 @@ ScenarioResult runPlan(const std::string& path, const std::function<Plan()>& mak
       const GameStatus& s = *result.status;
       if (plan.goalBy && (!s.won || s.wonFrame > *plan.goalBy))
         return finish(false, "goal not reached by frame " + std::to_string(*plan.goalBy) + " (player on face " +
-                                 std::to_string(s.face) + " at " + std::to_string(s.x) + ", " + std::to_string(s.y) + ")");
+                                 std::to_string(s.face) + " at " + std::to_string(s.x) + ", " + std::to_string(s.y) +
+                                 ")");
       if (plan.deaths && s.deaths != *plan.deaths)
         return finish(false, std::to_string(s.deaths) + " deaths, expected " + std::to_string(*plan.deaths));
       if (!plan.hashAt.empty() && !plan.goalBy)
-        return finish(true, std::to_string(plan.hashAt.size()) + " hashes matched" + (s.won ? ", goal at frame " + std::to_string(s.wonFrame) : ""));
+        return finish(true, std::to_string(plan.hashAt.size()) + " hashes matched" +
+                                (s.won ? ", goal at frame " + std::to_string(s.wonFrame) : ""));
       return finish(true, s.won ? "goal at frame " + std::to_string(s.wonFrame) : "ok");
     }
     return finish(true, plan.hashAt.empty() ? "ok" : std::to_string(plan.hashAt.size()) + " hashes matched");
@@ -733,22 +782,26 @@ ScenarioResult runPlan(const std::string& path, const std::function<Plan()>& mak
 }  // namespace
 
 ScenarioResult runScenario(const std::string& path, const RunOptions& options) {
-  return runPlan(path, [&] { return readPlan(path); }, options);
+  return runPlan(
+      path, [&] { return readPlan(path); }, options);
 }
 
 ScenarioResult runReplay(const std::string& path, const RunOptions& options) {
-  return runPlan(path, [&] {
-    const core::Replay replay = core::readReplay(path);
-    Plan plan;
-    plan.scene = replay.scene;
-    plan.frames = replay.frames();
-    plan.held.assign(1, 0);
-    plan.held.insert(plan.held.end(), replay.held.begin(), replay.held.end());
-    for (const core::ReplayHash& h : replay.hashes) plan.hashAt[h.frame] = hex(h.hash);
-    plan.sceneFilesHash = replay.sceneFiles;
-    if (replay.hashes.empty()) plan.passNote = " (the replay has no hashes: its input ran, nothing was compared)";
-    return plan;
-  }, options);
+  return runPlan(
+      path,
+      [&] {
+        const core::Replay replay = core::readReplay(path);
+        Plan plan;
+        plan.scene = replay.scene;
+        plan.frames = replay.frames();
+        plan.held.assign(1, 0);
+        plan.held.insert(plan.held.end(), replay.held.begin(), replay.held.end());
+        for (const core::ReplayHash& h : replay.hashes) plan.hashAt[h.frame] = hex(h.hash);
+        plan.sceneFilesHash = replay.sceneFiles;
+        if (replay.hashes.empty()) plan.passNote = " (the replay has no hashes: its input ran, nothing was compared)";
+        return plan;
+      },
+      options);
 }
 
 namespace {
@@ -774,15 +827,18 @@ std::string luaQuoted(const std::string& text) {
 
 // A name for the leading comment: one line.
 std::string oneLine(std::string text) {
-  std::replace_if(text.begin(), text.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
+  std::replace_if(
+      text.begin(), text.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
   return text;
 }
 
 }  // namespace
 
 std::string scenarioFromReplay(const core::Replay& replay, const ScenarioResult& outcome, const std::string& name) {
-  std::string out = "-- Made by `platon scenario` from " + oneLine(name) + ": the recorded input, and what that run reached.\n";
-  out += "return {\n  scene = " + luaQuoted(replay.scene) + ",\n  frames = " + std::to_string(replay.frames()) + ",\n  input = {\n";
+  std::string out =
+      "-- Made by `platon scenario` from " + oneLine(name) + ": the recorded input, and what that run reached.\n";
+  out += "return {\n  scene = " + luaQuoted(replay.scene) + ",\n  frames = " + std::to_string(replay.frames()) +
+         ",\n  input = {\n";
   for (int b = 0; b < core::kButtonCount; ++b) {
     const std::string button(core::buttonName(static_cast<core::Button>(b)));
     for (size_t i = 0; i < replay.held.size();) {
@@ -792,7 +848,8 @@ std::string scenarioFromReplay(const core::Replay& replay, const ScenarioResult&
       }
       size_t j = i;
       while (j < replay.held.size() && (replay.held[j] >> b & 1)) ++j;
-      out += "    { hold = \"" + button + "\", from = " + std::to_string(i + 1) + ", to = " + std::to_string(j) + " },\n";
+      out +=
+          "    { hold = \"" + button + "\", from = " + std::to_string(i + 1) + ", to = " + std::to_string(j) + " },\n";
       i = j;
     }
   }

@@ -16,8 +16,8 @@ struct ScriptContext {
   core::Scene* scene = nullptr;
   core::DrawList* draw = nullptr;  // set only while draw() runs with a renderer
   LuaHost* host = nullptr;
-  std::shared_ptr<void> ffi;  // the FFI fast path's function table (world_ffi.cpp), when registered
-  std::string ffiError;       // the message of the FFI path's last exception
+  std::shared_ptr<void> ffi;          // the FFI fast path's function table (world_ffi.cpp), when registered
+  std::string ffiError;               // the message of the FFI path's last exception
   physics::EntityId protectedEntity;  // the player's: no sandbox may destroy or erase it
   std::set<double> platforms;         // the live platforms scripts made (as handle numbers)
   // Draw calls this frame that were dropped over DrawList's limits (one error a frame says so).

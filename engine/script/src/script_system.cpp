@@ -1,12 +1,11 @@
 #include "platon/script/script_system.h"
 
-#include <limits.h>
-#include <stdlib.h>
-
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <limits.h>
 #include <optional>
+#include <stdlib.h>
 #include <unordered_map>
 
 #include "lua_rules.h"
@@ -21,7 +20,7 @@ struct ScriptSystem::State {
   ScriptContext context;
   lua::Ref driver;  // the table scripts/scene.lua returned
   std::unique_ptr<LuaRules> rules;
-  std::vector<std::string> files;  // every script file loaded: hot reload watches them
+  std::vector<std::string> files;                      // every script file loaded: hot reload watches them
   bool ffi = std::getenv("PLATON_NO_FFI") == nullptr;  // the FFI fast paths (off: for the benches)
 
   State(core::Scene& s, std::string r, LuaLimits limits) : scene(&s), root(std::move(r)), host(limits) {
@@ -30,7 +29,7 @@ struct ScriptSystem::State {
   }
 
   lua::Ref beforeStep, afterStep;  // driver.beforeStep and driver.afterStep: called every frame
-  GameStatus lastStatus;            // the last status() that worked
+  GameStatus lastStatus;           // the last status() that worked
   // Errors of status() and draw(), which never throw (the game loop calls them outside a frame):
   // reported with the next frame's errors.
   std::vector<ScriptError> deferred;
@@ -48,7 +47,8 @@ struct ScriptSystem::State {
   // The errors kept since the last look (sandboxed calls behind engine.call, and deferred ones),
   // thrown as one: the first one's message and traceback, then the others'.
   void throwKeptErrors() {
-    if (!host.hasErrors() && deferred.empty()) [[likely]] return;
+    if (!host.hasErrors() && deferred.empty()) [[likely]]
+      return;
     std::vector<ScriptError> all = std::move(deferred);
     deferred.clear();
     for (ScriptError& e : host.takeErrors()) all.push_back(std::move(e));
@@ -101,7 +101,8 @@ int engineLoad(lua_State* L) {
     throw ScriptError(e.what() + named, e.traceback());
   }
   state.files.push_back(file);
-  if (!trusted && !std::filesystem::is_regular_file(file)) throw ScriptError(file + ": cannot open the script" + named, "");
+  if (!trusted && !std::filesystem::is_regular_file(file))
+    throw ScriptError(file + ": cannot open the script" + named, "");
   const int sandbox = state.host.loadFile(file, trusted ? Trust::Trusted : Trust::Sandboxed);
   lua_insert(L, 3);
   if (trusted) {
@@ -167,7 +168,8 @@ int engineInvoke(lua_State* L) {
   lua::checkFunction(L, 2);
   lua_remove(L, 1);
   if (!state.host.callSandboxed(sandbox, lua_gettop(L) - 1, LUA_MULTRET))
-    throw ScriptError(state.host.sandboxName(sandbox) + ": not run: it is disabled, or the frame's script budget is spent", "");
+    throw ScriptError(
+        state.host.sandboxName(sandbox) + ": not run: it is disabled, or the frame's script budget is spent", "");
   return lua_gettop(L);
 }
 
@@ -209,15 +211,19 @@ void copyPlain(PlainCopy& job, int index, lua_State* to, int depth) {
     return lua_pushnil(to);
   }
   switch (lua_type(from, index)) {
-    case LUA_TBOOLEAN: return lua_pushboolean(to, lua_toboolean(from, index));
-    case LUA_TNUMBER: return lua_pushnumber(to, lua_tonumber(from, index));
+    case LUA_TBOOLEAN:
+      return lua_pushboolean(to, lua_toboolean(from, index));
+    case LUA_TNUMBER:
+      return lua_pushnumber(to, lua_tonumber(from, index));
     case LUA_TSTRING: {
       size_t n = 0;
       const char* text = lua_tolstring(from, index, &n);
       return lua_pushlstring(to, text, n);
     }
-    case LUA_TTABLE: break;
-    default: return lua_pushnil(to);
+    case LUA_TTABLE:
+      break;
+    default:
+      return lua_pushnil(to);
   }
   const int source = index < 0 ? lua_gettop(from) + index + 1 : index;
   // Copied already (shared, or a cycle back up): the same copy.
@@ -239,8 +245,10 @@ void copyPlain(PlainCopy& job, int index, lua_State* to, int depth) {
     if (keyType != LUA_TSTRING && keyType != LUA_TNUMBER) continue;
     copyPlain(job, -2, to, depth + 1);
     copyPlain(job, lua_gettop(from), to, depth + 1);
-    if (lua_isnil(to, -1)) lua_pop(to, 2);
-    else lua_rawset(to, -3);
+    if (lua_isnil(to, -1))
+      lua_pop(to, 2);
+    else
+      lua_rawset(to, -3);
     if (job.tooBig || job.tooDeep) {
       lua_pop(from, 2);
       return;
@@ -255,7 +263,8 @@ int copyPlainProtected(lua_State* to) {
   job->copies = lua_gettop(to);
   copyPlain(*job, job->index, to, 0);
   if (job->tooBig)
-    return luaL_error(to, "save(): data too large to carry over (more than %d table entries)", static_cast<int>(kMaxCopiedEntries));
+    return luaL_error(to, "save(): data too large to carry over (more than %d table entries)",
+                      static_cast<int>(kMaxCopiedEntries));
   if (job->tooDeep) return luaL_error(to, "save(): data nested more than %d tables deep to carry over", kMaxDepth);
   return 1;
 }

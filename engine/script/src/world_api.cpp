@@ -4,8 +4,8 @@
 // angles: 2^32 per turn, rounded to nearest).
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <cstdio>
+#include <cstring>
 #include <optional>
 #include <vector>
 
@@ -65,15 +65,19 @@ double degrees(physics::Angle angle) { return static_cast<double>(angle) * (360.
 
 physics::MapPartId checkPart(lua_State* L, int index) {
   const physics::MapPartId id = checkUint32(L, index);
-  if (!worldOf(L).findMapPart(id)) throw lua::ArgError("argument " + std::to_string(index) + ": no map part " + std::to_string(id));
+  if (!worldOf(L).findMapPart(id))
+    throw lua::ArgError("argument " + std::to_string(index) + ": no map part " + std::to_string(id));
   return id;
 }
 
 const char* kindName(physics::LineKind kind) {
   switch (kind) {
-    case physics::LineKind::Solid: return "solid";
-    case physics::LineKind::Warp: return "warp";
-    case physics::LineKind::OneWay: return "oneway";
+    case physics::LineKind::Solid:
+      return "solid";
+    case physics::LineKind::Warp:
+      return "warp";
+    case physics::LineKind::OneWay:
+      return "oneway";
   }
   return "solid";
 }
@@ -87,7 +91,8 @@ void rawField(lua_State* L, int table, const char* key) {
 // Reads the integers of t[1..n] (a flat list x0, y0, x1, y1, ...), at most `most` of them; `what`
 // names the list in errors ("createEntity: polygon", "createPlatform: argument 2").
 std::vector<int32_t> intList(lua_State* L, int index, const std::string& what, size_t most) {
-  if (lua_type(L, index) != LUA_TTABLE) throw lua::ArgError(what + ": expected a table, got " + lua::typeName(L, index));
+  if (lua_type(L, index) != LUA_TTABLE)
+    throw lua::ArgError(what + ": expected a table, got " + lua::typeName(L, index));
   const size_t n = lua_objlen(L, index);
   if (n > most) throw lua::ArgError(what + ": at most " + std::to_string(most) + " numbers, got " + std::to_string(n));
   std::vector<int32_t> out;
@@ -157,7 +162,8 @@ int createEntity(lua_State* L) {
     shape = physics::Convex::regular(sides, radius);
   } else if (!lua_isnil(L, -2)) {
     const std::vector<int32_t> half = intList(L, lua_gettop(L) - 1, "createEntity: box", 2);
-    if (half.size() != 2 || half[0] <= 0 || half[1] <= 0) throw lua::ArgError("createEntity: box = {halfWidth, halfHeight}, both > 0");
+    if (half.size() != 2 || half[0] <= 0 || half[1] <= 0)
+      throw lua::ArgError("createEntity: box = {halfWidth, halfHeight}, both > 0");
     shape = physics::Convex::box(half[0], half[1]);
   } else if (!lua_isnil(L, -1)) {
     const std::vector<int32_t> xy = intList(L, lua_gettop(L), "createEntity: polygon", 2 * physics::kMaxConvexVertices);
@@ -179,7 +185,8 @@ int createEntity(lua_State* L) {
 void checkNotProtected(lua_State* L, EntityId id, const char* function) {
   const ScriptContext& context = contextOf(L);
   if (id == context.protectedEntity && context.host->runningSandbox() != kNoSandbox)
-    throw lua::ArgError(std::string(function) + ": the player's entity belongs to the game (a level script or mod may not " +
+    throw lua::ArgError(std::string(function) +
+                        ": the player's entity belongs to the game (a level script or mod may not " +
                         (std::string(function) == "erase" ? "erase" : "destroy") + " it)");
 }
 
@@ -201,9 +208,9 @@ int valid(lua_State* L) {
 bool onFace(const physics::MapPart& part, int64_t x, int64_t y, int64_t slack) {
   for (const physics::LineIndex line : part.faceLoop()) {
     const physics::Segment s = part.segments()[line];
-    const __int128 dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
-    const __int128 side = dx * (y - s.a.y) - dy * (x - s.a.x);
-    if (side < 0 && side * side > __int128{slack} * slack * (dx * dx + dy * dy)) return false;
+    const physics::i128 dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
+    const physics::i128 side = dx * (y - s.a.y) - dy * (x - s.a.x);
+    if (side < 0 && side * side > physics::i128{slack} * slack * (dx * dx + dy * dy)) return false;
   }
   return true;
 }
@@ -224,7 +231,8 @@ int insert(lua_State* L) {
   for (const physics::Vec2 v : turned.vertices())
     reach = std::max<int64_t>(reach, static_cast<int64_t>(std::ceil(std::hypot(double(v.x - cx), double(v.y - cy)))));
   if (const physics::MapPart* p = worldOf(L).findMapPart(part); p && !onFace(*p, at.x + cx, at.y + cy, reach + 4))
-    throw lua::ArgError("insert: (" + std::to_string(at.x) + ", " + std::to_string(at.y) + ") is not on face " + std::to_string(part) +
+    throw lua::ArgError("insert: (" + std::to_string(at.x) + ", " + std::to_string(at.y) + ") is not on face " +
+                        std::to_string(part) +
                         " (a body's middle goes on its face, or over an edge by at most the body's size)");
   worldOf(L).insert(e, part, at, angle);
   return 0;
@@ -407,8 +415,10 @@ int createPlatform(lua_State* L) {
   physics::LineKind kind = physics::LineKind::Solid;
   if (!lua_isnoneornil(L, 4)) {
     const std::string_view name = lua::checkString(L, 4);
-    if (name == "oneway") kind = physics::LineKind::OneWay;
-    else if (name != "solid") throw lua::ArgError("createPlatform: kind is \"solid\" or \"oneway\"");
+    if (name == "oneway")
+      kind = physics::LineKind::OneWay;
+    else if (name != "solid")
+      throw lua::ArgError("createPlatform: kind is \"solid\" or \"oneway\"");
   }
   std::vector<physics::PlatformLine> lines;
   for (size_t i = 0; i < xy.size(); i += 4) lines.push_back({{{xy[i], xy[i + 1]}, {xy[i + 2], xy[i + 3]}}, tag, kind});

@@ -18,7 +18,14 @@ namespace {
 using physics::EntityId;
 
 enum Status : int {
-  kOk = 0, kNotHandle = 1, kStale = 2, kNotInserted = 3, kNoPart = 4, kBadIndex = 5, kBadValue = 6, kFailed = 7,
+  kOk = 0,
+  kNotHandle = 1,
+  kStale = 2,
+  kNotInserted = 3,
+  kNoPart = 4,
+  kBadIndex = 5,
+  kBadValue = 6,
+  kFailed = 7,
   kBadValue3 = 8
 };
 
@@ -53,8 +60,7 @@ int guarded(void* context, F&& f) noexcept {
   } catch (const std::exception& e) {
     try {
       static_cast<ScriptContext*>(context)->ffiError = e.what();
-    } catch (...) {
-    }
+    } catch (...) {}
     return kFailed;
   } catch (...) {
     return kFailed;
@@ -124,7 +130,8 @@ int ffiContactCount(void* context, double handle, double* out) {
 int ffiContact(void* context, double handle, double i, double* out) {
   return withEntity(context, handle, [&](physics::World& world, EntityId e) {
     const auto contacts = world.entity(e).contacts();
-    if (!(i >= 1 && i <= static_cast<double>(contacts.size()) + 1) || i != std::floor(i)) return static_cast<int>(kBadIndex);
+    if (!(i >= 1 && i <= static_cast<double>(contacts.size()) + 1) || i != std::floor(i))
+      return static_cast<int>(kBadIndex);
     if (i > static_cast<double>(contacts.size())) {
       out[0] = -2;  // past the end: no results, as the classic function returns none
       return static_cast<int>(kOk);
@@ -135,7 +142,8 @@ int ffiContact(void* context, double handle, double i, double* out) {
     out[3] = c.line.index == physics::kNoLine ? 3 : static_cast<int>(c.line.kind);
     out[4] = c.part;
     out[5] = c.line.index;
-    out[6] = c.other.isSet() ? static_cast<double>(c.other.index) + 16777216.0 * static_cast<double>(c.other.generation) : -1;
+    out[6] = c.other.isSet() ? static_cast<double>(c.other.index) + 16777216.0 * static_cast<double>(c.other.generation)
+                             : -1;
     return static_cast<int>(kOk);
   });
 }

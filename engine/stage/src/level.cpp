@@ -1,10 +1,10 @@
 // Writing levels, checking them against their stage and building them into a world.
+#include "platon/stage/level.h"
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
-
-#include "platon/stage/level.h"
 
 #include "face_geometry.h"
 #include "walls_near.h"
@@ -43,7 +43,8 @@ void checkPoint(const Level& level, const Stage& stage, const LevelPoint& p, con
                              std::to_string(stage.faceCount()) + " faces)");
   const auto& corners = stage.faces[static_cast<size_t>(p.face)].corners;
   if (!insidePolygon(corners, p.position.x, p.position.y))
-    throw StageError(at, std::string(what) + " " + pointText(p.position) + " is outside face " + std::to_string(p.face));
+    throw StageError(at,
+                     std::string(what) + " " + pointText(p.position) + " is outside face " + std::to_string(p.face));
   // The face's own lines, and its neighbours' across the edges the point is near, laid flat beside
   // it: the player's disk reaches over an edge onto the next face. A neighbour's lines are
   // measured from the point carried into that face's frame (one point moved, not every line), and
@@ -61,16 +62,17 @@ void checkPoint(const Level& level, const Stage& stage, const LevelPoint& p, con
   };
   auto refuse = [&](const LevelLine& l, double d, int face) {
     const std::string across = face == p.face ? "" : " (on face " + std::to_string(face) + ", across the edge)";
-    throw StageError(at, std::string(what) + " " + pointText(p.position) + " is inside a wall: " +
-                             std::to_string(static_cast<int>(d)) + " units from the segment on line " +
-                             std::to_string(l.sourceLine) + across + " (the player needs " +
-                             std::to_string(kStartClearance) + ")");
+    throw StageError(at, std::string(what) + " " + pointText(p.position) +
+                             " is inside a wall: " + std::to_string(static_cast<int>(d)) +
+                             " units from the segment on line " + std::to_string(l.sourceLine) + across +
+                             " (the player needs " + std::to_string(kStartClearance) + ")");
   };
   const size_t f = static_cast<size_t>(p.face);
   for (const LevelLine& l : level.faces[f].lines)
     if (const double d = tooClose(l, p.position.x, p.position.y); d >= 0) refuse(l, d, p.face);
   for (size_t k = 0; k < corners.size(); ++k) {
-    if (distanceToSegment(p.position.x, p.position.y, corners[k], corners[(k + 1) % corners.size()]) >= kStartClearance) continue;
+    if (distanceToSegment(p.position.x, p.position.y, corners[k], corners[(k + 1) % corners.size()]) >= kStartClearance)
+      continue;
     const int g = stage.faces[f].neighbours[k].face;
     double x = p.position.x, y = p.position.y;
     unfoldAcross(stage, f, k).inverse().apply(x, y);
@@ -132,7 +134,8 @@ std::string writeLevel(const Level& level) {
           << decimal(static_cast<double>(face.gravityQ16->y) / 65536);
     out << "  # face " << f << "\n";
     for (const LevelLine& l : face.lines)
-      out << l.a.x << " " << l.a.y << " " << l.b.x << " " << l.b.y << (l.oneWay ? " oneway" : "") << tagWords(l.tag) << "\n";
+      out << l.a.x << " " << l.a.y << " " << l.b.x << " " << l.b.y << (l.oneWay ? " oneway" : "") << tagWords(l.tag)
+          << "\n";
   }
   return out.str();
 }
@@ -140,7 +143,8 @@ std::string writeLevel(const Level& level) {
 void checkLevelOnStage(const Level& level, const Stage& stage) {
   if (level.faces.size() != stage.faceCount())
     throw StageError({level.file, level.endLine, 1}, "the stage has " + std::to_string(stage.faceCount()) +
-                                                         " faces; the file describes " + std::to_string(level.faces.size()));
+                                                         " faces; the file describes " +
+                                                         std::to_string(level.faces.size()));
   for (size_t f = 0; f < level.faces.size(); ++f) {
     const auto& corners = stage.faces[f].corners;
     const InsideTest face(corners);
@@ -202,7 +206,8 @@ std::string readLevelFile(const std::string& path) {
   std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) throw StageError({path, 0, 0}, "cannot open the level file");
   const std::streamoff size = in.tellg();
-  if (size < 0 || size > (std::streamoff{1} << 30)) throw StageError({path, 0, 0}, "cannot read the level file (or it is over 1 GB)");
+  if (size < 0 || size > (std::streamoff{1} << 30))
+    throw StageError({path, 0, 0}, "cannot read the level file (or it is over 1 GB)");
   std::string text(static_cast<size_t>(size), '\0');
   in.seekg(0);
   if (!in.read(text.data(), size)) throw StageError({path, 0, 0}, "cannot read the level file");

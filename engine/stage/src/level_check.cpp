@@ -40,9 +40,10 @@ void warnNarrowFaces(const Level& level, const Stage& stage, CheckReport& report
   if (narrow.size() > 10) list += " and " + std::to_string(narrow.size() - 10) + " more";
   const std::string width = std::to_string(static_cast<int>(widthOf(stage.faces[narrowest])));
   const std::string message =
-      narrow.size() == 1 ? "face " + list + " is " + width + " units wide, narrower than the default player (192 units across)"
-                         : "faces " + list + " are narrower than the default player (192 units across); the narrowest, face " +
-                               std::to_string(narrowest) + ", is " + width + " units wide";
+      narrow.size() == 1
+          ? "face " + list + " is " + width + " units wide, narrower than the default player (192 units across)"
+          : "faces " + list + " are narrower than the default player (192 units across); the narrowest, face " +
+                std::to_string(narrowest) + ", is " + width + " units wide";
   report.warnings.push_back(Finding{SourcePosition{level.file, level.faces[narrow[0]].sourceLine, 1}, message});
 }
 
@@ -51,9 +52,11 @@ std::string undecidedReach(const Level& level, const ReachAnswer& reach) {
   const int cell = static_cast<int>(reach.finestCell);
   return "could not decide whether a path reaches the goal: the level's " + std::to_string(reach.walls) +
          " walls on faces of " + std::to_string(level.size) + " units need more cells of " +
-         std::to_string(static_cast<int>(kFinestCell)) + " units than the reachability search keeps, so it stopped at cells of " +
-         std::to_string(cell) + " units near walls, and with those it found no path; it may be behind a gap narrower than " +
-         std::to_string(static_cast<int>(2 * kPlayerRadius + 3 * reach.finestCell)) + " units (play the level to be sure)";
+         std::to_string(static_cast<int>(kFinestCell)) +
+         " units than the reachability search keeps, so it stopped at cells of " + std::to_string(cell) +
+         " units near walls, and with those it found no path; it may be behind a gap narrower than " +
+         std::to_string(static_cast<int>(2 * kPlayerRadius + 3 * reach.finestCell)) +
+         " units (play the level to be sure)";
 }
 
 }  // namespace
@@ -86,20 +89,23 @@ CheckReport checkLevel(const Level& level, const Stage& stage) {
         if (std::abs(side(a, b, l.a.x, l.a.y)) / len > 1 || std::abs(side(a, b, l.b.x, l.b.y)) / len > 1) continue;
         if (!counts(l, Counting::Reach)) continue;
         report.warnings.push_back({{level.file, l.sourceLine, l.sourceColumn},
-                                   "the segment lies along edge " + std::to_string(k) + " of face " + std::to_string(f) +
-                                       ": it blocks the way to face " + std::to_string(stage.faces[f].neighbours[k].face)});
+                                   "the segment lies along edge " + std::to_string(k) + " of face " +
+                                       std::to_string(f) + ": it blocks the way to face " +
+                                       std::to_string(stage.faces[f].neighbours[k].face)});
       }
   }
   if (emptyCount)
-    report.warnings.push_back(Finding{SourcePosition{level.file, firstEmptyLine, 1},
-                                      (emptyCount == 1 ? "face " + empty + " has" : "faces " + empty + " have") + " no lines"});
+    report.warnings.push_back(
+        Finding{SourcePosition{level.file, firstEmptyLine, 1},
+                (emptyCount == 1 ? "face " + empty + " has" : "faces " + empty + " have") + " no lines"});
   const ReachAnswer reach = searchReach(level, stage);
   const SourcePosition goal{level.file, level.goal.sourceLine, level.goal.sourceColumn};
   if (!reach.decided())
     report.warnings.push_back({goal, undecidedReach(level, reach)});
   else if (!reach.reachable)
-    report.errors.push_back({goal, "no path reaches the goal from the start (walls seal it off; see docs/level-format.md, "
-                                   "\"platon check\")"});
+    report.errors.push_back({goal,
+                             "no path reaches the goal from the start (walls seal it off; see docs/level-format.md, "
+                             "\"platon check\")"});
   return report;
 }
 

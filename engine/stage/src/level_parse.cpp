@@ -41,9 +41,12 @@ std::string shown(std::string_view token) {
 // holds one is named, since it looks like two values.
 const char* hiddenSeparatorName(char c) {
   switch (c) {
-    case '\v': return "a vertical tab (\\x{0B})";
-    case '\f': return "a form feed (\\x{0C})";
-    default: return nullptr;
+    case '\v':
+      return "a vertical tab (\\x{0B})";
+    case '\f':
+      return "a form feed (\\x{0C})";
+    default:
+      return nullptr;
   }
 }
 
@@ -65,7 +68,8 @@ struct TextLine {
 // The bytes a value is made of: all but the separators (space, tab, CR), '#' and the line end.
 constexpr auto kValueByte = [] {
   std::array<bool, 256> table{};
-  for (int c = 0; c < 256; ++c) table[static_cast<size_t>(c)] = c != ' ' && c != '\t' && c != '\r' && c != '#' && c != '\n';
+  for (int c = 0; c < 256; ++c)
+    table[static_cast<size_t>(c)] = c != ' ' && c != '\t' && c != '\r' && c != '#' && c != '\n';
   return table;
 }();
 
@@ -95,7 +99,8 @@ class LineReader {
         } else if (kValueByte[static_cast<unsigned char>(c)]) {
           const char* const start = p;
           while (p < end && kValueByte[static_cast<unsigned char>(*p)]) ++p;
-          tokens_.push_back({std::string_view(start, static_cast<size_t>(p - start)), static_cast<int>(start - lineStart) + 1});
+          tokens_.push_back(
+              {std::string_view(start, static_cast<size_t>(p - start)), static_cast<int>(start - lineStart) + 1});
         } else if (c == '\r') {
           checkAfterCr(std::string_view(p, static_cast<size_t>(end - p)), static_cast<int>(p - lineStart) + 1);
           ++p;
@@ -103,8 +108,9 @@ class LineReader {
           const void* newline = std::memchr(p, '\n', static_cast<size_t>(end - p));
           const char* stop = newline ? static_cast<const char*>(newline) : end;
           if (const void* cr = std::memchr(p, '\r', static_cast<size_t>(stop - p)))
-            checkAfterCr(std::string_view(static_cast<const char*>(cr), static_cast<size_t>(end - static_cast<const char*>(cr))),
-                         static_cast<int>(static_cast<const char*>(cr) - lineStart) + 1);
+            checkAfterCr(
+                std::string_view(static_cast<const char*>(cr), static_cast<size_t>(end - static_cast<const char*>(cr))),
+                static_cast<int>(static_cast<const char*>(cr) - lineStart) + 1);
           p = stop;
         }
       }
@@ -139,7 +145,8 @@ class LineReader {
       if (p < end && (*p == '-' || *p == '+')) ++p;
       const char* const digits = p;
       int64_t value = 0;
-      for (unsigned d; p < end && p - digits < 10 && (d = static_cast<unsigned>(*p - '0')) < 10; ++p) value = value * 10 + d;
+      for (unsigned d; p < end && p - digits < 10 && (d = static_cast<unsigned>(*p - '0')) < 10; ++p)
+        value = value * 10 + d;
       if (p == digits || (p < end && kValueByte[static_cast<unsigned char>(*p)]) || value > (1 << 29)) return false;
       v = static_cast<int32_t>(negative ? -value : value);
     }
@@ -209,8 +216,9 @@ class Parser {
     level.endLine = reader_.lineCount() + 1;
     const int faceTotal = static_cast<int>(level.faces.size());
     if (level.solid && faceTotal != faceCount(*level.solid))
-      fail(level.endLine, 1, std::string(solidName(*level.solid)) + " has " + std::to_string(faceCount(*level.solid)) +
-                                 " faces; the file describes " + std::to_string(faceTotal));
+      fail(level.endLine, 1,
+           std::string(solidName(*level.solid)) + " has " + std::to_string(faceCount(*level.solid)) +
+               " faces; the file describes " + std::to_string(faceTotal));
     checkFaceIndex(level, level.start, "start", startFaceText_);
     checkFaceIndex(level, level.goal, "goal", goalFaceText_);
     return level;
@@ -244,7 +252,8 @@ class Parser {
 
   void expectCount(const TextLine& line, size_t lo, size_t hi, const char* what) const {
     if (line.tokens.size() < lo) tooFewValues(line, what);
-    if (line.tokens.size() > hi) fail(line, line.tokens[hi], std::string(what) + ": unexpected " + quoted(line.tokens[hi].text));
+    if (line.tokens.size() > hi)
+      fail(line, line.tokens[hi], std::string(what) + ": unexpected " + quoted(line.tokens[hi].text));
   }
 
   // A decimal number: digits with an optional sign, point and exponent; nothing else.
@@ -280,10 +289,12 @@ class Parser {
       while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) ++i, ++exponent;
       if (exponent == 0) digits = 0;
     }
-    if (digits == 0 || i != s.size()) fail(line, t, std::string(what) + ": '" + shown(s) + "' is not a number" + hiddenSeparatorNote(s));
+    if (digits == 0 || i != s.size())
+      fail(line, t, std::string(what) + ": '" + shown(s) + "' is not a number" + hiddenSeparatorNote(s));
     const double v = std::strtod(s.c_str(), nullptr);
     if (!(v >= lo && v <= hi))
-      fail(line, t, std::string(what) + ": " + shown(s) + " is out of range (" + format(lo) + " to " + format(hi) + ")");
+      fail(line, t,
+           std::string(what) + ": " + shown(s) + " is out of range (" + format(lo) + " to " + format(hi) + ")");
     return v;
   }
 
@@ -301,8 +312,10 @@ class Parser {
       const size_t first = !text.empty() && (text[0] == '-' || text[0] == '+') ? 1 : 0;
       int64_t value = 0;
       size_t k = first;
-      for (unsigned digit; k < text.size() && (digit = static_cast<unsigned>(text[k] - '0')) < 10; ++k) value = value * 10 + digit;
-      if (k == text.size() && k > first && value <= (1 << 29)) return static_cast<int32_t>(text[0] == '-' ? -value : value);
+      for (unsigned digit; k < text.size() && (digit = static_cast<unsigned>(text[k] - '0')) < 10; ++k)
+        value = value * 10 + digit;
+      if (k == text.size() && k > first && value <= (1 << 29))
+        return static_cast<int32_t>(text[0] == '-' ? -value : value);
     }
     return static_cast<int32_t>(std::lround(number(line, t, -(1 << 29), 1 << 29, what)));
   }
@@ -340,17 +353,21 @@ class Parser {
     expectCount(line, 1, 1, "solid");
     level.solid = solidFromName(first.text);
     if (!level.solid)
-      fail(line, first, "unknown solid " + quoted(first.text) +
-                            " (known: TETRAHEDRON, HEXAHEDRON, OCTAHEDRON, DODECAHEDRON, ICOSAHEDRON, or MESH file)");
+      fail(line, first,
+           "unknown solid " + quoted(first.text) +
+               " (known: TETRAHEDRON, HEXAHEDRON, OCTAHEDRON, DODECAHEDRON, ICOSAHEDRON, or MESH file)");
   }
 
   void startLine(Level& level) {
     const TextLine& line = next("start line (face x y [degrees])");
     expectCount(line, 3, 4, "start (face x y [degrees])");
-    level.start = {faceNumber(line, line.tokens[0], "start face", startFaceText_), {unit(line, line.tokens[1], "start x"), unit(line, line.tokens[2], "start y")},
-                   line.number, line.tokens[0].column};
+    level.start = {faceNumber(line, line.tokens[0], "start face", startFaceText_),
+                   {unit(line, line.tokens[1], "start x"), unit(line, line.tokens[2], "start y")},
+                   line.number,
+                   line.tokens[0].column};
     if (line.tokens.size() == 4)
-      level.startMillidegrees = std::llround(number(line, line.tokens[3], -360, 360, "start rotation (degrees)") * 1000);
+      level.startMillidegrees =
+          std::llround(number(line, line.tokens[3], -360, 360, "start rotation (degrees)") * 1000);
   }
 
   void goalLine(Level& level) {
@@ -359,7 +376,9 @@ class Parser {
     const size_t base = line.tokens.size() - 2;
     goalFaceText_ = startFaceText_;
     const int face = base ? faceNumber(line, line.tokens[0], "goal face", goalFaceText_) : level.start.face;
-    level.goal = {face, {unit(line, line.tokens[base], "goal x"), unit(line, line.tokens[base + 1], "goal y")}, line.number,
+    level.goal = {face,
+                  {unit(line, line.tokens[base], "goal x"), unit(line, line.tokens[base + 1], "goal y")},
+                  line.number,
                   line.tokens[0].column};
   }
 
@@ -376,7 +395,8 @@ class Parser {
       if (!level.faces.empty() && reader_.plainSegment(v, plain.sourceLine, plain.sourceColumn)) {
         plain.a = {v[0], v[1]};
         plain.b = {v[2], v[3]};
-        if (plain.a == plain.b) fail(plain.sourceLine, plain.sourceColumn, "the segment has no length (both ends at one point)");
+        if (plain.a == plain.b)
+          fail(plain.sourceLine, plain.sourceColumn, "the segment has no length (both ends at one point)");
         level.faces.back().lines.push_back(plain);
         continue;
       }
@@ -385,8 +405,9 @@ class Parser {
       const TextLine& line = *next;
       if (line.tokens[0].text == "%") {
         if (level.solid && static_cast<int>(level.faces.size()) == faceCount(*level.solid))
-          fail(line, line.tokens[0], std::string(solidName(*level.solid)) + " has " +
-                                         std::to_string(faceCount(*level.solid)) + " faces; this '%' starts one more");
+          fail(line, line.tokens[0],
+               std::string(solidName(*level.solid)) + " has " + std::to_string(faceCount(*level.solid)) +
+                   " faces; this '%' starts one more");
         level.faces.push_back(faceOptions(line));
         level.faces.back().lines.reserve(reader_.linesBeforeNextFace());
         continue;
@@ -409,9 +430,10 @@ class Parser {
       const double gy = number(line, line.tokens[i + 2], -16384, 16384, "gravity y");
       face.gravityQ16 = physics::Vec2w{std::llround(gx * 65536), std::llround(gy * 65536)};
       if ((gx != 0 || gy != 0) && face.gravityQ16->x == 0 && face.gravityQ16->y == 0)
-        fail(line, t, "gravity " + shown(line.tokens[i + 1].text) + " " + shown(line.tokens[i + 2].text) +
-                          " rounds to none: gravity is kept in steps of 1/65536 unit per frame per frame (write 0 0 for "
-                          "none)");
+        fail(line, t,
+             "gravity " + shown(line.tokens[i + 1].text) + " " + shown(line.tokens[i + 2].text) +
+                 " rounds to none: gravity is kept in steps of 1/65536 unit per frame per frame (write 0 0 for "
+                 "none)");
       i += 3;
     }
     return face;
@@ -455,8 +477,9 @@ class Parser {
       } else if (t.text == "tag") {
         setTag(numbered("tag", 0, 2147483647));
       } else {
-        fail(line, t, "unknown segment word " + quoted(t.text) +
-                          " (known: oneway, solid, hazard, goal, checkpoint, door N, switch N, tag N)");
+        fail(line, t,
+             "unknown segment word " + quoted(t.text) +
+                 " (known: oneway, solid, hazard, goal, checkpoint, door N, switch N, tag N)");
       }
     }
     return out;
@@ -467,7 +490,9 @@ class Parser {
     if (p.face >= 0 && (!known || p.face < static_cast<int>(level.faces.size()))) return;
     fail(p.sourceLine, p.sourceColumn,
          std::string(what) + " face " + text + " does not exist (" +
-             (known ? "faces 0 to " + std::to_string(level.faces.size() - 1) : std::string("faces are numbered from 0")) + ")");
+             (known ? "faces 0 to " + std::to_string(level.faces.size() - 1)
+                    : std::string("faces are numbered from 0")) +
+             ")");
   }
 
   std::string file_;

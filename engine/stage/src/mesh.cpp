@@ -43,7 +43,8 @@ void checkInput(const MeshData& mesh, double longestEdge) {
   if (mesh.triangles.size() > kMaxMeshTriangles)
     fail("the mesh has " + std::to_string(mesh.triangles.size()) + " triangles; a stage takes at most " +
          std::to_string(kMaxMeshTriangles));
-  if (mesh.triangles.size() < 4) fail("a closed solid needs at least 4 triangles, the mesh has " + std::to_string(mesh.triangles.size()));
+  if (mesh.triangles.size() < 4)
+    fail("a closed solid needs at least 4 triangles, the mesh has " + std::to_string(mesh.triangles.size()));
   if (!(longestEdge >= 1) || longestEdge > (1 << 24)) fail("the mesh's size must be 1 to 2^24 units");
   for (size_t i = 0; i < mesh.positions.size(); ++i)
     if (!mesh.positions[i].allFinite() || mesh.positions[i].cwiseAbs().maxCoeff() > kMaxMeshCoordinate)
@@ -57,7 +58,8 @@ void checkInput(const MeshData& mesh, double longestEdge) {
 // Joins the positions the triangles use that lie within `weld` of a point already kept (STL files
 // repeat them per triangle), on a hash grid of `weld` cells: linear time. Points are numbered in
 // the order the triangles first use them, so that the numbering follows the file.
-std::vector<int> weldPositions(const MeshData& mesh, const Eigen::Vector3d& lo, double weld, std::vector<Eigen::Vector3d>& out) {
+std::vector<int> weldPositions(const MeshData& mesh, const Eigen::Vector3d& lo, double weld,
+                               std::vector<Eigen::Vector3d>& out) {
   std::vector<int> id(mesh.positions.size(), -1);
   std::unordered_map<uint64_t, std::vector<int>> cells;
   auto cellOf = [&](const Eigen::Vector3d& x) {
@@ -100,7 +102,8 @@ Surface weldedSurface(const MeshData& mesh, const Eigen::Vector3d& lo, double ex
   const std::vector<int> id = weldPositions(mesh, lo, 1e-6 * extent, s.points);
   for (size_t t = 0; t < mesh.triangles.size(); ++t) {
     const auto& m = mesh.triangles[t];
-    const std::array<int, 3> tri{id[static_cast<size_t>(m[0])], id[static_cast<size_t>(m[1])], id[static_cast<size_t>(m[2])]};
+    const std::array<int, 3> tri{id[static_cast<size_t>(m[0])], id[static_cast<size_t>(m[1])],
+                                 id[static_cast<size_t>(m[2])]};
     if (tri[0] == tri[1] || tri[1] == tri[2] || tri[2] == tri[0]) continue;
     const double area = (s.at(tri[1]) - s.at(tri[0])).cross(s.at(tri[2]) - s.at(tri[0])).norm() / 2;
     if (area <= 1e-10 * extent * extent)
@@ -138,8 +141,10 @@ std::string tJunction(const Surface& s, const detail::EdgeIndex& edges, double t
       const double u = (s.at(w) - s.at(a)).dot(along) / along.squaredNorm();
       if (u <= 0 || u >= 1 || (s.at(a) + u * along - s.at(w)).norm() > tolerance) continue;
       return "a T-junction: the point " + pointText(s.at(w)) + " lies on the edge " + pointText(s.at(a)) + " - " +
-             pointText(s.at(b)) + " of " + triangleName(s.fileTriangle[t]) + ", which the triangles on its other side "
-             "split there (split " + triangleName(s.fileTriangle[t]) + " at that point too)";
+             pointText(s.at(b)) + " of " + triangleName(s.fileTriangle[t]) +
+             ", which the triangles on its other side "
+             "split there (split " +
+             triangleName(s.fileTriangle[t]) + " at that point too)";
     }
   }
   return "";
@@ -220,7 +225,8 @@ std::vector<int> faceOutline(const Surface& s, const detail::EdgeIndex& edges, c
     for (size_t k = 0; k < 3; ++k) {
       const int a = s.triangles[t][k], b = s.triangles[t][(k + 1) % 3];
       if (group[edges.find(b, a)->face] == g) continue;
-      if (!next.emplace(a, b).second) fail(name + " is not a simple polygon (it touches itself at " + pointText(s.at(a)) + ")");
+      if (!next.emplace(a, b).second)
+        fail(name + " is not a simple polygon (it touches itself at " + pointText(s.at(a)) + ")");
     }
   // A group with no edge to another face is the whole surface in one plane: no volume.
   if (next.empty()) fail(name + " is the whole mesh: every triangle lies in one plane, so it encloses no volume");
@@ -245,7 +251,8 @@ std::vector<int> faceOutline(const Surface& s, const detail::EdgeIndex& edges, c
 }
 
 // The solid of the coplanar groups' outlines, in the file's units.
-Polyhedron mergedFaces(const Surface& s, const detail::EdgeIndex& edges, double tolerance, std::vector<size_t>& firstTriangle) {
+Polyhedron mergedFaces(const Surface& s, const detail::EdgeIndex& edges, double tolerance,
+                       std::vector<size_t>& firstTriangle) {
   const auto [group, groups] = coplanarGroups(s, edges, tolerance);
   std::vector<std::vector<size_t>> members(static_cast<size_t>(groups));
   for (size_t t = 0; t < s.triangles.size(); ++t) members[static_cast<size_t>(group[t])].push_back(t);
@@ -263,8 +270,9 @@ Polyhedron mergedFaces(const Surface& s, const detail::EdgeIndex& edges, double 
     // The same flatness test validatePolyhedron makes, so that it never refuses what the merge made.
     if (const detail::OffPlane off = detail::worstOffPlane(out, out.faces.size() - 1); off.distance > tolerance)
       fail("the face of " + triangleName(s.fileTriangle[m[0]]) + " is not flat: its triangles each lie within " +
-           "1e-6 of the mesh's size of its first one's plane, but the point " + pointText(out.vertices[size_t(off.vertex)]) +
-           " is " + amountText(off.distance) + " off the face's own plane (the mesh curves too gently to be one face or two)");
+           "1e-6 of the mesh's size of its first one's plane, but the point " +
+           pointText(out.vertices[size_t(off.vertex)]) + " is " + amountText(off.distance) +
+           " off the face's own plane (the mesh curves too gently to be one face or two)");
   }
   return out;
 }
@@ -278,8 +286,10 @@ void checkMerged(const Polyhedron& merged, const std::vector<size_t>& firstTrian
   try {
     detail::validatePolyhedron(merged, tolerance, names);
   } catch (const StageError& e) {
-    fail("the faces merged from triangles within 1e-6 of the mesh's size of one plane do not make a convex solid (the "
-         "mesh bends too gently to tell its faces apart): " + e.reason());
+    fail(
+        "the faces merged from triangles within 1e-6 of the mesh's size of one plane do not make a convex solid (the "
+        "mesh bends too gently to tell its faces apart): " +
+        e.reason());
   }
 }
 
@@ -295,7 +305,8 @@ Polyhedron polyhedronFromMesh(const MeshData& mesh, double longestEdge) {
     }
   const double extent = (hi - lo).norm();
   if (!(extent > 0))
-    fail("all " + std::to_string(mesh.triangles.size()) + " triangles are degenerate (every point of the mesh is the same)");
+    fail("all " + std::to_string(mesh.triangles.size()) +
+         " triangles are degenerate (every point of the mesh is the same)");
   const double tolerance = 1e-6 * extent;  // a mesh file's floats hold about 7 digits
   Surface surface = weldedSurface(mesh, lo, extent);
   windOutward(surface);
@@ -309,7 +320,9 @@ Polyhedron polyhedronFromMesh(const MeshData& mesh, double longestEdge) {
   double longest = 0;
   for (const auto& f : out.faces)
     for (size_t i = 0; i < f.size(); ++i)
-      longest = std::max(longest, (out.vertices[static_cast<size_t>(f[i])] - out.vertices[static_cast<size_t>(f[(i + 1) % f.size()])]).norm());
+      longest = std::max(
+          longest,
+          (out.vertices[static_cast<size_t>(f[i])] - out.vertices[static_cast<size_t>(f[(i + 1) % f.size()])]).norm());
   const Eigen::Vector3d centre = (lo + hi) / 2;
   for (auto& v : out.vertices) v = (v - centre) * (longestEdge / longest);
   return out;

@@ -103,7 +103,8 @@ std::string netSvg(const Stage& stage, const std::vector<NetFace>& net, const st
   edge = std::hypot(double(c0[1].x - c0[0].x), double(c0[1].y - c0[0].y));
   const double scale = 600.0 / std::max(hi.x() - lo.x(), hi.y() - lo.y());
   const double pad = 30;
-  const double width = std::max(720.0, (hi.x() - lo.x()) * scale + 2 * pad), height = (hi.y() - lo.y()) * scale + 2 * pad + 24;
+  const double width = std::max(720.0, (hi.x() - lo.x()) * scale + 2 * pad),
+               height = (hi.y() - lo.y()) * scale + 2 * pad + 24;
   // SVG's y runs down: flip so that the net reads as the faces' own frames do (y up).
   auto px = [&](const Eigen::Vector2d& p) {
     std::ostringstream s;
@@ -120,7 +121,8 @@ std::string netSvg(const Stage& stage, const std::vector<NetFace>& net, const st
   for (size_t f = 0; f < stage.faceCount(); ++f) {
     const StageFace& face = stage.faces[f];
     const NetFace& at = net[f];
-    svg << "<polygon fill=\"" << (f == 0 ? "#fff3c4" : "#eef2f7") << "\" stroke=\"#333\" stroke-width=\"1.2\" points=\"";
+    svg << "<polygon fill=\"" << (f == 0 ? "#fff3c4" : "#eef2f7")
+        << "\" stroke=\"#333\" stroke-width=\"1.2\" points=\"";
     for (const auto& p : outline(face, at)) svg << px(p) << " ";
     svg << "\"/>\n";
     // Axes from the origin (corner 0): x red along the floor, y green; "down" is -y.
@@ -148,7 +150,8 @@ std::string netSvg(const Stage& stage, const std::vector<NetFace>& net, const st
     auto label = [&](const Eigen::Vector2d& p, const std::string& text, int sizePx, const char* colour) {
       const std::string s = px(p);
       svg << "<text x=\"" << s.substr(0, s.find(',')) << "\" y=\"" << s.substr(s.find(',') + 1) << "\" font-size=\""
-          << sizePx << "\" fill=\"" << colour << "\" text-anchor=\"middle\" dominant-baseline=\"middle\">" << text << "</text>\n";
+          << sizePx << "\" fill=\"" << colour << "\" text-anchor=\"middle\" dominant-baseline=\"middle\">" << text
+          << "</text>\n";
     };
     label(xEnd + (xEnd - inset).normalized() * edge * 0.07, "x", 11, "#d22");
     label(yEnd + (yEnd - inset).normalized() * edge * 0.07, "y", 11, "#1a1");

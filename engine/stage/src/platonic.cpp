@@ -1,10 +1,9 @@
 // The five Platonic solids from their textbook coordinates: faces found as the planes through
 // three vertices with every vertex on one side, then the solid turned to face the camera.
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <set>
-
-#include <Eigen/Geometry>
 
 #include "platon/stage/polyhedron.h"
 
@@ -23,8 +22,11 @@ std::vector<Eigen::Vector3d> textbookVertices(Solid solid) {
         }
   };
   switch (solid) {
-    case Solid::Tetrahedron: return {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
-    case Solid::Hexahedron: signs(1, 1, 1); break;
+    case Solid::Tetrahedron:
+      return {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
+    case Solid::Hexahedron:
+      signs(1, 1, 1);
+      break;
     case Solid::Octahedron:
       signs(1, 0, 0);
       signs(0, 1, 0);
@@ -89,7 +91,8 @@ Polyhedron platonicSolid(Solid solid, double edge) {
   p.faces = hullFaces(p.vertices);
   double shortest = INFINITY;
   for (size_t i = 0; i < p.vertices.size(); ++i)
-    for (size_t j = i + 1; j < p.vertices.size(); ++j) shortest = std::min(shortest, (p.vertices[i] - p.vertices[j]).norm());
+    for (size_t j = i + 1; j < p.vertices.size(); ++j)
+      shortest = std::min(shortest, (p.vertices[i] - p.vertices[j]).norm());
   // Turn the face most toward +z to look along +z, then about z so that its edge most toward -y
   // runs along x below its centre. The textbook coordinates already do this for the cube.
   size_t front = 0;
@@ -103,7 +106,10 @@ Polyhedron platonicSolid(Solid solid, double edge) {
   centre /= static_cast<double>(cycle.size());
   double bestY = INFINITY, angle = 0;
   for (size_t i = 0; i < cycle.size(); ++i) {
-    const Eigen::Vector3d mid = (p.vertices[static_cast<size_t>(cycle[i])] + p.vertices[static_cast<size_t>(cycle[(i + 1) % cycle.size()])]) / 2 - centre;
+    const Eigen::Vector3d mid =
+        (p.vertices[static_cast<size_t>(cycle[i])] + p.vertices[static_cast<size_t>(cycle[(i + 1) % cycle.size()])]) /
+            2 -
+        centre;
     if (mid.y() < bestY - 1e-9) {
       bestY = mid.y();
       angle = -M_PI / 2 - std::atan2(mid.y(), mid.x());

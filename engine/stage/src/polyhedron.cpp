@@ -34,13 +34,15 @@ void checkFaceShape(const Polyhedron& p, size_t f, double tolerance, const detai
   const Eigen::Vector3d n = faceNormal(p, f);
   if (!n.allFinite()) fail(name + " is degenerate (no area)");
   if (const detail::OffPlane off = detail::worstOffPlane(p, f); off.distance > tolerance)
-    fail(name + " is not flat: " + vertexName(p, off.vertex) + " is " + std::to_string(off.distance) + " off its plane");
+    fail(name + " is not flat: " + vertexName(p, off.vertex) + " is " + std::to_string(off.distance) +
+         " off its plane");
   for (size_t i = 0; i < cycle.size(); ++i) {
     const Eigen::Vector3d& a = p.vertices[static_cast<size_t>(cycle[i])];
     const Eigen::Vector3d& b = p.vertices[static_cast<size_t>(cycle[(i + 1) % cycle.size()])];
     const Eigen::Vector3d& d = p.vertices[static_cast<size_t>(cycle[(i + 2) % cycle.size()])];
     const double edge = (b - a).norm();
-    if (edge <= tolerance) fail(name + " has an edge of length " + std::to_string(edge) + " at " + vertexName(p, cycle[i]));
+    if (edge <= tolerance)
+      fail(name + " has an edge of length " + std::to_string(edge) + " at " + vertexName(p, cycle[i]));
     // d's distance to the left of the line a -> b: positive for a convex counter-clockwise corner.
     const double turn = (b - a).cross(d - b).dot(n) / edge;
     if (turn <= tolerance)
@@ -53,11 +55,16 @@ void checkFaceShape(const Polyhedron& p, size_t f, double tolerance, const detai
 
 std::string_view solidName(Solid solid) {
   switch (solid) {
-    case Solid::Tetrahedron: return "TETRAHEDRON";
-    case Solid::Hexahedron: return "HEXAHEDRON";
-    case Solid::Octahedron: return "OCTAHEDRON";
-    case Solid::Dodecahedron: return "DODECAHEDRON";
-    case Solid::Icosahedron: return "ICOSAHEDRON";
+    case Solid::Tetrahedron:
+      return "TETRAHEDRON";
+    case Solid::Hexahedron:
+      return "HEXAHEDRON";
+    case Solid::Octahedron:
+      return "OCTAHEDRON";
+    case Solid::Dodecahedron:
+      return "DODECAHEDRON";
+    case Solid::Icosahedron:
+      return "ICOSAHEDRON";
   }
   return "?";
 }
@@ -70,11 +77,16 @@ std::optional<Solid> solidFromName(std::string_view name) {
 
 int faceCount(Solid solid) {
   switch (solid) {
-    case Solid::Tetrahedron: return 4;
-    case Solid::Hexahedron: return 6;
-    case Solid::Octahedron: return 8;
-    case Solid::Dodecahedron: return 12;
-    case Solid::Icosahedron: return 20;
+    case Solid::Tetrahedron:
+      return 4;
+    case Solid::Hexahedron:
+      return 6;
+    case Solid::Octahedron:
+      return 8;
+    case Solid::Dodecahedron:
+      return 12;
+    case Solid::Icosahedron:
+      return 20;
   }
   return 0;
 }
@@ -109,7 +121,8 @@ Eigen::Vector3d faceNormal(const Polyhedron& p, size_t face) {
 }
 
 void validatePolyhedron(const Polyhedron& p, double tolerance) {
-  detail::validatePolyhedron(p, tolerance, {[](size_t f) { return "face " + std::to_string(f); }, [&](int v) { return vertexName(p, v); }});
+  detail::validatePolyhedron(
+      p, tolerance, {[](size_t f) { return "face " + std::to_string(f); }, [&](int v) { return vertexName(p, v); }});
 }
 
 void detail::validatePolyhedron(const Polyhedron& p, double tolerance, const SurfaceNames& names) {

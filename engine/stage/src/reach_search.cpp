@@ -14,7 +14,8 @@ namespace platon::stage {
 namespace {
 
 constexpr double kReach2 = kPlayerRadius * kPlayerRadius;
-constexpr size_t kRefineBytes = 4u << 20;  // for each tree, round the start and round the goal, once the search stopped coarse
+constexpr size_t kRefineBytes =
+    4u << 20;  // for each tree, round the start and round the goal, once the search stopped coarse
 
 // How far from the start (or the goal) the search looks for free cells to slide to in a straight
 // line: past the cells next to the walls round it, which are in doubt and so blocked (two cell
@@ -22,7 +23,9 @@ constexpr size_t kRefineBytes = 4u << 20;  // for each tree, round the start and
 // from a shared edge are laid out on the neighbour's side too (twice, with room to spare).
 constexpr double kSeedReachLeast = 64, kSeedReachMost = 256;
 constexpr double kEdgeMargin = kPlayerRadius + 2 * kSeedReachMost + 16;
-double seedReach(double finest) { return std::clamp(2 * std::sqrt(2.0) * finest + 16, kSeedReachLeast, kSeedReachMost); }
+double seedReach(double finest) {
+  return std::clamp(2 * std::sqrt(2.0) * finest + 16, kSeedReachLeast, kSeedReachMost);
+}
 
 // Which leaves are joined (across cell sides, faces' edges, start and goal): union-find over the
 // leaves' join indices, which the trees hand out as they grow.
@@ -78,8 +81,8 @@ std::vector<FlatWall> mergedWalls(std::vector<FlatWall> walls) {
   // By line, then along it: first by a hash of the line (a radix sort, linear: a level of 10^6
   // walls must not wait for a comparison sort), then each run of one hash by line and stretch.
   auto lineHash = [](const OnLine& l) {
-    const uint64_t h = uint64_t(int64_t(l.dx)) * 0x9e3779b97f4a7c15ULL ^ uint64_t(int64_t(l.dy)) * 0xbf58476d1ce4e5b9ULL ^
-                       uint64_t(l.offset) * 0x94d049bb133111ebULL;
+    const uint64_t h = uint64_t(int64_t(l.dx)) * 0x9e3779b97f4a7c15ULL ^
+                       uint64_t(int64_t(l.dy)) * 0xbf58476d1ce4e5b9ULL ^ uint64_t(l.offset) * 0x94d049bb133111ebULL;
     return uint32_t((h ^ (h >> 29)) >> 32);
   };
   std::vector<std::pair<uint32_t, uint32_t>> order(lines.size()), spare(lines.size());
@@ -96,10 +99,11 @@ std::vector<FlatWall> mergedWalls(std::vector<FlatWall> walls) {
     size_t j = i + 1;
     while (j < order.size() && order[j].first == order[i].first) ++j;
     if (j - i > 1)
-      std::sort(order.begin() + std::ptrdiff_t(i), order.begin() + std::ptrdiff_t(j), [&](const auto& a, const auto& b) {
-        const OnLine &p = lines[a.second], &q = lines[b.second];
-        return std::tie(p.dx, p.dy, p.offset, p.from) < std::tie(q.dx, q.dy, q.offset, q.from);
-      });
+      std::sort(order.begin() + std::ptrdiff_t(i), order.begin() + std::ptrdiff_t(j),
+                [&](const auto& a, const auto& b) {
+                  const OnLine &p = lines[a.second], &q = lines[b.second];
+                  return std::tie(p.dx, p.dy, p.offset, p.from) < std::tie(q.dx, q.dy, q.offset, q.from);
+                });
     i = j;
   }
   auto endAt = [&](const OnLine& l, int64_t t, double& x, double& y) {  // the wall's end at stretch t
@@ -183,7 +187,8 @@ class FaceTree {
     bool ring;  // an undecided leaf the search's answer passes through round its rim (ringOpen)
   };
 
-  FaceTree(const std::vector<physics::Vec2>& corners, std::vector<FlatWall> walls) : corners_(corners), walls_(std::move(walls)) {
+  FaceTree(const std::vector<physics::Vec2>& corners, std::vector<FlatWall> walls)
+      : corners_(corners), walls_(std::move(walls)) {
     hull_ = {INFINITY, INFINITY, -INFINITY, -INFINITY};
     for (const auto c : corners)
       hull_ = {std::min(hull_.x0, double(c.x)), std::min(hull_.y0, double(c.y)), std::max(hull_.x1, double(c.x)),
@@ -196,7 +201,8 @@ class FaceTree {
   // What the tree holds: its nodes (and a join index each in both passes' union-finds), its cells
   // in doubt and their walls.
   size_t bytes() const {
-    return nodes_.capacity() * kNodeBytes + doubts_.capacity() * (sizeof(Doubt) + sizeof(int)) + near_.capacity() * sizeof(int32_t);
+    return nodes_.capacity() * kNodeBytes + doubts_.capacity() * (sizeof(Doubt) + sizeof(int)) +
+           near_.capacity() * sizeof(int32_t);
   }
   // The side of the cells in doubt, waiting to be split (0: none), and what splitting them adds.
   double cellInDoubt() const { return doubts_.empty() ? 0 : cell_; }
@@ -227,7 +233,8 @@ class FaceTree {
         for (size_t r = i; r < parents.size(); ++r) {  // the rest stay in doubt, with their walls, for stop()
           Doubt rest = parents[r];
           rest.from = uint32_t(near_.size());
-          near_.insert(near_.end(), walls.begin() + std::ptrdiff_t(parents[r].from), walls.begin() + std::ptrdiff_t(parents[r].to));
+          near_.insert(near_.end(), walls.begin() + std::ptrdiff_t(parents[r].from),
+                       walls.begin() + std::ptrdiff_t(parents[r].to));
           rest.to = uint32_t(near_.size());
           doubts_.push_back(rest);
         }
@@ -238,8 +245,10 @@ class FaceTree {
       nodes_.resize(nodes_.size() + 4);
       for (uint32_t k = 0; k < 4; ++k) {
         const uint32_t ix = 2 * d.ix + (k & 1), iy = 2 * d.iy + (k >> 1);
-        const Box box{square_.x0 + ix * cell_, square_.y0 + iy * cell_, square_.x0 + (ix + 1) * cell_, square_.y0 + (iy + 1) * cell_};
-        if (meetsFace(box)) settle(first + int32_t(k), d.depth + 1, ix, iy, box, walls.data() + d.from, walls.data() + d.to, joins);
+        const Box box{square_.x0 + ix * cell_, square_.y0 + iy * cell_, square_.x0 + (ix + 1) * cell_,
+                      square_.y0 + (iy + 1) * cell_};
+        if (meetsFace(box))
+          settle(first + int32_t(k), d.depth + 1, ix, iy, box, walls.data() + d.from, walls.data() + d.to, joins);
       }
     }
     return true;
@@ -269,7 +278,8 @@ class FaceTree {
       for (uint32_t k = 0; k < 4; ++k) {
         if (!meetsFace(q[k])) continue;
         const size_t before = doubts_.size();
-        settle(first + int32_t(k), d.depth + 1, 2 * d.ix + (k & 1), 2 * d.iy + (k >> 1), q[k], walls.data(), walls.data() + walls.size(), joins);
+        settle(first + int32_t(k), d.depth + 1, 2 * d.ix + (k & 1), 2 * d.iy + (k >> 1), q[k], walls.data(),
+               walls.data() + walls.size(), joins);
         if (doubts_.size() == before) continue;
         markUndecided(before, joins);
         todo.push_back(before);
@@ -305,7 +315,8 @@ class FaceTree {
 
   // The open leaves whose squares come within `reach` of the convex polygon `shape` (in this
   // face's frame; one point for a disk), with their squares.
-  void leavesNear(const std::vector<std::pair<double, double>>& shape, double reach, Open open, std::vector<Leaf>& out) const {
+  void leavesNear(const std::vector<std::pair<double, double>>& shape, double reach, Open open,
+                  std::vector<Leaf>& out) const {
     near(0, square_, shape, reach, open, out);
   }
 
@@ -326,7 +337,8 @@ class FaceTree {
 
   Box boxOf(const Doubt& d) const {
     const double side = cellOf(d.depth);
-    return {square_.x0 + d.ix * side, square_.y0 + d.iy * side, square_.x0 + (d.ix + 1) * side, square_.y0 + (d.iy + 1) * side};
+    return {square_.x0 + d.ix * side, square_.y0 + d.iy * side, square_.x0 + (d.ix + 1) * side,
+            square_.y0 + (d.iy + 1) * side};
   }
 
   void markUndecided(size_t doubt, int& joins) {
@@ -343,7 +355,8 @@ class FaceTree {
   // where the search stopped coarse, is mostly this).
   bool ringOpen(const Doubt& d) const {
     const Box box = boxOf(d);
-    for (const auto& c : {std::pair{box.x0, box.y0}, std::pair{box.x1, box.y0}, std::pair{box.x1, box.y1}, std::pair{box.x0, box.y1}})
+    for (const auto& c :
+         {std::pair{box.x0, box.y0}, std::pair{box.x1, box.y0}, std::pair{box.x1, box.y1}, std::pair{box.x0, box.y1}})
       for (size_t i = 0; i < corners_.size(); ++i)
         if (side(corners_[i], corners_[(i + 1) % corners_.size()], c.first, c.second) <= 0) return false;
     for (uint32_t i = d.from; i < d.to; ++i) {
@@ -370,7 +383,8 @@ class FaceTree {
 
   // A cell against the walls near its parent: blocked when one wall is within reach of all of it,
   // free when none is within reach of any of it, otherwise in doubt (blocked at the finest size).
-  void settle(int32_t node, uint32_t depth, uint32_t ix, uint32_t iy, const Box& box, int32_t* from, int32_t* to, int& joins) {
+  void settle(int32_t node, uint32_t depth, uint32_t ix, uint32_t iy, const Box& box, int32_t* from, int32_t* to,
+              int& joins) {
     const size_t mark = near_.size();
     const double xs[4] = {box.x0, box.x1, box.x1, box.x0}, ys[4] = {box.y0, box.y0, box.y1, box.y1};
     for (int32_t* w = from; w != to; ++w) {
@@ -389,7 +403,7 @@ class FaceTree {
       if (inReach == 4) {  // the disk-swept wall is convex: it covers the square
         near_.resize(mark);
         std::iter_swap(from, w);  // the quarters beside this one will likely find it covering them too
-        return;  // a blocked leaf
+        return;                   // a blocked leaf
       }
       if (inReach == 0 && !reachesBox(l, box)) continue;
       near_.push_back(*w);
@@ -419,8 +433,10 @@ class FaceTree {
         continue;
       }
       const double t = q[i] / p[i];
-      if (p[i] < 0) t0 = std::max(t0, t);
-      else t1 = std::min(t1, t);
+      if (p[i] < 0)
+        t0 = std::max(t0, t);
+      else
+        t1 = std::min(t1, t);
     }
     return t0 <= t1;
   }
@@ -456,9 +472,12 @@ class FaceTree {
     if (na.child < 0 && nb.child < 0) {
       const int ja = openJoin(na, open), jb = openJoin(nb, open);
       if (ja < 0 || jb < 0) return;
-      const double x0 = sideways ? boxA.x1 : std::max(boxA.x0, boxB.x0), y0 = sideways ? std::max(boxA.y0, boxB.y0) : boxA.y1;
-      const double x1 = sideways ? boxA.x1 : std::min(boxA.x1, boxB.x1), y1 = sideways ? std::min(boxA.y1, boxB.y1) : boxA.y1;
-      if (open == Open::Free || (openAlong(doubtOf(na), x0, y0, x1, y1) && openAlong(doubtOf(nb), x0, y0, x1, y1))) joins.join(ja, jb);
+      const double x0 = sideways ? boxA.x1 : std::max(boxA.x0, boxB.x0),
+                   y0 = sideways ? std::max(boxA.y0, boxB.y0) : boxA.y1;
+      const double x1 = sideways ? boxA.x1 : std::min(boxA.x1, boxB.x1),
+                   y1 = sideways ? std::min(boxA.y1, boxB.y1) : boxA.y1;
+      if (open == Open::Free || (openAlong(doubtOf(na), x0, y0, x1, y1) && openAlong(doubtOf(nb), x0, y0, x1, y1)))
+        joins.join(ja, jb);
       return;
     }
     // The children along the shared side: a's right (or top) pair, b's left (or bottom) pair.
@@ -509,8 +528,10 @@ class FaceTree {
         continue;
       }
       const double t = q[i] / p[i];
-      if (p[i] < 0) t0 = std::max(t0, t);
-      else t1 = std::min(t1, t);
+      if (p[i] < 0)
+        t0 = std::max(t0, t);
+      else
+        t1 = std::min(t1, t);
     }
     if (t0 > t1) return;
     const Node& n = nodes_[size_t(node)];
@@ -526,10 +547,10 @@ class FaceTree {
   std::vector<FlatWall> walls_;
   Box hull_, square_;
   std::vector<Node> nodes_;
-  double cell_ = 0;            // the side of the cells in doubts_
-  std::vector<Doubt> doubts_;  // the cells of the last level grown that are in doubt (once stopped, undecided)
+  double cell_ = 0;                 // the side of the cells in doubts_
+  std::vector<Doubt> doubts_;       // the cells of the last level grown that are in doubt (once stopped, undecided)
   std::vector<int> undecidedJoin_;  // the undecided leaves' join indices, as doubts_
-  std::vector<int32_t> near_;  // their walls
+  std::vector<int32_t> near_;       // their walls
 };
 
 // Grows every face's tree coarse to fine, one cell size at a time over all faces (the largest
@@ -573,8 +594,9 @@ Shape mapped(const Shape& shape, const FlatMap& map) {
 bool clearPath(double x0, double y0, double x1, double y1, const std::vector<FlatWall>& walls) {
   for (const FlatWall& w : walls) {
     if (segmentsMeet(x0, y0, x1, y1, w.ax, w.ay, w.bx, w.by)) return false;
-    const double d2 = std::min({pointSegmentDistance2(x0, y0, w.ax, w.ay, w.bx, w.by), pointSegmentDistance2(x1, y1, w.ax, w.ay, w.bx, w.by),
-                                pointSegmentDistance2(w.ax, w.ay, x0, y0, x1, y1), pointSegmentDistance2(w.bx, w.by, x0, y0, x1, y1)});
+    const double d2 = std::min(
+        {pointSegmentDistance2(x0, y0, w.ax, w.ay, w.bx, w.by), pointSegmentDistance2(x1, y1, w.ax, w.ay, w.bx, w.by),
+         pointSegmentDistance2(w.ax, w.ay, x0, y0, x1, y1), pointSegmentDistance2(w.bx, w.by, x0, y0, x1, y1)});
     if (d2 < kReach2) return false;
   }
   return true;
@@ -586,7 +608,8 @@ struct NearLeaf {
   FaceTree::Leaf leaf;
   size_t face, edge;  // the face whose tree holds it, and the edge of p's face it lies across (or its corner count)
 };
-std::vector<NearLeaf> leavesRound(const Stage& stage, const std::vector<FaceTree>& trees, const LevelPoint& p, double reach, Open open) {
+std::vector<NearLeaf> leavesRound(const Stage& stage, const std::vector<FaceTree>& trees, const LevelPoint& p,
+                                  double reach, Open open) {
   const auto f = static_cast<size_t>(p.face);
   const StageFace& face = stage.faces[f];
   const Shape point{{double(p.position.x), double(p.position.y)}};
@@ -595,7 +618,9 @@ std::vector<NearLeaf> leavesRound(const Stage& stage, const std::vector<FaceTree
   trees[f].leavesNear(point, reach, open, leaves);
   for (const auto& l : leaves) out.push_back({l, f, face.corners.size()});
   for (size_t k = 0; k < face.corners.size(); ++k) {
-    if (distanceToSegment(p.position.x, p.position.y, face.corners[k], face.corners[(k + 1) % face.corners.size()]) > reach) continue;
+    if (distanceToSegment(p.position.x, p.position.y, face.corners[k], face.corners[(k + 1) % face.corners.size()]) >
+        reach)
+      continue;
     const auto g = static_cast<size_t>(face.neighbours[k].face);
     leaves.clear();
     trees[g].leavesNear(mapped(point, unfoldAcross(stage, f, k).inverse()), reach, open, leaves);
@@ -619,8 +644,8 @@ void nearestOnRim(const Box& box, double& x, double& y) {
 // within `reach` of it (the line carried over the edge). Enough even where p has only a few units
 // of room (a corner 100 units from a floor and a wall): the cells next to the walls are in doubt,
 // so blocked, and the free ones lie a cell or two beyond. One leaf per joined piece is enough.
-std::vector<int> leavesInSight(const Stage& stage, const std::vector<FaceTree>& trees, const LevelPoint& p, double reach,
-                               Joins& joins) {
+std::vector<int> leavesInSight(const Stage& stage, const std::vector<FaceTree>& trees, const LevelPoint& p,
+                               double reach, Joins& joins) {
   const auto f = static_cast<size_t>(p.face);
   const double px = p.position.x, py = p.position.y;
   std::vector<FlatWall> local;  // the walls a path of `reach` from p could come near
@@ -642,12 +667,13 @@ std::vector<int> leavesInSight(const Stage& stage, const std::vector<FaceTree>& 
     double qx = px, qy = py;
     if (!here) there.inverse().apply(qx, qy);
     double x = std::clamp(qx, n.leaf.box.x0, n.leaf.box.x1), y = std::clamp(qy, n.leaf.box.y0, n.leaf.box.y1);
-    if (n.leaf.ring) nearestOnRim(n.leaf.box, x, y);  // only its rim is known to be open
+    if (n.leaf.ring) nearestOnRim(n.leaf.box, x, y);                  // only its rim is known to be open
     if (!insidePolygon(stage.faces[n.face].corners, x, y)) continue;  // only the part of a square on its face
     there.apply(x, y);
     candidates.push_back({std::hypot(x - px, y - py), x, y, n.leaf.join, n.edge});
   }
-  std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) { return a.distance < b.distance; });
+  std::sort(candidates.begin(), candidates.end(),
+            [](const Candidate& a, const Candidate& b) { return a.distance < b.distance; });
   std::vector<int> roots;
   for (const Candidate& c : candidates) {
     const int root = joins.root(c.join);
@@ -667,7 +693,8 @@ std::vector<int> leavesInSight(const Stage& stage, const std::vector<FaceTree>& 
 
 // The open leaves from which the player's disk meets the goal's square: on its face, and on the
 // faces across the edges the square comes within the radius of.
-std::vector<int> leavesMeetingGoal(const Level& level, const Stage& stage, const std::vector<FaceTree>& trees, Open open) {
+std::vector<int> leavesMeetingGoal(const Level& level, const Stage& stage, const std::vector<FaceTree>& trees,
+                                   Open open) {
   const auto f = static_cast<size_t>(level.goal.face);
   const double h = goalHalfSide(level), gx = level.goal.position.x, gy = level.goal.position.y;
   const Shape square{{gx - h, gy - h}, {gx + h, gy - h}, {gx + h, gy + h}, {gx - h, gy + h}};
@@ -679,7 +706,8 @@ std::vector<int> leavesMeetingGoal(const Level& level, const Stage& stage, const
     for (const auto& [x, y] : square)
       d = std::min(d, distanceToSegment(x, y, face.corners[k], face.corners[(k + 1) % face.corners.size()]));
     if (d > kPlayerRadius) continue;
-    trees[size_t(face.neighbours[k].face)].leavesNear(mapped(square, unfoldAcross(stage, f, k).inverse()), kPlayerRadius, open, leaves);
+    trees[size_t(face.neighbours[k].face)].leavesNear(mapped(square, unfoldAcross(stage, f, k).inverse()),
+                                                      kPlayerRadius, open, leaves);
   }
   std::vector<int> out;
   for (const auto& l : leaves)
@@ -689,7 +717,8 @@ std::vector<int> leavesMeetingGoal(const Level& level, const Stage& stage, const
 
 // Whether a point of the stretch t0..t1 of edge k of a face (its frame's corners) is clear for a
 // leaf (FaceTree::openAlong).
-bool openAlongEdge(const FaceTree& tree, int doubt, const std::vector<physics::Vec2>& corners, size_t k, double t0, double t1) {
+bool openAlongEdge(const FaceTree& tree, int doubt, const std::vector<physics::Vec2>& corners, size_t k, double t0,
+                   double t1) {
   const physics::Vec2 a = corners[k], b = corners[(k + 1) % corners.size()];
   const double dx = double(b.x) - a.x, dy = double(b.y) - a.y;
   return tree.openAlong(doubt, a.x + t0 * dx, a.y + t0 * dy, a.x + t1 * dx, a.y + t1 * dy);
@@ -706,15 +735,17 @@ void linkEdges(const Stage& stage, const std::vector<FaceTree>& trees, Open open
       std::vector<FaceTree::Stretch> here, there;
       trees[f].leavesAlong(face.corners[k], face.corners[(k + 1) % face.corners.size()], open, here);
       const StageFace& other = stage.faces[size_t(g)];
-      trees[size_t(g)].leavesAlong(other.corners[size_t(j)], other.corners[(size_t(j) + 1) % other.corners.size()], open, there);
+      trees[size_t(g)].leavesAlong(other.corners[size_t(j)], other.corners[(size_t(j) + 1) % other.corners.size()],
+                                   open, there);
       for (auto& s : there) s = {1 - s.to, 1 - s.from, s.join, s.doubt};  // the other face runs the edge the other way
       auto byStart = [](const FaceTree::Stretch& a, const FaceTree::Stretch& b) { return a.from < b.from; };
       std::sort(here.begin(), here.end(), byStart);
       std::sort(there.begin(), there.end(), byStart);
       for (size_t a = 0, b = 0; a < here.size() && b < there.size();) {
         const double t0 = std::max(here[a].from, there[b].from), t1 = std::min(here[a].to, there[b].to);
-        if (t0 <= t1 && (open == Open::Free || (openAlongEdge(trees[f], here[a].doubt, face.corners, k, t0, t1) &&
-                                                openAlongEdge(trees[size_t(g)], there[b].doubt, other.corners, size_t(j), 1 - t1, 1 - t0))))
+        if (t0 <= t1 && (open == Open::Free ||
+                         (openAlongEdge(trees[f], here[a].doubt, face.corners, k, t0, t1) &&
+                          openAlongEdge(trees[size_t(g)], there[b].doubt, other.corners, size_t(j), 1 - t1, 1 - t0))))
           joins.join(here[a].join, there[b].join);
         here[a].to < there[b].to ? ++a : ++b;
       }
@@ -729,7 +760,9 @@ void refineRound(const Stage& stage, std::vector<FaceTree>& trees, const LevelPo
   const StageFace& face = stage.faces[f];
   trees[f].refineNear(p.position.x, p.position.y, radius, trees[f].bytes() + kRefineBytes, joins);
   for (size_t k = 0; k < face.corners.size(); ++k) {
-    if (distanceToSegment(p.position.x, p.position.y, face.corners[k], face.corners[(k + 1) % face.corners.size()]) > radius) continue;
+    if (distanceToSegment(p.position.x, p.position.y, face.corners[k], face.corners[(k + 1) % face.corners.size()]) >
+        radius)
+      continue;
     double x = p.position.x, y = p.position.y;
     unfoldAcross(stage, f, k).inverse().apply(x, y);
     FaceTree& there = trees[size_t(face.neighbours[k].face)];
@@ -741,7 +774,8 @@ void refineRound(const Stage& stage, std::vector<FaceTree>& trees, const LevelPo
 // the goal reach the leaves they can slide to in a straight line within `reach`; counting
 // undecided leaves too (the upper bound), every open leaf within the least reach, which holds
 // every leaf a search with the finest cells would have started from.
-bool joined(const Level& level, const Stage& stage, const std::vector<FaceTree>& trees, int joinCount, double reach, Open open) {
+bool joined(const Level& level, const Stage& stage, const std::vector<FaceTree>& trees, int joinCount, double reach,
+            Open open) {
   Joins joins(joinCount);
   for (const FaceTree& t : trees) t.linkInside(open, joins);
   linkEdges(stage, trees, open, joins);
@@ -786,10 +820,12 @@ ReachAnswer searchReach(const Level& level, const Stage& stage) {
   int joinCount = 0;
   answer.finestCell = growTrees(trees, joinCount);
   if (answer.finestCell > kFinestCell)
-    for (const LevelPoint* p : {&level.start, &level.goal}) refineRound(stage, trees, *p, 2 * answer.finestCell + 256, joinCount);
+    for (const LevelPoint* p : {&level.start, &level.goal})
+      refineRound(stage, trees, *p, 2 * answer.finestCell + 256, joinCount);
   const double reach = seedReach(answer.finestCell);
   answer.reachable = joined(level, stage, trees, joinCount, reach, Open::Free);
-  answer.couldBeOpen = answer.reachable || (answer.finestCell > kFinestCell && joined(level, stage, trees, joinCount, reach, Open::FreeOrUndecided));
+  answer.couldBeOpen = answer.reachable || (answer.finestCell > kFinestCell &&
+                                            joined(level, stage, trees, joinCount, reach, Open::FreeOrUndecided));
   return answer;
 }
 

@@ -17,9 +17,9 @@
 
 namespace platon::stage {
 
-inline constexpr double kPlayerRadius = 96;          // the default player's disk
-inline constexpr double kFinestCell = 8;             // near walls, in units
-inline constexpr size_t kSearchBytes = 48u << 20;    // the tree, its cells in doubt and their walls
+inline constexpr double kPlayerRadius = 96;        // the default player's disk
+inline constexpr double kFinestCell = 8;           // near walls, in units
+inline constexpr size_t kSearchBytes = 48u << 20;  // the tree, its cells in doubt and their walls
 
 struct ReachAnswer {
   bool reachable = false;

@@ -62,7 +62,8 @@ std::vector<size_t> numbering(const Polyhedron& p, const std::vector<Frame>& fra
   for (size_t f = 1; f < count; ++f) {
     const double dz = frames[f].normal.z() - frames[first].normal.z();
     const Eigen::Vector3d a = faceCentre(p, f), b = faceCentre(p, first);
-    if (dz > kTie || (dz > -kTie && (a.y() < b.y() - near || (std::abs(a.y() - b.y()) <= near && a.x() < b.x() - near))))
+    if (dz > kTie ||
+        (dz > -kTie && (a.y() < b.y() - near || (std::abs(a.y() - b.y()) <= near && a.x() < b.x() - near))))
       first = f;
   }
   std::vector<size_t> order{first};
@@ -105,7 +106,8 @@ void checkWholeUnits(const Stage& stage) {
       const physics::Vec2 a = c[i], b = c[(i + 1) % n], d = c[(i + 2) % n];
       const int64_t turn = (int64_t{b.x} - a.x) * (int64_t{d.y} - b.y) - (int64_t{b.y} - a.y) * (int64_t{d.x} - b.x);
       if (turn <= 0)
-        throw StageError({}, "face " + std::to_string(f) + " is too small or too thin to lay out in whole units (corner " +
+        throw StageError({}, "face " + std::to_string(f) +
+                                 " is too small or too thin to lay out in whole units (corner " +
                                  std::to_string((i + 1) % n) + " is not convex once rounded): make the stage larger");
       const auto [g, j] = stage.faces[f].neighbours[i];
       const auto& o = stage.faces[static_cast<size_t>(g)].corners;
@@ -161,7 +163,8 @@ Stage stageFromPolyhedron(const Polyhedron& p) {
       const Eigen::Vector3d d = corner(p, f, floor + k) - face.origin;
       const double x = std::round(d.dot(face.xAxis)), y = std::round(d.dot(face.yAxis));
       if (std::abs(x) > (1 << 29) || std::abs(y) > (1 << 29))
-        throw StageError({}, "face " + std::to_string(n) + " is too large for the physics coordinate range (2^29 units)");
+        throw StageError({},
+                         "face " + std::to_string(n) + " is too large for the physics coordinate range (2^29 units)");
       face.corners.push_back({static_cast<int32_t>(x), static_cast<int32_t>(y)});
       const auto [g, i] = across[f][k];
       const int gFloor = frames[g].floorEdge;

@@ -66,7 +66,8 @@ void checkFan(const Polyhedron& p, const EdgeIndex& edges, const std::vector<Eig
   double turn = 0;
   for (size_t i = 0; i < directions.size(); ++i) {
     const Eigen::Vector3d a = directions[i] - directions[i].dot(axis) * axis;
-    const Eigen::Vector3d b = directions[next(i, directions.size())] - directions[next(i, directions.size())].dot(axis) * axis;
+    const Eigen::Vector3d b =
+        directions[next(i, directions.size())] - directions[next(i, directions.size())].dot(axis) * axis;
     if (!(a.norm() > 1e-12)) fail("not convex at the point " + names.point(v) + " (its faces fold back)");
     turn += std::atan2(a.cross(b).dot(axis), a.dot(b));
   }
@@ -82,7 +83,8 @@ void checkFan(const Polyhedron& p, const EdgeIndex& edges, const std::vector<Eig
       char amount[32];
       std::snprintf(amount, sizeof amount, "%.3g", ahead);
       fail("not convex near the point " + names.point(v) + ": the point " + names.point(ends[i]) + " lies " + amount +
-           " in front of " + names.face(fanFaces[k]) + "'s plane (the surface curves inward round it: by less than the "
+           " in front of " + names.face(fanFaces[k]) +
+           "'s plane (the surface curves inward round it: by less than the "
            "tolerance at each edge, but more in all)");
     }
   if (winds != 1)
@@ -102,8 +104,8 @@ EdgeIndex::EdgeIndex(const Polyhedron& p, const SurfaceNames& names) {
       const int a = cycle[i], b = cycle[next(i, cycle.size())];
       const auto [at, added] = uses_.emplace(key(a, b), Use{uint32_t(f), uint32_t(i)});
       if (!added)
-        fail(names.face(at->second.face) + " and " + names.face(f) + " run the same way along the edge " + names.point(a) +
-             " - " + names.point(b) + " (non-manifold, or wound inconsistently)");
+        fail(names.face(at->second.face) + " and " + names.face(f) + " run the same way along the edge " +
+             names.point(a) + " - " + names.point(b) + " (non-manifold, or wound inconsistently)");
     }
   }
 }
@@ -123,11 +125,13 @@ OffPlane worstOffPlane(const Polyhedron& p, size_t face) {
   return worst;
 }
 
-void checkClosed(const Polyhedron& p, const EdgeIndex& edges, const std::function<std::string(int, int, size_t)>& openEdge) {
+void checkClosed(const Polyhedron& p, const EdgeIndex& edges,
+                 const std::function<std::string(int, int, size_t)>& openEdge) {
   for (size_t f = 0; f < p.faces.size(); ++f) {
     const auto& cycle = p.faces[f];
     for (size_t i = 0; i < cycle.size(); ++i)
-      if (!edges.find(cycle[next(i, cycle.size())], cycle[i])) fail(openEdge(cycle[i], cycle[next(i, cycle.size())], f));
+      if (!edges.find(cycle[next(i, cycle.size())], cycle[i]))
+        fail(openEdge(cycle[i], cycle[next(i, cycle.size())], f));
   }
 }
 
@@ -168,8 +172,8 @@ void checkLocallyConvex(const Polyhedron& p, const EdgeIndex& edges, const std::
       if (ahead > tolerance) {
         char amount[32];
         std::snprintf(amount, sizeof amount, "%.3g", ahead);
-        fail("not convex: the point " + names.point(w) + " of " + names.face(back.face) + " lies " + amount + " in front of " +
-             names.face(f) + "'s plane, across their edge " + names.point(cycle[i]) + " - " +
+        fail("not convex: the point " + names.point(w) + " of " + names.face(back.face) + " lies " + amount +
+             " in front of " + names.face(f) + "'s plane, across their edge " + names.point(cycle[i]) + " - " +
              names.point(cycle[next(i, cycle.size())]));
       }
     }

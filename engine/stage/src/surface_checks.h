@@ -57,7 +57,8 @@ OffPlane worstOffPlane(const Polyhedron& p, size_t face);
 
 // Every edge has a face on its other side. `openEdge` says what is wrong with an edge that has
 // none (the mesh builder names a T-junction there).
-void checkClosed(const Polyhedron& p, const EdgeIndex& edges, const std::function<std::string(int from, int to, size_t face)>& openEdge);
+void checkClosed(const Polyhedron& p, const EdgeIndex& edges,
+                 const std::function<std::string(int from, int to, size_t face)>& openEdge);
 
 // The faces are one piece (joined across edges).
 void checkConnected(const Polyhedron& p, const EdgeIndex& edges, const SurfaceNames& names);

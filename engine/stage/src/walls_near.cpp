@@ -21,8 +21,10 @@ FlatMap unfoldAcross(const Stage& stage, size_t face, size_t edge) {
   const auto [g, j] = here.neighbours[edge];
   const StageFace& there = stage.faces[static_cast<size_t>(g)];
   // The neighbour's edge j runs p -> q, the same edge as our a -> b the other way: q lands on a.
-  const physics::Vec2 p = there.corners[static_cast<size_t>(j)], q = there.corners[(static_cast<size_t>(j) + 1) % there.corners.size()];
-  const double turn = std::atan2(double(b.y) - a.y, double(b.x) - a.x) - std::atan2(double(p.y) - q.y, double(p.x) - q.x);
+  const physics::Vec2 p = there.corners[static_cast<size_t>(j)],
+                      q = there.corners[(static_cast<size_t>(j) + 1) % there.corners.size()];
+  const double turn =
+      std::atan2(double(b.y) - a.y, double(b.x) - a.x) - std::atan2(double(p.y) - q.y, double(p.x) - q.x);
   FlatMap map{std::cos(turn), std::sin(turn), 0, 0};
   double qx = q.x, qy = q.y;
   map.apply(qx, qy);
@@ -43,13 +45,16 @@ std::vector<FlatWall> wallsNear(const Level& level, const Stage& stage, size_t f
   for (size_t k = 0; k < here.corners.size(); ++k) {
     const auto [g, j] = here.neighbours[k];
     const StageFace& there = stage.faces[static_cast<size_t>(g)];
-    const physics::Vec2 p = there.corners[static_cast<size_t>(j)], q = there.corners[(static_cast<size_t>(j) + 1) % there.corners.size()];
+    const physics::Vec2 p = there.corners[static_cast<size_t>(j)],
+                        q = there.corners[(static_cast<size_t>(j) + 1) % there.corners.size()];
     const FlatMap map = unfoldAcross(stage, face, k);
     // The edge's bounding box grown by the margin: a line whose own box misses it is not near.
     const double x0 = std::min(p.x, q.x) - margin, x1 = std::max(p.x, q.x) + margin;
     const double y0 = std::min(p.y, q.y) - margin, y1 = std::max(p.y, q.y) + margin;
     for (const LevelLine& l : level.faces[static_cast<size_t>(g)].lines) {
-      if (std::max(l.a.x, l.b.x) < x0 || std::min(l.a.x, l.b.x) > x1 || std::max(l.a.y, l.b.y) < y0 || std::min(l.a.y, l.b.y) > y1) continue;
+      if (std::max(l.a.x, l.b.x) < x0 || std::min(l.a.x, l.b.x) > x1 || std::max(l.a.y, l.b.y) < y0 ||
+          std::min(l.a.y, l.b.y) > y1)
+        continue;
       if (!counts(l, counting)) continue;
       // Near the edge: either end within the margin of it, or the line crossing its strip.
       const double ea = distanceToSegment(l.a.x, l.a.y, p, q), eb = distanceToSegment(l.b.x, l.b.y, p, q);

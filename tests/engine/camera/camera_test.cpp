@@ -4,13 +4,14 @@
 // gives), and the camera is checked frame by frame: it never turns faster than its top speed (no
 // jump, and so no flip), keeps the ball on the screen, and once the ball stops it settles on the
 // seed's line (centre -> player, the floor level) within half a degree (no roll left over).
+#include "platon/camera/camera.h"
+
 #include <cmath>
 #include <memory>
 
 #include <gtest/gtest.h>
 
 #include "mesh_system.h"
-#include "platon/camera/camera.h"
 #include "platon/core/display.h"
 #include "platon/core/mesh_source.h"
 #include "platon/core/scene.h"
@@ -34,7 +35,8 @@ std::unique_ptr<Built> build(stage::Stage s) {
   auto b = std::make_unique<Built>();
   b->stage = std::move(s);
   stage::addStageToWorld(b->stage, b->world, 0);
-  for (size_t f = 0; f < b->stage.faceCount(); ++f) b->world.mapPart(b->stage.part(f)).initialize();  // no gravity: straight lines
+  for (size_t f = 0; f < b->stage.faceCount(); ++f)
+    b->world.mapPart(b->stage.part(f)).initialize();  // no gravity: straight lines
   b->view = core::stageView(b->stage, b->world);
   return b;
 }
@@ -75,7 +77,8 @@ void walkEveryEdge(const std::string& name, stage::Stage s, Stats& stats, bool t
     for (const Vec2 c : face.corners) cx += c.x / double(n), cy += c.y / double(n);
     for (size_t k = 0; k < n; ++k)
       for (const double slant : {0.0, 0.6, -0.6}) {
-        SCOPED_TRACE(name + " face " + std::to_string(f) + " edge " + std::to_string(k) + " slant " + std::to_string(slant));
+        SCOPED_TRACE(name + " face " + std::to_string(f) + " edge " + std::to_string(k) + " slant " +
+                     std::to_string(slant));
         const Vec2 a = face.corners[k], c = face.corners[(k + 1) % n];
         const double mx = (a.x + c.x) / 2.0, my = (a.y + c.y) / 2.0;
         // Start halfway between the face's centre and the edge's middle, heading for the edge.
@@ -87,14 +90,15 @@ void walkEveryEdge(const std::string& name, stage::Stage s, Stats& stats, bool t
         const physics::EntityId ball = b->world.createEntity(physics::Convex::regular(16, radius));
         b->world.insert(ball, b->stage.part(f), {static_cast<int32_t>(sx), static_cast<int32_t>(sy)}, 0);
         const double speed = edgeLength / 90;  // units a frame: an edge in a second and a half
-        b->world.setVelocity(ball, {static_cast<int64_t>(rx * speed * 65536), static_cast<int64_t>(ry * speed * 65536)});
+        b->world.setVelocity(ball,
+                             {static_cast<int64_t>(rx * speed * 65536), static_cast<int64_t>(ry * speed * 65536)});
 
         camera::Camera cam;
         auto target = [&] {
           const physics::EntityView e = b->world.entity(ball);
           const physics::InstanceView i = e.instance(0);
-          return core::cameraTarget(*b->view, i.part, static_cast<float>(i.position.x), static_cast<float>(i.position.y),
-                                    downs[i.part]);
+          return core::cameraTarget(*b->view, i.part, static_cast<float>(i.position.x),
+                                    static_cast<float>(i.position.y), downs[i.part]);
         };
         cam.set(target(), 1280, 720);
         const physics::MapPartId startPart = b->stage.part(f);
@@ -175,7 +179,8 @@ TEST(Camera, TheWantedPoseIsOnTheLineFromTheCentreThroughThePlayer) {
     const Eigen::Vector3d walk = t.normal.cross(t.down).normalized();
     const Eigen::Vector3d right = p.orientation * Eigen::Vector3d::UnitX();
     EXPECT_NEAR(right.dot(p.forward()), 0, 1e-9);
-    EXPECT_NEAR(right.dot((walk - walk.dot(p.forward()) * p.forward()).normalized()), 1, 1e-9);  // the floor reads level
+    EXPECT_NEAR(right.dot((walk - walk.dot(p.forward()) * p.forward()).normalized()), 1,
+                1e-9);                               // the floor reads level
     EXPECT_GT(p.up().dot(-t.down.normalized()), 0);  // and up is against the gravity
   }
 }

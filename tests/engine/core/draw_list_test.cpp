@@ -1,12 +1,12 @@
 // Drawing between two simulation steps: shapes that exist in both pictures move the fraction of
 // the way; shapes that changed kind, face or point count, and shapes new in the later picture,
 // are drawn as they are in it.
-#include <gtest/gtest.h>
+#include "platon/core/draw_list.h"
 
 #include <string>
 #include <vector>
 
-#include "platon/core/draw_list.h"
+#include <gtest/gtest.h>
 
 using namespace platon::core;
 

@@ -4,15 +4,16 @@
 // The scripting system is stood in for by ScriptsFromManifest: it reads the files the manifest
 // names (its level script and mods), refuses a file that says "broken", and, when a test asks it
 // to, saves a file while it loads: the editor's second save landing during the reload.
-#include <gtest/gtest.h>
+#include "platon/core/live_scene.h"
 
 #include <chrono>
 #include <fstream>
 #include <sstream>
 #include <thread>
 
+#include <gtest/gtest.h>
+
 #include "platon/core/file_watch.h"
-#include "platon/core/live_scene.h"
 #include "platon/core/manifest.h"
 #include "platon/core/scene.h"
 #include "platon/testing/temp_folder.h"
@@ -54,7 +55,9 @@ class ScriptsFromManifest : public System {
       save.reset();
     }
   }
-  void sourceFiles(std::vector<std::string>& out) const override { out.insert(out.end(), files_.begin(), files_.end()); }
+  void sourceFiles(std::vector<std::string>& out) const override {
+    out.insert(out.end(), files_.begin(), files_.end());
+  }
   const std::string& versions() const { return versions_; }
 
  private:
@@ -71,7 +74,8 @@ class LiveSceneTest : public ::testing::Test {
     });
   }
   std::string manifest(const std::string& mods) {
-    return folder_.write("scene.lua", "return { systems = { 'scripting' }, scripts = { level = 'level.lua', mods = { " + mods + " } } }\n");
+    return folder_.write("scene.lua", "return { systems = { 'scripting' }, scripts = { level = 'level.lua', mods = { " +
+                                          mods + " } } }\n");
   }
   // What the live version read.
   static std::string versions(LiveScene& live) {
@@ -97,7 +101,7 @@ TEST(FileWatcher, ASaveQueuedBeforeTheSetChangesIsStillReported) {
   const std::string a = folder.write("a.lua", "1"), b = folder.write("b.lua", "2");
   FileWatcher watcher;
   EXPECT_EQ(watcher.watch({a}), std::vector<std::string>{a});
-  folder.write("a.lua", "saved");  // queued, not looked at yet
+  folder.write("a.lua", "saved");                                 // queued, not looked at yet
   EXPECT_EQ(watcher.watch({a, b}), std::vector<std::string>{b});  // only b is new
   EXPECT_EQ(watcher.changes(1000), std::vector<std::string>{a});
   // A folder no longer wanted is dropped.
@@ -181,7 +185,9 @@ TEST_F(LiveSceneTest, AnEngineScriptOnlyARefusedEditNamedIsWatched) {
   folder_.write("engine/scripts/rules/new.lua", "broken");
   LiveScene live(scene, registry_, true);
   settle();
-  folder_.write("scene.lua", "return { systems = { 'scripting' }, scripts = { level = 'level.lua', rules = 'scripts/rules/new.lua' } }\n");
+  folder_.write(
+      "scene.lua",
+      "return { systems = { 'scripting' }, scripts = { level = 'level.lua', rules = 'scripts/rules/new.lua' } }\n");
   std::optional<ReloadReport> refused = awaitReload(live);
   ASSERT_TRUE(refused.has_value());
   EXPECT_FALSE(refused->ok);
@@ -197,7 +203,9 @@ TEST_F(LiveSceneTest, ALevelFileOnlyARefusedManifestNamedIsWatched) {
   const std::string scene = manifest("");
   folder_.write("level.lua", "v0");
   LiveScene live(scene, registry_, true);
-  folder_.write("scene.lua", "return { systems = { 'scripting' }, stage = { level = 'next.level' }, scripts = { level = 'level.lua' } }\n");
+  folder_.write(
+      "scene.lua",
+      "return { systems = { 'scripting' }, stage = { level = 'next.level' }, scripts = { level = 'level.lua' } }\n");
   std::optional<ReloadReport> refused = awaitReload(live);
   ASSERT_TRUE(refused.has_value());
   EXPECT_FALSE(refused->ok);

@@ -1,16 +1,15 @@
 // Replay files: every malformed input is an error at file:line:column, and any input survives a
 // write and a read unchanged.
 #include "platon/core/replay.h"
-#include "platon/core/input.h"
-
-#include <gtest/gtest.h>
-
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <unistd.h>
 
+#include <gtest/gtest.h>
+
+#include "platon/core/input.h"
 #include "platon/testing/rng.h"
 
 namespace platon::core {
@@ -42,18 +41,22 @@ TEST(Replay, MalformedInputsNamePositionAndReason) {
       {"platon replay 1\nscene \"\"\n", "run.replay:2:7: empty scene path"},
       {"platon replay 1\nscene \"a\"\nframes ten\n", "run.replay:3:8: frames: expected a whole number, got 'ten'"},
       {"platon replay 1\nscene \"a\"\nframes -3\n", "run.replay:3:8: frames: expected a whole number, got '-3'"},
-      {"platon replay 1\nscene \"a\"\nframes 99999999999\n", "run.replay:3:8: frames 99999999999 is more than 67108864"},
+      {"platon replay 1\nscene \"a\"\nframes 99999999999\n",
+       "run.replay:3:8: frames 99999999999 is more than 67108864"},
       // More than 2^64: no bare conversion error, the same message with its place.
       {"platon replay 1\nscene \"a\"\nframes 99999999999999999999\n",
        "run.replay:3:8: frames 99999999999999999999 is more than 67108864"},
-      {"platon replay 1\nscene \"a\"\nframes 123456789012345678901234567890\n", "run.replay:3:8: frames 123456789012345678901234567890 is more"},
-      {"platon replay 1\nscene \"a\"\nscene_files 12\n", "run.replay:3:13: the scene files' hash is 16 lower-case hex digits"},
+      {"platon replay 1\nscene \"a\"\nframes 123456789012345678901234567890\n",
+       "run.replay:3:8: frames 123456789012345678901234567890 is more"},
+      {"platon replay 1\nscene \"a\"\nscene_files 12\n",
+       "run.replay:3:13: the scene files' hash is 16 lower-case hex digits"},
       {kHeader + "10 left left\nend\n", "run.replay:6:9: 'left' is given twice"},
       {kHeader + "10 -\nend\nhash 0 0123456789abcdef\n", "run.replay:8:6: hash frame 0: frames count from 1"},
       // The hashes hash_every implies are all there or none: a stripped or tampered file is refused.
       {kHeader + "10 -\nend\nhash 10 0123456789abcdef\n", "run.replay:8:6: hash_every 5 implies a hash at frame 5"},
       {kHeader + "10 -\nend\nhash 5 0123456789abcdef\n", "run.replay:8:1: hash_every 5 implies a hash at frame 10"},
-      {kHeader + "10 -\nend\nhash 5 0123456789abcdef\nhash 7 0123456789abcdef\n", "run.replay:9:6: hash_every 5 implies no hash at frame 7"},
+      {kHeader + "10 -\nend\nhash 5 0123456789abcdef\nhash 7 0123456789abcdef\n",
+       "run.replay:9:6: hash_every 5 implies no hash at frame 7"},
       {kHeader + "10 left\n", "missing 'end' (at the end of the file)"},
       {kHeader + "10 lef\nend\n", "run.replay:6:4: unknown button 'lef'"},
       {kHeader + "0 -\nend\n", "run.replay:6:1: a run of 0 frames"},
@@ -63,7 +66,8 @@ TEST(Replay, MalformedInputsNamePositionAndReason) {
       {kHeader + "10 - left\nend\n", "run.replay:6:4: unknown button '-'"},
       {kHeader + "10 -\nend\nhash 5 12\n", "run.replay:8:8: a hash is 16 lower-case hex digits"},
       {kHeader + "10 -\nend\nhash 11 0123456789abcdef\n", "run.replay:8:6: hash frame 11 is more than 10"},
-      {kHeader + "10 -\nend\nhash 5 0123456789abcdef\nhash 5 0123456789abcdef\nhash 10 0123456789abcdef\n", "run.replay:9:6: hash frames must increase"},
+      {kHeader + "10 -\nend\nhash 5 0123456789abcdef\nhash 5 0123456789abcdef\nhash 10 0123456789abcdef\n",
+       "run.replay:9:6: hash frames must increase"},
       {kHeader + "10 -\nend\nhash 5\n", "run.replay:8:6: expected 'hash FRAME HEX16'"},
       {kHeader + "10 -\nend\nnoise\n", "run.replay:8:1: expected 'hash FRAME HEX16', got 'noise'"},
   };
@@ -74,8 +78,8 @@ TEST(Replay, MalformedInputsNamePositionAndReason) {
 }
 
 TEST(Replay, CommentsBlankLinesAndNoInput) {
-  const Replay r = parseReplay("# a run\n\nplaton replay 1\n  scene \"s.lua\"\nframes 3\nhash_every 0\ninput\n# none\n3 -\nend\n",
-                               "x.replay");
+  const Replay r = parseReplay(
+      "# a run\n\nplaton replay 1\n  scene \"s.lua\"\nframes 3\nhash_every 0\ninput\n# none\n3 -\nend\n", "x.replay");
   EXPECT_EQ(r.scene, "s.lua");
   EXPECT_EQ(r.held, (std::vector<uint8_t>{0, 0, 0}));
   EXPECT_TRUE(r.hashes.empty());
@@ -87,9 +91,10 @@ TEST(Replay, AControlByteInTheFileIsShownNotCutShort) {
 }
 
 TEST(Replay, ACommentRunsFromAHashToTheEndOfTheLine) {
-  const Replay r = parseReplay("platon replay 1  # a run\nscene \"a#b.lua\"\nframes 3 # three\nhash_every 0\ninput\n"
-                               "3 right # all the way\nend # done\nhash 3 0123456789abcdef # the last\n",
-                               "x.replay");
+  const Replay r = parseReplay(
+      "platon replay 1  # a run\nscene \"a#b.lua\"\nframes 3 # three\nhash_every 0\ninput\n"
+      "3 right # all the way\nend # done\nhash 3 0123456789abcdef # the last\n",
+      "x.replay");
   EXPECT_EQ(r.scene, "a#b.lua");  // not inside quotes
   EXPECT_EQ(r.held, std::vector<uint8_t>(3, InputFrame::bit(Button::Right)));
   ASSERT_EQ(r.hashes.size(), 1u);
@@ -100,12 +105,17 @@ TEST(Replay, AllHashesOrNone) {
   // No hashes at all is an input-only file: it reads (and replays without checking anything).
   const Replay none = parseReplay(kHeader + "10 -\nend\n", "x.replay");
   EXPECT_TRUE(none.hashes.empty());
-  const Replay all = parseReplay(kHeader + "10 -\nend\nhash 5 0123456789abcdef\nhash 10 0123456789abcdef\n", "x.replay");
+  const Replay all =
+      parseReplay(kHeader + "10 -\nend\nhash 5 0123456789abcdef\nhash 10 0123456789abcdef\n", "x.replay");
   EXPECT_EQ(all.hashes.size(), 2u);
   // hash_every 4 over 10 frames: 4, 8 and the last.
   const std::string odd = "platon replay 1\nscene \"a\"\nframes 10\nhash_every 4\ninput\n10 -\nend\n";
-  EXPECT_EQ(parseReplay(odd + "hash 4 0123456789abcdef\nhash 8 0123456789abcdef\nhash 10 0123456789abcdef\n", "x.replay").hashes.size(), 3u);
-  EXPECT_NE(errorOf(odd + "hash 4 0123456789abcdef\nhash 10 0123456789abcdef\n").find("implies a hash at frame 8"), std::string::npos);
+  EXPECT_EQ(
+      parseReplay(odd + "hash 4 0123456789abcdef\nhash 8 0123456789abcdef\nhash 10 0123456789abcdef\n", "x.replay")
+          .hashes.size(),
+      3u);
+  EXPECT_NE(errorOf(odd + "hash 4 0123456789abcdef\nhash 10 0123456789abcdef\n").find("implies a hash at frame 8"),
+            std::string::npos);
 }
 
 TEST(Replay, TheSceneFilesHashIsOptionalAndSurvivesWriteAndRead) {
@@ -115,7 +125,8 @@ TEST(Replay, TheSceneFilesHashIsOptionalAndSurvivesWriteAndRead) {
   ReplayRecorder recorder("levels/a/scene.lua", 5, 0x0123456789abcdefull);
   for (int f = 0; f < 10; ++f) recorder.frame(0, 7);
   const std::string text = formatReplay(recorder.replay());
-  EXPECT_NE(text.find("scene \"levels/a/scene.lua\"\nscene_files 0123456789abcdef\nframes 10\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("scene \"levels/a/scene.lua\"\nscene_files 0123456789abcdef\nframes 10\n"), std::string::npos)
+      << text;
   EXPECT_EQ(parseReplay(text, "new.replay").sceneFiles, 0x0123456789abcdefull);
 }
 
@@ -143,7 +154,8 @@ TEST(Replay, TheSceneFilesHashFollowsEveryByteOfEveryFile) {
 TEST(Replay, RandomRunsSurviveWriteAndRead) {
   testing::Rng rng{17};
   for (int trial = 0; trial < 200; ++trial) {
-    ReplayRecorder recorder("levels/x y/scene.lua", rng.between(0, 4) == 0 ? 0 : static_cast<uint64_t>(rng.between(1, 100)));
+    ReplayRecorder recorder("levels/x y/scene.lua",
+                            rng.between(0, 4) == 0 ? 0 : static_cast<uint64_t>(rng.between(1, 100)));
     const int frames = rng.between(1, 3000);
     uint8_t held = 0;
     for (int f = 0; f < frames; ++f) {

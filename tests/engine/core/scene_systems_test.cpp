@@ -37,14 +37,15 @@ TEST(SceneSystems, AudioIsRefusedAtItsEntryInTheManifest) {
   Folder folder("systems_audio");
   std::map<std::string, int> created;
   const std::string manifest = folder.write("scene.lua", "return {\n  systems = { 'rendering', 'audio' },\n}\n");
-  EXPECT_EQ(errorOf(manifest, registryOf({"rendering"}, created)), manifest + ":2:28: audio: no audio system in this build");
+  EXPECT_EQ(errorOf(manifest, registryOf({"rendering"}, created)),
+            manifest + ":2:28: audio: no audio system in this build");
 }
 
 TEST(SceneSystems, ASystemTheProgramLacksIsAnErrorButRenderingHeadlessIsLeftOut) {
   Folder folder("systems_missing");
   std::map<std::string, int> created;
-  const std::string scripted = folder.write(
-      "a.lua", "return { systems = { 'scripting', 'rendering' }, scripts = { level = 'level.lua' } }\n");
+  const std::string scripted =
+      folder.write("a.lua", "return { systems = { 'scripting', 'rendering' }, scripts = { level = 'level.lua' } }\n");
   EXPECT_EQ(errorOf(scripted, registryOf({"rendering"}, created)),
             scripted + ":1:22: scripting: this program provides no such system (it provides: rendering)");
   // Headless: no renderer in the registry, and the scene loads without one.
@@ -61,7 +62,8 @@ TEST(SceneSystems, ScriptingWithoutScriptsCreatesNoLuaState) {
   const auto bare = loadScene(folder.write("a.lua", "return { systems = { 'scripting' } }\n"), registry);
   EXPECT_EQ(created["scripting"], 0);
   EXPECT_EQ(bare->findSystem("scripting"), nullptr);
-  loadScene(folder.write("b.lua", "return { systems = { 'scripting' }, scripts = { mods = { 'm.lua' } } }\n"), registry);
+  loadScene(folder.write("b.lua", "return { systems = { 'scripting' }, scripts = { mods = { 'm.lua' } } }\n"),
+            registry);
   EXPECT_EQ(created["scripting"], 1);
 }
 

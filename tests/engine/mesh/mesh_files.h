@@ -1,6 +1,7 @@
 // Mesh files written by the tests: OBJ with the positions given, and glTF 2.0 (one embedded
 // buffer) whose mesh sits under a chain of nodes, each with a TRS or a matrix transform.
 #pragma once
+#include <Eigen/Geometry>
 #include <array>
 #include <cstdint>
 #include <cstring>
@@ -8,8 +9,6 @@
 #include <sstream>
 #include <string>
 #include <vector>
-
-#include <Eigen/Geometry>
 
 #include "platon/stage/mesh.h"
 
@@ -21,9 +20,7 @@ struct Node {
   Eigen::Vector3d scale = Eigen::Vector3d::Ones(), translation = Eigen::Vector3d::Zero();
   bool asMatrix = false;
 
-  Eigen::Affine3d transform() const {
-    return Eigen::Translation3d(translation) * rotation * Eigen::Scaling(scale);
-  }
+  Eigen::Affine3d transform() const { return Eigen::Translation3d(translation) * rotation * Eigen::Scaling(scale); }
 };
 
 inline void writeObj(const stage::MeshData& m, const std::string& path) {
@@ -94,15 +91,18 @@ inline void writeGltf(const stage::MeshData& m, const std::vector<Node>& chain, 
     }
   const std::vector<Node> nodes = chain.empty() ? std::vector<Node>{Node{}} : chain;
   std::string nodeList;
-  for (size_t i = 0; i < nodes.size(); ++i) nodeList += (i ? "," : "") + nodeJson(nodes[i], int(i), i + 1 == nodes.size());
+  for (size_t i = 0; i < nodes.size(); ++i)
+    nodeList += (i ? "," : "") + nodeJson(nodes[i], int(i), i + 1 == nodes.size());
   const double low[3] = {double(float(lo.x())), double(float(lo.y())), double(float(lo.z()))};
   const double high[3] = {double(float(hi.x())), double(float(hi.y())), double(float(hi.z()))};
-  std::ofstream(path) << "{\"asset\":{\"version\":\"2.0\"},\"scene\":0,\"scenes\":[{\"nodes\":[0]}],\"nodes\":[" << nodeList
+  std::ofstream(path) << "{\"asset\":{\"version\":\"2.0\"},\"scene\":0,\"scenes\":[{\"nodes\":[0]}],\"nodes\":["
+                      << nodeList
                       << "],\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0},\"indices\":1}]}],"
                       << "\"buffers\":[{\"byteLength\":" << buffer.size()
                       << ",\"uri\":\"data:application/octet-stream;base64," << base64(buffer) << "\"}],"
                       << "\"bufferViews\":[{\"buffer\":0,\"byteOffset\":0,\"byteLength\":" << positionBytes
-                      << "},{\"buffer\":0,\"byteOffset\":" << positionBytes << ",\"byteLength\":" << buffer.size() - positionBytes
+                      << "},{\"buffer\":0,\"byteOffset\":" << positionBytes
+                      << ",\"byteLength\":" << buffer.size() - positionBytes
                       << "}],\"accessors\":[{\"bufferView\":0,\"componentType\":5126,\"count\":" << m.positions.size()
                       << ",\"type\":\"VEC3\",\"min\":" << numbers(low, 3) << ",\"max\":" << numbers(high, 3)
                       << "},{\"bufferView\":1,\"componentType\":5125,\"count\":" << 3 * m.triangles.size()

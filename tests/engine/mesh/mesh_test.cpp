@@ -2,20 +2,20 @@
 // broken meshes are refused with what is wrong; the shipped mesh levels check clean. (That the
 // plugin is mapped only by a process playing a mesh level is script_tests' MeshPlugin test: this
 // program links assimp itself.)
+#include "platon/stage/mesh.h"
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include <gtest/gtest.h>
 
+#include "../stage/test_meshes.h"
+#include "mesh_files.h"
 #include "mesh_system.h"
 #include "platon/core/scene.h"
 #include "platon/script/scenario.h"
 #include "platon/stage/level_check.h"
-#include "platon/stage/mesh.h"
-
-#include "../stage/test_meshes.h"
-#include "mesh_files.h"
 
 using namespace platon;
 
@@ -46,19 +46,21 @@ TEST(MeshFiles, FourFormatsMakeTheSamePrism) {  // and the shipped level's PLY i
     const stage::Polyhedron p = stage::polyhedronFromMesh(read(f), 6144);
     ASSERT_EQ(p.faces.size(), 5u);
     int triangles = 0, rectangles = 0;
-    for (const auto& face : p.faces) (face.size() == 3 ? triangles : rectangles) += face.size() == 3 || face.size() == 4;
+    for (const auto& face : p.faces)
+      (face.size() == 3 ? triangles : rectangles) += face.size() == 3 || face.size() == 4;
     EXPECT_EQ(triangles, 2);
     EXPECT_EQ(rectangles, 3);
     stages.push_back(stage::stageFromPolyhedron(p));
   }
   for (const stage::Stage& s : stages)
-    for (size_t f = 0; f < s.faceCount(); ++f) EXPECT_EQ(s.faces[f].corners, stages[0].faces[f].corners) << "face " << f;
+    for (size_t f = 0; f < s.faceCount(); ++f)
+      EXPECT_EQ(s.faces[f].corners, stages[0].faces[f].corners) << "face " << f;
   EXPECT_EQ(stages[0].faces[0].corners[1].x, 6144);  // face 0 is a long side: the longest edge is 6144
 }
 
 TEST(MeshFiles, TheFootballHasTwelvePentagonsAndTwentyHexagons) {
-  const stage::Polyhedron p =
-      stage::polyhedronFromMesh(read(std::string(PLATON_SOURCE_ROOT) + "/levels/soccer_ball/truncated_icosahedron.ply"), 2048);
+  const stage::Polyhedron p = stage::polyhedronFromMesh(
+      read(std::string(PLATON_SOURCE_ROOT) + "/levels/soccer_ball/truncated_icosahedron.ply"), 2048);
   int pentagons = 0, hexagons = 0;
   for (const auto& face : p.faces) pentagons += face.size() == 5, hexagons += face.size() == 6;
   EXPECT_EQ(pentagons, 12);
@@ -71,7 +73,8 @@ TEST(MeshFiles, TheFootballHasTwelvePentagonsAndTwentyHexagons) {
 }
 
 TEST(MeshFiles, BrokenMeshesAreRefusedWithWhatIsWrong) {
-  EXPECT_NE(refusal(kData + "open_box.obj").find("open mesh: the edge"), std::string::npos) << refusal(kData + "open_box.obj");
+  EXPECT_NE(refusal(kData + "open_box.obj").find("open mesh: the edge"), std::string::npos)
+      << refusal(kData + "open_box.obj");
   EXPECT_NE(refusal(kData + "l_prism.obj").find("not convex"), std::string::npos) << refusal(kData + "l_prism.obj");
   const std::string junk = refusal(kData + "not_a_mesh.obj");
   EXPECT_EQ(junk.rfind(kData + "not_a_mesh.obj: ", 0), 0u) << junk;
@@ -97,14 +100,18 @@ TEST(MeshFiles, TheShippedMeshLevelsCheckClean) {
 // A mesh level whose manifest does not list "meshes" is refused, naming the fix.
 TEST(MeshPlugin, AMeshLevelNeedsTheMeshesSystem) {
   const std::string dir = ::testing::TempDir() + "mesh_manifest";
-  std::system(("mkdir -p " + dir + " && cp " + std::string(PLATON_SOURCE_ROOT) + "/levels/prism/prism.* " + dir).c_str());
+  std::system(
+      ("mkdir -p " + dir + " && cp " + std::string(PLATON_SOURCE_ROOT) + "/levels/prism/prism.* " + dir).c_str());
   std::ofstream(dir + "/scene.lua") << "return { stage = { level = 'prism.level' } }\n";
   core::SystemRegistry registry;
   try {
     core::loadScene(dir + "/scene.lua", registry);
     ADD_FAILURE() << "loaded";
   } catch (const std::exception& e) {
-    EXPECT_EQ(std::string(e.what()), dir + "/prism.level:1:1: the level is drawn on a mesh: the scene's manifest must list \"meshes\" in its systems");
+    EXPECT_EQ(
+        std::string(e.what()),
+        dir +
+            "/prism.level:1:1: the level is drawn on a mesh: the scene's manifest must list \"meshes\" in its systems");
   }
 }
 
@@ -114,7 +121,9 @@ std::string scratch(const std::string& name) {
   return dir + name;
 }
 
-stage::Stage stageOfFile(const std::string& path) { return stage::stageFromPolyhedron(stage::polyhedronFromMesh(read(path), 4096)); }
+stage::Stage stageOfFile(const std::string& path) {
+  return stage::stageFromPolyhedron(stage::polyhedronFromMesh(read(path), 4096));
+}
 
 // The same faces, numbered alike, with the same floors (corners within `slack` units) and the
 // same placement in 3D.
@@ -167,8 +176,9 @@ TEST(MeshFiles, NodeTransformsApplyHoweverSmall) {
   for (const bool matrix : {false, true}) {
     for (const double a : {0.001, 0.01, -0.01, 0.02})
       for (const auto& axis : {x, y, z}) chains.push_back({turn(a, axis, matrix)});
-    for (const Eigen::Vector3d& s : {Eigen::Vector3d(0.99, 1, 1), Eigen::Vector3d(1, 1.006, 1), Eigen::Vector3d(1, 1, 0.992),
-                                    Eigen::Vector3d(1.01, 0.995, 1.003), Eigen::Vector3d(-1, 1, 1)})
+    for (const Eigen::Vector3d& s :
+         {Eigen::Vector3d(0.99, 1, 1), Eigen::Vector3d(1, 1.006, 1), Eigen::Vector3d(1, 1, 0.992),
+          Eigen::Vector3d(1.01, 0.995, 1.003), Eigen::Vector3d(-1, 1, 1)})
       chains.push_back({scaled(s, matrix)});
     testfiles::Node shift = turn(0.005, y, matrix);
     shift.translation = {0.3, -0.2, 5};
@@ -191,31 +201,31 @@ TEST(MeshFiles, NodeTransformsApplyHoweverSmall) {
 // triangle as STL files do) makes the same stage: points are welded relative to the mesh's size.
 TEST(MeshFiles, TinyAndHugeMeshesMakeTheSameStage) {
   for (const Eigen::Vector3d& half : {Eigen::Vector3d(1, 1, 1), Eigen::Vector3d(1, 0.7, 0.45)})
-  for (int e = -6; e <= 6; ++e) {
-    const stage::MeshData box = testmesh::box(half);
-    testfiles::writeObj(box, scratch("unit.obj"));
-    const stage::Stage unit = stageOfFile(scratch("unit.obj"));
-    SCOPED_TRACE("scale 1e" + std::to_string(e) + ", depth " + std::to_string(half.z()));
-    stage::MeshData m = box, loose;
-    for (auto& p : m.positions) p *= std::pow(10.0, e);
-    for (const auto& t : m.triangles) {
-      const int base = int(loose.positions.size());
-      for (const int v : t) loose.positions.push_back(m.positions[size_t(v)]);
-      loose.triangles.push_back({base, base + 1, base + 2});
+    for (int e = -6; e <= 6; ++e) {
+      const stage::MeshData box = testmesh::box(half);
+      testfiles::writeObj(box, scratch("unit.obj"));
+      const stage::Stage unit = stageOfFile(scratch("unit.obj"));
+      SCOPED_TRACE("scale 1e" + std::to_string(e) + ", depth " + std::to_string(half.z()));
+      stage::MeshData m = box, loose;
+      for (auto& p : m.positions) p *= std::pow(10.0, e);
+      for (const auto& t : m.triangles) {
+        const int base = int(loose.positions.size());
+        for (const int v : t) loose.positions.push_back(m.positions[size_t(v)]);
+        loose.triangles.push_back({base, base + 1, base + 2});
+      }
+      testfiles::writeObj(m, scratch("scaled.obj"));
+      testfiles::writeObj(loose, scratch("loose.obj"));
+      expectSameStage(stageOfFile(scratch("scaled.obj")), unit);
+      expectSameStage(stageOfFile(scratch("loose.obj")), unit);
+      std::ofstream quads(scratch("quads.obj"));  // the box's faces as quads, for assimp to split
+      for (size_t v = 0; v < 8; ++v)
+        quads << "v " << m.positions[v].x() << " " << m.positions[v].y() << " " << m.positions[v].z() << "\n";
+      for (size_t t = 0; t < 12; t += 2)
+        quads << "f " << m.triangles[t][0] + 1 << " " << m.triangles[t][1] + 1 << " " << m.triangles[t][2] + 1 << " "
+              << m.triangles[t + 1][2] + 1 << "\n";
+      quads.close();
+      expectSameStage(stageOfFile(scratch("quads.obj")), unit);
     }
-    testfiles::writeObj(m, scratch("scaled.obj"));
-    testfiles::writeObj(loose, scratch("loose.obj"));
-    expectSameStage(stageOfFile(scratch("scaled.obj")), unit);
-    expectSameStage(stageOfFile(scratch("loose.obj")), unit);
-    std::ofstream quads(scratch("quads.obj"));  // the box's faces as quads, for assimp to split
-    for (size_t v = 0; v < 8; ++v)
-      quads << "v " << m.positions[v].x() << " " << m.positions[v].y() << " " << m.positions[v].z() << "\n";
-    for (size_t t = 0; t < 12; t += 2)
-      quads << "f " << m.triangles[t][0] + 1 << " " << m.triangles[t][1] + 1 << " " << m.triangles[t][2] + 1 << " "
-            << m.triangles[t + 1][2] + 1 << "\n";
-    quads.close();
-    expectSameStage(stageOfFile(scratch("quads.obj")), unit);
-  }
 }
 
 // A file too big for a stage is refused before assimp reads it: by its size, or by the triangle
@@ -241,14 +251,16 @@ TEST(MeshFiles, FilesOverTheCapsAreRefusedBeforeReading) {
 // rotation over as a float matrix: about 1e-7 of noise) makes the stage of the OBJ with the turn
 // written exactly into its points: the same faces, numbers and floors.
 TEST(MeshFiles, QuarterTurnNodesMakeTheBakedStage) {
-  for (const Eigen::Vector3d& half : {Eigen::Vector3d(1, 1, 1), Eigen::Vector3d(1, 0.7, 0.45), Eigen::Vector3d(0.5, 1, 0.25)})
+  for (const Eigen::Vector3d& half :
+       {Eigen::Vector3d(1, 1, 1), Eigen::Vector3d(1, 0.7, 0.45), Eigen::Vector3d(0.5, 1, 0.25)})
     for (int a = 0; a < 4; ++a)
       for (int b = 0; b < 4; ++b)
         for (int c = 0; c < 4; ++c) {
           SCOPED_TRACE("turns " + std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(c));
           const stage::MeshData box = testmesh::box(half);
           testfiles::Node node;
-          node.rotation = Eigen::AngleAxisd(c * M_PI / 2, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(b * M_PI / 2, Eigen::Vector3d::UnitY()) *
+          node.rotation = Eigen::AngleAxisd(c * M_PI / 2, Eigen::Vector3d::UnitZ()) *
+                          Eigen::AngleAxisd(b * M_PI / 2, Eigen::Vector3d::UnitY()) *
                           Eigen::AngleAxisd(a * M_PI / 2, Eigen::Vector3d::UnitX());
           stage::MeshData exact = box;
           const Eigen::Matrix3d turn = node.rotation.toRotationMatrix().array().round().matrix();
@@ -291,9 +303,15 @@ TEST(MeshFiles, TheMeshMustStayInTheLevelsFolder) {
   EXPECT_EQ(load("linked/box.obj"), "(accepted)");
   EXPECT_EQ(load("out.obj"), file + ":1:6: " + folder + "out.obj: the mesh file leads out of the level's folder (to " +
                                  (root / "outside.obj").string() + "): it must be a file in that folder");
-  EXPECT_EQ(load("zero.obj"), file + ":1:6: " + folder + "zero.obj: the mesh file leads out of the level's folder (to /dev/zero): it must be a file in that folder");
-  EXPECT_EQ(load("passwd.obj"), file + ":1:6: " + folder + "passwd.obj: the mesh file leads out of the level's folder (to /etc/passwd): it must be a file in that folder");
-  EXPECT_EQ(load("meshes"), file + ":1:6: " + folder + "meshes: the mesh file is not a regular file (" + folder + "meshes)");
+  EXPECT_EQ(
+      load("zero.obj"),
+      file + ":1:6: " + folder +
+          "zero.obj: the mesh file leads out of the level's folder (to /dev/zero): it must be a file in that folder");
+  EXPECT_EQ(load("passwd.obj"), file + ":1:6: " + folder +
+                                    "passwd.obj: the mesh file leads out of the level's folder (to /etc/passwd): it "
+                                    "must be a file in that folder");
+  EXPECT_EQ(load("meshes"),
+            file + ":1:6: " + folder + "meshes: the mesh file is not a regular file (" + folder + "meshes)");
   EXPECT_EQ(load("nowhere.obj"), file + ":1:6: " + folder + "nowhere.obj: cannot find the mesh file");
   fs::create_symlink("/dev/zero", root / "level" / "meshes" / "zero.obj");  // a link in a subfolder
   EXPECT_NE(load("meshes/zero.obj").find("leads out of the level's folder (to /dev/zero)"), std::string::npos);

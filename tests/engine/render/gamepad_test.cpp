@@ -3,10 +3,10 @@
 // button is a press of Enter for the menus and holds Jump for the player, the stick moves, Start
 // pauses; unplugged, it is let go and nothing stays held.
 #include <SDL2/SDL.h>
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cstdlib>
+
+#include <gtest/gtest.h>
 
 #include "platon/core/display.h"
 #include "platon/core/input.h"
@@ -17,7 +17,9 @@ using namespace platon;
 
 namespace {
 
-bool has(const core::WindowInput& in, core::Key k) { return std::find(in.pressed.begin(), in.pressed.end(), k) != in.pressed.end(); }
+bool has(const core::WindowInput& in, core::Key k) {
+  return std::find(in.pressed.begin(), in.pressed.end(), k) != in.pressed.end();
+}
 
 TEST(Gamepad, PluggedInWhileRunningItDrivesTheMenusAndThePlayer) {
   setenv("SDL_VIDEODRIVER", "offscreen", 1);
@@ -27,7 +29,8 @@ TEST(Gamepad, PluggedInWhileRunningItDrivesTheMenusAndThePlayer) {
   platon::testing::TempFolder folder("gamepad");
   core::SystemRegistry registry;
   registry.addPlugin("rendering", "platon_render", {PLATON_PLUGIN_DIR});
-  auto scene = core::loadScene(folder.write("scene.lua", "return { name = 'pad', systems = { 'rendering' } }"), registry);
+  auto scene =
+      core::loadScene(folder.write("scene.lua", "return { name = 'pad', systems = { 'rendering' } }"), registry);
   core::Display& display = *scene->findSystem("rendering")->display();
   display.pollEvents();  // the window is open, no pad yet
   ASSERT_EQ(SDL_InitSubSystem(SDL_INIT_JOYSTICK), 0) << SDL_GetError();
@@ -36,7 +39,7 @@ TEST(Gamepad, PluggedInWhileRunningItDrivesTheMenusAndThePlayer) {
   desc.version = SDL_VIRTUAL_JOYSTICK_DESC_VERSION;
   desc.type = SDL_JOYSTICK_TYPE_GAMECONTROLLER;
   desc.naxes = SDL_CONTROLLER_AXIS_MAX;
-  desc.nbuttons = 15;  // A .. DPAD_RIGHT
+  desc.nbuttons = 15;                 // A .. DPAD_RIGHT
   desc.button_mask = (1u << 15) - 1;  // virtual button i is controller button i
   desc.axis_mask = (1u << SDL_CONTROLLER_AXIS_MAX) - 1;
   desc.name = "test pad";
@@ -46,7 +49,8 @@ TEST(Gamepad, PluggedInWhileRunningItDrivesTheMenusAndThePlayer) {
   SDL_Joystick* pad = SDL_JoystickOpen(device);
   ASSERT_NE(pad, nullptr) << SDL_GetError();
   display.pollEvents();  // the "added" event: the window opens the pad
-  ASSERT_NE(SDL_GameControllerFromInstanceID(SDL_JoystickInstanceID(pad)), nullptr) << "the window did not open the pad";
+  ASSERT_NE(SDL_GameControllerFromInstanceID(SDL_JoystickInstanceID(pad)), nullptr)
+      << "the window did not open the pad";
 
   SDL_JoystickSetVirtualButton(pad, SDL_CONTROLLER_BUTTON_A, 1);
   SDL_JoystickSetVirtualAxis(pad, SDL_CONTROLLER_AXIS_LEFTX, 30000);  // the stick right

@@ -2,12 +2,12 @@
 // a GL core context on Mesa llvmpipe, no display needed). Pixels are read back and checked where
 // the picture must have the face, a hazard line, the player's circle, the heads-up text and the
 // error overlay.
-#include <gtest/gtest.h>
-
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+
+#include <gtest/gtest.h>
 
 #include "platon/core/display.h"
 #include "platon/core/scene.h"
@@ -25,7 +25,8 @@ class Renderer : public ::testing::Test {
   void SetUp() override {
     setenv("SDL_VIDEODRIVER", "offscreen", 1);
     registry.addPlugin("rendering", "platon_render", {PLATON_PLUGIN_DIR});
-    const std::string manifest = folder.write("scene.lua", "return { name = 'render test', systems = { 'rendering' } }");
+    const std::string manifest =
+        folder.write("scene.lua", "return { name = 'render test', systems = { 'rendering' } }");
     scene = core::loadScene(manifest, registry);
     ASSERT_NE(scene->findSystem("rendering"), nullptr);
     display = scene->findSystem("rendering")->display();
@@ -91,7 +92,8 @@ TEST_F(Renderer, DrawsTheFaceItsLinesAndTheScriptsShapes) {
   ASSERT_EQ(w, 1280);
   ASSERT_EQ(h, 720);
   auto px = [&](float x, float y) {
-    return at(pixels, w, static_cast<int>(640 + (x - 500) * kPixelsPerUnit), static_cast<int>(360 - (y - 500) * kPixelsPerUnit));
+    return at(pixels, w, static_cast<int>(640 + (x - 500) * kPixelsPerUnit),
+              static_cast<int>(360 - (y - 500) * kPixelsPerUnit));
   };
   // The player's ball: green, lit (brighter or darker than the flat colour, never another hue).
   const Rgba ball = px(500, 500);
@@ -115,7 +117,8 @@ TEST_F(Renderer, ShowsTheHeadsUpLinesAndTheErrorOverlay) {
   int w = 0, h = 0;
   const std::vector<uint8_t> plain = display->capture(w, h);
   view.hud = {"Cube: first steps    0:03    deaths 0"};
-  view.error = "levels/x/level.lua:20: attempt to index a nil value\nstack traceback:\n\tlevels/x/level.lua:20: in function";
+  view.error =
+      "levels/x/level.lua:20: attempt to index a nil value\nstack traceback:\n\tlevels/x/level.lua:20: in function";
   display->present(view, draw);
   const std::vector<uint8_t> shown = display->capture(w, h);
   int bright = 0;  // text pixels in the heads-up corner
@@ -163,7 +166,8 @@ TEST(Plugins, LoadedOnlyWhenASceneNamesThem) {
         registry.addPlugin("rendering", "platon_render", {PLATON_PLUGIN_DIR});
         auto bare = core::loadScene(folder.write("a.lua", "return { name = 'a' }"), registry);
         const bool before = mapped("libplaton_render") || mapped("libSDL2") || mapped("libGL");
-        auto shown = core::loadScene(folder.write("b.lua", "return { name = 'b', systems = { 'rendering' } }"), registry);
+        auto shown =
+            core::loadScene(folder.write("b.lua", "return { name = 'b', systems = { 'rendering' } }"), registry);
         shown->findSystem("rendering")->display()->present({}, core::DrawList(true));
         const bool after = mapped("libplaton_render") && mapped("libSDL2") && mapped("libGL");
         if (before || !after) std::fprintf(stderr, "mapped before the scene named it: %d, after: %d\n", before, after);
@@ -181,7 +185,8 @@ TEST(Plugins, AMissingModuleNamesWhereItLooked) {
     FAIL() << "no error";
   } catch (const std::exception& e) {
     const std::string message = e.what();
-    EXPECT_NE(message.find("system 'rendering': cannot load its plugin libplaton_no_such_module.so"), std::string::npos) << message;
+    EXPECT_NE(message.find("system 'rendering': cannot load its plugin libplaton_no_such_module.so"), std::string::npos)
+        << message;
     EXPECT_NE(message.find(folder.path("libplaton_no_such_module.so")), std::string::npos) << message;
   }
 }

@@ -6,12 +6,12 @@
 // levels apart. PLATON_UPDATE_RENDER_REFERENCES=1 writes the stored pictures anew.
 #include <SDL2/SDL.h>
 #include <SDL2/SDL_image.h>
-#include <gtest/gtest.h>
-
 #include <cstdlib>
 #include <memory>
 #include <string>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "platon/testing/temp_folder.h"
 
@@ -70,9 +70,12 @@ struct Case {
 };
 
 const Case kCases[] = {
-    {"tetra_underside", "tetra_underside_drop", 1010}, {"cube_switches", "cube_switches_solve", 560},
-    {"octa_ring", "octa_ring_run", 1000},              {"dodeca_trapdoor", "dodeca_trapdoor_solve", 120},
-    {"icosa_drop", "icosa_drop_solve", 640},           {"prism", "prism_walk", 500},
+    {"tetra_underside", "tetra_underside_drop", 1010},
+    {"cube_switches", "cube_switches_solve", 560},
+    {"octa_ring", "octa_ring_run", 1000},
+    {"dodeca_trapdoor", "dodeca_trapdoor_solve", 120},
+    {"icosa_drop", "icosa_drop_solve", 640},
+    {"prism", "prism_walk", 500},
     {"soccer_ball", "soccer_ball_walk", 500},
 };
 
@@ -81,8 +84,9 @@ class Shots : public ::testing::Test {
   static void SetUpTestSuite() { IMG_Init(IMG_INIT_PNG); }
   std::string shoot(const Case& c) {
     const std::string out = folder.path(std::string(c.level) + ".png");
-    const std::string command = std::string("SDL_VIDEODRIVER=offscreen ") + PLATON_EXE + " shot " + c.level + " --input tests/replays/" +
-                                c.replay + ".replay --frame " + std::to_string(c.frame) + " --size 320x180 --out " + out + " > /dev/null";
+    const std::string command = std::string("SDL_VIDEODRIVER=offscreen ") + PLATON_EXE + " shot " + c.level +
+                                " --input tests/replays/" + c.replay + ".replay --frame " + std::to_string(c.frame) +
+                                " --size 320x180 --out " + out + " > /dev/null";
     EXPECT_EQ(std::system(command.c_str()), 0) << command;
     return out;
   }
@@ -98,7 +102,8 @@ TEST_F(Shots, EveryStageLooksAsStored) {
     if (update) std::system(("cp " + shot + " " + reference(c)).c_str());
     const Picture now = load(shot), stored = load(reference(c));
     ASSERT_FALSE(now.rgba.empty()) << "no picture at " << shot << ": " << IMG_GetError();
-    ASSERT_FALSE(stored.rgba.empty()) << "no stored picture " << reference(c) << " (PLATON_UPDATE_RENDER_REFERENCES=1 writes it)";
+    ASSERT_FALSE(stored.rgba.empty()) << "no stored picture " << reference(c)
+                                      << " (PLATON_UPDATE_RENDER_REFERENCES=1 writes it)";
     const Difference d = compare(now, stored);
     EXPECT_LE(d.differentShare, 0.015) << "pixels off by more than 40: " << d.differentShare * 100 << "%";
     EXPECT_LE(d.meanPerChannel, 3.0) << "mean difference per channel";
@@ -119,7 +124,8 @@ TEST_F(Shots, TheToleranceTellsStagesAndMomentsApart) {
     for (size_t j = 0; j < stored.size(); ++j) {
       if (i == j) continue;
       const Difference d = compare(stored[i], stored[j]);
-      EXPECT_TRUE(d.differentShare > 0.015 || d.meanPerChannel > 3.0) << kCases[i].level << " passes as " << kCases[j].level;
+      EXPECT_TRUE(d.differentShare > 0.015 || d.meanPerChannel > 3.0)
+          << kCases[i].level << " passes as " << kCases[j].level;
     }
   Case later = kCases[0];
   later.frame += 60;

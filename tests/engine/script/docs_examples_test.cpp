@@ -1,12 +1,12 @@
 // Every Lua example in docs/scripting.md runs: each ```lua block is tagged with what it is, and
 // run as that (a manifest loaded and played, a level or rules script played in a scene, a
 // scenario or a replay run). An untagged or unknown block fails, so no example goes untested.
-#include <gtest/gtest.h>
-
 #include <fstream>
 #include <map>
 #include <regex>
 #include <sstream>
+
+#include <gtest/gtest.h>
 
 #include "platon/core/live_scene.h"
 #include "platon/core/replay.h"
@@ -50,7 +50,8 @@ const char* kManifest =
     "  progression = 'scripts/progression.lua', level = 'level.lua', rules = '%RULES%' } }\n";
 const char* kFloor =
     "local level = { start = { face = 0, x = 600, y = 700 } }\n"
-    "function level.build(game) for i = 1, game.world.faceCount() do game.world.line(game.world.face(i), 0, 512, 4096, 512) end end\n"
+    "function level.build(game) for i = 1, game.world.faceCount() do game.world.line(game.world.face(i), 0, 512, 4096, "
+    "512) end end\n"
     "return level\n";
 
 core::SystemRegistry scripting() {
@@ -111,7 +112,8 @@ TEST(DocsExamples, EveryLuaExampleInScriptingMdRuns) {
       EXPECT_TRUE(r.passed) << r.message;
     } else if (e.kind == "signatures") {
       // A list of callback signatures, not a program: each names one of the documented callbacks.
-      for (const char* name : {"pierce", "beginContact", "overContact", "endContact", "contact", "touchContact", "crushed"})
+      for (const char* name :
+           {"pierce", "beginContact", "overContact", "endContact", "contact", "touchContact", "crushed"})
         EXPECT_NE(e.code.find(name), std::string::npos) << name;
     } else {
       ADD_FAILURE() << "untagged or unknown example kind '" << e.kind << "'";

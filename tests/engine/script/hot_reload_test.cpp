@@ -1,13 +1,13 @@
 // Hot reload: a saved file is seen, the new version takes over the player's place and state
 // where it can, a broken edit leaves the last good version running, and module state crosses
 // over through save/onReload.
-#include <gtest/gtest.h>
-
 #include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <iterator>
 #include <thread>
+
+#include <gtest/gtest.h>
 
 #include "platon/core/file_watch.h"
 #include "platon/core/live_scene.h"
@@ -119,8 +119,8 @@ TEST(HotReload, WhereTheNewLevelHasAWallThePlayerGoesBackToTheStart) {
   run(live, 120, InputFrame::bit(Button::Right));
   const GameStatus before = scriptsOf(live).status();
   // A wall through where the player stands now.
-  folder.write("level.lua", level("  game.world.line(0, " + std::to_string(before.x) + ", 400, " + std::to_string(before.x) +
-                                  ", 2000)"));
+  folder.write("level.lua", level("  game.world.line(0, " + std::to_string(before.x) + ", 400, " +
+                                  std::to_string(before.x) + ", 2000)"));
   const core::ReloadReport r = live.reload();
   ASSERT_TRUE(r.ok) << r.error;
   const GameStatus after = scriptsOf(live).status();
@@ -145,7 +145,8 @@ TEST(HotReload, ABrokenEditIsReportedAndTheLastGoodVersionGoesOn) {
       {"level.lua", level("  game.world.line(0, 1, 2)"), "level.lua:4: argument 4: expected a number, got no value"},
       {"level.lua", "return 42\n", "level.lua: a level script or mod returns a table"},
       {"level.lua", "while true do end\n", "level.lua:1: "},
-      {"scene.lua", "return { systems = { 'scripting' }, gravity = 'x' }", "scene.lua:1:47: 'gravity' must be a number"},
+      {"scene.lua", "return { systems = { 'scripting' }, gravity = 'x' }",
+       "scene.lua:1:47: 'gravity' must be a number"},
   };
   for (const Edit& edit : edits) {
     folder.write(edit.file, edit.text);
@@ -172,8 +173,9 @@ TEST(HotReload, ALevelFileEditReloadsAndABrokenOneIsRefused) {
   const std::string floors = "%\n0 512 4096 512\n%\n0 512 4096 512\n%\n%\n%\n%\n";
   folder.write("l.level", "HEXAHEDRON\n0 600 700\n1 3000 800\n4096\n" + floors);
   const std::string scene = folder.write(
-      "scene.lua", "return { systems = { 'scripting' }, stage = { level = 'l.level' }, scripts = { player = "
-                   "'scripts/player.lua', progression = 'scripts/progression.lua', rules = 'scripts/rules/game.lua' } }\n");
+      "scene.lua",
+      "return { systems = { 'scripting' }, stage = { level = 'l.level' }, scripts = { player = "
+      "'scripts/player.lua', progression = 'scripts/progression.lua', rules = 'scripts/rules/game.lua' } }\n");
   const core::SystemRegistry registry = scriptingOnly();
   core::LiveScene live(scene, registry, true);
   run(live, 40, InputFrame::bit(Button::Right));
@@ -194,10 +196,11 @@ TEST(HotReload, ALevelFileEditReloadsAndABrokenOneIsRefused) {
 TEST(HotReload, AnErrorWhileRunningIsReportedAndTheFramesGoOn) {
   Folder folder("reload_runtime");
   const std::string scene = folder.write("scene.lua", kManifest);
-  folder.write("level.lua", level("", "local tick = level.tick\n"
-                                      "function level.tick(game, frame)\n"
-                                      "  if frame > 20 then local t = nil; return t.x end\n"
-                                      "end\n"));
+  folder.write("level.lua", level("",
+                                  "local tick = level.tick\n"
+                                  "function level.tick(game, frame)\n"
+                                  "  if frame > 20 then local t = nil; return t.x end\n"
+                                  "end\n"));
   const core::SystemRegistry registry = scriptingOnly();
   core::LiveScene live(scene, registry, false);
   core::InputEdges edges;
@@ -223,7 +226,8 @@ TEST(HotReload, LevelStateCrossesOverThroughSaveAndOnReload) {
       "function level.save(game) return { count = count, nested = { list = { 1, 2, 'three' }, f = print } } end\n"
       "function level.onReload(game, saved)\n"
       "  count = saved.count\n"
-      "  game.message(VERSION .. ' took over ' .. saved.count .. ' ' .. saved.nested.list[3] .. ' ' .. tostring(saved.nested.f))\n"
+      "  game.message(VERSION .. ' took over ' .. saved.count .. ' ' .. saved.nested.list[3] .. ' ' .. "
+      "tostring(saved.nested.f))\n"
       "end\n";
   folder.write("level.lua", "VERSION = 'one'\n" + level("", hooks));
   const core::SystemRegistry registry = scriptingOnly();
@@ -238,8 +242,9 @@ TEST(HotReload, SwitchesDeathsAndCheckpointsSurvive) {
   Folder folder("reload_switch");
   const std::string scene = folder.write("scene.lua", kManifest);
   // A door (1000 + 1) across the floor beyond a switch (2000 + 1) the player walks through.
-  const std::string extra = "  game.world.line(0, 1200, 400, 1200, 1400, 2001)\n"
-                            "  game.world.line(0, 2000, 400, 2000, 1400, 1001)\n";
+  const std::string extra =
+      "  game.world.line(0, 1200, 400, 1200, 1400, 2001)\n"
+      "  game.world.line(0, 2000, 400, 2000, 1400, 1001)\n";
   folder.write("level.lua", level(extra));
   const core::SystemRegistry registry = scriptingOnly();
   core::LiveScene live(scene, registry, false);

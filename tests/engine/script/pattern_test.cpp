@@ -2,10 +2,10 @@
 // functions: the same results (values and types, or both an error with the same message) over
 // many thousands of random patterns and subjects, and the pathological patterns LuaJIT's
 // backtracking takes hours on, each refused (or answered) quickly.
-#include <gtest/gtest.h>
-
 #include <chrono>
 #include <lua.hpp>
+
+#include <gtest/gtest.h>
 
 #include "lua_pattern.h"
 
@@ -158,12 +158,24 @@ TEST_F(PatternTest, GivesLuaJITsResultsOverRandomPatterns) {
 TEST_F(PatternTest, EdgeCasesMatchLuaJIT) {
   // Each line: the same call through string.* and guarded.*, results joined.
   const char* calls[] = {
-      "('a\\0b'):find('a\\0c.')",  "('xa\\0b'):find('\\0(')",   "('x'):find('x)')",
-      "('aa'):find('()a%1')",      "('abc'):find('', 10)",      "('abc'):find('c', 2^31)",
-      "('x'):gsub('x', '%')",      "('abc'):gsub('', '-')",     "('abc'):gsub('b*', '-')",
-      "('abc'):gsub('()', {[1] = 'one'})", "('hello'):gsub('l', 5)", "('a]c'):find('[]]')",
-      "('-'):find('[%w-z]')",      "('abc'):find('%f[%z]')",    "('THE (quick) fox'):find('%((%a+)%)')",
-      "('(a(b)c)'):find('%b()')",  "('abc'):gsub('.', 'x', 1.5)", "('abc'):gsub('%w', '%0%0', 2)",
+      "('a\\0b'):find('a\\0c.')",
+      "('xa\\0b'):find('\\0(')",
+      "('x'):find('x)')",
+      "('aa'):find('()a%1')",
+      "('abc'):find('', 10)",
+      "('abc'):find('c', 2^31)",
+      "('x'):gsub('x', '%')",
+      "('abc'):gsub('', '-')",
+      "('abc'):gsub('b*', '-')",
+      "('abc'):gsub('()', {[1] = 'one'})",
+      "('hello'):gsub('l', 5)",
+      "('a]c'):find('[]]')",
+      "('-'):find('[%w-z]')",
+      "('abc'):find('%f[%z]')",
+      "('THE (quick) fox'):find('%((%a+)%)')",
+      "('(a(b)c)'):find('%b()')",
+      "('abc'):gsub('.', 'x', 1.5)",
+      "('abc'):gsub('%w', '%0%0', 2)",
   };
   for (const char* call : calls) {
     const std::string code = call;
@@ -172,9 +184,14 @@ TEST_F(PatternTest, EdgeCasesMatchLuaJIT) {
         "local function all(...) local t = {} for i = 1, select('#', ...) do t[i] = tostring((select(i, ...))) end "
         "return table.concat(t, ',') end "
         "local mt = getmetatable('') local saved = mt.__index "
-        "local a = all(pcall(function() return " + code + " end)) "
-        "mt.__index = setmetatable({find = guarded.find, match = guarded.match, gmatch = guarded.gmatch, gsub = guarded.gsub}, {__index = saved}) "
-        "local b = all(pcall(function() return " + code + " end)) mt.__index = saved "
+        "local a = all(pcall(function() return " +
+        code +
+        " end)) "
+        "mt.__index = setmetatable({find = guarded.find, match = guarded.match, gmatch = guarded.gmatch, gsub = "
+        "guarded.gsub}, {__index = saved}) "
+        "local b = all(pcall(function() return " +
+        code +
+        " end)) mt.__index = saved "
         "return a == b and 'same' or (a .. ' / ' .. b)";
     EXPECT_EQ(run(both), "same") << call;
   }
@@ -188,7 +205,8 @@ TEST_F(PatternTest, PathologicalPatternsAreRefusedQuickly) {
     const char* result;  // the error's text, or the result
   };
   const Case cases[] = {
-      {"return guarded.find(string.rep('a', 40), '.-.-.-.-.-.-.-.-.-.-b')", "pattern too costly (more than 10000000 steps)"},
+      {"return guarded.find(string.rep('a', 40), '.-.-.-.-.-.-.-.-.-.-b')",
+       "pattern too costly (more than 10000000 steps)"},
       {"return guarded.find(string.rep('a', 10000), '.-.-b')", "pattern too costly"},
       {"return guarded.match(string.rep('a', 20000), '(.-)%1b')", "pattern too costly"},
       {"return guarded.gsub(string.rep('a', 20000), '(.-)%1b', '')", "pattern too costly"},
@@ -214,7 +232,8 @@ TEST_F(PatternTest, PathologicalPatternsAreRefusedQuickly) {
 TEST_F(PatternTest, RefusalsNameTheCallersLine) {
   EXPECT_EQ(run("local s = string.rep('a', 40)\nlocal r = guarded.find(s, '.-.-.-.-.-.-.-.-.-.-b') return r"),
             "error: [string \"local s = string.rep('a', 40)...\"]:2: pattern too costly (more than 10000000 steps)");
-  EXPECT_EQ(run("local r = guarded.find('x', '[a') return r"), "error: [string \"local r = guarded.find('x', '[a') return r\"]:1: malformed pattern (missing ']')");
+  EXPECT_EQ(run("local r = guarded.find('x', '[a') return r"),
+            "error: [string \"local r = guarded.find('x', '[a') return r\"]:1: malformed pattern (missing ']')");
 }
 
 // A [set] is compiled once per call into the characters it admits (re-audit N2: a set was read
@@ -293,10 +312,12 @@ TEST_F(PatternTest, LongSetsAreAnsweredOrRefusedQuickly) {
       {"return tostring(guarded.find(string.rep('c', 20000) .. 'b', '[' .. string.rep('b', 1e6) .. ']'))", "20001"},
       {"return tostring(guarded.find(string.rep('c', 20000) .. 'b', '[^' .. string.rep('c', 1e6) .. ']'))", "20001"},
       {"return tostring(guarded.find(string.rep('c', 20000), '%f[' .. string.rep('b', 1e6) .. ']'))", "nil"},
-      {"return tostring(select(2, guarded.gsub(string.rep('c', 20000), '[' .. string.rep('%a', 5e5) .. ']', 'x')))", "20000"},
+      {"return tostring(select(2, guarded.gsub(string.rep('c', 20000), '[' .. string.rep('%a', 5e5) .. ']', 'x')))",
+       "20000"},
       {"return tostring(guarded.match(string.rep('c', 20000), '[' .. string.rep('a-c', 3e5) .. ']+'))", "cccc"},
       // 64 sets of 100 KB: more than the cache holds, each start reads them all again.
-      {"return guarded.find(string.rep('b', 2000), string.rep('[' .. string.rep('b', 1e5) .. ']', 64) .. 'x')", "pattern too costly"},
+      {"return guarded.find(string.rep('b', 2000), string.rep('[' .. string.rep('b', 1e5) .. ']', 64) .. 'x')",
+       "pattern too costly"},
   };
   for (const Case& c : cases) {
     const auto start = std::chrono::steady_clock::now();

@@ -14,13 +14,16 @@ TEST(ReloadHandles, AHandleCarriedThroughSaveMayNameAnotherEntity) {
   testing::TempFolder folder("reload_handles");
   const std::string scene = folder.write(
       "scene.lua", "return { systems = { 'scripting' }, scripts = { preset = 'game', level = 'level.lua' } }\n");
-  const std::string start = "local level = { start = { face = 0, x = 600, y = 700 } }\n"
-                            "function level.build(game) game.world.line(0, 0, 512, 4096, 512) end\n";
-  folder.write("level.lua", start +
-                                "local crate\n"
-                                "function level.tick(game, frame) if not crate then crate = game.world.createEntity{ circle = 30 } end end\n"
-                                "function level.save(game) return { crate = crate } end\n"
-                                "return level\n");
+  const std::string start =
+      "local level = { start = { face = 0, x = 600, y = 700 } }\n"
+      "function level.build(game) game.world.line(0, 0, 512, 4096, 512) end\n";
+  folder.write(
+      "level.lua",
+      start +
+          "local crate\n"
+          "function level.tick(game, frame) if not crate then crate = game.world.createEntity{ circle = 30 } end end\n"
+          "function level.save(game) return { crate = crate } end\n"
+          "return level\n");
   core::SystemRegistry registry;
   registry.add("scripting", makeScriptSystem);
   core::LiveScene live(scene, registry, false);
@@ -31,7 +34,8 @@ TEST(ReloadHandles, AHandleCarriedThroughSaveMayNameAnotherEntity) {
                                 "function level.onReload(game, saved) crate = saved and saved.crate end\n"
                                 "function level.tick(game, frame)\n"
                                 "  if not ball then ball = game.world.createEntity{ circle = 10 } end\n"
-                                "  if crate then game.message(string.format('%s %s', tostring(crate == ball), tostring(game.world.valid(crate)))) end\n"
+                                "  if crate then game.message(string.format('%s %s', tostring(crate == ball), "
+                                "tostring(game.world.valid(crate)))) end\n"
                                 "end\nreturn level\n");
   const core::ReloadReport r = live.reload();
   ASSERT_TRUE(r.ok) << r.error;

@@ -1,11 +1,10 @@
 // LuaRules calls a rules script two ways (arguments pushed, or an FFI slot read by JIT-compiled
 // trampolines): the script must not be able to tell them apart. Random contacts of every shape
 // (entity or line, world bound, other entity or none, any normal) through every callback.
-#include <gtest/gtest.h>
-
+#include <string>
 #include <utility>
 
-#include <string>
+#include <gtest/gtest.h>
 
 #include "lua_host.h"
 #include "lua_rules.h"
@@ -60,17 +59,29 @@ physics::Contact randomContact(testing::Rng& rng) {
   c.line.tag = static_cast<uint32_t>(rng.next());
   c.line.kind = static_cast<physics::LineKind>(rng.between(0, 2));
   switch (rng.between(0, 3)) {
-    case 0: c.line.index = physics::kNoLine; break;
-    case 1: c.line.index = physics::kWorldBoundLine; break;
-    default: c.line.index = static_cast<uint32_t>(rng.next() % 100000);
+    case 0:
+      c.line.index = physics::kNoLine;
+      break;
+    case 1:
+      c.line.index = physics::kWorldBoundLine;
+      break;
+    default:
+      c.line.index = static_cast<uint32_t>(rng.next() % 100000);
   }
   c.part = c.line.part;
-  if (rng.between(0, 1)) c.other = {static_cast<uint32_t>(rng.next() % (1u << 24)), static_cast<uint32_t>(rng.next() % 1000)};
+  if (rng.between(0, 1))
+    c.other = {static_cast<uint32_t>(rng.next() % (1u << 24)), static_cast<uint32_t>(rng.next() % 1000)};
   const int64_t range = int64_t{1} << rng.between(0, 46);
   switch (rng.between(0, 4)) {
-    case 0: c.normal = {0, 0}; break;
-    case 1: c.normal = {0, range}; break;
-    case 2: c.normal = {-range, 0}; break;
+    case 0:
+      c.normal = {0, 0};
+      break;
+    case 1:
+      c.normal = {0, range};
+      break;
+    case 2:
+      c.normal = {-range, 0};
+      break;
     default:
       c.normal = {static_cast<int64_t>(rng.next() % static_cast<uint64_t>(2 * range + 1)) - range,
                   static_cast<int64_t>(rng.next() % static_cast<uint64_t>(2 * range + 1)) - range};
@@ -102,9 +113,10 @@ TEST(Rules, ClassicAndFfiCallsGiveTheSameArguments) {
   EXPECT_GT(noOther, 1000);
 }
 
-const char* kFailing = "return { contact = function(entity, tag)\n"
-                       "  if tag == 7 then error('tag seven') end\n"
-                       "end }\n";
+const char* kFailing =
+    "return { contact = function(entity, tag)\n"
+    "  if tag == 7 then error('tag seven') end\n"
+    "end }\n";
 
 // Each test: one host, a rules script loaded into it, called the way the parameter says.
 class RulesBothWays : public ::testing::TestWithParam<LuaRules::Call> {
@@ -112,8 +124,10 @@ class RulesBothWays : public ::testing::TestWithParam<LuaRules::Call> {
   LuaRules load(const char* code, const std::string& chunkName, Trust trust) {
     const int sandbox = host.loadString(code, chunkName, trust);
     host.beginFrame();
-    if (trust == Trust::Sandboxed) host.callSandboxed(sandbox, 0, 1);
-    else host.call(0, 1);
+    if (trust == Trust::Sandboxed)
+      host.callSandboxed(sandbox, 0, 1);
+    else
+      host.call(0, 1);
     LuaRules rules(host, -1, GetParam(), sandbox);
     lua_pop(host.state(), 1);
     return rules;
@@ -141,19 +155,22 @@ TEST_P(RulesBothWays, AnErrorInACallbackCarriesFileLineAndTraceback) {
 // What contact() returns is checked, and the error names where the callback is written (it named
 // no line before: "rules: contact() returned a string").
 TEST_P(RulesBothWays, AWrongResponseNamesTheCallbacksFileAndLine) {
-  LuaRules rules = load("local rules = {}\n"
-                        "function rules.contact(e, tag)\n"
-                        "  if tag == 1 then return 'slide' end\n"
-                        "  return { restitution = 2 }\n"
-                        "end\n"
-                        "return rules\n",
-                        "@levels/demo/rules.lua", Trust::Trusted);
+  LuaRules rules = load(
+      "local rules = {}\n"
+      "function rules.contact(e, tag)\n"
+      "  if tag == 1 then return 'slide' end\n"
+      "  return { restitution = 2 }\n"
+      "end\n"
+      "return rules\n",
+      "@levels/demo/rules.lua", Trust::Trusted);
   physics::Contact c{};
   c.entity = {1, 0};
   physics::ContactResponse response;
-  for (const auto& [tag, message] : {std::pair{1u, "levels/demo/rules.lua:2: rules: contact() returned a string; return nothing, "
-                                                    "false, or {slide =, keepVelocity =, restitution =}"},
-                                     std::pair{0u, "levels/demo/rules.lua:2: rules: contact() returned restitution outside [0, 1]"}}) {
+  for (const auto& [tag, message] :
+       {std::pair{1u,
+                  "levels/demo/rules.lua:2: rules: contact() returned a string; return nothing, "
+                  "false, or {slide =, keepVelocity =, restitution =}"},
+        std::pair{0u, "levels/demo/rules.lua:2: rules: contact() returned restitution outside [0, 1]"}}) {
     c.line.tag = tag;
     try {
       rules.contact(c, response);
@@ -167,9 +184,10 @@ TEST_P(RulesBothWays, AWrongResponseNamesTheCallbacksFileAndLine) {
 // A sandboxed script's response table is read raw: its metamethods never run outside a sandboxed
 // call, where no time budget would stop them.
 TEST_P(RulesBothWays, AResponseTableIsReadRaw) {
-  LuaRules rules = load("local loop = setmetatable({ slide = false }, { __index = function() while true do end end })\n"
-                        "return { contact = function() return loop end }\n",
-                        "@mod.lua", Trust::Sandboxed);
+  LuaRules rules = load(
+      "local loop = setmetatable({ slide = false }, { __index = function() while true do end end })\n"
+      "return { contact = function() return loop end }\n",
+      "@mod.lua", Trust::Sandboxed);
   physics::Contact c{};
   c.entity = {1, 0};
   physics::ContactResponse response;
@@ -180,15 +198,16 @@ TEST_P(RulesBothWays, AResponseTableIsReadRaw) {
 }
 
 TEST_P(RulesBothWays, CallbacksLeaveTheStackAsTheyFoundIt) {
-  LuaRules rules = load("local r = 0\n"
-                        "return { pierce = function() return true end,\n"
-                        "  beginContact = function() end,\n"
-                        "  contact = function(e, tag)\n"
-                        "    r = r + 1\n"
-                        "    if r % 3 == 0 then return nil elseif r % 3 == 1 then return false end\n"
-                        "    return { slide = true, keepVelocity = false, restitution = 0.5 }\n"
-                        "  end }\n",
-                        "=rules", Trust::Trusted);
+  LuaRules rules = load(
+      "local r = 0\n"
+      "return { pierce = function() return true end,\n"
+      "  beginContact = function() end,\n"
+      "  contact = function(e, tag)\n"
+      "    r = r + 1\n"
+      "    if r % 3 == 0 then return nil elseif r % 3 == 1 then return false end\n"
+      "    return { slide = true, keepVelocity = false, restitution = 0.5 }\n"
+      "  end }\n",
+      "=rules", Trust::Trusted);
   lua_State* L = host.state();
   const int top = lua_gettop(L);
   physics::Contact c{};

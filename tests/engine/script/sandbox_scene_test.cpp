@@ -1,15 +1,14 @@
 // The sandbox inside a running scene: each test is one finding of the sandbox audit
 // (docs/scripting.md, "Sandbox"), played through the engine as a downloaded level would be, with
 // the error a player or a scenario sees. Every one of them failed (or hung, or aborted) before its fix.
-#include <gtest/gtest.h>
-
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <gtest/gtest.h>
 
 #include "platon/core/draw_list.h"
 #include "platon/core/live_scene.h"
@@ -52,8 +51,10 @@ struct Level {
       folder.write("rules.lua", rules);
       scripts += ", rules = 'rules.lua'";
     }
-    scene = folder.write("scene.lua", "return { name = 'audit', systems = { 'scripting' }, stage = { level = 'cube_intro.level' },"
-                                      " gravity = 0.35, scripts = { " + scripts + " }" + extra + " }\n");
+    scene = folder.write("scene.lua",
+                         "return { name = 'audit', systems = { 'scripting' }, stage = { level = 'cube_intro.level' },"
+                         " gravity = 0.35, scripts = { " +
+                             scripts + " }" + extra + " }\n");
   }
 };
 
@@ -63,7 +64,9 @@ core::SystemRegistry scripting() {
   return registry;
 }
 
-ScriptSystem& scriptsOf(core::LiveScene& live) { return dynamic_cast<ScriptSystem&>(*live.scene().findSystem("scripting")); }
+ScriptSystem& scriptsOf(core::LiveScene& live) {
+  return dynamic_cast<ScriptSystem&>(*live.scene().findSystem("scripting"));
+}
 
 struct Played {
   std::vector<std::string> errors;  // "frame N: report"
@@ -80,7 +83,8 @@ Played play(core::LiveScene& live, int frames, uint8_t held = InputFrame::bit(Bu
     if (std::optional<std::string> error = live.step(edges.next(held)))
       p.errors.push_back("frame " + std::to_string(live.scene().frame()) + ": " + *error);
     p.status = scriptsOf(live).status();
-    p.slowestFrame = std::max(p.slowestFrame, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    p.slowestFrame =
+        std::max(p.slowestFrame, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }
   return p;
 }
@@ -100,7 +104,8 @@ double secondsOf(const std::function<void()>& f) {
 // --- 1: trust is decided from what the manifest wrote, never from a joined path ---
 
 const char* kTellsWhatItSees =
-    "return { build = function(game) game.message((io and 'io ' or 'no io ') .. (require and 'require' or 'no require')) end }\n";
+    "return { build = function(game) game.message((io and 'io ' or 'no io ') .. (require and 'require' or 'no "
+    "require')) end }\n";
 
 TEST(Finding1, ALevelOpenedThroughAPathUnderScriptsIsStillSandboxed) {
   Level level("f1_path", kTellsWhatItSees);
@@ -128,7 +133,8 @@ TEST(Finding1, ALinkOutOfTheLevelsFolderIsRefused) {
     core::loadManifest(level.scene);
     FAIL() << "a level script linked from outside its folder was accepted";
   } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("'level.lua' leads to " + fs::canonical(target).string() + ", outside the scene's folder"),
+    EXPECT_NE(std::string(e.what()).find("'level.lua' leads to " + fs::canonical(target).string() +
+                                         ", outside the scene's folder"),
               std::string::npos)
         << e.what();
   }
@@ -137,13 +143,15 @@ TEST(Finding1, ALinkOutOfTheLevelsFolderIsRefused) {
 // An engine script is looked for under the engine's root, and must stay under its scripts/.
 TEST(Finding1, AnEngineScriptLinkedFromOutsideTheEnginesScriptsIsRefused) {
   Folder root("f1_root");
-  for (const char* file : {"scripts/scene.lua", "scripts/player.lua", "scripts/progression.lua", "scripts/rules/game.lua"})
+  for (const char* file :
+       {"scripts/scene.lua", "scripts/player.lua", "scripts/progression.lua", "scripts/rules/game.lua"})
     root.write(file, fileText(std::string(PLATON_SOURCE_ROOT) + "/" + file));
   Folder outside("f1_outside_engine");
   fs::create_symlink(outside.write("evil.lua", "return {}\n"), root.path("scripts/evil.lua"));
   Level level("f1_engine_link", "return {}\n");
-  level.folder.write("scene.lua", "return { systems = { 'scripting' }, stage = { level = 'cube_intro.level' }, scripts = {"
-                                  " preset = 'game', progression = 'scripts/evil.lua' } }\n");
+  level.folder.write("scene.lua",
+                     "return { systems = { 'scripting' }, stage = { level = 'cube_intro.level' }, scripts = {"
+                     " preset = 'game', progression = 'scripts/evil.lua' } }\n");
   core::SystemRegistry registry;
   registry.add("scripting", [&](core::Scene& s) { return std::make_unique<ScriptSystem>(s, root.path()); });
   try {
@@ -159,56 +167,70 @@ TEST(Finding1, AnEngineScriptLinkedFromOutsideTheEnginesScriptsIsRefused) {
 
 TEST(Finding1, ReplaysAndScenariosMayNotNameASceneWithDotDot) {
   try {
-    core::parseReplay("platon replay 1\nscene \"scripts/../../../tmp/x/scene.lua\"\nframes 1\nhash_every 60\ninput\n1 -\nend\n", "r.replay");
+    core::parseReplay(
+        "platon replay 1\nscene \"scripts/../../../tmp/x/scene.lua\"\nframes 1\nhash_every 60\ninput\n1 -\nend\n",
+        "r.replay");
     FAIL();
   } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("r.replay:2:7: 'scripts/../../../tmp/x/scene.lua': a replay's scene path may not contain '..'"),
+    EXPECT_NE(std::string(e.what()).find(
+                  "r.replay:2:7: 'scripts/../../../tmp/x/scene.lua': a replay's scene path may not contain '..'"),
               std::string::npos)
         << e.what();
   }
-  EXPECT_NO_THROW(core::parseReplay("platon replay 1\nscene \"levels/a..b/scene.lua\"\nframes 1\nhash_every 60\ninput\n1 -\nend\n", "r"));
+  EXPECT_NO_THROW(core::parseReplay(
+      "platon replay 1\nscene \"levels/a..b/scene.lua\"\nframes 1\nhash_every 60\ninput\n1 -\nend\n", "r"));
   Folder folder("f1_scenario");
-  const ScenarioResult r = runScenario(folder.write("s.lua", "return { scene = 'scripts/../levels/cube_intro/scene.lua', frames = 1 }"));
+  const ScenarioResult r =
+      runScenario(folder.write("s.lua", "return { scene = 'scripts/../levels/cube_intro/scene.lua', frames = 1 }"));
   EXPECT_FALSE(r.passed);
-  EXPECT_NE(r.message.find("s.lua:1:18: scene: may not contain '..' (scripts/../levels/cube_intro/scene.lua)"), std::string::npos)
+  EXPECT_NE(r.message.find("s.lua:1:18: scene: may not contain '..' (scripts/../levels/cube_intro/scene.lua)"),
+            std::string::npos)
       << r.message;
 }
 
 // --- 2, 16: the game's API checks what a sandbox hands it ---
 
 TEST(Finding2, BadSwitchIdsAreErrorsAtTheCallersLineAndTheGameGoesOn) {
-  for (const char* bad : {"{}", "0/0", "setmetatable({}, {__add = function() error('planted') end})", "1.5", "1000", "'3'"}) {
-    Level level("f2_toggle", std::string("return { tick = function(game, frame)\n  if frame == 5 then game.toggle(") + bad +
-                                 ") end\nend }\n");
+  for (const char* bad :
+       {"{}", "0/0", "setmetatable({}, {__add = function() error('planted') end})", "1.5", "1000", "'3'"}) {
+    Level level("f2_toggle", std::string("return { tick = function(game, frame)\n  if frame == 5 then game.toggle(") +
+                                 bad + ") end\nend }\n");
     const core::SystemRegistry registry = scripting();
     core::LiveScene live(level.scene, registry, false);
     const Played p = play(live, 60);
     ASSERT_EQ(p.errors.size(), 1u) << bad << "\n" << joined(p.errors);
-    EXPECT_NE(p.errors[0].find("frame 5: " + level.folder.path("level.lua") + ":2: toggle: expected a switch id, an integer 0..999"),
+    EXPECT_NE(p.errors[0].find("frame 5: " + level.folder.path("level.lua") +
+                               ":2: toggle: expected a switch id, an integer 0..999"),
               std::string::npos)
         << p.errors[0];
     EXPECT_GT(p.status.x, 700);  // the player walked on: the game is not broken
   }
-  Level level("f2_switch_on", "return { tick = function(game, frame) if frame == 3 then game.switchOn('x') end end }\n");
+  Level level("f2_switch_on",
+              "return { tick = function(game, frame) if frame == 3 then game.switchOn('x') end end }\n");
   const core::SystemRegistry registry = scripting();
   core::LiveScene live(level.scene, registry, false);
   const Played p = play(live, 10);
   ASSERT_EQ(p.errors.size(), 1u) << joined(p.errors);
-  EXPECT_NE(p.errors[0].find("level.lua:1: switchOn: expected a switch id, an integer 0..999, got \"x\""), std::string::npos) << p.errors[0];
+  EXPECT_NE(p.errors[0].find("level.lua:1: switchOn: expected a switch id, an integer 0..999, got \"x\""),
+            std::string::npos)
+      << p.errors[0];
 }
 
 TEST(Finding16, ABadCheckpointIsAnErrorAtItsLineAndDeathsStillRespawn) {
-  Level level("f16_checkpoint", "return { tick = function(game, frame)\n"
-                                "  if frame == 5 then game.checkpoint(99, 0, 0) end\n"
-                                "  if frame == 6 then game.checkpoint(0, 0.5, 0) end\n"
-                                "  if frame == 7 then game.kill() end\n"
-                                "end }\n");
+  Level level("f16_checkpoint",
+              "return { tick = function(game, frame)\n"
+              "  if frame == 5 then game.checkpoint(99, 0, 0) end\n"
+              "  if frame == 6 then game.checkpoint(0, 0.5, 0) end\n"
+              "  if frame == 7 then game.kill() end\n"
+              "end }\n");
   const core::SystemRegistry registry = scripting();
   core::LiveScene live(level.scene, registry, false);
   const Played p = play(live, 30);
   ASSERT_EQ(p.errors.size(), 2u) << joined(p.errors);
-  EXPECT_NE(p.errors[0].find("level.lua:2: checkpoint: face: expected a face of this stage, got 99"), std::string::npos) << p.errors[0];
-  EXPECT_NE(p.errors[1].find("level.lua:3: checkpoint: x: expected an integer within +-(2^30 - 1), got 0.5"), std::string::npos)
+  EXPECT_NE(p.errors[0].find("level.lua:2: checkpoint: face: expected a face of this stage, got 99"), std::string::npos)
+      << p.errors[0];
+  EXPECT_NE(p.errors[1].find("level.lua:3: checkpoint: x: expected an integer within +-(2^30 - 1), got 0.5"),
+            std::string::npos)
       << p.errors[1];
   EXPECT_EQ(p.status.deaths, 1);
   EXPECT_EQ(p.status.face, 0u);
@@ -217,11 +239,12 @@ TEST(Finding16, ABadCheckpointIsAnErrorAtItsLineAndDeathsStillRespawn) {
 // A checkpoint inside a wall: the respawn falls back to the level's start (the old player is
 // destroyed only once the new one stands).
 TEST(Finding16, ACheckpointInAWallRespawnsAtTheLevelStart) {
-  Level level("f16_wall", "return {\n"
-                          "  build = function(game) game.world.line(0, 2000, 400, 2000, 1400) end,\n"
-                          "  tick = function(game, frame)\n"
-                          "    if frame == 5 then game.checkpoint(0, 2000, 700) game.kill() end\n"
-                          "  end }\n");
+  Level level("f16_wall",
+              "return {\n"
+              "  build = function(game) game.world.line(0, 2000, 400, 2000, 1400) end,\n"
+              "  tick = function(game, frame)\n"
+              "    if frame == 5 then game.checkpoint(0, 2000, 700) game.kill() end\n"
+              "  end }\n");
   const core::SystemRegistry registry = scripting();
   core::LiveScene live(level.scene, registry, false);
   const Played p = play(live, 7, 0);
@@ -235,13 +258,15 @@ TEST(Finding16, ACheckpointInAWallRespawnsAtTheLevelStart) {
 TEST(Finding16, ASandboxMayNotDestroyOrEraseThePlayer) {
   for (const char* call : {"game.world.destroyEntity(game.player())", "game.world.erase(game.player(), 0)",
                            "platon.world.destroyEntity(game.player())"}) {
-    Level level("f16_destroy", std::string("return { tick = function(game, frame)\n  if frame == 5 then ") + call + " end\nend }\n");
+    Level level("f16_destroy",
+                std::string("return { tick = function(game, frame)\n  if frame == 5 then ") + call + " end\nend }\n");
     const core::SystemRegistry registry = scripting();
     core::LiveScene live(level.scene, registry, false);
     const Played p = play(live, 40);
     ASSERT_EQ(p.errors.size(), 1u) << call << "\n" << joined(p.errors);
     EXPECT_NE(p.errors[0].find("level.lua:2: "), std::string::npos) << p.errors[0];
-    EXPECT_NE(p.errors[0].find(": the player's entity belongs to the game (a level script or mod may not "), std::string::npos)
+    EXPECT_NE(p.errors[0].find(": the player's entity belongs to the game (a level script or mod may not "),
+              std::string::npos)
         << p.errors[0];
     EXPECT_GT(p.status.x, 700);
   }
@@ -275,11 +300,14 @@ TEST(Finding3, AnErrorInStatusIsReportedWithTheNextFrameAndTheLastGoodStatusStay
   const Played after = play(live, 1);
   ASSERT_FALSE(after.errors.empty());
   EXPECT_NE(after.errors[0].find("scene.lua"), std::string::npos) << after.errors[0];
-  EXPECT_NE(after.errors[0].find("attempt to get length of local 'on' (a number value)"), std::string::npos) << after.errors[0];
+  EXPECT_NE(after.errors[0].find("attempt to get length of local 'on' (a number value)"), std::string::npos)
+      << after.errors[0];
 }
 
 TEST(Finding3, AnErrorInLevelDrawLeavesAnEmptyPictureAndIsReported) {
-  Level level("f3_draw", "return { draw = function(game, draw) draw.circle(0, 1, 1, 5, 0xffffff) error('an ordinary bug') end }\n");
+  Level level(
+      "f3_draw",
+      "return { draw = function(game, draw) draw.circle(0, 1, 1, 5, 0xffffff) error('an ordinary bug') end }\n");
   const core::SystemRegistry registry = scripting();
   core::LiveScene live(level.scene, registry, false);
   core::DrawList list(true);
@@ -288,7 +316,8 @@ TEST(Finding3, AnErrorInLevelDrawLeavesAnEmptyPictureAndIsReported) {
   const Played p = play(live, 1);
   ASSERT_EQ(p.errors.size(), 1u);
   EXPECT_NE(p.errors[0].find("level.lua:1: an ordinary bug"), std::string::npos) << p.errors[0];
-  const ScenarioResult r = runScenario(level.folder.write("s.lua", "return { scene = '" + level.scene + "', frames = 10 }"));
+  const ScenarioResult r =
+      runScenario(level.folder.write("s.lua", "return { scene = '" + level.scene + "', frames = 10 }"));
   EXPECT_TRUE(r.passed) << r.message;  // headless: no picture, no draw() call
 }
 
@@ -303,7 +332,8 @@ TEST(Finding4, TheEnginesTablesAreReadOnlyInEverySandbox) {
       {"game.newField = 1", "game is read-only (tried to set newField)"},
   };
   for (const auto& [code, message] : attempts) {
-    Level level("f4_tables", std::string("return { tick = function(game, frame) if frame == 2 then ") + code + " end end }\n");
+    Level level("f4_tables",
+                std::string("return { tick = function(game, frame) if frame == 2 then ") + code + " end end }\n");
     const core::SystemRegistry registry = scripting();
     core::LiveScene live(level.scene, registry, false);
     const Played p = play(live, 30);
@@ -323,13 +353,14 @@ TEST(Finding4, TheEnginesTablesAreReadOnlyInEverySandbox) {
 }
 
 TEST(Finding5, SandboxedRulesGetTheLevelsViewAndTheGamesSetters) {
-  const char* rules = "local game = ...\n"
-                      "assert(game.Player == nil and game.progression == nil and game.switches == nil, 'the trusted game table')\n"
-                      "assert(not pcall(function() game.won = true end), 'writable')\n"
-                      "local rules = {}\n"
-                      "function rules.pierce(entity, tag, kind) return kind == 'warp' or tag == 2 end\n"
-                      "function rules.beginContact(entity, tag) if tag == 2 and entity == game.player() then game.reachGoal() end end\n"
-                      "return rules\n";
+  const char* rules =
+      "local game = ...\n"
+      "assert(game.Player == nil and game.progression == nil and game.switches == nil, 'the trusted game table')\n"
+      "assert(not pcall(function() game.won = true end), 'writable')\n"
+      "local rules = {}\n"
+      "function rules.pierce(entity, tag, kind) return kind == 'warp' or tag == 2 end\n"
+      "function rules.beginContact(entity, tag) if tag == 2 and entity == game.player() then game.reachGoal() end end\n"
+      "return rules\n";
   Level level("f5_rules", "return {}\n", "", rules);
   const core::SystemRegistry registry = scripting();
   core::LiveScene live(level.scene, registry, false);
@@ -341,10 +372,11 @@ TEST(Finding5, SandboxedRulesGetTheLevelsViewAndTheGamesSetters) {
 // --- 6, 7, 18: patterns ---
 
 TEST(Finding6, StringMethodsAreTheCountedPatternFunctionsToo) {
-  Level level("f6_method", "return { build = function(game)\n"
-                           "  local ok, e = pcall(function() local r = (string.rep('a', 200)):find('.-.-.-.-b') return r end)\n"
-                           "  game.message(tostring(e) .. ' / dump: ' .. tostring(('').dump))\n"
-                           "end }\n");
+  Level level("f6_method",
+              "return { build = function(game)\n"
+              "  local ok, e = pcall(function() local r = (string.rep('a', 200)):find('.-.-.-.-b') return r end)\n"
+              "  game.message(tostring(e) .. ' / dump: ' .. tostring(('').dump))\n"
+              "end }\n");
   const core::SystemRegistry registry = scripting();
   double seconds = 0;
   std::string message;
@@ -362,15 +394,16 @@ TEST(Finding7, CostlyPatternsAreRefusedWhateverTheirShape) {
     const char* result;
   };
   const Case cases[] = {
-      {"string.find(string.rep('a', 1500), '.-.-b')", "pattern too costly"},            // unanchored: n^(items+1)
-      {"string.find(string.rep('a', 1500), '(.-)%1b')", "pattern too costly"},          // a back-reference
+      {"string.find(string.rep('a', 1500), '.-.-b')", "pattern too costly"},    // unanchored: n^(items+1)
+      {"string.find(string.rep('a', 1500), '(.-)%1b')", "pattern too costly"},  // a back-reference
       {"string.gsub(string.rep('a', 1500), '.-.-b', '')", "pattern too costly"},
       {"string.find(string.rep('a', 4e5), string.rep('a', 1e5) .. 'b', 1, true)", "nil"},  // plain: linear now
       {"string.find(string.rep('a', 4e5), string.rep('a', 1e5) .. 'b')", "nil"},           // no items: plain
   };
   for (const Case& c : cases) {
-    Level level("f7_patterns", std::string("return { build = function(game)\n  local ok, e = pcall(function() return ") + c.code +
-                                   " end)\n  game.message(tostring(e))\nend }\n");
+    Level level("f7_patterns",
+                std::string("return { build = function(game)\n  local ok, e = pcall(function() return ") + c.code +
+                    " end)\n  game.message(tostring(e))\nend }\n");
     const core::SystemRegistry registry = scripting();
     std::string message;
     const double seconds = secondsOf([&] {
@@ -385,16 +418,18 @@ TEST(Finding7, CostlyPatternsAreRefusedWhateverTheirShape) {
 // --- 8: the deadline's timer stops a loop of slow C calls ---
 
 TEST(Finding8, ALoopOfSlowCallsIsStoppedAtTheDeadline) {
-  Level level("f8_timer", "return { tick = function(game, frame)\n"
-                          "  local s = string.rep('a', 4e6)\n"
-                          "  while true do s:find('b', 1, true) end\n"
-                          "end }\n",
+  Level level("f8_timer",
+              "return { tick = function(game, frame)\n"
+              "  local s = string.rep('a', 4e6)\n"
+              "  while true do s:find('b', 1, true) end\n"
+              "end }\n",
               "", "", ", limits = { call_ms = 50 }");
   const core::SystemRegistry registry = scripting();
   core::LiveScene live(level.scene, registry, false);
   const Played p = play(live, 3);
   ASSERT_EQ(p.errors.size(), 1u) << joined(p.errors);
-  EXPECT_NE(p.errors[0].find("level.lua:3: script stopped: it ran longer than the frame's script budget of 50 ms"), std::string::npos)
+  EXPECT_NE(p.errors[0].find("level.lua:3: script stopped: it ran longer than the frame's script budget of 50 ms"),
+            std::string::npos)
       << p.errors[0];
   EXPECT_LT(p.slowestFrame, 0.5);  // one C call of a few ms past the deadline, not 100,000 instructions' worth
 }
@@ -408,11 +443,14 @@ TEST(Finding9, AManifestCannotRaiseTheLimits) {
   core::LiveScene live(level.scene, registry, false);
   const Played p = play(live, 2);
   ASSERT_EQ(p.errors.size(), 1u) << joined(p.errors);
-  EXPECT_NE(p.errors[0].find("mod.lua:1: script stopped: it ran longer than the frame's script budget of 250 ms"), std::string::npos)
+  EXPECT_NE(p.errors[0].find("mod.lua:1: script stopped: it ran longer than the frame's script budget of 250 ms"),
+            std::string::npos)
       << p.errors[0];
   EXPECT_LT(p.slowestFrame, 1.0);
-  Level hog("f9_memory", "return {}\n", "local t = {} return { tick = function() for i = 1, 1e5 do t[i] = string.rep('x', 1000000) .. i end end }\n", "",
-            ", limits = { memory_mb = 4096 }");
+  Level hog(
+      "f9_memory", "return {}\n",
+      "local t = {} return { tick = function() for i = 1, 1e5 do t[i] = string.rep('x', 1000000) .. i end end }\n", "",
+      ", limits = { memory_mb = 4096 }");
   core::LiveScene live2(hog.scene, registry, false);
   const Played q = play(live2, 2);
   ASSERT_EQ(q.errors.size(), 1u) << joined(q.errors);
@@ -422,21 +460,24 @@ TEST(Finding9, AManifestCannotRaiseTheLimits) {
 // --- 10: one budget a frame for every sandboxed call, rules callbacks included ---
 
 TEST(Finding10, RulesCallbacksShareTheFramesBudget) {
-  const char* level = "return { tick = function(game, frame)\n"
-                      "  if frame == 1 then for i = 0, 19 do local e = game.world.createEntity { circle = 40 }\n"
-                      "    game.world.insert(e, 0, 300 + i * 150, 700) end end\n"
-                      "end }\n";
+  const char* level =
+      "return { tick = function(game, frame)\n"
+      "  if frame == 1 then for i = 0, 19 do local e = game.world.createEntity { circle = 40 }\n"
+      "    game.world.insert(e, 0, 300 + i * 150, 700) end end\n"
+      "end }\n";
   // Each contact spins a while (tens of ms); 20 balls rest on the floor, each in contact every frame.
-  const char* rules = "local rules = {}\n"
-                      "function rules.pierce(e, tag, kind) return kind == 'warp' end\n"
-                      "function rules.contact(entity) for i = 1, 2e7 do end end\n"
-                      "return rules\n";
+  const char* rules =
+      "local rules = {}\n"
+      "function rules.pierce(e, tag, kind) return kind == 'warp' end\n"
+      "function rules.contact(entity) for i = 1, 2e7 do end end\n"
+      "return rules\n";
   Level l("f10_rules", level, "", rules, ", limits = { call_ms = 100 }");
   const core::SystemRegistry registry = scripting();
   core::LiveScene live(l.scene, registry, false);
   const Played p = play(live, 60, 0);
   ASSERT_FALSE(p.errors.empty());
-  EXPECT_NE(p.errors[0].find("rules.lua:3: script stopped: it ran longer than the frame's script budget of 100 ms"), std::string::npos)
+  EXPECT_NE(p.errors[0].find("rules.lua:3: script stopped: it ran longer than the frame's script budget of 100 ms"),
+            std::string::npos)
       << p.errors[0];
   EXPECT_NE(p.errors[0].find("rules.lua disabled"), std::string::npos) << p.errors[0];
   EXPECT_LT(p.slowestFrame, 0.4) << "one frame ran the rules far past the frame's budget";
@@ -447,10 +488,11 @@ TEST(Finding10, RulesCallbacksShareTheFramesBudget) {
 
 TEST(Finding11, ARunawayModIsDisabledAndTheOthersGoOn) {
   const char* levelScript = "return { tick = function(game, frame) error('the level fails every frame') end }\n";
-  const char* mod = "return { tick = function(game, frame)\n"
-                    "  game.message('mod tick ' .. frame)\n"
-                    "  if frame == 10 then while true do end end\n"
-                    "end }\n";
+  const char* mod =
+      "return { tick = function(game, frame)\n"
+      "  game.message('mod tick ' .. frame)\n"
+      "  if frame == 10 then while true do end end\n"
+      "end }\n";
   Level level("f11_mod", levelScript, mod, "", ", limits = { call_ms = 50 }");
   const core::SystemRegistry registry = scripting();
   core::LiveScene live(level.scene, registry, false);
@@ -476,12 +518,14 @@ TEST(Finding11, ARunawayModIsDisabledAndTheOthersGoOn) {
 
 TEST(Finding12, SavedDataIsCopiedOnceCyclesKeptAndTooMuchRefused) {
   // A DAG of 60 levels (2^60 paths), a cycle and a shared table.
-  const std::string hooks = "local saved\n"
-                            "local function dag() local n = { 'leaf' } for i = 1, 60 do n = { n, n } end return n end\n"
-                            "return { save = function() local t = { dag = dag(), shared = { 1 } } t.again = t.shared t.self = t return t end,\n"
-                            "  onReload = function(game, s)\n"
-                            "    local d = s.dag for i = 1, 60 do assert(d[1] == d[2]) d = d[1] end\n"
-                            "    game.message(d[1] .. ' ' .. tostring(s.self == s) .. ' ' .. tostring(s.again == s.shared)) end }\n";
+  const std::string hooks =
+      "local saved\n"
+      "local function dag() local n = { 'leaf' } for i = 1, 60 do n = { n, n } end return n end\n"
+      "return { save = function() local t = { dag = dag(), shared = { 1 } } t.again = t.shared t.self = t return t "
+      "end,\n"
+      "  onReload = function(game, s)\n"
+      "    local d = s.dag for i = 1, 60 do assert(d[1] == d[2]) d = d[1] end\n"
+      "    game.message(d[1] .. ' ' .. tostring(s.self == s) .. ' ' .. tostring(s.again == s.shared)) end }\n";
   Level level("f12_dag", hooks);
   const core::SystemRegistry registry = scripting();
   core::LiveScene live(level.scene, registry, false);
@@ -492,54 +536,64 @@ TEST(Finding12, SavedDataIsCopiedOnceCyclesKeptAndTooMuchRefused) {
   EXPECT_LT(seconds, 1.0);
   EXPECT_EQ(scriptsOf(live).status().message, "leaf true true");
 
-  Level big("f12_big", "return { save = function() local t = {} for i = 1, 200000 do t[i] = i end return t end,\n"
-                       "  onReload = function(game, s) game.message('got it') end }\n");
+  Level big("f12_big",
+            "return { save = function() local t = {} for i = 1, 200000 do t[i] = i end return t end,\n"
+            "  onReload = function(game, s) game.message('got it') end }\n");
   core::LiveScene live2(big.scene, registry, false);
   play(live2, 5);
   const core::ReloadReport r2 = live2.reload();
   ASSERT_TRUE(r2.ok) << r2.error;
   EXPECT_EQ(scriptsOf(live2).status().message,
-            "reloaded without the level's saved state: save(): data too large to carry over (more than 100000 table entries)");
+            "reloaded without the level's saved state: save(): data too large to carry over (more than 100000 table "
+            "entries)");
   EXPECT_EQ(scriptsOf(live2).status().time, 5u);  // the game's own state crossed
 }
 
 // --- 13, 14: what Lua makes in C++ is capped ---
 
 TEST(Finding13, EntitiesAndPlatformsMadeFromLuaAreCapped) {
-  Level level("f13_flood", "return { tick = function(game, frame)\n"
-                           "  for i = 1, 1000 do game.world.createEntity { circle = 10 } end\n"
-                           "end }\n");
+  Level level("f13_flood",
+              "return { tick = function(game, frame)\n"
+              "  for i = 1, 1000 do game.world.createEntity { circle = 10 } end\n"
+              "end }\n");
   const core::SystemRegistry registry = scripting();
   core::LiveScene live(level.scene, registry, false);
   const Played p = play(live, 15);
   ASSERT_FALSE(p.errors.empty());
-  EXPECT_NE(p.errors[0].find("level.lua:2: createEntity: the world holds 10000 entities, the most scripts may make"), std::string::npos)
+  EXPECT_NE(p.errors[0].find("level.lua:2: createEntity: the world holds 10000 entities, the most scripts may make"),
+            std::string::npos)
       << p.errors[0];
   EXPECT_EQ(live.scene().world().entityCount(), 10000u);
-  Level platforms("f13_platforms", "return { build = function(game)\n"
-                                   "  local ok, e = pcall(game.world.createPlatform, 0, (function() local t = {} for i = 1, 4004 do t[i] = i end return t end)())\n"
-                                   "  local made = 0\n"
-                                   "  local ok2, e2 = pcall(function() for i = 1, 1001 do game.world.createPlatform(0, { 10, 10, 20, 10 }) made = made + 1 end end)\n"
-                                   "  game.message(tostring(e) .. ' / ' .. made .. ' / ' .. tostring(e2))\n"
-                                   "end }\n");
+  Level platforms("f13_platforms",
+                  "return { build = function(game)\n"
+                  "  local ok, e = pcall(game.world.createPlatform, 0, (function() local t = {} for i = 1, 4004 do "
+                  "t[i] = i end return t end)())\n"
+                  "  local made = 0\n"
+                  "  local ok2, e2 = pcall(function() for i = 1, 1001 do game.world.createPlatform(0, { 10, 10, 20, 10 "
+                  "}) made = made + 1 end end)\n"
+                  "  game.message(tostring(e) .. ' / ' .. made .. ' / ' .. tostring(e2))\n"
+                  "end }\n");
   core::LiveScene live2(platforms.scene, registry, false);
   const std::string m = scriptsOf(live2).status().message;
-  EXPECT_NE(m.find("createPlatform: argument 2 (lines): at most 4000 numbers, got 4004 / 1000 / "), std::string::npos) << m;
+  EXPECT_NE(m.find("createPlatform: argument 2 (lines): at most 4000 numbers, got 4004 / 1000 / "), std::string::npos)
+      << m;
   EXPECT_NE(m.find("createPlatform: scripts have made 1000 platforms, the most they may"), std::string::npos) << m;
 }
 
 // An entity's handle and a platform's are never the same number (the audit moved a platform with
 // the player's handle): each kind of function refuses the other kind's handle.
 TEST(Handles, EntityAndPlatformHandlesNeverMix) {
-  Level level("handles_mix", "return { build = function(game)\n"
-                             "  local w = game.world\n"
-                             "  local p = w.createPlatform(0, { 100, 300, 400, 300 })\n"
-                             "  local e = w.createEntity { circle = 20 }\n"
-                             "  local ok1, e1 = pcall(w.setPlatformMotion, e, 1, 0)\n"
-                             "  local ok2, e2 = pcall(w.velocity, p)\n"
-                             "  local ok3 = pcall(w.setPlatformMotion, p, 1, 0)\n"
-                             "  game.message(tostring(p < 0) .. ' ' .. tostring(e >= 0) .. ' | ' .. tostring(e1) .. ' | ' .. tostring(e2) .. ' | ' .. tostring(ok3))\n"
-                             "end }\n");
+  Level level("handles_mix",
+              "return { build = function(game)\n"
+              "  local w = game.world\n"
+              "  local p = w.createPlatform(0, { 100, 300, 400, 300 })\n"
+              "  local e = w.createEntity { circle = 20 }\n"
+              "  local ok1, e1 = pcall(w.setPlatformMotion, e, 1, 0)\n"
+              "  local ok2, e2 = pcall(w.velocity, p)\n"
+              "  local ok3 = pcall(w.setPlatformMotion, p, 1, 0)\n"
+              "  game.message(tostring(p < 0) .. ' ' .. tostring(e >= 0) .. ' | ' .. tostring(e1) .. ' | ' .. "
+              "tostring(e2) .. ' | ' .. tostring(ok3))\n"
+              "end }\n");
   const core::SystemRegistry registry = scripting();
   core::LiveScene live(level.scene, registry, false);
   const std::string m = scriptsOf(live).status().message;
@@ -553,18 +607,19 @@ TEST(Handles, EntityAndPlatformHandlesNeverMix) {
 // headless scenario as in the window (headless it returned before looking at them).
 TEST(DrawApi, BadArgumentsAreErrorsHeadlessToo) {
   // One call a frame, its error (or "ok") the frame's message.
-  Level level("draw_args", "local calls = {\n"
-                           "  function(d) d.circle(999, 0, 0, 10, 0xffffff) end,\n"
-                           "  function(d) d.circle('Screen', 0, 0, 10, 0xffffff) end,\n"
-                           "  function(d) d.circle(0, 0, 0, -5, 0xffffff) end,\n"
-                           "  function(d) d.line(0, 0, 0, 1e300, 0, 2, 0xffffff) end,\n"
-                           "  function(d) d.text('screen', 0, 0, 'hi', 0, 0xffffff) end,\n"
-                           "  function(d) d.polygon(0, { 0, 0, 100, 100, 100, 0 }, 0xffffff) end,\n"
-                           "  function(d) d.polygon(0, { 0, 0, 100, 0, 100, 100 }, 0xffffff) end }\n"
-                           "return { tick = function(game, frame)\n"
-                           "  local ok, e = pcall(calls[frame], platon.draw)\n"
-                           "  game.message(ok and 'ok' or e)\n"
-                           "end }\n");
+  Level level("draw_args",
+              "local calls = {\n"
+              "  function(d) d.circle(999, 0, 0, 10, 0xffffff) end,\n"
+              "  function(d) d.circle('Screen', 0, 0, 10, 0xffffff) end,\n"
+              "  function(d) d.circle(0, 0, 0, -5, 0xffffff) end,\n"
+              "  function(d) d.line(0, 0, 0, 1e300, 0, 2, 0xffffff) end,\n"
+              "  function(d) d.text('screen', 0, 0, 'hi', 0, 0xffffff) end,\n"
+              "  function(d) d.polygon(0, { 0, 0, 100, 100, 100, 0 }, 0xffffff) end,\n"
+              "  function(d) d.polygon(0, { 0, 0, 100, 0, 100, 100 }, 0xffffff) end }\n"
+              "return { tick = function(game, frame)\n"
+              "  local ok, e = pcall(calls[frame], platon.draw)\n"
+              "  game.message(ok and 'ok' or e)\n"
+              "end }\n");
   const core::SystemRegistry registry = scripting();
   core::LiveScene live(level.scene, registry, false);
   const std::vector<std::string> expected = {
@@ -598,18 +653,21 @@ TEST(OwnPlayer, WhatItWritesInGameIsNeverCalledOutsideItsLimits) {
       "local lockedGame = pcall(setmetatable, game, { __index = spin })\n"
       "local lockedSwitches = pcall(setmetatable, game.switches, { __index = spin })\n"
       "game.checkpoint = setmetatable({}, { __index = spin })\n"
-      "game.message = tostring(sealedPlayer) .. ' ' .. tostring(sealedProgression) .. ' ' .. tostring(lockedGame) .. ' ' .. tostring(lockedSwitches)\n";
+      "game.message = tostring(sealedPlayer) .. ' ' .. tostring(sealedProgression) .. ' ' .. tostring(lockedGame) .. ' "
+      "' .. tostring(lockedSwitches)\n";
   player.replace(player.find("return Player"), std::string("return Player").size(), attack + "return Player");
   level.folder.write("player.lua", player);
-  level.folder.write("scene.lua", "return { name = 'own player', systems = { 'scripting' }, stage = { level = 'cube_intro.level' },"
-                                  " gravity = 0.35, scripts = { preset = 'game', player = 'player.lua', level = 'level.lua' } }\n");
+  level.folder.write("scene.lua",
+                     "return { name = 'own player', systems = { 'scripting' }, stage = { level = 'cube_intro.level' },"
+                     " gravity = 0.35, scripts = { preset = 'game', player = 'player.lua', level = 'level.lua' } }\n");
   const core::SystemRegistry registry = scripting();
   core::LiveScene live(level.scene, registry, false);
   EXPECT_EQ(scriptsOf(live).status().message, "false false false false");
   const auto start = std::chrono::steady_clock::now();
   Played p;
   for (int i = 0; i < 60; ++i) {  // Restart pressed every other frame: a respawn each time
-    for (const uint8_t held : {uint8_t(InputFrame::bit(Button::Right) | InputFrame::bit(Button::Restart)), InputFrame::bit(Button::Right)}) {
+    for (const uint8_t held :
+         {uint8_t(InputFrame::bit(Button::Right) | InputFrame::bit(Button::Restart)), InputFrame::bit(Button::Right)}) {
       const Played one = play(live, 1, held);
       p.errors.insert(p.errors.end(), one.errors.begin(), one.errors.end());
       p.status = one.status;
@@ -629,16 +687,19 @@ TEST(RulesScript, ACallbackThatIsNoFunctionNamesTheScript) {
     ADD_FAILURE() << "loaded";
   } catch (const std::exception& e) {
     const std::string m = e.what();
-    EXPECT_NE(m.find(level.folder.path("rules.lua") + ": rules: 'contact' is a number, not a function"), std::string::npos) << m;
+    EXPECT_NE(m.find(level.folder.path("rules.lua") + ": rules: 'contact' is a number, not a function"),
+              std::string::npos)
+        << m;
   }
 }
 
 // An error message with a NUL in it is shown whole (it was cut at the NUL), and a huge one is cut.
 TEST(ErrorMessages, ANulDoesNotCutAMessageAndAHugeOneIsCut) {
-  Level level("error_nul", "return { tick = function(game, frame)\n"
-                           "  if frame == 1 then error('before\\0after') end\n"
-                           "  if frame == 2 then error(string.rep('x', 1000000)) end\n"
-                           "end }\n");
+  Level level("error_nul",
+              "return { tick = function(game, frame)\n"
+              "  if frame == 1 then error('before\\0after') end\n"
+              "  if frame == 2 then error(string.rep('x', 1000000)) end\n"
+              "end }\n");
   const core::SystemRegistry registry = scripting();
   core::LiveScene live(level.scene, registry, false);
   const Played p = play(live, 2);
@@ -653,17 +714,18 @@ TEST(ErrorMessages, ANulDoesNotCutAMessageAndAHugeOneIsCut) {
 // back by a corner).
 TEST(WorldApi, TyposTwoShapesAndBodiesOffTheirFaceAreErrors) {
   // One call a frame, its error (or "ok") the frame's message.
-  Level level("world_api_typos", "local e\n"
-                                 "local calls = {\n"
-                                 "  function(w) w.setFilter(e, { catgory = 1 }) end,\n"
-                                 "  function(w) w.createEntity { circle = 5, box = { 1, 1 } } end,\n"
-                                 "  function(w) w.insert(e, 0, -5000, 2500) end,\n"
-                                 "  function(w) w.insert(e, 0, 4096 + 20, 2000) end }\n"
-                                 "return { tick = function(game, frame)\n"
-                                 "  e = e or game.world.createEntity { circle = 20 }\n"
-                                 "  local ok, err = pcall(calls[frame], game.world)\n"
-                                 "  game.message(ok and 'ok' or err)\n"
-                                 "end }\n");
+  Level level("world_api_typos",
+              "local e\n"
+              "local calls = {\n"
+              "  function(w) w.setFilter(e, { catgory = 1 }) end,\n"
+              "  function(w) w.createEntity { circle = 5, box = { 1, 1 } } end,\n"
+              "  function(w) w.insert(e, 0, -5000, 2500) end,\n"
+              "  function(w) w.insert(e, 0, 4096 + 20, 2000) end }\n"
+              "return { tick = function(game, frame)\n"
+              "  e = e or game.world.createEntity { circle = 20 }\n"
+              "  local ok, err = pcall(calls[frame], game.world)\n"
+              "  game.message(ok and 'ok' or err)\n"
+              "end }\n");
   const core::SystemRegistry registry = scripting();
   core::LiveScene live(level.scene, registry, false);
   const std::vector<std::string> expected = {
@@ -680,8 +742,9 @@ TEST(WorldApi, TyposTwoShapesAndBodiesOffTheirFaceAreErrors) {
 // A mod the manifest names but the folder lacks is reported at the manifest's line:column.
 TEST(Manifests, AMissingModIsNamedAtTheManifestsPlace) {
   Level level("missing_mod", "return {}\n");
-  level.folder.write("scene.lua", "return { name = 'x', systems = { 'scripting' }, stage = { level = 'cube_intro.level' },\n"
-                                  "  scripts = { preset = 'game', level = 'level.lua', mods = { 'gone.lua' } } }\n");
+  level.folder.write("scene.lua",
+                     "return { name = 'x', systems = { 'scripting' }, stage = { level = 'cube_intro.level' },\n"
+                     "  scripts = { preset = 'game', level = 'level.lua', mods = { 'gone.lua' } } }\n");
   const core::SystemRegistry registry = scripting();
   try {
     core::LiveScene live(level.scene, registry, false);
@@ -693,9 +756,11 @@ TEST(Manifests, AMissingModIsNamedAtTheManifestsPlace) {
 }
 
 TEST(Finding14, MessagesAndDrawingAreCapped) {
-  Level level("f14_caps", "return {\n"
-                          "  tick = function(game, frame) game.message(string.rep('\\226\\128\\162', 100000)) end,\n"
-                          "  draw = function(game, draw) for i = 1, 20000 do draw.text('screen', 0, 0, 'x', 10, 0xffffff) end end }\n");
+  Level level(
+      "f14_caps",
+      "return {\n"
+      "  tick = function(game, frame) game.message(string.rep('\\226\\128\\162', 100000)) end,\n"
+      "  draw = function(game, draw) for i = 1, 20000 do draw.text('screen', 0, 0, 'x', 10, 0xffffff) end end }\n");
   const core::SystemRegistry registry = scripting();
   core::LiveScene live(level.scene, registry, false);
   const Played p = play(live, 2);
@@ -707,26 +772,31 @@ TEST(Finding14, MessagesAndDrawingAreCapped) {
   EXPECT_TRUE(list.shapes().empty());  // the draw failed: an empty picture
   const Played q = play(live, 1);
   ASSERT_EQ(q.errors.size(), 1u);
-  EXPECT_NE(q.errors[0].find("level.lua:3: draw: this frame's picture is full (at most 10000 shapes"), std::string::npos) << q.errors[0];
+  EXPECT_NE(q.errors[0].find("level.lua:3: draw: this frame's picture is full (at most 10000 shapes"),
+            std::string::npos)
+      << q.errors[0];
 }
 
 // --- 15: a mod at the memory ceiling leaves the engine's scripts their reserve ---
 
 TEST(Finding15, AModAtTheMemoryCeilingDoesNotStarveThePlayer) {
-  const char* mod = "hoard = {}\n"
-                    "return { tick = function(game, frame)\n"
-                    "  pcall(function() while true do hoard[#hoard + 1] = string.rep('x', 4096) .. #hoard end end)\n"
-                    "end }\n";
+  const char* mod =
+      "hoard = {}\n"
+      "return { tick = function(game, frame)\n"
+      "  pcall(function() while true do hoard[#hoard + 1] = string.rep('x', 4096) .. #hoard end end)\n"
+      "end }\n";
   Level level("f15_memhog", "return {}\n", mod, "", ", limits = { memory_mb = 32 }");
   const core::SystemRegistry registry = scripting();
   core::LiveScene live(level.scene, registry, false);
   const Played p = play(live, 200);
   ASSERT_EQ(p.errors.size(), 1u) << joined(p.errors);
-  EXPECT_NE(p.errors[0].find("mod.lua:3: script stopped: the sandboxes reached their memory limit of 24 MB (of the Lua state's 32 MB"),
-            std::string::npos)
+  EXPECT_NE(
+      p.errors[0].find(
+          "mod.lua:3: script stopped: the sandboxes reached their memory limit of 24 MB (of the Lua state's 32 MB"),
+      std::string::npos)
       << p.errors[0];
   EXPECT_NE(p.errors[0].find("mod.lua disabled"), std::string::npos);
-  EXPECT_GT(p.status.x, 1500);  // the player walked on
+  EXPECT_GT(p.status.x, 1500);                                   // the player walked on
   EXPECT_LT(scriptsOf(live).luaMemoryBytes(), size_t{8} << 20);  // the hoard was collected
 }
 
@@ -744,8 +814,7 @@ uint64_t hashInAChildProcess(const std::string& scene) {
       core::LiveScene live(scene, registry, false);
       play(live, 60);
       hash = live.scene().world().stateHash();
-    } catch (...) {
-    }
+    } catch (...) {}
     (void)!write(pipeFds[1], &hash, sizeof hash);
     _exit(0);
   }
@@ -776,10 +845,13 @@ TEST(Finding17, PairsClocksAndAddressesGiveTheSameRunInEveryProcess) {
   ASSERT_NE(first, 0u);
   for (int i = 0; i < 3; ++i) EXPECT_EQ(hashInAChildProcess(level.scene), first) << "run " << i + 2;
   // What it saw: keys in byte order, the game's clock at frame 30 (0.5 s after 1970-01-01 UTC).
-  Level show("f17_show", "local keys = {}\nfor i = 1, 8 do keys['k' .. i] = i end\n"
-                         "local order = {}\nfor k, v in pairs(keys) do order[#order + 1] = v end\n"
-                         "return { tick = function(game, frame) if frame == 30 then game.message(table.concat(order, ',') .. ' ' .. os.clock() .. ' ' ..\n"
-                         "  os.time() .. ' ' .. os.date('%Y-%m-%d %H:%M:%S') .. ' ' .. tostring(print):gsub('%d+', 'N')) end end }\n");
+  Level show(
+      "f17_show",
+      "local keys = {}\nfor i = 1, 8 do keys['k' .. i] = i end\n"
+      "local order = {}\nfor k, v in pairs(keys) do order[#order + 1] = v end\n"
+      "return { tick = function(game, frame) if frame == 30 then game.message(table.concat(order, ',') .. ' ' .. "
+      "os.clock() .. ' ' ..\n"
+      "  os.time() .. ' ' .. os.date('%Y-%m-%d %H:%M:%S') .. ' ' .. tostring(print):gsub('%d+', 'N')) end end }\n");
   const core::SystemRegistry registry = scripting();
   core::LiveScene live(show.scene, registry, false);
   const Played p = play(live, 30);
@@ -789,7 +861,8 @@ TEST(Finding17, PairsClocksAndAddressesGiveTheSameRunInEveryProcess) {
     core::LiveScene refused(tables.scene, registry, false);
     FAIL();
   } catch (const std::exception& e) {
-    EXPECT_NE(core::errorReport(e).find("level.lua:1: pairs over table keys has no fixed order in a replayable game"), std::string::npos)
+    EXPECT_NE(core::errorReport(e).find("level.lua:1: pairs over table keys has no fixed order in a replayable game"),
+              std::string::npos)
         << core::errorReport(e);
   }
 }
@@ -807,33 +880,43 @@ TEST(Finding19, ErrorsNameTheSandboxedFileAndLine) {
       // LuaJIT gives no place after an overflow in a metamethod: the file is named.
       {"local t = setmetatable({}, {__index = function(t, k) return t[k] end}) local _ = t.x",
        "level.lua: stack overflow (a function or metamethod that calls itself without end?)"},
-      {"game.world.setVelocity(game.player(), 0, 2^45)", "level.lua:1: argument 3: expected a velocity within +-2^30 units per frame, got 35184372088832"},
-      {"game.world.setFilter(game.player(), { category = 2^32 })", "level.lua:1: setFilter: category: expected an integer in [0, 4294967295], got 4294967296"},
-      {"game.world.createEntity { polygon = { 0, 0, 10, 0, 'x' } }", "level.lua:1: createEntity: polygon: item 5 is not an integer coordinate"},
-      {"game.world.createEntity { circle = 0.5 }", "level.lua:1: createEntity: circle: expected an integer in [1, 268435456], got 0.5"},
-      {"local ok = pcall(string.rep, 'x', 1e9) local t = nil return t.field", "level.lua:1: script stopped: the sandboxes reached their memory limit"},
+      {"game.world.setVelocity(game.player(), 0, 2^45)",
+       "level.lua:1: argument 3: expected a velocity within +-2^30 units per frame, got 35184372088832"},
+      {"game.world.setFilter(game.player(), { category = 2^32 })",
+       "level.lua:1: setFilter: category: expected an integer in [0, 4294967295], got 4294967296"},
+      {"game.world.createEntity { polygon = { 0, 0, 10, 0, 'x' } }",
+       "level.lua:1: createEntity: polygon: item 5 is not an integer coordinate"},
+      {"game.world.createEntity { circle = 0.5 }",
+       "level.lua:1: createEntity: circle: expected an integer in [1, 268435456], got 0.5"},
+      {"local ok = pcall(string.rep, 'x', 1e9) local t = nil return t.field",
+       "level.lua:1: script stopped: the sandboxes reached their memory limit"},
   };
   for (const Case& c : cases) {
-    Level level("f19_messages", std::string("return { tick = function(game, frame) if frame == 2 then ") + c.tick + " end end }\n");
+    Level level("f19_messages",
+                std::string("return { tick = function(game, frame) if frame == 2 then ") + c.tick + " end end }\n");
     const core::SystemRegistry registry = scripting();
     core::LiveScene live(level.scene, registry, false);
     const Played p = play(live, 3);
     ASSERT_FALSE(p.errors.empty()) << c.tick;
-    EXPECT_NE(p.errors[0].find("frame 2: " + level.folder.path(c.message)), std::string::npos) << c.tick << "\n" << p.errors[0];
+    EXPECT_NE(p.errors[0].find("frame 2: " + level.folder.path(c.message)), std::string::npos) << c.tick << "\n"
+                                                                                               << p.errors[0];
   }
 }
 
 // The velocity's range is the world's, the same with the FFI path (the default) and without.
 TEST(Finding19, TheVelocityRangeIsTheWorldsOnBothPaths) {
   for (const bool ffi : {true, false}) {
-    if (ffi) unsetenv("PLATON_NO_FFI");
-    else setenv("PLATON_NO_FFI", "1", 1);
-    Level level("f19_velocity", "local e\n"
-                                "return { tick = function(game, frame)\n"
-                                "  e = e or game.world.createEntity { circle = 10 }  -- not inserted: it does not move\n"
-                                "  if frame == 2 then game.world.setVelocity(e, 2^30, -2^30) end\n"
-                                "  if frame == 3 then game.world.setVelocity(e, 2^30 + 1, 0) end\n"
-                                "end }\n");
+    if (ffi)
+      unsetenv("PLATON_NO_FFI");
+    else
+      setenv("PLATON_NO_FFI", "1", 1);
+    Level level("f19_velocity",
+                "local e\n"
+                "return { tick = function(game, frame)\n"
+                "  e = e or game.world.createEntity { circle = 10 }  -- not inserted: it does not move\n"
+                "  if frame == 2 then game.world.setVelocity(e, 2^30, -2^30) end\n"
+                "  if frame == 3 then game.world.setVelocity(e, 2^30 + 1, 0) end\n"
+                "end }\n");
     const core::SystemRegistry registry = scripting();
     core::LiveScene live(level.scene, registry, false);
     const Played p = play(live, 3, 0);
@@ -849,11 +932,12 @@ TEST(Finding19, TheVelocityRangeIsTheWorldsOnBothPaths) {
 // A sandboxed rules script that spends the frame inside a trusted call (the player's spawn asks
 // pierce): the stop names the rules script, not the engine's code that happened to run.
 TEST(Finding19, ABudgetStopBlamesTheSandboxThatSpentIt) {
-  const char* rules = "local rules = {}\n"
-                      "function rules.pierce(entity, tag, kind)\n"
-                      "  while true do end\n"
-                      "end\n"
-                      "return rules\n";
+  const char* rules =
+      "local rules = {}\n"
+      "function rules.pierce(entity, tag, kind)\n"
+      "  while true do end\n"
+      "end\n"
+      "return rules\n";
   Level level("f19_blame", "return {}\n", "", rules, ", limits = { call_ms = 50 }");
   const core::SystemRegistry registry = scripting();
   try {
@@ -861,7 +945,9 @@ TEST(Finding19, ABudgetStopBlamesTheSandboxThatSpentIt) {
     FAIL() << "loaded";
   } catch (const std::exception& e) {
     const std::string report = core::errorReport(e);
-    EXPECT_EQ(report.rfind(level.folder.path("rules.lua") + ":3: script stopped: it ran longer than the frame's script budget of 50 ms", 0),
+    EXPECT_EQ(report.rfind(level.folder.path("rules.lua") +
+                               ":3: script stopped: it ran longer than the frame's script budget of 50 ms",
+                           0),
               0u)
         << report;
   }
@@ -870,15 +956,17 @@ TEST(Finding19, ABudgetStopBlamesTheSandboxThatSpentIt) {
 // --- 20: table.sort runs in C: a bound on what it sorts ---
 
 TEST(Finding20, SortRefusesHugeTables) {
-  Level level("f20_sort", "return { build = function(game)\n"
-                          "  local t = {} for i = 1, 1000001 do t[i] = -i end\n"
-                          "  local ok, e = pcall(table.sort, t)\n"
-                          "  local small = { 3, 1, 2 } table.sort(small)\n"
-                          "  game.message(tostring(e) .. ' / ' .. table.concat(small, ','))\n"
-                          "end }\n");
+  Level level("f20_sort",
+              "return { build = function(game)\n"
+              "  local t = {} for i = 1, 1000001 do t[i] = -i end\n"
+              "  local ok, e = pcall(table.sort, t)\n"
+              "  local small = { 3, 1, 2 } table.sort(small)\n"
+              "  game.message(tostring(e) .. ' / ' .. table.concat(small, ','))\n"
+              "end }\n");
   const core::SystemRegistry registry = scripting();
   core::LiveScene live(level.scene, registry, false);
-  EXPECT_EQ(scriptsOf(live).status().message, "table.sort: at most 1000000 items in a sandbox (this table has 1000001) / 1,2,3");
+  EXPECT_EQ(scriptsOf(live).status().message,
+            "table.sort: at most 1000000 items in a sandbox (this table has 1000001) / 1,2,3");
 }
 
 // --- re-audit N7: a read-only view lists what it shows ---
@@ -887,25 +975,28 @@ TEST(Finding20, SortRefusesHugeTables) {
 // saw nothing before), in the fixed order; what they hand out is what indexing gives (functions
 // and views), so the view stays read-only, and a copy of the API works.
 TEST(ReAuditN7, PairsNextAndIpairsWalkAViewsEntriesAndItStaysReadOnly) {
-  Level level("n7_views", "return { build = function(game)\n"
-                          "  local names = {}\n"
-                          "  for k, v in pairs(game) do names[#names + 1] = k .. ':' .. type(v) end\n"
-                          "  local viaPairs, viaNext = {}, {}\n"
-                          "  for k, v in pairs(game.world) do viaPairs[#viaPairs + 1] = k assert(v == game.world[k]) end\n"
-                          "  local k = next(game.world) while k ~= nil do viaNext[#viaNext + 1] = k k = next(game.world, k) end\n"
-                          "  assert(#viaPairs > 10 and table.concat(viaPairs, ' ') == table.concat(viaNext, ' '))\n"
-                          "  local _, state = pairs(game) assert(rawequal(state, game), 'pairs handed out the entries')\n"
-                          "  local n = 0 for _ in ipairs(game) do n = n + 1 end\n"
-                          "  for k, v in pairs(game) do assert(not pcall(function() game[k] = v end)) end\n"
-                          "  assert(not pcall(function() for k, v in pairs(platon) do v.x = 1 end end))\n"
-                          "  local copy = {} for k, v in pairs(game) do copy[k] = v end\n"
-                          "  local drawNames = {} for k in pairs(platon.draw) do drawNames[#drawNames + 1] = k end\n"
-                          "  copy.message(names[1] .. ' ' .. names[#names] .. ' ' .. n .. ' ' .. #game .. ' ' .. tostring((next(platon))) .. ' ' ..\n"
-                          "               table.concat(drawNames, ','))\n"
-                          "end }\n");
+  Level level("n7_views",
+              "return { build = function(game)\n"
+              "  local names = {}\n"
+              "  for k, v in pairs(game) do names[#names + 1] = k .. ':' .. type(v) end\n"
+              "  local viaPairs, viaNext = {}, {}\n"
+              "  for k, v in pairs(game.world) do viaPairs[#viaPairs + 1] = k assert(v == game.world[k]) end\n"
+              "  local k = next(game.world) while k ~= nil do viaNext[#viaNext + 1] = k k = next(game.world, k) end\n"
+              "  assert(#viaPairs > 10 and table.concat(viaPairs, ' ') == table.concat(viaNext, ' '))\n"
+              "  local _, state = pairs(game) assert(rawequal(state, game), 'pairs handed out the entries')\n"
+              "  local n = 0 for _ in ipairs(game) do n = n + 1 end\n"
+              "  for k, v in pairs(game) do assert(not pcall(function() game[k] = v end)) end\n"
+              "  assert(not pcall(function() for k, v in pairs(platon) do v.x = 1 end end))\n"
+              "  local copy = {} for k, v in pairs(game) do copy[k] = v end\n"
+              "  local drawNames = {} for k in pairs(platon.draw) do drawNames[#drawNames + 1] = k end\n"
+              "  copy.message(names[1] .. ' ' .. names[#names] .. ' ' .. n .. ' ' .. #game .. ' ' .. "
+              "tostring((next(platon))) .. ' ' ..\n"
+              "               table.concat(drawNames, ','))\n"
+              "end }\n");
   const core::SystemRegistry registry = scripting();
   core::LiveScene live(level.scene, registry, false);
-  EXPECT_EQ(scriptsOf(live).status().message, "checkpoint:function world:table 0 0 draw circle,enabled,line,polygon,text");
+  EXPECT_EQ(scriptsOf(live).status().message,
+            "checkpoint:function world:table 0 0 draw circle,enabled,line,polygon,text");
 }
 
 }  // namespace

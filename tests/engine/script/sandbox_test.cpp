@@ -1,8 +1,8 @@
 // Every refusal of the sandbox, proved by the error a script gets, and the limits that stop a
 // runaway script: an endless loop (also one the JIT would compile), unbounded memory, pcall games.
-#include <gtest/gtest.h>
-
 #include <chrono>
+
+#include <gtest/gtest.h>
 
 #include "lua_host.h"
 #include "lua_rules.h"
@@ -51,43 +51,45 @@ TEST_P(SandboxRefuses, WithAClearError) {
 
 INSTANTIATE_TEST_SUITE_P(
     Each, SandboxRefuses,
-    testing::Values(Refusal{"io.open('/etc/passwd')", "attempt to index global 'io' (a nil value)"},
-                    Refusal{"os.execute('true')", "attempt to call field 'execute' (a nil value)"},
-                    Refusal{"os.exit(1)", "attempt to call field 'exit' (a nil value)"},
-                    Refusal{"os.remove('x')", "attempt to call field 'remove' (a nil value)"},
-                    Refusal{"os.getenv('HOME')", "attempt to call field 'getenv' (a nil value)"},
-                    Refusal{"require('os')", "attempt to call global 'require' (a nil value)"},
-                    Refusal{"package.loadlib('libc.so.6', 'system')", "attempt to index global 'package'"},
-                    Refusal{"local ffi = ffi.C", "attempt to index global 'ffi' (a nil value)"},
-                    Refusal{"jit.off()", "attempt to index global 'jit' (a nil value)"},
-                    Refusal{"debug.getregistry()", "attempt to index global 'debug' (a nil value)"},
-                    Refusal{"load('return 1')", "attempt to call global 'load' (a nil value)"},
-                    Refusal{"loadstring('\\27LJ')", "attempt to call global 'loadstring' (a nil value)"},
-                    Refusal{"dofile('/etc/passwd')", "attempt to call global 'dofile' (a nil value)"},
-                    Refusal{"loadfile('x')", "attempt to call global 'loadfile' (a nil value)"},
-                    Refusal{"string.dump(print)", "attempt to call field 'dump' (a nil value)"},
-                    Refusal{"getfenv(0).x = 1", "attempt to call global 'getfenv' (a nil value)"},
-                    Refusal{"setfenv(1, {})", "attempt to call global 'setfenv' (a nil value)"},
-                    Refusal{"rawset(platon, 'x', 1)", "attempt to call global 'rawset' (a nil value)"},
-                    Refusal{"newproxy(true)", "attempt to call global 'newproxy' (a nil value)"},
-                    Refusal{"collectgarbage('stop')", "a sandbox may only ask for \"count\""},
-                    Refusal{"getmetatable('').__index = {}", "attempt to index a string value"},
-                    Refusal{"setmetatable(platon, {})", "cannot change a protected metatable"},
-                    Refusal{"platon.x = 1", "platon is read-only (tried to set x)"},
-                    Refusal{"string.find(string.rep('a', 5000), '.-.-.-b')", "pattern too costly"},
-                    Refusal{"for w in string.gmatch(string.rep('a', 20000), 'a*a*b') do end", "pattern too costly"},
-                    Refusal{"module('x')", "attempt to call global 'module' (a nil value)"},
-                    // The string methods are the sandbox's too: no dump, and counted patterns.
-                    Refusal{"local dump = ('').dump; dump(print)", "attempt to call local 'dump' (a nil value)"},
-                    Refusal{"local s = string.rep('a', 40) local r = s:find('.-.-.-.-.-.-.-.-.-.-b')", "pattern too costly"},
-                    Refusal{"for k in pairs({ [print] = 1 }) do end", "pairs over function keys has no fixed order"},
-                    Refusal{"local t = {} for i = 1, 1000001 do t[i] = i end table.sort(t)", "table.sort: at most 1000000 items"}));
+    testing::Values(
+        Refusal{"io.open('/etc/passwd')", "attempt to index global 'io' (a nil value)"},
+        Refusal{"os.execute('true')", "attempt to call field 'execute' (a nil value)"},
+        Refusal{"os.exit(1)", "attempt to call field 'exit' (a nil value)"},
+        Refusal{"os.remove('x')", "attempt to call field 'remove' (a nil value)"},
+        Refusal{"os.getenv('HOME')", "attempt to call field 'getenv' (a nil value)"},
+        Refusal{"require('os')", "attempt to call global 'require' (a nil value)"},
+        Refusal{"package.loadlib('libc.so.6', 'system')", "attempt to index global 'package'"},
+        Refusal{"local ffi = ffi.C", "attempt to index global 'ffi' (a nil value)"},
+        Refusal{"jit.off()", "attempt to index global 'jit' (a nil value)"},
+        Refusal{"debug.getregistry()", "attempt to index global 'debug' (a nil value)"},
+        Refusal{"load('return 1')", "attempt to call global 'load' (a nil value)"},
+        Refusal{"loadstring('\\27LJ')", "attempt to call global 'loadstring' (a nil value)"},
+        Refusal{"dofile('/etc/passwd')", "attempt to call global 'dofile' (a nil value)"},
+        Refusal{"loadfile('x')", "attempt to call global 'loadfile' (a nil value)"},
+        Refusal{"string.dump(print)", "attempt to call field 'dump' (a nil value)"},
+        Refusal{"getfenv(0).x = 1", "attempt to call global 'getfenv' (a nil value)"},
+        Refusal{"setfenv(1, {})", "attempt to call global 'setfenv' (a nil value)"},
+        Refusal{"rawset(platon, 'x', 1)", "attempt to call global 'rawset' (a nil value)"},
+        Refusal{"newproxy(true)", "attempt to call global 'newproxy' (a nil value)"},
+        Refusal{"collectgarbage('stop')", "a sandbox may only ask for \"count\""},
+        Refusal{"getmetatable('').__index = {}", "attempt to index a string value"},
+        Refusal{"setmetatable(platon, {})", "cannot change a protected metatable"},
+        Refusal{"platon.x = 1", "platon is read-only (tried to set x)"},
+        Refusal{"string.find(string.rep('a', 5000), '.-.-.-b')", "pattern too costly"},
+        Refusal{"for w in string.gmatch(string.rep('a', 20000), 'a*a*b') do end", "pattern too costly"},
+        Refusal{"module('x')", "attempt to call global 'module' (a nil value)"},
+        // The string methods are the sandbox's too: no dump, and counted patterns.
+        Refusal{"local dump = ('').dump; dump(print)", "attempt to call local 'dump' (a nil value)"},
+        Refusal{"local s = string.rep('a', 40) local r = s:find('.-.-.-.-.-.-.-.-.-.-b')", "pattern too costly"},
+        Refusal{"for k in pairs({ [print] = 1 }) do end", "pairs over function keys has no fixed order"},
+        Refusal{"local t = {} for i = 1, 1000001 do t[i] = i end table.sort(t)", "table.sort: at most 1000000 items"}));
 
 TEST(Sandbox, ChangesToTheSharedLibrariesStayInTheSandbox) {
   LuaHost host;
   EXPECT_EQ(runSandboxed(host, "string.upper = nil; math.floor = nil; table.insert = nil"), "");
-  EXPECT_EQ(runSandboxed(host, "assert(string.upper('a') == 'A'); assert(('a'):upper() == 'A'); "
-                               "assert(math.floor(1.5) == 1); table.insert({}, 1)"),
+  EXPECT_EQ(runSandboxed(host,
+                         "assert(string.upper('a') == 'A'); assert(('a'):upper() == 'A'); "
+                         "assert(math.floor(1.5) == 1); table.insert({}, 1)"),
             "");
   // Trusted code sees its own libraries untouched too.
   host.loadString("return string.upper('a'), math.floor(1.5)", "=trusted", Trust::Trusted);
@@ -100,9 +102,10 @@ TEST(Sandbox, ChangesToTheSharedLibrariesStayInTheSandbox) {
 // trusted code's global string keeps LuaJIT's own (and dump).
 TEST(Sandbox, StringMethodsAreTheSandboxsForEveryone) {
   LuaHost host;
-  host.loadString("return ('').dump == nil, string.dump ~= nil, ('').find ~= string.find, ('').sub == string.sub, "
-                  "getmetatable('')",
-                  "=trusted", Trust::Trusted);
+  host.loadString(
+      "return ('').dump == nil, string.dump ~= nil, ('').find ~= string.find, ('').sub == string.sub, "
+      "getmetatable('')",
+      "=trusted", Trust::Trusted);
   host.call(0, 5);
   lua_State* L = host.state();
   EXPECT_TRUE(lua_toboolean(L, -5));
@@ -121,8 +124,9 @@ TEST(Sandbox, GlobalsOfOneSandboxAreNotAnothers) {
 
 TEST(Sandbox, RandomIsTheSameSequenceEveryRun) {
   LuaHost host;
-  EXPECT_EQ(runSandboxed(host, "math.randomseed(7) local a = math.random(1, 1000) math.randomseed(7) "
-                               "assert(a == math.random(1, 1000)) assert(a >= 1 and a <= 1000)"),
+  EXPECT_EQ(runSandboxed(host,
+                         "math.randomseed(7) local a = math.random(1, 1000) math.randomseed(7) "
+                         "assert(a == math.random(1, 1000)) assert(a >= 1 and a <= 1000)"),
             "");
 }
 
@@ -138,7 +142,10 @@ TEST(Sandbox, BytecodeIsRefused) {
     host.loadString(bytecode, "@mod.luac", Trust::Sandboxed);
     FAIL() << "bytecode loaded in a sandbox";
   } catch (const ScriptError& e) {
-    EXPECT_NE(std::string(e.what()).find("mod.luac: a compiled (bytecode) chunk: sandboxed scripts load from text only"), std::string::npos) << e.what();
+    EXPECT_NE(
+        std::string(e.what()).find("mod.luac: a compiled (bytecode) chunk: sandboxed scripts load from text only"),
+        std::string::npos)
+        << e.what();
   }
 }
 
@@ -170,9 +177,7 @@ TEST(Runaway, AnEndlessLoopIsStopped) { expectStoppedByBudget("while true do end
 
 // The loop LuaJIT would compile after a few dozen iterations; compiled traces run no hooks. The
 // sandbox turns the JIT off for the chunk's functions, so the hook still sees it.
-TEST(Runaway, AHotNumericLoopIsStopped) {
-  expectStoppedByBudget("local x = 0 for i = 1, 1e15 do x = x + i * 0.5 end");
-}
+TEST(Runaway, AHotNumericLoopIsStopped) { expectStoppedByBudget("local x = 0 for i = 1, 1e15 do x = x + i * 0.5 end"); }
 
 TEST(Runaway, ALoopInAFunctionItDefinedIsStopped) {
   expectStoppedByBudget("local function spin(n) local s = 0 while n > 0 do s = s + n end return s end spin(1)");
@@ -185,9 +190,11 @@ TEST(Runaway, PcallCannotSwallowTheStop) {
 }
 
 TEST(Runaway, XpcallHandlersStillWork) {
-  EXPECT_EQ(runSandboxed("local ok, m = xpcall(function(a) error('x' .. a, 0) end, function(e) return 'handled ' .. e end, 1) "
-                         "assert(not ok and m == 'handled x1', m) "
-                         "local ok2, a, b = xpcall(function(x, y) return x, y end, print, 1, nil) assert(ok2 and a == 1 and b == nil)"),
+  EXPECT_EQ(runSandboxed(
+                "local ok, m = xpcall(function(a) error('x' .. a, 0) end, function(e) return 'handled ' .. e end, 1) "
+                "assert(not ok and m == 'handled x1', m) "
+                "local ok2, a, b = xpcall(function(x, y) return x, y end, print, 1, nil) assert(ok2 and a == 1 and b "
+                "== nil)"),
             "");
 }
 
@@ -214,11 +221,13 @@ TEST(Runaway, UnboundedMemoryIsStopped) {
   LuaLimits limits;
   limits.memoryBytes = size_t{32} << 20;
   LuaHost host(limits);
-  const std::string error = runSandboxed(host, "local t = {} while true do t[#t + 1] = string.rep('x', 1000) .. #t end");
+  const std::string error =
+      runSandboxed(host, "local t = {} while true do t[#t + 1] = string.rep('x', 1000) .. #t end");
   // Stopped where it was (its file:line), at the sandboxes' share of the state: the rest is the
   // engine's, so its own scripts still run.
   EXPECT_EQ(error.rfind("mod.lua:1: script stopped: the sandboxes reached their memory limit of 24 MB (of the Lua "
-                        "state's 32 MB; the rest is kept for the engine); mod.lua disabled: fix it and save to reload", 0),
+                        "state's 32 MB; the rest is kept for the engine); mod.lua disabled: fix it and save to reload",
+                        0),
             0u)
       << error;
   EXPECT_LE(host.memoryUsed(), limits.memoryBytes);
@@ -287,11 +296,12 @@ TEST(Errors, TheStackIsLeftAsItWas) {
 // A read-only view names the key it refused by the sandbox's tostring, never by an address
 // (re-audit N5: "tried to set table: 0x55..." gave a sandbox a number that differs per process).
 TEST(ReadOnlyViews, NameARefusedKeyWithoutAnAddress) {
-  EXPECT_EQ(runSandboxed("for _, key in ipairs { {}, print, coroutine.create(print) } do\n"
-                         "  local ok, e = pcall(function() platon[key] = 1 end)\n"
-                         "  assert(not ok and not e:find('0x'), e)\n"
-                         "  assert(e:find('^mod.lua:2: platon is read%-only %(tried to set ' .. type(key) .. ': #%d+%)$'), e)\n"
-                         "end"),
+  EXPECT_EQ(runSandboxed(
+                "for _, key in ipairs { {}, print, coroutine.create(print) } do\n"
+                "  local ok, e = pcall(function() platon[key] = 1 end)\n"
+                "  assert(not ok and not e:find('0x'), e)\n"
+                "  assert(e:find('^mod.lua:2: platon is read%-only %(tried to set ' .. type(key) .. ': #%d+%)$'), e)\n"
+                "end"),
             "");
 }
 
@@ -425,19 +435,24 @@ TEST(PairsAndNext, WalkTheDocumentedOrderOverRandomTables) {
 // sort: a clear loop over 100,000 keys fits in the budget with room to spare.
 TEST(PairsAndNext, EmptinessChecksAndClearLoopsFitTheFramesBudget) {
   LuaHost host;
-  EXPECT_EQ(runSandboxed(host, "local t = {} for i = 1, 1e5 do t['key' .. i] = i end\n"
-                               "for i = 1, 20 do assert(next(t) == 'key1') end"),
+  EXPECT_EQ(runSandboxed(host,
+                         "local t = {} for i = 1, 1e5 do t['key' .. i] = i end\n"
+                         "for i = 1, 20 do assert(next(t) == 'key1') end"),
             "");
-  EXPECT_EQ(runSandboxed(host, "local t = {} for i = 1, 1e5 do t['key' .. i] = i end\n"
-                               "local k = next(t) while k ~= nil do t[k] = nil k = next(t, k) end\n"
-                               "assert(next(t) == nil)"),
+  EXPECT_EQ(runSandboxed(host,
+                         "local t = {} for i = 1, 1e5 do t['key' .. i] = i end\n"
+                         "local k = next(t) while k ~= nil do t[k] = nil k = next(t, k) end\n"
+                         "assert(next(t) == nil)"),
             "");
-  EXPECT_EQ(runSandboxed(host, "local t = {} for i = 1, 1e5 do t[i / 4] = i end\n"
-                               "for k in next, t do t[k] = nil end assert(next(t) == nil)"),
+  EXPECT_EQ(runSandboxed(host,
+                         "local t = {} for i = 1, 1e5 do t[i / 4] = i end\n"
+                         "for k in next, t do t[k] = nil end assert(next(t) == nil)"),
             "");
-  EXPECT_EQ(runSandboxed(host, "local t = {} for i = 1, 1e5 do t['key' .. i] = i end\n"
-                               "local n = 0 for k, v in pairs(t) do n = n + 1 t[k] = nil end assert(n == 1e5 and next(t) == nil)"),
-            "");
+  EXPECT_EQ(
+      runSandboxed(host,
+                   "local t = {} for i = 1, 1e5 do t['key' .. i] = i end\n"
+                   "local n = 0 for k, v in pairs(t) do n = n + 1 t[k] = nil end assert(n == 1e5 and next(t) == nil)"),
+      "");
 }
 
 // table.insert, remove and sort write raw, past a view's metatable: into the table every sandbox
@@ -456,10 +471,13 @@ TEST(ReadOnlyViews, TableFunctionsCannotWriteIntoAView) {
   }
   EXPECT_EQ(runSandboxed(host, "assert(platon[1] == nil and rawget(platon, 1) == nil)"), "");
   // On other tables they are LuaJIT's, errors at the caller's line included.
-  EXPECT_EQ(runSandboxed(host, "local t = {} table.insert(t, 'a') table.insert(t, 1, 'b') table.sort(t)\n"
-                               "assert(table.remove(t) == 'b' and #t == 1)"),
+  EXPECT_EQ(runSandboxed(host,
+                         "local t = {} table.insert(t, 'a') table.insert(t, 1, 'b') table.sort(t)\n"
+                         "assert(table.remove(t) == 'b' and #t == 1)"),
             "");
-  EXPECT_EQ(runSandboxed(host, "\ntable.insert(nil, 1)").rfind("mod.lua:2: bad argument #1 to 'insert' (table expected, got nil)", 0), 0u);
+  EXPECT_EQ(runSandboxed(host, "\ntable.insert(nil, 1)")
+                .rfind("mod.lua:2: bad argument #1 to 'insert' (table expected, got nil)", 0),
+            0u);
 }
 
 // table.foreach walked LuaJIT's order, which changes from one process to the next (string hashes
@@ -473,7 +491,9 @@ TEST(PairsAndNext, TableForeachWalksTheFixedOrder) {
                          "assert(table.concat(a, ' ') == table.concat(b, ' '), table.concat(a, ' '))\n"
                          "assert(table.foreach(t, function(k, v) if k == 'k3' then return v end end) == 3)"),
             "");
-  EXPECT_EQ(runSandboxed("\ntable.foreach({ [{}] = 1 }, print)").rfind("mod.lua:2: pairs over table keys has no fixed order", 0), 0u);
+  EXPECT_EQ(runSandboxed("\ntable.foreach({ [{}] = 1 }, print)")
+                .rfind("mod.lua:2: pairs over table keys has no fixed order", 0),
+            0u);
 }
 
 }  // namespace

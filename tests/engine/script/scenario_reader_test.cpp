@@ -3,11 +3,11 @@
 // scenario that computes its values in Lua still reads, with the line of its return. Replays say
 // when the scene's files changed since the recording, and `platon scenario` writes any scene path
 // so that it reads back as itself.
-#include <gtest/gtest.h>
-
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+
+#include <gtest/gtest.h>
 
 #include "platon/core/replay.h"
 #include "platon/script/scenario.h"
@@ -43,30 +43,43 @@ TEST(ScenarioReader, EveryMalformedValueIsRefusedAtItsLineAndColumn) {
   const std::string file = folder.path("sc.lua");
   const Case cases[] = {
       // C1: values of the wrong kind where a table is read (these killed the whole run).
-      {"  input = { 5 },", "5", "input[1]: expected { hold = \"button\", from =, to = } or { press = \"button\", at =, frames = }, got 5"},
-      {"  expect = { inside = { 5 } },", "5", "expect.inside[1]: expected { frame =, face =, box = { x0, y0, x1, y1 } }, got 5"},
+      {"  input = { 5 },", "5",
+       "input[1]: expected { hold = \"button\", from =, to = } or { press = \"button\", at =, frames = }, got 5"},
+      {"  expect = { inside = { 5 } },", "5",
+       "expect.inside[1]: expected { frame =, face =, box = { x0, y0, x1, y1 } }, got 5"},
       // C2: unknown keys, with the known ones.
-      {"  expect = { goal_bye = 10 },", "goal_bye", "expect: unknown key 'goal_bye' (known: goal_by, deaths, face, inside, hash)"},
-      {"  expcet = { goal_by = 10 },", "expcet", "scenario: unknown key 'expcet' (known: scene, frames, input, expect)"},
+      {"  expect = { goal_bye = 10 },", "goal_bye",
+       "expect: unknown key 'goal_bye' (known: goal_by, deaths, face, inside, hash)"},
+      {"  expcet = { goal_by = 10 },", "expcet",
+       "scenario: unknown key 'expcet' (known: scene, frames, input, expect)"},
       {"  framez = 3,", "framez", "scenario: unknown key 'framez'"},
-      {"  input = { { hold = 'right', from = 1, too = 5 } },", "too", "input[1]: unknown key 'too' (known: hold, from, to)"},
-      {"  input = { { press = 'jump', at = 1, frame = 5 } },", "frame", "input[1]: unknown key 'frame' (known: press, at, frames)"},
+      {"  input = { { hold = 'right', from = 1, too = 5 } },", "too",
+       "input[1]: unknown key 'too' (known: hold, from, to)"},
+      {"  input = { { press = 'jump', at = 1, frame = 5 } },", "frame",
+       "input[1]: unknown key 'frame' (known: press, at, frames)"},
       {"  expect = { inside = { { frame = 5, face = 0, box = { 0, 0, 1, 1 }, fase = 1 } } },", "fase",
        "expect.inside[1]: unknown key 'fase' (known: frame, face, box)"},
       // C3: wrong types, fractions, ranges.
       {"  expect = { goal_by = {} },", "{}", "expect.goal_by: expected a whole number in 1..100, got a table"},
       {"  expect = 5,", "5", "expect: expected a table of checks, got 5"},
-      {"  expect = { goal_by = '10' },", "'10'", "expect.goal_by: expected a whole number in 1..100, got '10' (a string)"},
+      {"  expect = { goal_by = '10' },", "'10'",
+       "expect.goal_by: expected a whole number in 1..100, got '10' (a string)"},
       {"  expect = { goal_by = 5000 },", "5000", "expect.goal_by: 5000 is outside 1..100"},
-      {"  expect = { face = { [50] = 'three' } },", "'three'", "expect.face[50]: expected a whole number in 0..4095, got 'three'"},
-      {"  expect = { face = { at50 = 3 } },", "at50", "expect.face['at50'] (a frame): expected a whole number in 1..100, got 'at50'"},
+      {"  expect = { face = { [50] = 'three' } },", "'three'",
+       "expect.face[50]: expected a whole number in 0..4095, got 'three'"},
+      {"  expect = { face = { at50 = 3 } },", "at50",
+       "expect.face['at50'] (a frame): expected a whole number in 1..100, got 'at50'"},
       {"  expect = { face = { [0] = 3 } },", "0", "expect.face[0] (a frame): 0 is outside 1..100"},
       {"  expect = { face = { [-1] = 3 } },", "-1", "expect.face[-1] (a frame): -1 is outside 1..100"},
       {"  expect = { face = { [150] = 3 } },", "150", "expect.face[150] (a frame): 150 is outside 1..100"},
-      {"  expect = { face = { [50.5] = 3 } },", "50.5", "expect.face[50.5] (a frame): expected a whole number in 1..100, got 50.5"},
-      {"  expect = { hash = { [150] = '0123456789abcdef' } },", "150", "expect.hash[150] (a frame): 150 is outside 1..100"},
-      {"  expect = { hash = { [50] = true } },", "true", "expect.hash[50]: frame 50: state hash true is not 16 lower-case hex digits"},
-      {"  expect = { hash = { [50] = '9E8822E6431FFC25' } },", "'9E", "expect.hash[50]: frame 50: state hash '9E8822E6431FFC25' (a string) is not 16 lower-case hex digits"},
+      {"  expect = { face = { [50.5] = 3 } },", "50.5",
+       "expect.face[50.5] (a frame): expected a whole number in 1..100, got 50.5"},
+      {"  expect = { hash = { [150] = '0123456789abcdef' } },", "150",
+       "expect.hash[150] (a frame): 150 is outside 1..100"},
+      {"  expect = { hash = { [50] = true } },", "true",
+       "expect.hash[50]: frame 50: state hash true is not 16 lower-case hex digits"},
+      {"  expect = { hash = { [50] = '9E8822E6431FFC25' } },", "'9E",
+       "expect.hash[50]: frame 50: state hash '9E8822E6431FFC25' (a string) is not 16 lower-case hex digits"},
       {"  expect = { inside = { { frame = 150, face = 0, box = { 0, 0, 1, 1 } } } },", "150",
        "expect.inside[1].frame: 150 is outside 1..100"},
       {"  expect = { inside = { frame = 50, face = 0, box = { 0, 0, 1, 1 } } },", "frame",
@@ -77,23 +90,30 @@ TEST(ScenarioReader, EveryMalformedValueIsRefusedAtItsLineAndColumn) {
        "expect.inside[1].box[1]: -1.0000000000000001e+300 is outside -1073741823..1073741823"},
       {"  expect = { inside = { { frame = 5, face = 0, box = { 10, 0, 5, 1 } } } },", "{ 10",
        "expect.inside[1].box: an inverted box"},
-      {"  expect = { inside = { { frame = 5, face = 0, box = { 1, 2, 3 } } } },", "{ 1, 2", "expect.inside[1].box: expected { x0, y0, x1, y1 }"},
+      {"  expect = { inside = { { frame = 5, face = 0, box = { 1, 2, 3 } } } },", "{ 1, 2",
+       "expect.inside[1].box: expected { x0, y0, x1, y1 }"},
       {"  expect = { deaths = 0.5 },", "0.5", "expect.deaths: expected a whole number in 0..2147483647, got 0.5"},
       {"  expect = { deaths = -1 },", "-1", "expect.deaths: -1 is outside 0..2147483647"},
       {"  input = 'right',", "'right'", "input: expected a list of"},
-      {"  input = { { hold = 'right', from = 1.5, to = 10 } },", "1.5", "input[1].from: expected a whole number in 1..100, got 1.5"},
+      {"  input = { { hold = 'right', from = 1.5, to = 10 } },", "1.5",
+       "input[1].from: expected a whole number in 1..100, got 1.5"},
       {"  input = { { hold = 'right', from = 20, to = 10 } },", "10 }", "input[1].to: frame 10 is before from = 20"},
       {"  input = { { hold = 'right', from = 1, to = 101 } },", "101", "input[1].to: 101 is outside 1..100"},
       {"  input = { { hold = 'right', from = 1 } },", "{ hold", "input[1]: 'to' is missing"},
       {"  input = { { press = 'jump', at = 5, frames = 'x' } },", "'x'", "input[1].frames: expected a whole number"},
       {"  input = { { press = 'jump', at = 5, frames = 0 } },", "0 }", "input[1].frames: 0 is outside 1..100"},
-      {"  input = { { press = 'jump', at = 95, frames = 10 } },", "10 }", "input[1].frames: the press runs to frame 104, past"},
-      {"  input = { { hold = 'right', from = 1, to = 2, press = 'jump', at = 1 } },", "'jump'", "input[1]: give hold or press, not both"},
-      {"  input = { { hold = 'fly', from = 1, to = 2 } },", "'fly'", "input[1]: unknown button 'fly' (left, right, up, down, jump, restart, pause, reload)"},
+      {"  input = { { press = 'jump', at = 95, frames = 10 } },", "10 }",
+       "input[1].frames: the press runs to frame 104, past"},
+      {"  input = { { hold = 'right', from = 1, to = 2, press = 'jump', at = 1 } },", "'jump'",
+       "input[1]: give hold or press, not both"},
+      {"  input = { { hold = 'fly', from = 1, to = 2 } },", "'fly'",
+       "input[1]: unknown button 'fly' (left, right, up, down, jump, restart, pause, reload)"},
       {"  input = { { hold = 'right', from = 1, to = 2 }, nil, { hold = 'left', from = 1, to = 2 } },", "nil",
        "input[2]: expected { hold"},
-      {"  expect = { face = { [50] = 7 } },", "7", "expect.face[50]: face 7 does not exist (the stage's faces are 0..5)"},
-      {"  expect = { inside = { { frame = 5, face = 9, box = { 0, 0, 1, 1 } } } },", "9", "expect.inside[1].face: face 9 does not exist"},
+      {"  expect = { face = { [50] = 7 } },", "7",
+       "expect.face[50]: face 7 does not exist (the stage's faces are 0..5)"},
+      {"  expect = { inside = { { frame = 5, face = 9, box = { 0, 0, 1, 1 } } } },", "9",
+       "expect.inside[1].face: face 9 does not exist"},
       {"  frames = 50,", "frames", "the key 'frames' is given twice in one table"},
       {"  expect = { face = { ['a\\0b'] = 1 } },", "'a", "expect.face['a\\x00b'] (a frame): expected a whole number"},
   };
@@ -125,7 +145,8 @@ TEST(ScenarioReader, TopLevelFieldsAreChecked) {
       {"return { " + scene + ", frames = 0/0 }", "sc.lua:1: frames: expected a whole number in 1..100000000, got nan"},
       {"local n = 100\nreturn { " + scene + ", frames = n, expect = { goal_bye = 1 } }",
        "sc.lua:2: expect: unknown key 'goal_bye' (known: goal_by, deaths, face, inside, hash)"},
-      {"local t = {}\nt[1] = t\nreturn { " + scene + ", frames = 10, input = t }", "sc.lua:3: tables nested more than 32 deep"},
+      {"local t = {}\nt[1] = t\nreturn { " + scene + ", frames = 10, input = t }",
+       "sc.lua:3: tables nested more than 32 deep"},
       {"return { " + scene + ", frames = 10, input = { print } }", "sc.lua:1: input[1]: expected { hold"},
       {"return {\n", "sc.lua:2: unexpected symbol near '<eof>'"},  // Lua's own syntax error
   };
@@ -159,16 +180,19 @@ TEST(ScenarioReader, AScenarioWithAMetatableIsReadRawAndRuns) {
 
 TEST(ScenarioReader, LiteralsComputedScenariosAndCommentsReadTheSame) {
   Folder folder("scenario_forms");
-  const std::string body = "scene = '" + kScene +
-                           "', frames = 200, input = { { hold = 'right', from = 1, to = 200 }, { press = 'jump', at = 50, frames = 20 } },"
-                           " expect = { deaths = 0, face = { [100] = 0 }, hash = {} }";
-  const ScenarioResult literal = runScenario(folder.write("a.lua", "-- a comment\n--[==[ a long\n one ]==]\nreturn { " + body + " }\n"));
+  const std::string body =
+      "scene = '" + kScene +
+      "', frames = 200, input = { { hold = 'right', from = 1, to = 200 }, { press = 'jump', at = 50, frames = 20 } },"
+      " expect = { deaths = 0, face = { [100] = 0 }, hash = {} }";
+  const ScenarioResult literal =
+      runScenario(folder.write("a.lua", "-- a comment\n--[==[ a long\n one ]==]\nreturn { " + body + " }\n"));
   const ScenarioResult computed = runScenario(folder.write("b.lua", "local frames = 200\nreturn { " + body + " }\n"));
   ASSERT_TRUE(literal.passed) << literal.message;
   ASSERT_TRUE(computed.passed) << computed.message;
   EXPECT_EQ(literal.hash, computed.hash);
   // Every escape Lua knows reads the same in a literal, \ddd included.
-  const ScenarioResult escaped = runScenario(folder.write("c.lua", "return { scene = \"" + kScene + "\\116\", frames = 1 }\n"));
+  const ScenarioResult escaped =
+      runScenario(folder.write("c.lua", "return { scene = \"" + kScene + "\\116\", frames = 1 }\n"));
   EXPECT_NE(escaped.message.find(kScene + "t: cannot open the manifest"), std::string::npos) << escaped.message;
 }
 
@@ -187,8 +211,10 @@ TEST(ScenarioReplay, AChangedSceneIsNamedBeforeTheFirstHashMismatch) {
   copy("level.lua");
   RunOptions record;
   record.record = true;
-  const ScenarioResult walk = runScenario(folder.write(
-      "walk.lua", "return { scene = '" + scene + "', frames = 120, input = { { hold = 'right', from = 1, to = 120 } } }"), record);
+  const ScenarioResult walk =
+      runScenario(folder.write("walk.lua", "return { scene = '" + scene +
+                                               "', frames = 120, input = { { hold = 'right', from = 1, to = 120 } } }"),
+                  record);
   ASSERT_TRUE(walk.passed) << walk.message;
   ASSERT_TRUE(walk.recorded && walk.recorded->sceneFiles.has_value());
   const std::string replay = folder.path("walk.replay");
@@ -224,7 +250,8 @@ TEST(ScenarioReplay, AReplayWithoutHashesSaysItComparedNothing) {
       "a.replay", "platon replay 1\nscene \"" + kScene + "\"\nframes 10\nhash_every 60\ninput\n10 right\nend\n");
   const ScenarioResult r = runReplay(file);
   EXPECT_TRUE(r.passed) << r.message;
-  EXPECT_NE(r.message.find("the replay has no hashes: its input ran, nothing was compared"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("the replay has no hashes: its input ran, nothing was compared"), std::string::npos)
+      << r.message;
 }
 
 // G: `platon scenario` writes the scene path so that it reads back as itself.
@@ -238,7 +265,8 @@ TEST(ScenarioReplay, AScenarioFromAReplayQuotesItsScenePath) {
   const std::string text = scenarioFromReplay(replay, outcome, "a\nb.replay");
   EXPECT_EQ(text.find("a\nb"), std::string::npos) << "the name broke out of the comment";
   const ScenarioResult r = runScenario(folder.write("sc.lua", text));
-  EXPECT_NE(r.message.find(replay.scene + ": cannot open the manifest"), std::string::npos) << text << "\n" << r.message;
+  EXPECT_NE(r.message.find(replay.scene + ": cannot open the manifest"), std::string::npos) << text << "\n"
+                                                                                            << r.message;
 }
 
 }  // namespace

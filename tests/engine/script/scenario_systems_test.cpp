@@ -1,10 +1,10 @@
 // A headless scenario on a Platonic level whose manifest lists "meshes" loads neither the meshes
 // plugin nor assimp: the plugin is loaded only for a level drawn on a mesh. In a fresh process.
-#include <gtest/gtest.h>
-
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+
+#include <gtest/gtest.h>
 
 #include "platon/script/scenario.h"
 #include "platon/testing/temp_folder.h"
@@ -22,11 +22,14 @@ bool mapped(const char* library) {
 TEST(ScenarioSystems, MeshesListedForAPlatonicLevelLoadNoAssimp) {
   GTEST_FLAG_SET(death_test_style, "threadsafe");
   testing::TempFolder folder("systems_meshes_listed");
-  folder.write("scene.lua", "return { systems = { 'scripting', 'meshes' }, stage = { solid = 'cube' },\n"
-                            "  scripts = { preset = 'game', level = 'level.lua' } }\n");
-  folder.write("level.lua", "return { start = { face = 0, x = 600, y = 700 },\n"
-                            "  build = function(game) game.world.line(0, 0, 512, 4096, 512) end }\n");
-  const std::string scenario = folder.write("run.lua", "return { scene = '" + folder.path("scene.lua") + "', frames = 30 }\n");
+  folder.write("scene.lua",
+               "return { systems = { 'scripting', 'meshes' }, stage = { solid = 'cube' },\n"
+               "  scripts = { preset = 'game', level = 'level.lua' } }\n");
+  folder.write("level.lua",
+               "return { start = { face = 0, x = 600, y = 700 },\n"
+               "  build = function(game) game.world.line(0, 0, 512, 4096, 512) end }\n");
+  const std::string scenario =
+      folder.write("run.lua", "return { scene = '" + folder.path("scene.lua") + "', frames = 30 }\n");
   EXPECT_EXIT(
       {
         RunOptions options;

@@ -1,14 +1,14 @@
 // Scenes from manifests: what they load and what they leave out, script errors with file:line,
 // and scenarios that pass and fail.
-#include <gtest/gtest.h>
+#include "platon/core/scene.h"
 
 #include <dlfcn.h>
-
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
-#include "platon/core/scene.h"
+#include <gtest/gtest.h>
+
 #include "platon/script/scenario.h"
 #include "platon/script/script_system.h"
 #include "platon/testing/temp_folder.h"
@@ -57,25 +57,31 @@ TEST(Manifest, WholeNumbersModsAndLongBrackets) {
   EXPECT_EQ(manifestError("return { seed = 1.5 }"), "scene.lua:1:17: 'seed' must be a whole number, not 1.5");
   EXPECT_EQ(manifestError("return { gravity = -1 }"), "scene.lua:1:20: 'gravity' must be within [0, 1000], not -1");
   const std::string mod = "return { systems = { 'scripting' }, scripts = { mods = { ";
-  EXPECT_EQ(manifestError(mod + "'/etc/passwd' } } }"),
-            "scene.lua:1:58: a mod is a .lua path inside the level's folder (no '..', not absolute, not under scripts/)");
-  EXPECT_EQ(manifestError(mod + "'cube_intro.level' } } }").substr(0, 60), "scene.lua:1:58: a mod is a .lua path inside the level's fold");
-  EXPECT_EQ(manifestError(mod + "'' } } }").substr(0, 60), "scene.lua:1:58: a mod is a .lua path inside the level's fold");
+  EXPECT_EQ(
+      manifestError(mod + "'/etc/passwd' } } }"),
+      "scene.lua:1:58: a mod is a .lua path inside the level's folder (no '..', not absolute, not under scripts/)");
+  EXPECT_EQ(manifestError(mod + "'cube_intro.level' } } }").substr(0, 60),
+            "scene.lua:1:58: a mod is a .lua path inside the level's fold");
+  EXPECT_EQ(manifestError(mod + "'' } } }").substr(0, 60),
+            "scene.lua:1:58: a mod is a .lua path inside the level's fold");
   EXPECT_EQ(manifestError(mod + "a = 'level.lua' } } }"),
             "scene.lua:1:62: 'mods' must be a list of paths ({ \"a.lua\", \"b.lua\" }), not keyed");
   Folder folder("manifest_long");
   const core::SceneManifest m = core::loadManifest(folder.write(
-      "scene.lua", "--[==[ a long comment\n with ]] inside ]==]\nreturn { name = [[Two\nlines]], --[[ short ]] seed = 3 }\n"));
+      "scene.lua",
+      "--[==[ a long comment\n with ]] inside ]==]\nreturn { name = [[Two\nlines]], --[[ short ]] seed = 3 }\n"));
   EXPECT_EQ(m.name, "Two\nlines");
   EXPECT_EQ(m.seed, 3u);
-  EXPECT_EQ(manifestError("return { name = [==[ never closed ] }").substr(0, 56), "scene.lua:1:17: unfinished long string (no ]==])");
+  EXPECT_EQ(manifestError("return { name = [==[ never closed ] }").substr(0, 56),
+            "scene.lua:1:17: unfinished long string (no ]==])");
 }
 
 TEST(Manifest, AcceptsCommentsAndListsSystems) {
   Folder folder("manifest_ok");
-  const std::string path = folder.write("scene.lua",
-                                        "-- a comment\nreturn {\n  name = \"A\", --[[ block ]] systems = { 'scripting', "
-                                        "'rendering' },\n  scripts = { player = 'scripts/player.lua', level = 'l.lua' },\n}\n");
+  const std::string path =
+      folder.write("scene.lua",
+                   "-- a comment\nreturn {\n  name = \"A\", --[[ block ]] systems = { 'scripting', "
+                   "'rendering' },\n  scripts = { player = 'scripts/player.lua', level = 'l.lua' },\n}\n");
   const core::SceneManifest m = core::loadManifest(path);
   EXPECT_EQ(m.name, "A");
   EXPECT_TRUE(m.needs("scripting"));
@@ -145,23 +151,27 @@ bool mapsAssimpAfter(const std::string& scenario) {
 TEST(MeshPlugin, LoadedOnlyForAMeshLevel) {
   GTEST_FLAG_SET(death_test_style, "threadsafe");
   const std::string root = PLATON_SOURCE_ROOT;
-  EXPECT_EXIT(std::exit(mapsAssimpAfter(root + "/tests/scenarios/prism_walk.lua") ? 0 : 1), ::testing::ExitedWithCode(0), "");
-  EXPECT_EXIT(std::exit(mapsAssimpAfter(root + "/tests/scenarios/cube_intro_walk.lua") ? 0 : 1), ::testing::ExitedWithCode(1), "");
+  EXPECT_EXIT(std::exit(mapsAssimpAfter(root + "/tests/scenarios/prism_walk.lua") ? 0 : 1),
+              ::testing::ExitedWithCode(0), "");
+  EXPECT_EXIT(std::exit(mapsAssimpAfter(root + "/tests/scenarios/cube_intro_walk.lua") ? 0 : 1),
+              ::testing::ExitedWithCode(1), "");
 }
 
 // A level folder with a manifest whose rules, player or level scripts are the test's.
 std::string levelWith(const Folder& folder, const std::string& levelScript, const std::string& rules = "") {
   folder.write("level.lua", levelScript);
   if (!rules.empty()) folder.write("rules.lua", rules);
-  return folder.write("scene.lua", "return { systems = { 'scripting' }, gravity = 0.35, scripts = { player = "
-                                   "'scripts/player.lua', progression = 'scripts/progression.lua', level = 'level.lua', "
-                                   "rules = " +
-                                       std::string(rules.empty() ? "'scripts/rules/game.lua'" : "'rules.lua'") + " } }");
+  return folder.write("scene.lua",
+                      "return { systems = { 'scripting' }, gravity = 0.35, scripts = { player = "
+                      "'scripts/player.lua', progression = 'scripts/progression.lua', level = 'level.lua', "
+                      "rules = " +
+                          std::string(rules.empty() ? "'scripts/rules/game.lua'" : "'rules.lua'") + " } }");
 }
 
 const char* kFloorLevel =
     "local level = { start = { face = 0, x = 600, y = 700 } }\n"
-    "function level.build(game) for i = 1, game.world.faceCount() do game.world.line(game.world.face(i), 0, 512, 4096, 512) end end\n"
+    "function level.build(game) for i = 1, game.world.faceCount() do game.world.line(game.world.face(i), 0, 512, 4096, "
+    "512) end end\n"
     "return level\n";
 
 std::string scenarioFor(const Folder& folder, const std::string& scene, const std::string& body) {
@@ -181,16 +191,15 @@ TEST(Scripts, AnErrorInARuleCallbackNamesItsLineAndTheWorldStaysWhole) {
 
 TEST(Scripts, AStaleEntityHandleIsALuaError) {
   Folder folder("stale");
-  const std::string scene =
-      levelWith(folder,
-                "local level = { start = { face = 0, x = 600, y = 700 } }\n"
-                "function level.tick(game, frame)\n"
-                "  if frame == 2 then\n"
-                "    local e = game.world.createEntity { circle = 10 }\n"
-                "    game.world.destroyEntity(e)\n"
-                "    game.world.velocity(e)\n"
-                "  end\n"
-                "end\nreturn level\n");
+  const std::string scene = levelWith(folder,
+                                      "local level = { start = { face = 0, x = 600, y = 700 } }\n"
+                                      "function level.tick(game, frame)\n"
+                                      "  if frame == 2 then\n"
+                                      "    local e = game.world.createEntity { circle = 10 }\n"
+                                      "    game.world.destroyEntity(e)\n"
+                                      "    game.world.velocity(e)\n"
+                                      "  end\n"
+                                      "end\nreturn level\n");
   const ScenarioResult r = runScenario(scenarioFor(folder, scene, "frames = 10"));
   EXPECT_FALSE(r.passed);
   EXPECT_NE(r.message.find("level.lua:6: argument 1: stale entity handle"), std::string::npos) << r.message;
@@ -227,24 +236,23 @@ TEST(Scripts, ALevelScriptCannotReachTheMachine) {
 
 TEST(Scenarios, AHazardKillsAndTheGoalWins) {
   Folder folder("hazard");
-  const std::string scene =
-      levelWith(folder,
-                "local level = { start = { face = 0, x = 600, y = 700 } }\n"
-                "function level.build(game)\n"
-                "  local w = game.world\n"
-                "  w.line(0, 0, 512, 4096, 512)\n"
-                "  w.line(0, 1500, 512, 1500, 600, 1)\n"  // a low hazard post on the floor
-                "  w.line(0, 3000, 520, 3000, 3000, 2)\n"  // the goal beyond it
-                "end\nreturn level\n");
+  const std::string scene = levelWith(folder,
+                                      "local level = { start = { face = 0, x = 600, y = 700 } }\n"
+                                      "function level.build(game)\n"
+                                      "  local w = game.world\n"
+                                      "  w.line(0, 0, 512, 4096, 512)\n"
+                                      "  w.line(0, 1500, 512, 1500, 600, 1)\n"   // a low hazard post on the floor
+                                      "  w.line(0, 3000, 520, 3000, 3000, 2)\n"  // the goal beyond it
+                                      "end\nreturn level\n");
   // Walking right runs into the hazard: one death, back at the start, no goal.
   const ScenarioResult dies = runScenario(scenarioFor(
       folder, scene, "frames = 200, input = { { hold = 'right', from = 1, to = 200 } }, expect = { deaths = 1 }"));
   EXPECT_TRUE(dies.passed) << dies.message;
   // Jumping over it reaches the goal.
-  const ScenarioResult wins = runScenario(
-      scenarioFor(folder, scene,
-                  "frames = 600, input = { { hold = 'right', from = 1, to = 600 }, { press = 'jump', at = 85, frames = 30 } },"
-                  " expect = { goal_by = 600, deaths = 0 }"));
+  const ScenarioResult wins = runScenario(scenarioFor(
+      folder, scene,
+      "frames = 600, input = { { hold = 'right', from = 1, to = 600 }, { press = 'jump', at = 85, frames = 30 } },"
+      " expect = { goal_by = 600, deaths = 0 }"));
   EXPECT_TRUE(wins.passed) << wins.message;
 }
 
@@ -256,12 +264,14 @@ TEST(Scenarios, FailWhenTheirExpectationsDoNotHold) {
       folder, scene, "frames = 400, input = { { hold = 'right', from = 1, to = 400 } }, expect = { goal_by = 100 }"));
   EXPECT_FALSE(early.passed);
   EXPECT_NE(early.message.find("goal not reached by frame 100"), std::string::npos) << early.message;
-  const ScenarioResult hash = runScenario(scenarioFor(folder, scene, "frames = 10, expect = { hash = { [5] = '0000' } }"));
+  const ScenarioResult hash =
+      runScenario(scenarioFor(folder, scene, "frames = 10, expect = { hash = { [5] = '0000' } }"));
   EXPECT_FALSE(hash.passed);
   EXPECT_NE(hash.message.find("frame 5: state hash"), std::string::npos) << hash.message;
   const ScenarioResult face = runScenario(scenarioFor(folder, scene, "frames = 10, expect = { face = { [5] = 3 } }"));
   EXPECT_NE(face.message.find("frame 5: player on face 0, expected face 3"), std::string::npos) << face.message;
-  const ScenarioResult bad = runScenario(scenarioFor(folder, scene, "frames = 10, input = { { hold = 'fly', from = 1, to = 2 } }"));
+  const ScenarioResult bad =
+      runScenario(scenarioFor(folder, scene, "frames = 10, input = { { hold = 'fly', from = 1, to = 2 } }"));
   EXPECT_NE(bad.message.find("input[1]: unknown button"), std::string::npos) << bad.message;
 }
 

@@ -43,7 +43,9 @@ stage::Level emptyLevel(stage::Solid solid, int32_t size, const stage::Stage& s)
 // much of one side open (optionally shut by a door instead).
 void wallIn(stage::Level& level, double half, double angle, double gap, bool door) {
   const Point g{double(level.goal.position.x), double(level.goal.position.y)};
-  auto at = [&](double u, double v) { return unit({g.x + u * std::cos(angle) - v * std::sin(angle), g.y + u * std::sin(angle) + v * std::cos(angle)}); };
+  auto at = [&](double u, double v) {
+    return unit({g.x + u * std::cos(angle) - v * std::sin(angle), g.y + u * std::sin(angle) + v * std::cos(angle)});
+  };
   auto& lines = level.faces[size_t(level.goal.face)].lines;
   const Point square[4] = {{-half, -half}, {half, -half}, {half, half}, {-half, half}};
   for (int k = 0; k < 4; ++k) {
@@ -70,7 +72,8 @@ TEST(Check, WalledInGoalsAreRefusedAndOpenOnesAcceptedAtEverySize) {
     for (const stage::Solid solid : stage::kSolids) {
       const stage::Stage s = stage::platonicStage(solid, size);
       for (int i = 0; i < 3; ++i) {
-        SCOPED_TRACE(std::string(stage::solidName(solid)) + " size " + std::to_string(size) + " case " + std::to_string(i));
+        SCOPED_TRACE(std::string(stage::solidName(solid)) + " size " + std::to_string(size) + " case " +
+                     std::to_string(i));
         // Wall squares from just round the goal to a fifth of the face (long walls at 2^24).
         const double inradius = 0.28 * size;  // the pentagon's and triangle's inner circles are wider
         const double half = i == 2 ? 0.2 * inradius : rng.uniform(300, std::min(1200.0, 0.5 * inradius));
@@ -102,7 +105,8 @@ TEST(Check, AnOpenLevelIsAcceptedAtEverySize) {
       const double floorY = std::min(0.1 * size, 512.0);
       for (int f = 0; f < 2; ++f) {
         const auto& c = s.faces[size_t(f)].corners;
-        level.faces[size_t(f)].lines.push_back({unit({0.3 * c[1].x, floorY}), unit({0.7 * c[1].x, floorY}), false, 0, 20, 1});
+        level.faces[size_t(f)].lines.push_back(
+            {unit({0.3 * c[1].x, floorY}), unit({0.7 * c[1].x, floorY}), false, 0, 20, 1});
       }
       if (size < 400) level.faces[0].lines.clear(), level.faces[1].lines.clear();  // no room for a floor and the player
       try {
@@ -139,18 +143,20 @@ TEST(Check, TheStartNeedsRoomAcrossAnEdge) {
       const double mx = -fy / flen, my = fx / flen;
       const Point foot{p.x + (1 - t) * fx + there * mx, p.y + (1 - t) * fy + there * my};
       level.faces[size_t(g)].lines.push_back({unit({foot.x - 300 * fx / flen, foot.y - 300 * fy / flen}),
-                                              unit({foot.x + 300 * fx / flen, foot.y + 300 * fy / flen}), false, 0, 30, 1});
+                                              unit({foot.x + 300 * fx / flen, foot.y + 300 * fy / flen}), false, 0, 30,
+                                              1});
       std::string why = "(accepted)";
       try {
         stage::checkLevelOnStage(level, s);
       } catch (const stage::StageError& e) {
         why = e.what();
       }
-      SCOPED_TRACE(std::string(stage::solidName(solid)) + " edge " + std::to_string(k) + ": " + std::to_string(here) + " + " +
-                   std::to_string(there) + ": " + why);
+      SCOPED_TRACE(std::string(stage::solidName(solid)) + " edge " + std::to_string(k) + ": " + std::to_string(here) +
+                   " + " + std::to_string(there) + ": " + why);
       if (here + there < 98) {
         EXPECT_NE(why.find("is inside a wall: "), std::string::npos);
-        EXPECT_NE(why.find("from the segment on line 30 (on face " + std::to_string(g) + ", across the edge)"), std::string::npos);
+        EXPECT_NE(why.find("from the segment on line 30 (on face " + std::to_string(g) + ", across the edge)"),
+                  std::string::npos);
         ++refused;
       } else if (here + there > 102) {
         EXPECT_EQ(why, "(accepted)");
@@ -182,7 +188,8 @@ TEST(Check, FacesTooNarrowForThePlayerAreWarnedOf) {
   bool all = false;
   for (const auto& w : report.warnings)
     all = all || (stage::describe(w.where) + w.message) ==
-                     "t.level:5:1: faces 0, 1, 2, 3 are narrower than the default player (192 units across); the narrowest, face 0, "
+                     "t.level:5:1: faces 0, 1, 2, 3 are narrower than the default player (192 units across); the "
+                     "narrowest, face 0, "
                      "is 129 units wide";
   EXPECT_TRUE(all);
   const stage::Level big = stage::parseLevel("TETRAHEDRON\n0 1000 600\n1 1000 600\n4096\n%\n%\n%\n%\n", "t.level");
@@ -207,11 +214,15 @@ void putInACorner(stage::Level& level, const stage::Stage& s, stage::LevelPoint&
   const Point o{c.x + rng.uniform(-spread, spread), c.y + rng.uniform(-spread, spread)};
   const double cosine = std::round(std::cos(angle) * 1e12) / 1e12, sine = std::round(std::sin(angle) * 1e12) / 1e12;
   const Vec2 corner = unit(o);
-  auto at = [&](double u, double v) { return unit({corner.x + u * cosine - v * sine, corner.y + u * sine + v * cosine}); };
+  auto at = [&](double u, double v) {
+    return unit({corner.x + u * cosine - v * sine, corner.y + u * sine + v * cosine});
+  };
   auto& lines = level.faces[size_t(p.face)].lines;
   lines.push_back({at(0, 0), at(length, 0), false, 0, 20, 1});
   if (twoWalls) lines.push_back({at(0, 0), at(0, length), false, 0, 21, 1});
-  const double fromFloor = square ? 100 : rng.uniform(100.5, 110), fromWall = !twoWalls ? length / 2 : square ? 100 : rng.uniform(100.5, 110);
+  const double fromFloor = square ? 100 : rng.uniform(100.5, 110), fromWall = !twoWalls ? length / 2
+                                                                              : square  ? 100
+                                                                                        : rng.uniform(100.5, 110);
   p.position = at(fromWall, fromFloor);
 }
 
@@ -252,8 +263,9 @@ TEST(Check, AStartOrGoalInARoomsCornerIsReachable) {
         ++checked;
         const stage::CheckReport report = stage::checkLevel(level, s);
         EXPECT_TRUE(report.errors.empty() && !undecided(report))
-            << stage::solidName(solid) << " size " << size << " case " << i << ": start (" << level.start.position.x << ", "
-            << level.start.position.y << ")\n" << findings(report);
+            << stage::solidName(solid) << " size " << size << " case " << i << ": start (" << level.start.position.x
+            << ", " << level.start.position.y << ")\n"
+            << findings(report);
       }
     }
   EXPECT_GT(checked, 400);
@@ -268,12 +280,14 @@ TEST(Check, AStartOrGoalInARoomsCornerIsReachable) {
       for (int32_t w = 0; w < 16; ++w) {
         stage::Level level = emptyLevel(solid, size, s);
         const Vec2 corner{base.x + w, base.y + w};
-        level.faces[0].lines = {{corner, {corner.x + length, corner.y}, false, 0, 20, 1}, {corner, {corner.x, corner.y + length}, false, 0, 21, 1}};
+        level.faces[0].lines = {{corner, {corner.x + length, corner.y}, false, 0, 20, 1},
+                                {corner, {corner.x, corner.y + length}, false, 0, 21, 1}};
         level.start.position = {corner.x + 100, corner.y + 100};
         stage::checkLevelOnStage(level, s);
         const stage::CheckReport report = stage::checkLevel(level, s);
         EXPECT_TRUE(report.errors.empty() && !undecided(report))
-            << stage::solidName(solid) << " size " << size << " corner moved " << w << "\n" << findings(report);
+            << stage::solidName(solid) << " size " << size << " corner moved " << w << "\n"
+            << findings(report);
       }
     }
 }
@@ -291,7 +305,8 @@ std::string postsLevel(int posts, bool sealed) {
     text += "%\n";
     for (int c = 0; c < perFace; ++c) {
       const int x = 400 + (c / k) * step, y = 400 + (c % k) * step;
-      text += std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(x + 1) + " " + std::to_string(y) + "\n";
+      text +=
+          std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(x + 1) + " " + std::to_string(y) + "\n";
     }
   }
   return text;
@@ -313,7 +328,8 @@ TEST(Check, ManyShortWallsFarApartLeaveTheAnswerDecided) {
     const stage::CheckReport refused = stage::checkLevel(sealed, stage::platonicStageOf(sealed));
     ASSERT_EQ(refused.errors.size(), 1u) << findings(refused);
     EXPECT_EQ(stage::describe(refused.errors[0].where) + refused.errors[0].message,
-              "posts.level:3:1: no path reaches the goal from the start (walls seal it off; see docs/level-format.md, \"platon check\")");
+              "posts.level:3:1: no path reaches the goal from the start (walls seal it off; see docs/level-format.md, "
+              "\"platon check\")");
   }
 }
 
@@ -354,7 +370,8 @@ TEST(Check, WallsDrawnInPiecesSealAsWholeWallsDo) {
         stage::Level level = emptyLevel(solid, size, s);
         level.goal.position = g;
         auto& lines = level.faces[1].lines;
-        const Vec2 corners[4] = {{g.x - 400, g.y - 400}, {g.x + 400, g.y - 400}, {g.x + 400, g.y + 400}, {g.x - 400, g.y + 400}};
+        const Vec2 corners[4] = {
+            {g.x - 400, g.y - 400}, {g.x + 400, g.y - 400}, {g.x + 400, g.y + 400}, {g.x - 400, g.y + 400}};
         for (int k = 0; k < 4; ++k) {
           const Vec2 a = corners[k], b = corners[(k + 1) % 4];
           const int32_t dx = (b.x - a.x) / 800, dy = (b.y - a.y) / 800;  // a unit step along the side
@@ -365,14 +382,16 @@ TEST(Check, WallsDrawnInPiecesSealAsWholeWallsDo) {
             if (!left) {
               lines.push_back({from, to, false, 0, 30, 1});
               lines.push_back({to, from, false, 0, 31, 1});  // again, the other way
-              if (piece > 2) lines.push_back({{from.x + dx, from.y + dy}, {to.x + dx, to.y + dy}, false, 0, 32, 1});  // overlapping
+              if (piece > 2)
+                lines.push_back({{from.x + dx, from.y + dy}, {to.x + dx, to.y + dy}, false, 0, 32, 1});  // overlapping
             }
             t += piece;
           }
         }
         stage::checkLevelOnStage(level, s);
         const stage::CheckReport report = stage::checkLevel(level, s);
-        SCOPED_TRACE(std::string(stage::solidName(solid)) + " size " + std::to_string(size) + ", " + std::to_string(open) + " units left out");
+        SCOPED_TRACE(std::string(stage::solidName(solid)) + " size " + std::to_string(size) + ", " +
+                     std::to_string(open) + " units left out");
         if (open < 100) {
           ASSERT_EQ(report.errors.size(), 1u) << findings(report);
           EXPECT_NE(report.errors[0].message.find("no path reaches the goal"), std::string::npos);

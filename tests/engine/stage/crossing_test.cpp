@@ -48,64 +48,64 @@ double outside(const std::vector<Vec2>& corners, Vec2 p) {
   return worst;
 }
 
-physics::Convex shapeNumber(int k) {
-  return k == 0 ? physics::Convex::regular(12, 60) : physics::Convex::box(50, 80);
-}
+physics::Convex shapeNumber(int k) { return k == 0 ? physics::Convex::regular(12, 60) : physics::Convex::box(50, 80); }
 
-// Over every edge of every solid (faces of 4,096 and of 2^24 units), from both faces (each face's every edge), at speeds 3, 17 and 61
-// units a frame, three headings, two places along the edge, a round body and a box (which meets
-// the edge with a corner first); then the velocity reversed for as many frames: back where it
-// started within 4 units (rounding at each warp: docs/level-format.md).
+// Over every edge of every solid (faces of 4,096 and of 2^24 units), from both faces (each face's every edge), at
+// speeds 3, 17 and 61 units a frame, three headings, two places along the edge, a round body and a box (which meets the
+// edge with a corner first); then the velocity reversed for as many frames: back where it started within 4 units
+// (rounding at each warp: docs/level-format.md).
 TEST(Crossing, EveryEdgeBothWaysAndBack) {
   int crossings = 0;
   double worstReturn = 0;
   for (const int32_t size : {4096, 1 << 24})  // a small face and the level format's largest
-  for (const stage::Solid solid : stage::kSolids) {
-    auto b = build(solid, size, 0);
-    physics::World& world = b->world;
-    for (size_t f = 0; f < b->stage.faceCount(); ++f) {
-      const stage::StageFace& face = b->stage.faces[f];
-      const size_t n = face.corners.size();
-      for (size_t i = 0; i < n; ++i) {
-        const Vec2 a = face.corners[i], c = face.corners[(i + 1) % n];
-        const double ex = double(c.x) - a.x, ey = double(c.y) - a.y, len = std::hypot(ex, ey);
-        const double ox = ey / len, oy = -ex / len;  // outward: right of the counter-clockwise edge
-        for (const double along : {0.35, 0.6})
-          for (const double heading : {-0.7, 0.0, 0.5})
-            for (const int speed : {3, 17, 61})
-              for (int shape = 0; shape < 2; ++shape) {
-                SCOPED_TRACE(std::string(stage::solidName(solid)) + " size " + std::to_string(size) + " face " + std::to_string(f) + " edge " +
-                             std::to_string(i) + " along " + std::to_string(along) + " heading " +
-                             std::to_string(heading) + " speed " + std::to_string(speed) + " shape " + std::to_string(shape));
-                const Vec2 start{static_cast<int32_t>(std::lround(a.x + ex * along - ox * 300)),
-                                 static_cast<int32_t>(std::lround(a.y + ey * along - oy * 300))};
-                const physics::EntityId body = world.createEntity(shapeNumber(shape));
-                world.insert(body, b->stage.part(f), start, 0);
-                const double vx = ox * std::cos(heading) - oy * std::sin(heading);
-                const double vy = ox * std::sin(heading) + oy * std::cos(heading);
-                world.setVelocity(body, {std::llround(vx * speed * kQ16), std::llround(vy * speed * kQ16)});
-                const physics::MapPartId target = b->stage.part(size_t(face.neighbours[i].face));
-                int frames = 0;
-                while (frames < 4000 && !(world.entity(body).instanceCount() == 1 && world.entity(body).part() == target)) {
-                  world.solve();
-                  ++frames;
-                  ASSERT_TRUE(world.entity(body).inserted());
+    for (const stage::Solid solid : stage::kSolids) {
+      auto b = build(solid, size, 0);
+      physics::World& world = b->world;
+      for (size_t f = 0; f < b->stage.faceCount(); ++f) {
+        const stage::StageFace& face = b->stage.faces[f];
+        const size_t n = face.corners.size();
+        for (size_t i = 0; i < n; ++i) {
+          const Vec2 a = face.corners[i], c = face.corners[(i + 1) % n];
+          const double ex = double(c.x) - a.x, ey = double(c.y) - a.y, len = std::hypot(ex, ey);
+          const double ox = ey / len, oy = -ex / len;  // outward: right of the counter-clockwise edge
+          for (const double along : {0.35, 0.6})
+            for (const double heading : {-0.7, 0.0, 0.5})
+              for (const int speed : {3, 17, 61})
+                for (int shape = 0; shape < 2; ++shape) {
+                  SCOPED_TRACE(std::string(stage::solidName(solid)) + " size " + std::to_string(size) + " face " +
+                               std::to_string(f) + " edge " + std::to_string(i) + " along " + std::to_string(along) +
+                               " heading " + std::to_string(heading) + " speed " + std::to_string(speed) + " shape " +
+                               std::to_string(shape));
+                  const Vec2 start{static_cast<int32_t>(std::lround(a.x + ex * along - ox * 300)),
+                                   static_cast<int32_t>(std::lround(a.y + ey * along - oy * 300))};
+                  const physics::EntityId body = world.createEntity(shapeNumber(shape));
+                  world.insert(body, b->stage.part(f), start, 0);
+                  const double vx = ox * std::cos(heading) - oy * std::sin(heading);
+                  const double vy = ox * std::sin(heading) + oy * std::cos(heading);
+                  world.setVelocity(body, {std::llround(vx * speed * kQ16), std::llround(vy * speed * kQ16)});
+                  const physics::MapPartId target = b->stage.part(size_t(face.neighbours[i].face));
+                  int frames = 0;
+                  while (frames < 4000 &&
+                         !(world.entity(body).instanceCount() == 1 && world.entity(body).part() == target)) {
+                    world.solve();
+                    ++frames;
+                    ASSERT_TRUE(world.entity(body).inserted());
+                  }
+                  ASSERT_EQ(world.entity(body).part(), target) << "did not cross in " << frames << " frames";
+                  const physics::Vec2w v = world.entity(body).velocity();
+                  world.setVelocity(body, {-v.x, -v.y});
+                  for (int k = 0; k < frames; ++k) world.solve();
+                  const physics::EntityView e = world.entity(body);
+                  ASSERT_EQ(e.part(), b->stage.part(f));
+                  const double back = length(e.position(), start);
+                  worstReturn = std::max(worstReturn, back);
+                  EXPECT_LE(back, 4.0);
+                  world.destroyEntity(body);
+                  ++crossings;
                 }
-                ASSERT_EQ(world.entity(body).part(), target) << "did not cross in " << frames << " frames";
-                const physics::Vec2w v = world.entity(body).velocity();
-                world.setVelocity(body, {-v.x, -v.y});
-                for (int k = 0; k < frames; ++k) world.solve();
-                const physics::EntityView e = world.entity(body);
-                ASSERT_EQ(e.part(), b->stage.part(f));
-                const double back = length(e.position(), start);
-                worstReturn = std::max(worstReturn, back);
-                EXPECT_LE(back, 4.0);
-                world.destroyEntity(body);
-                ++crossings;
-              }
+        }
       }
     }
-  }
   RecordProperty("crossings", crossings);
   std::printf("%d crossings, worst return %.2f units\n", crossings, worstReturn);
 }
@@ -116,13 +116,16 @@ namespace {
 // well away from the body's origin (a shape need not contain its origin).
 physics::Convex randomBody(platon::testing::Rng& rng) {
   switch (rng.between(0, 3)) {
-    case 0: return physics::Convex::regular(rng.between(3, 16), rng.between(20, 300));
-    case 1: return physics::Convex::box(rng.between(10, 200), rng.between(10, 200));
+    case 0:
+      return physics::Convex::regular(rng.between(3, 16), rng.between(20, 300));
+    case 1:
+      return physics::Convex::box(rng.between(10, 200), rng.between(10, 200));
     default:
       for (;;) {
         const int r = rng.between(20, 250), off = rng.between(0, 1) ? rng.between(-250, 250) : 0;
         std::vector<Vec2> points;
-        for (int i = rng.between(3, 9); i > 0; --i) points.push_back({off + rng.between(-r, r), off / 2 + rng.between(-r, r)});
+        for (int i = rng.between(3, 9); i > 0; --i)
+          points.push_back({off + rng.between(-r, r), off / 2 + rng.between(-r, r)});
         std::vector<Vec2> hull = physics::convexHull(points);
         if (hull.size() >= 3) return physics::Convex(hull);
       }
@@ -136,7 +139,8 @@ std::pair<Vec2, double> centreAndReach(const physics::InstanceView& i) {
   cx /= double(i.shape.size()), cy /= double(i.shape.size());
   double reach = 0;
   for (const Vec2 v : i.shape) reach = std::max(reach, std::hypot(v.x - cx, v.y - cy));
-  return {{static_cast<int32_t>(std::lround(i.position.x + cx)), static_cast<int32_t>(std::lround(i.position.y + cy))}, reach};
+  return {{static_cast<int32_t>(std::lround(i.position.x + cx)), static_cast<int32_t>(std::lround(i.position.y + cy))},
+          reach};
 }
 
 // How far `p` lies inside the convex polygon `corners` (negative outside).
@@ -184,7 +188,8 @@ ReturnFigures retraceRandomCrossings(Built* b, int trials, uint64_t seed, double
     const physics::Convex shape = randomBody(rng);
     const auto turn = static_cast<physics::Angle>(rng.next());
     const physics::EntityId body = world.createEntity(shape);
-    const Vec2 start{static_cast<int32_t>(std::lround(a.x + ex * along - ox * back)), static_cast<int32_t>(std::lround(a.y + ey * along - oy * back))};
+    const Vec2 start{static_cast<int32_t>(std::lround(a.x + ex * along - ox * back)),
+                     static_cast<int32_t>(std::lround(a.y + ey * along - oy * back))};
     try {
       world.insert(body, b->stage.part(f), start, turn);
     } catch (const physics::Error&) {
@@ -193,13 +198,15 @@ ReturnFigures retraceRandomCrossings(Built* b, int trials, uint64_t seed, double
     }
     const physics::EntityView e0 = world.entity(body);
     const auto [centre0, reach] = centreAndReach(*e0.instances().begin());
-    if (e0.instanceCount() != 1 || depthInside(face.corners, centre0) < reach + 2) {  // wholly inside its face to begin with
+    if (e0.instanceCount() != 1 ||
+        depthInside(face.corners, centre0) < reach + 2) {  // wholly inside its face to begin with
       world.destroyEntity(body);
       continue;
     }
     ++out.trials;
     const Vec2 from = e0.position();
-    const double vx = ox * std::cos(heading) - oy * std::sin(heading), vy = ox * std::sin(heading) + oy * std::cos(heading);
+    const double vx = ox * std::cos(heading) - oy * std::sin(heading),
+                 vy = ox * std::sin(heading) + oy * std::cos(heading);
     world.setVelocity(body, {std::llround(vx * speed * kQ16), std::llround(vy * speed * kQ16)});
     const physics::MapPartId target = b->stage.part(size_t(face.neighbours[edge].face));
     std::vector<physics::MapPartId> touched;
@@ -222,7 +229,8 @@ ReturnFigures retraceRandomCrossings(Built* b, int trials, uint64_t seed, double
       last = std::move(now);
     };
     int frames = 0;
-    while (frames < 400 && !(world.entity(body).instanceCount() == 1 && world.entity(body).part() == target)) step(), ++frames;
+    while (frames < 400 && !(world.entity(body).instanceCount() == 1 && world.entity(body).part() == target))
+      step(), ++frames;
     const bool crossed = world.entity(body).part() == target && world.entity(body).instanceCount() == 1;
     if (crossed) {
       const physics::Vec2w v = world.entity(body).velocity();
@@ -237,8 +245,9 @@ ReturnFigures retraceRandomCrossings(Built* b, int trials, uint64_t seed, double
       const double error = length(e.position(), from);
       if (error > out.worst) {
         out.worst = error;
-        out.worstCase = "face " + std::to_string(f) + " edge " + std::to_string(edge) + " along " + std::to_string(along) + " heading " +
-                        std::to_string(heading) + " speed " + std::to_string(speed) + " vertices " + std::to_string(shape.size());
+        out.worstCase = "face " + std::to_string(f) + " edge " + std::to_string(edge) + " along " +
+                        std::to_string(along) + " heading " + std::to_string(heading) + " speed " +
+                        std::to_string(speed) + " vertices " + std::to_string(shape.size());
       }
       out.overBound += error > bound;
     }
@@ -258,10 +267,11 @@ ReturnFigures retraceRandomCrossings(Built* b, int trials, uint64_t seed, double
 TEST(Crossing, RandomBodiesOverRandomEdgesComeBack) {
   for (const int32_t size : {4096, 1 << 24})
     for (const stage::Solid solid : stage::kSolids) {
-      const ReturnFigures r = retraceRandomCrossings(build(solid, size, 0).get(), size == 4096 ? 1500 : 300, 77 + static_cast<uint64_t>(solid), 5.0);
+      const ReturnFigures r = retraceRandomCrossings(build(solid, size, 0).get(), size == 4096 ? 1500 : 300,
+                                                     77 + static_cast<uint64_t>(solid), 5.0);
       SCOPED_TRACE(std::string(stage::solidName(solid)) + " size " + std::to_string(size) + ", worst: " + r.worstCase);
-      std::printf("%s, faces of %d: %d trials, %d clean crossings, worst return %.2f units\n", stage::solidName(solid).data(), size,
-                  r.trials, r.clean, r.worst);
+      std::printf("%s, faces of %d: %d trials, %d clean crossings, worst return %.2f units\n",
+                  stage::solidName(solid).data(), size, r.trials, r.clean, r.worst);
       EXPECT_GT(r.clean, r.trials / 2);
       EXPECT_EQ(r.overBound, 0);
       EXPECT_EQ(r.cornerReturnsWhenClean, 0);
@@ -319,9 +329,10 @@ TEST(Crossing, RandomBodiesOverRandomMeshStagesComeBack) {
     stage::addStageToWorld(b->stage, b->world, 0);
     for (size_t f = 0; f < b->stage.faceCount(); ++f) b->world.mapPart(b->stage.part(f)).initialize();
     const ReturnFigures r = retraceRandomCrossings(b.get(), 400, 500 + static_cast<uint64_t>(k), 5.0);
-    SCOPED_TRACE("mesh stage " + std::to_string(k) + " (" + std::to_string(b->stage.faceCount()) + " faces), worst: " + r.worstCase);
-    std::printf("mesh stage %d, %zu faces: %d trials, %d clean crossings, worst return %.2f units\n", k, b->stage.faceCount(), r.trials,
-                r.clean, r.worst);
+    SCOPED_TRACE("mesh stage " + std::to_string(k) + " (" + std::to_string(b->stage.faceCount()) +
+                 " faces), worst: " + r.worstCase);
+    std::printf("mesh stage %d, %zu faces: %d trials, %d clean crossings, worst return %.2f units\n", k,
+                b->stage.faceCount(), r.trials, r.clean, r.worst);
     EXPECT_GT(r.clean, r.trials / 3);
     EXPECT_EQ(r.overBound, 0);
     EXPECT_EQ(r.cornerReturnsWhenClean, 0);
@@ -359,7 +370,8 @@ TEST(Crossing, ThrownAtEveryCornerNeverLeavesTheFaces) {
                            static_cast<int32_t>(std::lround(corner.y + dy / d * 500))};
           const physics::EntityId body = world.createEntity(shapeNumber(shape));
           world.insert(body, b->stage.part(f), start, 0);
-          const double vx = -(dx * std::cos(turn) - dy * std::sin(turn)) / d, vy = -(dx * std::sin(turn) + dy * std::cos(turn)) / d;
+          const double vx = -(dx * std::cos(turn) - dy * std::sin(turn)) / d,
+                       vy = -(dx * std::sin(turn) + dy * std::cos(turn)) / d;
           world.setVelocity(body, {std::llround(vx * speed * kQ16), std::llround(vy * speed * kQ16)});
           world.setAngularVelocity(body, rng.between(-3000000, 3000000));
           for (int frame = 1; frame <= 400; ++frame) {
@@ -370,7 +382,8 @@ TEST(Crossing, ThrownAtEveryCornerNeverLeavesTheFaces) {
             const double reach = 100 + std::hypot(double(v.x), double(v.y)) / kQ16;
             std::string all;
             for (const physics::InstanceView i : e.instances())
-              all += " face " + std::to_string(i.part) + " (" + std::to_string(i.position.x) + ", " + std::to_string(i.position.y) + ")";
+              all += " face " + std::to_string(i.part) + " (" + std::to_string(i.position.x) + ", " +
+                     std::to_string(i.position.y) + ")";
             for (const physics::InstanceView i : e.instances()) {
               const auto& corners = b->stage.faces[i.part - b->stage.firstPart].corners;
               ASSERT_LE(outside(corners, i.position), reach)
@@ -405,7 +418,9 @@ void walkAcross(Built& b, platon::testing::Rng& rng, const std::string& label) {
       const double x = p.x + (y - p.y) * (q.x - p.x) / (q.y - p.y);
       lo = std::min(lo, x), hi = std::max(hi, x);
     }
-    if (hi - lo > 200) part.line({static_cast<int32_t>(lo + 40), static_cast<int32_t>(y)}, {static_cast<int32_t>(hi - 40), static_cast<int32_t>(y)});
+    if (hi - lo > 200)
+      part.line({static_cast<int32_t>(lo + 40), static_cast<int32_t>(y)},
+                {static_cast<int32_t>(hi - 40), static_cast<int32_t>(y)});
     part.setGravity({0, -22938});
     part.initialize();
   }
@@ -431,7 +446,8 @@ void walkAcross(Built& b, platon::testing::Rng& rng, const std::string& label) {
       const double reach = 100 + std::hypot(double(e.velocity().x), double(e.velocity().y)) / kQ16;
       for (const physics::InstanceView i : e.instances())
         ASSERT_LE(outside(b.stage.faces[i.part - b.stage.firstPart].corners, i.position), reach)
-            << "frame " << frame << ": a copy at (" << i.position.x << ", " << i.position.y << ") is off face " << i.part;
+            << "frame " << frame << ": a copy at (" << i.position.x << ", " << i.position.y << ") is off face "
+            << i.part;
     }
     b.world.destroyEntity(body);
   }
@@ -471,11 +487,14 @@ TEST(Crossing, ABodyPushedIntoACubeVertexNeverFreezes) {
     const int foot = rng.between(1500, 3500);
     for (size_t f = 0; f < b->stage.faceCount(); ++f) {
       physics::MapPart& p = b->world.mapPart(b->stage.part(f));
-      if (f == 0) p.line({foot, 0}, {foot + static_cast<int32_t>(3000 * std::sin(lean)), static_cast<int32_t>(3000 * std::cos(lean))});
+      if (f == 0)
+        p.line({foot, 0},
+               {foot + static_cast<int32_t>(3000 * std::sin(lean)), static_cast<int32_t>(3000 * std::cos(lean))});
       p.setGravity({0, -int64_t{rng.between(15000, 40000)}});
       p.initialize();
     }
-    const physics::EntityId e = b->world.createEntity(physics::Convex::regular(rng.between(8, 24), rng.between(40, 160)));
+    const physics::EntityId e =
+        b->world.createEntity(physics::Convex::regular(rng.between(8, 24), rng.between(40, 160)));
     const int h = rng.between(1200, 2400);
     try {
       b->world.insert(e, 0, {foot + static_cast<int32_t>(h * std::tan(lean)) - 400, h}, 0);
@@ -541,7 +560,8 @@ VertexRuns driveBodiesIntoVertices(uint64_t seed, int layouts) {
         physics::MapPart& part = b->world.mapPart(b->stage.part(f));
         const auto& corners = b->stage.faces[f].corners;
         for (size_t k = 0; layout % 2 == 1 && k < corners.size(); ++k) {
-          const Vec2 c = corners[k], next = corners[(k + 1) % corners.size()], prev = corners[(k + corners.size() - 1) % corners.size()];
+          const Vec2 c = corners[k], next = corners[(k + 1) % corners.size()],
+                     prev = corners[(k + corners.size() - 1) % corners.size()];
           auto at = [&](Vec2 toward, double distance) {
             const double d = length(c, toward);
             return Vec2{static_cast<int32_t>(std::lround(c.x + (toward.x - c.x) * distance / d)),
@@ -549,7 +569,8 @@ VertexRuns driveBodiesIntoVertices(uint64_t seed, int layouts) {
           };
           // Across the corner from one edge to the other, or a stub standing on one edge.
           const Vec2 a = at(next, rng.uniform(40, 400));
-          const Vec2 e = rng.between(0, 1) ? at(prev, rng.uniform(40, 400)) : Vec2{(a.x + at(prev, 200).x) / 2, (a.y + at(prev, 200).y) / 2};
+          const Vec2 e = rng.between(0, 1) ? at(prev, rng.uniform(40, 400))
+                                           : Vec2{(a.x + at(prev, 200).x) / 2, (a.y + at(prev, 200).y) / 2};
           if (a == e) continue;
           part.line(a, e);
           walls[f].push_back({a, e});
@@ -567,9 +588,11 @@ VertexRuns driveBodiesIntoVertices(uint64_t seed, int layouts) {
         for (const Vec2 c : corners) cx += c.x / double(n), cy += c.y / double(n);
         const double dx = cx - corner.x, dy = cy - corner.y, d = std::hypot(dx, dy);
         const double from = rng.uniform(150, 900), aim = rng.uniform(-0.35, 0.35);
-        const Vec2 start{static_cast<int32_t>(std::lround(corner.x + dx / d * from)), static_cast<int32_t>(std::lround(corner.y + dy / d * from))};
-        const physics::EntityId body = b->world.createEntity(rng.between(0, 2) == 0 ? physics::Convex::box(rng.between(20, 90), rng.between(20, 90))
-                                                                                     : physics::Convex::regular(rng.between(3, 16), rng.between(30, 140)));
+        const Vec2 start{static_cast<int32_t>(std::lround(corner.x + dx / d * from)),
+                         static_cast<int32_t>(std::lround(corner.y + dy / d * from))};
+        const physics::EntityId body = b->world.createEntity(
+            rng.between(0, 2) == 0 ? physics::Convex::box(rng.between(20, 90), rng.between(20, 90))
+                                   : physics::Convex::regular(rng.between(3, 16), rng.between(30, 140)));
         try {
           b->world.insert(body, b->stage.part(f), start, 0);
         } catch (const physics::Error&) {
@@ -577,16 +600,19 @@ VertexRuns driveBodiesIntoVertices(uint64_t seed, int layouts) {
           continue;
         }
         // The push: toward the vertex as seen from the start, kept in whatever frame the body is in.
-        const double px = -(dx * std::cos(aim) - dy * std::sin(aim)) / d, py = -(dx * std::sin(aim) + dy * std::cos(aim)) / d;
+        const double px = -(dx * std::cos(aim) - dy * std::sin(aim)) / d,
+                     py = -(dx * std::sin(aim) + dy * std::cos(aim)) / d;
         const int64_t push = rng.between(6000, 40000), top = int64_t{rng.between(3, 60)} * kQ16;
-        const std::string name = std::string(stage::solidName(solid)) + " layout " + std::to_string(layout) + " trial " + std::to_string(trial);
+        const std::string name = std::string(stage::solidName(solid)) + " layout " + std::to_string(layout) +
+                                 " trial " + std::to_string(trial);
         Stuck stuck;
         Vec2 last = start;
         bool inWall = false;
         for (int frame = 0; frame < 400; ++frame) {
           const physics::Vec2w v = b->world.entity(body).velocity();
           const double along = double(v.x) * px + double(v.y) * py;
-          if (along < double(top)) b->world.setVelocity(body, {v.x + std::llround(px * double(push)), v.y + std::llround(py * double(push))});
+          if (along < double(top))
+            b->world.setVelocity(body, {v.x + std::llround(px * double(push)), v.y + std::llround(py * double(push))});
           const physics::SolveReport report = b->world.solve();
           const physics::EntityView e = b->world.entity(body);
           if (!e.inserted()) {
@@ -599,8 +625,8 @@ VertexRuns driveBodiesIntoVertices(uint64_t seed, int layouts) {
             for (const physics::Segment& wall : walls[i.part - b->stage.firstPart])
               if (physics::overlapsInterior(verts, wall)) {
                 inWall = true;
-                out.fail(name + ", frame " + std::to_string(frame) + ": a copy in a wall at (" + std::to_string(i.position.x) + ", " +
-                         std::to_string(i.position.y) + ")");
+                out.fail(name + ", frame " + std::to_string(frame) + ": a copy in a wall at (" +
+                         std::to_string(i.position.x) + ", " + std::to_string(i.position.y) + ")");
               }
           }
           // Moving: faster than one frame's push and gravity can make a body from rest.
@@ -611,7 +637,8 @@ VertexRuns driveBodiesIntoVertices(uint64_t seed, int layouts) {
         }
         out.inWalls += inWall;
         if (stuck.longestStill > 50) ++out.frozen, out.fail(name + ": frozen beside a vertex");
-        if (stuck.longestCornerRun > 3) ++out.putBackRunning, out.fail(name + ": put back by the corner rule frame after frame");
+        if (stuck.longestCornerRun > 3)
+          ++out.putBackRunning, out.fail(name + ": put back by the corner rule frame after frame");
         out.worstCornerRun = std::max(out.worstCornerRun, stuck.longestCornerRun);
         b->world.destroyEntity(body);
         ++out.runs;
@@ -629,8 +656,8 @@ VertexRuns driveBodiesIntoVertices(uint64_t seed, int layouts) {
 // lift re-planned its sub-move, 10 in 34,108 had a copy stepped into a wall.)
 TEST(Crossing, BodiesDrivenIntoAnyVertexNeverFreeze) {
   const VertexRuns r = driveBodiesIntoVertices(2026, 20);
-  std::printf("%d bodies, %d corner returns, %d frozen, %d put back running (longest %d frames), %d in a wall\n", r.runs, r.returns,
-              r.frozen, r.putBackRunning, r.worstCornerRun, r.inWalls);
+  std::printf("%d bodies, %d corner returns, %d frozen, %d put back running (longest %d frames), %d in a wall\n",
+              r.runs, r.returns, r.frozen, r.putBackRunning, r.worstCornerRun, r.inWalls);
   RecordProperty("bodies", r.runs);
   EXPECT_GT(r.runs, 3000);
   EXPECT_EQ(r.frozen, 0) << r.firstFailure;
@@ -644,8 +671,8 @@ TEST(Crossing, BodiesDrivenIntoAnyVertexNeverFreeze) {
 TEST(Crossing, DISABLED_ManyMoreBodiesDrivenIntoAnyVertexNeverFreeze) {
   for (const uint64_t seed : {1, 2, 3}) {
     const VertexRuns r = driveBodiesIntoVertices(seed, 60);
-    std::printf("seed %llu: %d bodies, %d frozen, %d put back running, %d in a wall\n", static_cast<unsigned long long>(seed), r.runs,
-                r.frozen, r.putBackRunning, r.inWalls);
+    std::printf("seed %llu: %d bodies, %d frozen, %d put back running, %d in a wall\n",
+                static_cast<unsigned long long>(seed), r.runs, r.frozen, r.putBackRunning, r.inWalls);
     EXPECT_EQ(r.frozen, 0) << r.firstFailure;
     EXPECT_EQ(r.putBackRunning, 0) << r.firstFailure;
     EXPECT_EQ(r.inWalls, 0) << r.firstFailure;

@@ -10,7 +10,6 @@
 
 #include "platon/stage/level_check.h"
 #include "platon/stage/net.h"
-
 #include "platon/testing/rng.h"
 
 using namespace platon;
@@ -72,9 +71,12 @@ TEST(LevelFormat, EveryMistakeNamesFileLineColumnAndWhy) {
     std::string text, expected;
   } cases[] = {
       {"", "t.level:1:1: the file ends before the solid (the first line)"},
-      {"CUBE\n", "t.level:1:1: unknown solid 'CUBE' (known: TETRAHEDRON, HEXAHEDRON, OCTAHEDRON, DODECAHEDRON, ICOSAHEDRON, or MESH file)"},
+      {"CUBE\n",
+       "t.level:1:1: unknown solid 'CUBE' (known: TETRAHEDRON, HEXAHEDRON, OCTAHEDRON, DODECAHEDRON, ICOSAHEDRON, or "
+       "MESH file)"},
       {"HEXAHEDRON extra\n", "t.level:1:12: solid: unexpected 'extra'"},
-      {"MESH ../../etc/passwd\n", "t.level:1:6: the mesh file must be a path inside the level's folder (no '/' at the start, no '..')"},
+      {"MESH ../../etc/passwd\n",
+       "t.level:1:6: the mesh file must be a path inside the level's folder (no '/' at the start, no '..')"},
       {"HEXAHEDRON\n", "t.level:2:1: the file ends before the start line (face x y [degrees])"},
       {"HEXAHEDRON\n0 600\n", "t.level:2:6: start (face x y [degrees]): too few values"},
       {"HEXAHEDRON\n0 6o0 700\n", "t.level:2:3: start x: '6o0' is not a number"},
@@ -84,7 +86,8 @@ TEST(LevelFormat, EveryMistakeNamesFileLineColumnAndWhy) {
       {"HEXAHEDRON\n0 600 700\n", "t.level:3:1: the file ends before the goal line ([face] x y)"},
       {"HEXAHEDRON\n0 600 700\n1 2 3 4\n", "t.level:3:7: goal ([face] x y): unexpected '4'"},
       {"HEXAHEDRON\n0 600 700\n0 2000 2000\n", "t.level:4:1: the file ends before the face size line"},
-      {"HEXAHEDRON\n0 600 700\n0 2000 2000\n10\n", "t.level:4:1: face size (units): 10 is out of range (64 to 16777216)"},
+      {"HEXAHEDRON\n0 600 700\n0 2000 2000\n10\n",
+       "t.level:4:1: face size (units): 10 is out of range (64 to 16777216)"},
       {header, "t.level:5:1: HEXAHEDRON has 6 faces; the file describes 0"},
       {header + "1 2 3 4\n", "t.level:5:1: expected '%', which starts face 0 (after the four header lines)"},
       {header + "%\n%\n%\n%\n%\n", "t.level:10:1: HEXAHEDRON has 6 faces; the file describes 5"},
@@ -93,17 +96,21 @@ TEST(LevelFormat, EveryMistakeNamesFileLineColumnAndWhy) {
       {header + "% gravity 1\n", "t.level:5:3: gravity needs two numbers: gx gy (units per frame per frame)"},
       {header + "%\n1 2 3\n", "t.level:6:6: a segment is x0 y0 x1 y1 [oneway] [tag]: too few values"},
       {header + "%\n1 2 1 2\n", "t.level:6:1: the segment has no length (both ends at one point)"},
-      {header + "%\n1 2 3 4 lava\n", "t.level:6:9: unknown segment word 'lava' (known: oneway, solid, hazard, goal, checkpoint, door N, switch N, tag N)"},
+      {header + "%\n1 2 3 4 lava\n",
+       "t.level:6:9: unknown segment word 'lava' (known: oneway, solid, hazard, goal, checkpoint, door N, switch N, "
+       "tag N)"},
       {header + "%\n1 2 3 4 hazard goal\n", "t.level:6:16: a segment has one tag at most"},
       {header + "%\n1 2 3 4 door\n", "t.level:6:9: door needs a number"},
       {header + "%\n1 2 3 4 door 1000\n", "t.level:6:14: door: 1000 is out of range (1 to 999)"},
       {header + "%\n100 100 5000 100\n%\n%\n%\n%\n%\n",
-       "t.level:6:1: the segment leaves face 0: (5000, 100) is outside it (its corners: (0, 0) (4096, 0) (4096, 4096) (0, 4096))"},
+       "t.level:6:1: the segment leaves face 0: (5000, 100) is outside it (its corners: (0, 0) (4096, 0) (4096, 4096) "
+       "(0, 4096))"},
       {header + "%\n100 650 1000 650\n%\n%\n%\n%\n%\n",
        "t.level:2:1: start (600, 700) is inside a wall: 50 units from the segment on line 6 (the player needs 100)"},
       {header + "%\n1950 2000 2050 2000\n%\n%\n%\n%\n%\n",
        "t.level:3:1: goal (2000, 2000) is inside a wall: 0 units from the segment on line 6 (the player needs 100)"},
-      {"HEXAHEDRON\n7 600 700\n0 2000 2000\n4096\n" + empty6, "t.level:2:1: start face 7 does not exist (faces 0 to 5)"},
+      {"HEXAHEDRON\n7 600 700\n0 2000 2000\n4096\n" + empty6,
+       "t.level:2:1: start face 7 does not exist (faces 0 to 5)"},
       {"HEXAHEDRON\n0 -600 700\n0 2000 2000\n4096\n" + empty6, "t.level:2:1: start (-600, 700) is outside face 0"},
       {"HEXAHEDRON\n0 600 700\n0 4000 2000\n4096\n" + empty6,
        "t.level:3:1: the goal's square (300 units wide) reaches over the edge of face 0"},
@@ -124,45 +131,73 @@ TEST(LevelFormat, WhatTheTextHidesIsShownInTheMessage) {
     std::string text, expected;
   } cases[] = {
       {"\xEF\xBB\xBF" + header + faces, "(accepted)"},
-      {"\xEF\xBB\xBF" "CUBE\n", "t.level:1:1: unknown solid 'CUBE' (known: TETRAHEDRON, HEXAHEDRON, OCTAHEDRON, DODECAHEDRON, ICOSAHEDRON, or MESH file)"},
-      {"\xEF\xBB\xBF\xEF\xBB\xBF" "HEXAHEDRON\n",
-       "t.level:1:1: unknown solid '\\x{EF}\\x{BB}\\x{BF}HEXAHEDRON' (known: TETRAHEDRON, HEXAHEDRON, OCTAHEDRON, DODECAHEDRON, ICOSAHEDRON, or MESH file)"},
+      {"\xEF\xBB\xBF"
+       "CUBE\n",
+       "t.level:1:1: unknown solid 'CUBE' (known: TETRAHEDRON, HEXAHEDRON, OCTAHEDRON, DODECAHEDRON, ICOSAHEDRON, or "
+       "MESH file)"},
+      {"\xEF\xBB\xBF\xEF\xBB\xBF"
+       "HEXAHEDRON\n",
+       "t.level:1:1: unknown solid '\\x{EF}\\x{BB}\\x{BF}HEXAHEDRON' (known: TETRAHEDRON, HEXAHEDRON, OCTAHEDRON, "
+       "DODECAHEDRON, ICOSAHEDRON, or MESH file)"},
       {"HEXAHEDRON\r0 600 700\r0 2000 2000\r4096\r",
-       "t.level:1:11: a CR (\\r) ends a line here without an LF: lines must end with LF or CR LF (CR-only line ends, as old Mac files have, are not read)"},
+       "t.level:1:11: a CR (\\r) ends a line here without an LF: lines must end with LF or CR LF (CR-only line ends, "
+       "as old Mac files have, are not read)"},
       {"HEXAHEDRON\r\n0 600\r700\r\n",
-       "t.level:2:6: a CR (\\r) ends a line here without an LF: lines must end with LF or CR LF (CR-only line ends, as old Mac files have, are not read)"},
+       "t.level:2:6: a CR (\\r) ends a line here without an LF: lines must end with LF or CR LF (CR-only line ends, as "
+       "old Mac files have, are not read)"},
       {"HEXAHEDRON\r\n0 600 700 \r \r\n0\r2000 2000\r\n",
-       "t.level:3:2: a CR (\\r) ends a line here without an LF: lines must end with LF or CR LF (CR-only line ends, as old Mac files have, are not read)"},
+       "t.level:3:2: a CR (\\r) ends a line here without an LF: lines must end with LF or CR LF (CR-only line ends, as "
+       "old Mac files have, are not read)"},
       {"HEXAHEDRON\r\n0 600 700\r\n0 2000 2000 \r\r\n4096\r\n" + faces, "(accepted)"},
       {"HEXAHEDRON\n0 600\0 700\n"s, "t.level:2:3: start x: '600\\x{00}' is not a number"},
-      {"HEXAHEDRON\n0 \xE2\x88\x92" "600 700\n", "t.level:2:3: start x: '\\x{E2}\\x{88}\\x{92}" "600' is not a number"},
-      {"HEXA\xC3\x89" "DRON\n", "t.level:1:1: unknown solid 'HEXA\\x{C3}\\x{89}" "DRON' (known: TETRAHEDRON, HEXAHEDRON, OCTAHEDRON, DODECAHEDRON, ICOSAHEDRON, or MESH file)"},
-      {"HEXAHEDRON\n0 " + digits + " 700\n", "t.level:2:3: start x: " + digits.substr(0, 40) + "... is out of range (-536870912 to 536870912)"},
-      {"HEXAHEDRON\n0 " + letters + " 700\n", "t.level:2:3: start x: '" + letters.substr(0, 40) + "...' is not a number"},
-      {header + "%\n1 2 3 4 " + letters + "\n", "t.level:6:9: unknown segment word '" + letters.substr(0, 40) + "...' (known: oneway, solid, hazard, goal, checkpoint, door N, switch N, tag N)"},
+      {"HEXAHEDRON\n0 \xE2\x88\x92"
+       "600 700\n",
+       "t.level:2:3: start x: '\\x{E2}\\x{88}\\x{92}"
+       "600' is not a number"},
+      {"HEXA\xC3\x89"
+       "DRON\n",
+       "t.level:1:1: unknown solid 'HEXA\\x{C3}\\x{89}"
+       "DRON' (known: TETRAHEDRON, HEXAHEDRON, OCTAHEDRON, DODECAHEDRON, ICOSAHEDRON, or MESH file)"},
+      {"HEXAHEDRON\n0 " + digits + " 700\n",
+       "t.level:2:3: start x: " + digits.substr(0, 40) + "... is out of range (-536870912 to 536870912)"},
+      {"HEXAHEDRON\n0 " + letters + " 700\n",
+       "t.level:2:3: start x: '" + letters.substr(0, 40) + "...' is not a number"},
+      {header + "%\n1 2 3 4 " + letters + "\n",
+       "t.level:6:9: unknown segment word '" + letters.substr(0, 40) +
+           "...' (known: oneway, solid, hazard, goal, checkpoint, door N, switch N, tag N)"},
       {header + "% gravity 0 -0.000001\n",
-       "t.level:5:3: gravity 0 -0.000001 rounds to none: gravity is kept in steps of 1/65536 unit per frame per frame (write 0 0 for none)"},
+       "t.level:5:3: gravity 0 -0.000001 rounds to none: gravity is kept in steps of 1/65536 unit per frame per frame "
+       "(write 0 0 for none)"},
       {header + "% gravity 0 -0.00001\n%\n%\n%\n%\n%\n", "(accepted)"},  // 0.65 of a step: one step
       {"MESH\n", "t.level:1:5: MESH needs a file name"},
-      {"HEXAHEDRON\n12000 600 700\n0 2000 2000\n4096\n" + faces, "t.level:2:1: start face 12000 does not exist (faces 0 to 5)"},
+      {"HEXAHEDRON\n12000 600 700\n0 2000 2000\n4096\n" + faces,
+       "t.level:2:1: start face 12000 does not exist (faces 0 to 5)"},
       // A face number out of range names the level's faces, below 0 too (it said "0 to 2147483647").
-      {"HEXAHEDRON\n-1 600 700\n0 2000 2000\n4096\n" + faces, "t.level:2:1: start face -1 does not exist (faces 0 to 5)"},
-      {"HEXAHEDRON\n1e10 600 700\n0 2000 2000\n4096\n" + faces, "t.level:2:1: start face 1e10 does not exist (faces 0 to 5)"},
-      {"TETRAHEDRON\n0 600 700\n-3 2000 800\n4096\n%\n%\n%\n%\n", "t.level:3:1: goal face -3 does not exist (faces 0 to 3)"},
-      {"MESH m.obj\n-1 10 10\n0 10 10\n4096\n%\n%\n%\n%\n%\n", "t.level:2:1: start face -1 does not exist (faces 0 to 4)"},
+      {"HEXAHEDRON\n-1 600 700\n0 2000 2000\n4096\n" + faces,
+       "t.level:2:1: start face -1 does not exist (faces 0 to 5)"},
+      {"HEXAHEDRON\n1e10 600 700\n0 2000 2000\n4096\n" + faces,
+       "t.level:2:1: start face 1e10 does not exist (faces 0 to 5)"},
+      {"TETRAHEDRON\n0 600 700\n-3 2000 800\n4096\n%\n%\n%\n%\n",
+       "t.level:3:1: goal face -3 does not exist (faces 0 to 3)"},
+      {"MESH m.obj\n-1 10 10\n0 10 10\n4096\n%\n%\n%\n%\n%\n",
+       "t.level:2:1: start face -1 does not exist (faces 0 to 4)"},
       {"MESH m.obj\n0 10 10\n-2 10 10\n4096\n", "t.level:3:1: goal face -2 does not exist (faces are numbered from 0)"},
       {"HEXAHEDRON\n-0.5 600 700\n", "t.level:2:1: start face: -0.5 is not a whole number"},
       // A NUL before digits: the braces end the escape ('2\x0000' read as one four-digit escape).
-      {header + "%\n100 200 300 2\0" "00\n"s, "t.level:6:13: y1: '2\\x{00}00' is not a number"},
+      {header + "%\n100 200 300 2\0"
+                "00\n"s,
+       "t.level:6:13: y1: '2\\x{00}00' is not a number"},
       // A vertical tab looks like a separator but is a value's byte: named where it is.
       {header + "%\n100\v200 300 200\n",
        "t.level:6:4: a segment is x0 y0 x1 y1 [oneway] [tag]: too few values: '100\\x{0B}200' is one value; it holds a "
        "vertical tab (\\x{0B}), which does not separate values (only spaces and tabs do)"},
       {header + "%\n100\v200 300 200 400\n",
-       "t.level:6:1: x0: '100\\x{0B}200' is not a number (it holds a vertical tab (\\x{0B}), which does not separate values: "
+       "t.level:6:1: x0: '100\\x{0B}200' is not a number (it holds a vertical tab (\\x{0B}), which does not separate "
+       "values: "
        "only spaces and tabs do)"},
       {"HEXAHEDRON\n0 600\f700\n",
-       "t.level:2:6: start (face x y [degrees]): too few values: '600\\x{0C}700' is one value; it holds a form feed (\\x{0C}), "
+       "t.level:2:6: start (face x y [degrees]): too few values: '600\\x{0C}700' is one value; it holds a form feed "
+       "(\\x{0C}), "
        "which does not separate values (only spaces and tabs do)"},
   };
   for (const auto& c : cases) EXPECT_EQ(errorOf(c.text), c.expected) << c.text;
@@ -192,14 +227,16 @@ stage::Level randomLevel(platon::testing::Rng& rng) {
   };
   for (size_t f = 0; f < s.faceCount(); ++f) {
     stage::LevelFace face;
-    if (rng.between(0, 3) == 0) face.gravityQ16 = physics::Vec2w{rng.between(-90000, 90000), rng.between(-90000, 90000)};
+    if (rng.between(0, 3) == 0)
+      face.gravityQ16 = physics::Vec2w{rng.between(-90000, 90000), rng.between(-90000, 90000)};
     const int count = rng.between(0, 6);
     for (int i = 0; i < count; ++i) {
       stage::LevelLine l{inside(f), inside(f)};
       if (l.a == l.b) continue;
       l.oneWay = rng.between(0, 3) == 0;
-      const uint32_t tags[] = {0, stage::kTagHazard, stage::kTagGoal, stage::kTagCheckpoint, stage::kTagDoor + 5,
-                               stage::kTagSwitch + 999, 4242};
+      const uint32_t tags[] = {
+          0,   stage::kTagHazard, stage::kTagGoal, stage::kTagCheckpoint, stage::kTagDoor + 5, stage::kTagSwitch + 999,
+          4242};
       l.tag = tags[rng.between(0, 6)];
       face.lines.push_back(l);
     }
@@ -279,7 +316,8 @@ TEST(LevelFormat, TheDocumentedNetsAreTheStages) {
     const stage::Stage s = stage::platonicStage(solid, 1000);
     const std::string title = name + ": " + std::to_string(s.faceCount()) + " faces";
     for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    EXPECT_EQ(readFile(std::string(PLATON_SOURCE_ROOT) + "/docs/nets/" + name + ".svg"), stage::netSvg(s, stage::unfold(s), title))
+    EXPECT_EQ(readFile(std::string(PLATON_SOURCE_ROOT) + "/docs/nets/" + name + ".svg"),
+              stage::netSvg(s, stage::unfold(s), title))
         << name << ": run `platon net " << stage::solidName(solid) << " -o docs/nets/" << name << ".svg`";
   }
 }
@@ -300,7 +338,8 @@ TEST(LevelFormat, TheDocumentedNeighbourTablesAreTheStages) {
   // Any size gives the same table (frames and numbering do not depend on it).
   for (const stage::Solid solid : stage::kSolids)
     for (const int32_t size : {64, 4096, 1 << 24})
-      EXPECT_EQ(stage::neighbourTable(stage::platonicStage(solid, size)), stage::neighbourTable(stage::platonicStage(solid, 1000)));
+      EXPECT_EQ(stage::neighbourTable(stage::platonicStage(solid, size)),
+                stage::neighbourTable(stage::platonicStage(solid, 1000)));
 }
 
 // Nets never overlap, and every face joins the face it was unfolded from along their shared edge.
@@ -319,7 +358,8 @@ TEST(Net, FacesJoinTheirNeighboursAndNeverOverlap) {
         if (g != parent) continue;
         const auto& pc = s.faces[size_t(g)].corners;
         const Eigen::Vector2d a = net[f].place(c[j].x, c[j].y);
-        const Eigen::Vector2d b = net[size_t(g)].place(pc[(size_t(i) + 1) % pc.size()].x, pc[(size_t(i) + 1) % pc.size()].y);
+        const Eigen::Vector2d b =
+            net[size_t(g)].place(pc[(size_t(i) + 1) % pc.size()].x, pc[(size_t(i) + 1) % pc.size()].y);
         joined = joined || (a - b).norm() < 2;
       }
       EXPECT_TRUE(joined) << stage::solidName(solid) << " face " << f;
@@ -341,21 +381,25 @@ stage::CheckReport checkText(const std::string& text) {
 TEST(Check, ReachabilityAndWarnings) {
   const std::string header = "HEXAHEDRON\n0 600 700\n";
   const std::string box = "1500 1500 2500 1500\n2500 1500 2500 2500\n2500 2500 1500 2500\n";
-  const stage::CheckReport sealed = checkText(header + "0 2000 2000\n4096\n%\n" + box + "1500 2500 1500 1500\n%\n%\n%\n%\n%\n");
+  const stage::CheckReport sealed =
+      checkText(header + "0 2000 2000\n4096\n%\n" + box + "1500 2500 1500 1500\n%\n%\n%\n%\n%\n");
   ASSERT_EQ(sealed.errors.size(), 1u);
   EXPECT_EQ(stage::describe(sealed.errors[0].where), "c.level:3:1: ");
   EXPECT_NE(sealed.errors[0].message.find("no path reaches the goal"), std::string::npos);
-  EXPECT_EQ(checkText(header + "0 2000 2000\n4096\n%\n" + box + "1500 2500 1500 1500 door 1\n%\n%\n%\n%\n%\n").errors.size(), 0u);
+  EXPECT_EQ(
+      checkText(header + "0 2000 2000\n4096\n%\n" + box + "1500 2500 1500 1500 door 1\n%\n%\n%\n%\n%\n").errors.size(),
+      0u);
   // Face 0 walled all round: a goal on face 2 cannot be reached; with one side open it can.
   const std::string walls = "50 50 4046 50\n4046 50 4046 4046\n4046 4046 50 4046\n";
   EXPECT_EQ(checkText(header + "2 2000 2000\n4096\n%\n" + walls + "50 4046 50 50\n%\n%\n%\n%\n%\n").errors.size(), 1u);
   const stage::CheckReport open = checkText(header + "2 2000 2000\n4096\n%\n" + walls + "%\n%\n%\n%\n%\n");
   EXPECT_EQ(open.errors.size(), 0u);
   ASSERT_EQ(open.warnings.size(), 1u);  // faces 1, 3, 4, 5 are empty (2 holds the goal)
-  EXPECT_EQ(stage::describe(open.warnings[0].where) + open.warnings[0].message, "c.level:9:1: faces 1, 3, 4, 5 have no lines");
+  EXPECT_EQ(stage::describe(open.warnings[0].where) + open.warnings[0].message,
+            "c.level:9:1: faces 1, 3, 4, 5 have no lines");
   const std::string small = "0 0 10 10\n";
-  const stage::CheckReport along = checkText(header + "0 2000 2000\n4096\n%\n4096 100 4096 3000\n%\n" + small + "%\n" + small +
-                                             "%\n" + small + "%\n" + small + "%\n" + small);
+  const stage::CheckReport along = checkText(header + "0 2000 2000\n4096\n%\n4096 100 4096 3000\n%\n" + small + "%\n" +
+                                             small + "%\n" + small + "%\n" + small + "%\n" + small);
   ASSERT_EQ(along.warnings.size(), 1u);
   EXPECT_EQ(stage::describe(along.warnings[0].where) + along.warnings[0].message,
             "c.level:6:1: the segment lies along edge 1 of face 0: it blocks the way to face 1");

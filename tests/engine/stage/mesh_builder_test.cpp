@@ -10,7 +10,6 @@
 #include "platon/stage/stage.h"
 #include "platon/stage/stage_error.h"
 #include "platon/testing/rng.h"
-
 #include "test_meshes.h"
 
 using namespace platon;
@@ -83,8 +82,9 @@ TEST(MeshBuilder, TwoPiecesAreRefused) {
     const int base = int(m.positions.size());
     for (const auto& p : other.positions) m.positions.push_back(p + Eigen::Vector3d(2 + gap, 0, 0));
     for (const auto& t : other.triangles) m.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
-    EXPECT_EQ(refusal(m), "the mesh is more than one piece: triangle 12 is not joined to triangle 0 (a stage is one closed "
-                          "convex solid)");
+    EXPECT_EQ(refusal(m),
+              "the mesh is more than one piece: triangle 12 is not joined to triangle 0 (a stage is one closed "
+              "convex solid)");
   }
 }
 
@@ -103,7 +103,8 @@ TEST(MeshBuilder, ASurfaceWrappingTwiceRoundAPointIsRefused) {
       m.triangles.push_back({1, b, a});
     }
     const std::string why = refusal(m);
-    EXPECT_NE(why.find("wind round it " + std::to_string(k) + " times, not once"), std::string::npos) << n << "/" << k << ": " << why;
+    EXPECT_NE(why.find("wind round it " + std::to_string(k) + " times, not once"), std::string::npos)
+        << n << "/" << k << ": " << why;
     stage::Polyhedron p{m.positions, {}};
     for (const auto& t : m.triangles) p.faces.push_back({t[0], t[1], t[2]});
     try {
@@ -170,7 +171,8 @@ TEST(MeshBuilder, TrianglesWithARepeatedCornerAreLeftOutAndFlatOnesRefused) {
     m.positions.push_back(p + rng.uniform(0.1, 0.9) * (q - p));
     m.triangles.push_back({solid[0], solid[1], int(m.positions.size()) - 1});
     const std::string why = refusal(m);
-    EXPECT_EQ(why.rfind("triangle " + std::to_string(m.triangles.size() - 1) + " is degenerate: its corners ", 0), 0u) << why;
+    EXPECT_EQ(why.rfind("triangle " + std::to_string(m.triangles.size() - 1) + " is degenerate: its corners ", 0), 0u)
+        << why;
     EXPECT_NE(why.find(" lie on one line (no area)"), std::string::npos) << why;
   }
   stage::MeshData zero;
@@ -190,19 +192,23 @@ TEST(MeshBuilder, ATJunctionIsNamed) {
     stage::MeshData m = randomConvex(rng);
     const size_t t = size_t(rng.between(0, int(m.triangles.size()) - 1));
     const int k = rng.between(0, 2);
-    const int a = m.triangles[t][size_t(k)], b = m.triangles[t][size_t((k + 1) % 3)], c = m.triangles[t][size_t((k + 2) % 3)];
+    const int a = m.triangles[t][size_t(k)], b = m.triangles[t][size_t((k + 1) % 3)],
+              c = m.triangles[t][size_t((k + 2) % 3)];
     size_t neighbour = 0;  // the triangle running b -> a
     for (size_t u = 0; u < m.triangles.size(); ++u)
       for (int j = 0; j < 3; ++j)
         if (m.triangles[u][size_t(j)] == b && m.triangles[u][size_t((j + 1) % 3)] == a) neighbour = u;
-    m.positions.push_back(m.positions[size_t(a)] + rng.uniform(0.2, 0.8) * (m.positions[size_t(b)] - m.positions[size_t(a)]));
+    m.positions.push_back(m.positions[size_t(a)] +
+                          rng.uniform(0.2, 0.8) * (m.positions[size_t(b)] - m.positions[size_t(a)]));
     const int split = int(m.positions.size()) - 1;
     m.triangles[t] = {a, split, c};
     m.triangles.push_back({split, b, c});
     const std::string why = refusal(m);
     EXPECT_EQ(why.rfind("a T-junction: the point ", 0), 0u) << why;
-    EXPECT_NE(why.find(" of triangle " + std::to_string(neighbour) + ", which the triangles on its other side split there (split "
-                       "triangle " + std::to_string(neighbour) + " at that point too)"),
+    EXPECT_NE(why.find(" of triangle " + std::to_string(neighbour) +
+                       ", which the triangles on its other side split there (split "
+                       "triangle " +
+                       std::to_string(neighbour) + " at that point too)"),
               std::string::npos)
         << why;
   }
@@ -286,7 +292,8 @@ Eigen::Matrix3f noisyTurn(const Eigen::Matrix3i& exact) {
     for (int b = 0; b < 4; ++b)
       for (int c = 0; c < 4; ++c) {
         const float q = float(M_PI / 2);
-        const Eigen::Matrix3f r = (Eigen::AngleAxisf(float(c) * q, Eigen::Vector3f::UnitZ()) * Eigen::AngleAxisf(float(b) * q, Eigen::Vector3f::UnitY()) *
+        const Eigen::Matrix3f r = (Eigen::AngleAxisf(float(c) * q, Eigen::Vector3f::UnitZ()) *
+                                   Eigen::AngleAxisf(float(b) * q, Eigen::Vector3f::UnitY()) *
                                    Eigen::AngleAxisf(float(a) * q, Eigen::Vector3f::UnitX()))
                                       .toRotationMatrix();
         if (r.array().round().cast<int>().matrix() == exact) return r;
@@ -302,7 +309,8 @@ TEST(MeshBuilder, QuarterTurnsWithFloatNoiseGiveTheExactTurnsStage) {
   const std::vector<Eigen::Matrix3i> turns = quarterTurns();
   ASSERT_EQ(turns.size(), 24u);
   for (int i = 0; i < 8; ++i) {
-    const Eigen::Vector3d half = i == 0 ? Eigen::Vector3d(1, 1, 1) : Eigen::Vector3d(rng.between(2, 9), rng.between(2, 9), rng.between(2, 9)) / 4;
+    const Eigen::Vector3d half = i == 0 ? Eigen::Vector3d(1, 1, 1)
+                                        : Eigen::Vector3d(rng.between(2, 9), rng.between(2, 9), rng.between(2, 9)) / 4;
     const stage::MeshData box = testmesh::box(half);
     const stage::Stage plain = stage::stageFromPolyhedron(stage::polyhedronFromMesh(box, 4096));
     for (size_t t = 0; t < turns.size(); ++t) {
@@ -352,7 +360,8 @@ stage::MeshData dentedCube(int n, double depth) {
     for (size_t k = 1; k + 1 < poly.size(); ++k) t.push_back({poly[0], poly[k], poly[k + 1]});
   };
   std::vector<int> r0, r1, r2, r3;
-  for (int k = 0; k <= n; ++k) r0.push_back(grid(n, n - k)), r1.push_back(grid(0, k)), r2.push_back(grid(k, n)), r3.push_back(grid(n - k, 0));
+  for (int k = 0; k <= n; ++k)
+    r0.push_back(grid(n, n - k)), r1.push_back(grid(0, k)), r2.push_back(grid(k, n)), r3.push_back(grid(n - k, 0));
   side(r0, {1, -1, -1}, {1, -1, 1});
   side(r1, {-1, -1, 1}, {-1, -1, -1});
   side(r2, {1, -1, 1}, {-1, -1, 1});
@@ -361,7 +370,8 @@ stage::MeshData dentedCube(int n, double depth) {
   t.push_back({b[0], b[1], b[2]});
   t.push_back({b[0], b[2], b[3]});
   for (auto& tri : t) {  // each wound outward, away from the centre
-    const Eigen::Vector3d &p = m.positions[size_t(tri[0])], &q = m.positions[size_t(tri[1])], &r = m.positions[size_t(tri[2])];
+    const Eigen::Vector3d &p = m.positions[size_t(tri[0])], &q = m.positions[size_t(tri[1])],
+                          &r = m.positions[size_t(tri[2])];
     if ((q - p).cross(r - p).dot(p + q + r) < 0) std::swap(tri[1], tri[2]);
   }
   m.triangles = t;
@@ -397,7 +407,8 @@ double worstAhead(const stage::MeshData& m) {
 TEST(MeshBuilder, AShallowDentIsRefusedAsCurvingInward) {
   const double tolerance = 1e-6 * std::sqrt(12.0);
   for (const int n : {10, 20, 40}) {
-    const double depth = 0.9 * tolerance / worstAhead(dentedCube(n, 1e-3)) * 1e-3;  // each edge bends 0.9 of the tolerance
+    const double depth =
+        0.9 * tolerance / worstAhead(dentedCube(n, 1e-3)) * 1e-3;  // each edge bends 0.9 of the tolerance
     const std::string dent = refusal(dentedCube(n, depth));
     SCOPED_TRACE("grid " + std::to_string(n) + ": " + dent);
     EXPECT_EQ(dent.rfind("not convex near the point (", 0), 0u);
@@ -416,7 +427,8 @@ stage::MeshData roofedCube(int n, double height) {
   stage::MeshData m;
   std::map<std::array<long long, 3>, int> index;
   auto point = [&](const Eigen::Vector3d& p) {
-    const std::array<long long, 3> key{std::llround(p.x() * 1e12), std::llround(p.y() * 1e12), std::llround(p.z() * 1e12)};
+    const std::array<long long, 3> key{std::llround(p.x() * 1e12), std::llround(p.y() * 1e12),
+                                       std::llround(p.z() * 1e12)};
     const auto [at, added] = index.emplace(key, int(m.positions.size()));
     if (added) m.positions.push_back(p);
     return at->second;
@@ -428,7 +440,8 @@ stage::MeshData roofedCube(int n, double height) {
   std::vector<std::array<int, 3>> t;
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) {
-      const bool sameSign = (i + 0.5 > n / 2.0) == (j + 0.5 > n / 2.0);  // the diagonal that keeps each half on one plane
+      const bool sameSign =
+          (i + 0.5 > n / 2.0) == (j + 0.5 > n / 2.0);  // the diagonal that keeps each half on one plane
       if (sameSign) {
         t.push_back({grid(i, j), grid(i, j + 1), grid(i + 1, j + 1)});
         t.push_back({grid(i, j), grid(i + 1, j + 1), grid(i + 1, j)});
@@ -443,7 +456,8 @@ stage::MeshData roofedCube(int n, double height) {
     for (size_t k = 1; k + 1 < poly.size(); ++k) t.push_back({poly[0], poly[k], poly[k + 1]});
   };
   std::vector<int> r0, r1, r2, r3;
-  for (int k = 0; k <= n; ++k) r0.push_back(grid(n, n - k)), r1.push_back(grid(0, k)), r2.push_back(grid(k, n)), r3.push_back(grid(n - k, 0));
+  for (int k = 0; k <= n; ++k)
+    r0.push_back(grid(n, n - k)), r1.push_back(grid(0, k)), r2.push_back(grid(k, n)), r3.push_back(grid(n - k, 0));
   side(r0, {1, -1, -1}, {1, -1, 1});
   side(r1, {-1, -1, 1}, {-1, -1, -1});
   side(r2, {1, -1, 1}, {-1, -1, 1});
@@ -452,7 +466,8 @@ stage::MeshData roofedCube(int n, double height) {
   t.push_back({b[0], b[1], b[2]});
   t.push_back({b[0], b[2], b[3]});
   for (auto& tri : t) {
-    const Eigen::Vector3d &p = m.positions[size_t(tri[0])], &q = m.positions[size_t(tri[1])], &r = m.positions[size_t(tri[2])];
+    const Eigen::Vector3d &p = m.positions[size_t(tri[0])], &q = m.positions[size_t(tri[1])],
+                          &r = m.positions[size_t(tri[2])];
     if ((q - p).cross(r - p).dot(p + q + r) < 0) std::swap(tri[1], tri[2]);
   }
   m.triangles = t;

@@ -165,7 +165,8 @@ TEST(MeshBuilder, EveryBrokenMeshSaysWhatIsWrongAndWhere) {
   stage::MeshData flat = cubeMesh();
   flat.positions.emplace_back(0.5, 0, 0);  // on the edge from point 0 to point 1
   flat.triangles.push_back({0, 1, 8});
-  EXPECT_EQ(meshRefusal(flat), "triangle 12 is degenerate: its corners (0, 0, 0), (1, 0, 0) and (0.5, 0, 0) lie on one line (no area)");
+  EXPECT_EQ(meshRefusal(flat),
+            "triangle 12 is degenerate: its corners (0, 0, 0), (1, 0, 0) and (0.5, 0, 0) lie on one line (no area)");
   stage::MeshData missing = cubeMesh();
   missing.triangles[5][2] = 99;
   EXPECT_EQ(meshRefusal(missing), "triangle 5 names vertex 99, which does not exist");

@@ -71,7 +71,8 @@ inline double worstAhead(const stage::MeshData& m) {
   double worst = -INFINITY;
   for (const auto& t : m.triangles) {
     const Eigen::Vector3d& a = m.positions[size_t(t[0])];
-    const Eigen::Vector3d n = (volume < 0 ? -1.0 : 1.0) * (m.positions[size_t(t[1])] - a).cross(m.positions[size_t(t[2])] - a).normalized();
+    const Eigen::Vector3d n =
+        (volume < 0 ? -1.0 : 1.0) * (m.positions[size_t(t[1])] - a).cross(m.positions[size_t(t[2])] - a).normalized();
     for (const auto& p : m.positions) worst = std::max(worst, n.dot(p - a));
   }
   return worst / (hi - lo).norm();

@@ -1,11 +1,10 @@
 // A folder of a test's own under the system's temporary directory, removed when the test ends;
 // files are written into it on demand. The process id keeps parallel test processes apart.
 #pragma once
-#include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <unistd.h>
 
 namespace platon::testing {
 

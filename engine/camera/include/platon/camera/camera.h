@@ -17,18 +17,18 @@ namespace platon::camera {
 
 // What the camera follows, in the stage's 3D units.
 struct CameraTarget {
-  Eigen::Vector3d centre = Eigen::Vector3d::Zero();  // the solid's centre
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();   // the solid's centre
   Eigen::Vector3d player = Eigen::Vector3d::UnitZ();  // the player, on a face
   Eigen::Vector3d down = -Eigen::Vector3d::UnitY();   // the player's down (need not be unit length)
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // out of the player's face
-  double viewHeight = 1;  // how far above the player the eye sits (see CameraSettings)
+  double viewHeight = 1;                              // how far above the player the eye sits (see CameraSettings)
 };
 
 struct CameraSettings {
-  double verticalFov = 0.785398;     // radians (45 degrees)
-  double settleSeconds = 0.25;       // time constant: 63% of a turn after this long
-  double topSpeed = 3.5;             // radians per second, the fastest the view ever turns
-  double zoomSeconds = 0.25;         // the distance eases the same way
+  double verticalFov = 0.785398;  // radians (45 degrees)
+  double settleSeconds = 0.25;    // time constant: 63% of a turn after this long
+  double topSpeed = 3.5;          // radians per second, the fastest the view ever turns
+  double zoomSeconds = 0.25;      // the distance eases the same way
 };
 
 // Where the eye is and how it is turned: the eye looks along orientation * (0, 0, -1) with up

@@ -58,10 +58,10 @@ struct View {
   std::vector<uint32_t> openTags;          // doors open now: their lines are drawn open
   camera::CameraPose camera;
   double verticalFov = 0.785398;
-  std::vector<std::string> hud;  // top left, one line each
+  std::vector<std::string> hud;         // top left, one line each
   std::vector<std::string> centreText;  // big, in the middle of the screen (titles, menus)
-  std::string error;             // "" for none
-  bool showFps = false;          // the renderer's frame rate in the top right corner
+  std::string error;                    // "" for none
+  bool showFps = false;                 // the renderer's frame rate in the top right corner
 };
 
 // The scene's stage, ready to show. A scene with no solid shows only the player's part, flat: build
@@ -71,8 +71,10 @@ std::shared_ptr<const StageView> stageView(const Scene& scene, physics::MapPartI
 std::shared_ptr<const StageView> stageView(const stage::Stage& stage, const physics::World& world);
 // What the camera follows when the player stands at (x, y) on map part `face`, whose gravity
 // (any length; zero: the face's -y) gives its down.
-camera::CameraTarget cameraTarget(const StageView& stage, physics::MapPartId face, float x, float y, physics::Vec2w gravity);
-camera::CameraTarget cameraTarget(const StageView& stage, const Scene& scene, physics::MapPartId face, float x, float y);
+camera::CameraTarget cameraTarget(const StageView& stage, physics::MapPartId face, float x, float y,
+                                  physics::Vec2w gravity);
+camera::CameraTarget cameraTarget(const StageView& stage, const Scene& scene, physics::MapPartId face, float x,
+                                  float y);
 
 // Keys the game's menus and controls act on once per press (held buttons go to the simulation).
 enum class Key : uint8_t { Escape, Enter, Up, Down, Left, Right, Restart, Reload, ShowFps };

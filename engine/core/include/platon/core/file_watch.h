@@ -35,8 +35,8 @@ class FileWatcher {
 
  private:
   int fd_ = -1;
-  std::map<int, std::string> folders_;                 // watch descriptor -> folder
-  std::map<std::string, std::string> files_;           // folder + '/' + name -> the path as given
+  std::map<int, std::string> folders_;        // watch descriptor -> folder
+  std::map<std::string, std::string> files_;  // folder + '/' + name -> the path as given
 };
 
 }  // namespace platon::core

@@ -41,7 +41,7 @@ struct SceneManifest {
   // stage = { level = "x.level" }: a level file (docs/level-format.md), relative to the manifest,
   // gives the solid, the lines, start and goal instead of solid and edge.
   std::string levelFile;
-  double gravity = 0.35;             // units per frame per frame, along each face's -y
+  double gravity = 0.35;  // units per frame per frame, along each face's -y
   // Scripts: "scripts/..." names an engine script (trusted; kept as written, the script system
   // finds it under the engine's root); any other path is the level's own, relative to the
   // manifest, resolved (links included) and kept inside its folder, and runs sandboxed. Mods are

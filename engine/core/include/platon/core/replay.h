@@ -35,13 +35,13 @@ struct ReplayHash {
 };
 
 struct Replay {
-  std::string scene;           // the scene's manifest, as the run named it
+  std::string scene;  // the scene's manifest, as the run named it
   // A hash of the contents of the scene's files when it was recorded (core/live_scene.h's
   // sceneSourceFiles): a replay that goes another way can say whether they changed since. Files
   // from before this line existed have none.
   std::optional<uint64_t> sceneFiles;
-  std::vector<uint8_t> held;   // held[f - 1]: the buttons held on frame f (InputFrame::held bits)
-  uint64_t hashEvery = 60;     // frames between recorded hashes (0: none)
+  std::vector<uint8_t> held;       // held[f - 1]: the buttons held on frame f (InputFrame::held bits)
+  uint64_t hashEvery = 60;         // frames between recorded hashes (0: none)
   std::vector<ReplayHash> hashes;  // increasing frames
 
   uint64_t frames() const { return held.size(); }

@@ -6,9 +6,9 @@
 #include <vector>
 
 #include "platon/core/manifest.h"
+#include "platon/core/mesh_source.h"
 #include "platon/core/system.h"
 #include "platon/physics/world.h"
-#include "platon/core/mesh_source.h"
 #include "platon/stage/level.h"
 #include "platon/stage/mesh.h"
 #include "platon/stage/stage.h"

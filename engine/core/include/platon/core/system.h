@@ -54,7 +54,7 @@ using SystemFactory = std::function<std::unique_ptr<System>(Scene&)>;
 // The C function a plugin exports: creates its system for `scene` (ownership passes to the caller),
 // or returns nullptr with a reason in `error` (at most errorSize bytes, NUL-terminated). No C++
 // exception crosses it.
-extern "C" using PluginEntry = System*(Scene& scene, char* error, size_t errorSize);
+extern "C" using PluginEntry = System * (Scene & scene, char* error, size_t errorSize);
 inline constexpr const char* kPluginEntryName = "platon_create_system";
 
 // A plugin's entry body: creates T, and turns any exception into `error` (none may cross the C entry).

@@ -24,9 +24,9 @@
 namespace platon::script {
 
 struct RunOptions {
-  uint64_t traceEvery = 0;   // > 0: print the player's face and position to stderr this often
-  bool record = false;       // keep the run's input and hashes in ScenarioResult::recorded
-  uint64_t hashEvery = 60;   // the recording's hash interval
+  uint64_t traceEvery = 0;  // > 0: print the player's face and position to stderr this often
+  bool record = false;      // keep the run's input and hashes in ScenarioResult::recorded
+  uint64_t hashEvery = 60;  // the recording's hash interval
   // Where the meshes plugin (libplaton_meshes.so) is looked for, after $PLATON_PLUGIN_PATH: loaded
   // only for a level drawn on a mesh.
   std::vector<std::string> pluginFolders;
@@ -34,10 +34,10 @@ struct RunOptions {
 
 struct ScenarioResult {
   bool passed = false;
-  std::string message;  // why it failed (file:line for script errors), or a summary
-  uint64_t frames = 0;  // frames simulated
-  double seconds = 0;   // wall time, load included
-  std::string hash;     // the world's state hash after the last frame
+  std::string message;                   // why it failed (file:line for script errors), or a summary
+  uint64_t frames = 0;                   // frames simulated
+  double seconds = 0;                    // wall time, load included
+  std::string hash;                      // the world's state hash after the last frame
   std::optional<GameStatus> status;      // the game's state at the end (scenes with scripts)
   std::optional<core::Replay> recorded;  // with RunOptions::record
 };

@@ -39,7 +39,7 @@ struct LevelLine {
 struct LevelFace {
   std::vector<LevelLine> lines;
   std::optional<physics::Vec2w> gravityQ16;  // per frame per frame, in the face's frame; none: the scene's, down
-  int sourceLine = 0;                         // the '%' line
+  int sourceLine = 0;                        // the '%' line
 
   friend bool operator==(const LevelFace&, const LevelFace&);
 };
@@ -53,15 +53,15 @@ struct LevelPoint {
 };
 
 struct Level {
-  std::string file;                 // as given to parseLevel, for messages
-  std::optional<Solid> solid;       // a Platonic solid, or
-  std::string mesh;                 // a mesh file, relative to the level file's folder
+  std::string file;            // as given to parseLevel, for messages
+  std::optional<Solid> solid;  // a Platonic solid, or
+  std::string mesh;            // a mesh file, relative to the level file's folder
   LevelPoint start;
-  int64_t startMillidegrees = 0;    // the player's rotation
+  int64_t startMillidegrees = 0;  // the player's rotation
   LevelPoint goal;
-  int32_t size = 0;                 // face edge (Platonic) or longest edge (mesh), in units
+  int32_t size = 0;  // face edge (Platonic) or longest edge (mesh), in units
   std::vector<LevelFace> faces;
-  int endLine = 0;                  // the line after the last, for "missing" messages
+  int endLine = 0;  // the line after the last, for "missing" messages
 
   friend bool operator==(const Level&, const Level&);
 };

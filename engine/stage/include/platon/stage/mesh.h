@@ -2,11 +2,10 @@
 // triangles merged into polygon faces. The file reading (assimp) is a plugin (engine/mesh); this
 // part is plain geometry so that it can be tested and fuzzed without a file.
 #pragma once
-#include <array>
-#include <vector>
-
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <array>
+#include <vector>
 
 #include "platon/stage/polyhedron.h"
 

@@ -2,10 +2,9 @@
 // net as an SVG picture with each face's number, axes and "down" (docs/level-format.md shows one
 // for every solid).
 #pragma once
+#include <Eigen/Core>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "platon/stage/stage.h"
 

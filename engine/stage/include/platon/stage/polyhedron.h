@@ -1,13 +1,12 @@
 // A convex polyhedron: the 3D solid a level is drawn on. Plain data; the five Platonic solids are
 // built here and any convex mesh comes through mesh.h. Stages (stage.h) are made from it.
 #pragma once
+#include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <Eigen/Core>
-#include <Eigen/Geometry>
 
 namespace platon::stage {
 

@@ -3,10 +3,9 @@
 // floor), the map that places it in 3D, and its neighbour across every edge. The rule that picks
 // each face's floor and the faces' numbering is in docs/level-format.md ("Faces and their frames").
 #pragma once
-#include <vector>
-
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <vector>
 
 #include "platon/physics/world.h"
 #include "platon/stage/polyhedron.h"
