@@ -428,10 +428,11 @@ SceneManifest loadManifest(const std::string& path) {
         fieldError(path, *scripts, "the scene has scripts but does not list \"scripting\" in its systems");
   }
   if (const DataValue* limits = root.field("limits")) {
-    if (!limits->table()) fieldError(path, *limits, "'limits' must be a table {memory_mb =, call_ms =}");
-    checkKeys(path, *limits, {"memory_mb", "call_ms"});
+    if (!limits->table()) fieldError(path, *limits, "'limits' must be a table {memory_mb =, steps =, deadline_ms =}");
+    checkKeys(path, *limits, {"memory_mb", "steps", "deadline_ms"});
     m.memoryMegabytes = static_cast<size_t>(wholeField(path, *limits, "memory_mb", 128, 4, 4096));
-    m.callMilliseconds = numberField(path, *limits, "call_ms", 250, 1, 60000);
+    m.frameSteps = static_cast<int64_t>(wholeField(path, *limits, "steps", 20'000'000, 1000, 1'000'000'000));
+    m.deadlineMilliseconds = numberField(path, *limits, "deadline_ms", 1000, 1, 60000);
   }
   return m;
 }

@@ -23,7 +23,7 @@ struct Sandbox {
   std::string source;  // its chunk name ("@file"): the frames of its functions carry it
   lua::Ref env;
   bool disabled = false;
-  int64_t spent = 0;  // nanoseconds of this frame's budget
+  int64_t spent = 0;  // steps of this frame's budget
 };
 
 }  // namespace
@@ -38,22 +38,26 @@ struct LuaHost::Shared {
   int handler = 0;           // > 0 while the message handler or a stop's message is built: the reserve is open
   // Memory: the sandbox whose allocation was refused during the running sandboxed call.
   int memoryStop = kNoSandbox;
-  // Time. frameSpent counts the frame's sandboxed calls (outermost ones) that have returned;
-  // enteredAt is when the running one began.
+  // Work: the steps charged to the frame's sandboxed calls.
+  int64_t frameSteps = 0;
+  // Time, the backstop. frameSpent counts the frame's sandboxed calls (outermost ones) that have
+  // returned; enteredAt is when the running one began.
   int64_t frameSpent = 0;
   int64_t enteredAt = 0;
-  bool expired = false;      // the budget is spent: the hook raises on every instruction until the call returns
+  bool expired = false;      // a limit stopped the call: the hook raises on every instruction until it returns
   bool skipNoted = false;    // a skipped call was reported this frame
   bool stopNoted = false;    // a stop was reported this frame (it says the rest is skipped)
-  int hog = kNoSandbox;      // the sandbox that spent the most of the frame when the budget ran out
+  int hog = kNoSandbox;      // the sandbox disabled for the stop: the one that spent the most of the frame
   std::string stopMessage;   // what the hook raises once a limit stopped the call
   bool collectSoon = false;  // a disabled sandbox left garbage
-  volatile sig_atomic_t inSandbox = 0;
   volatile sig_atomic_t timerArmed = 0;
-  volatile sig_atomic_t hookFast = 0;  // the hook runs on every instruction
-  // The fallback for trusted code: the count hook times each outermost call from its first run.
+  volatile sig_atomic_t timerFired = 0;  // the deadline may have passed: the next charge reads the clock
+  bool hookFast = false;                 // the hook runs on every instruction (a stop is under way)
+  // The fallback for trusted code: the count hook times each outermost call from its first run,
+  // reading the clock every kTrustedTicks of its looks.
   bool inCall = false;
   int64_t callStart = 0;
+  int64_t trustedTicks = 0;
   bool trustedExpired = false;
   // The deadline's timer, made on (and aimed at) the thread that runs the calls.
   bool timerMade = false;
@@ -68,7 +72,7 @@ struct LuaHost::Shared {
 
 namespace {
 
-constexpr int kHookInstructions = 100000;
+constexpr int64_t kTrustedTicks = 1000;
 
 int64_t nowNanoseconds() {
   timespec t{};
@@ -93,13 +97,15 @@ LuaHost::Shared& sharedOf(lua_State* L) {
 void budgetHook(lua_State* L, lua_Debug*);
 
 void hookEveryInstruction(LuaHost::Shared& s) {
-  s.hookFast = 1;
+  s.hookFast = true;
   lua_sethook(s.L, budgetHook, LUA_MASKCOUNT, 1);
 }
 
+// Also starts the instruction counter again: a sandboxed call's first look comes after exactly
+// kTickSteps of its instructions, whatever ran before it.
 void hookAtNormalRate(LuaHost::Shared& s) {
-  s.hookFast = 0;
-  lua_sethook(s.L, budgetHook, LUA_MASKCOUNT, kHookInstructions);
+  s.hookFast = false;
+  lua_sethook(s.L, budgetHook, LUA_MASKCOUNT, kTickSteps);
 }
 
 // --- the deadline's timer ---
@@ -111,19 +117,16 @@ int timerSignal() { return SIGRTMIN + 2; }
 constexpr int kMaxHosts = 256;
 std::atomic<LuaHost::Shared*> gHosts[kMaxHosts];
 
+// Only raises a flag: the hook's next look (at most kTickSteps instructions later) or the next
+// charge of C work reads the clock. The hook's count is never touched from here, so where the hook
+// looks, and so what a sandbox is charged, does not depend on when a signal came.
 void onTimer(int, siginfo_t* info, void*) {
   auto* target = static_cast<LuaHost::Shared*>(info->si_value.sival_ptr);
   if (!target) return;
   for (auto& slot : gHosts) {
     if (slot.load(std::memory_order_acquire) != target) continue;
     target->timerArmed = 0;
-    // Outside a sandboxed call nothing is due (the call returned first); inside, the hook looks
-    // at the next instruction. lua_sethook is async-signal-safe (LuaJIT's own CLI interrupts
-    // scripts this way).
-    if (target->inSandbox) {
-      target->hookFast = 1;
-      lua_sethook(target->L, budgetHook, LUA_MASKCOUNT, 1);
-    }
+    target->timerFired = 1;
     return;
   }
 }
@@ -262,8 +265,55 @@ std::string memoryStopText(const LuaHost::Shared& s) {
   std::abort();  // unreachable: lua_error does not return
 }
 
-// Runs every kHookInstructions interpreted instructions, and on every one once the timer fired,
-// memory was refused or a stop was decided.
+std::string stepsText(int64_t steps) { return std::to_string(steps) + " steps"; }
+
+// Stops the running sandbox for the frame's budget (or, with `deadline`, for the wall-clock
+// backstop): the stop is raised at every instruction until the call returns, and the sandbox that
+// spent the most of the frame is the one disabled.
+[[noreturn]] void stopOverBudget(lua_State* L, LuaHost::Shared& s, bool deadline) {
+  {
+    OpenReserve reserve(s);
+    s.expired = true;
+    hookEveryInstruction(s);
+    int hog = s.current;
+    if (!deadline)
+      for (size_t i = 0; i < s.sandboxes.size(); ++i)
+        if (s.sandboxes[i].spent > s.sandboxes[hog].spent) hog = static_cast<int>(i);
+    s.hog = hog;
+    std::string at = where(L, s);
+    if (at.empty()) at = s.sandboxes[s.current].name + ": ";
+    if (deadline) {
+      s.stopMessage = at + "script stopped: the frame's scripts ran past the deadline of " +
+                      milliseconds(s.limits.deadlineNanoseconds) +
+                      " of machine time (work the step budget does not count, or a very slow machine: a replay of "
+                      "this run may differ)";
+    } else if (hog == s.current) {
+      s.stopMessage = at + "script stopped: it ran past the frame's script budget of " +
+                      stepsText(s.limits.frameSteps) + " (an endless loop?)";
+    } else {
+      s.stopMessage = at + "script stopped: the frame's script budget of " + stepsText(s.limits.frameSteps) +
+                      " is spent (" + s.sandboxes[hog].name + " ran " + stepsText(s.sandboxes[hog].spent) + " of it)";
+    }
+  }
+  raiseStop(L, s);
+}
+
+// Charges the running sandbox; stops it past the budget, or past the deadline once the timer
+// said it may have come.
+void charge(lua_State* L, LuaHost::Shared& s, int64_t steps) {
+  s.frameSteps += steps;
+  s.sandboxes[s.current].spent += steps;
+  if (s.frameSteps > s.limits.frameSteps) stopOverBudget(L, s, false);
+  if (s.timerFired) {
+    s.timerFired = 0;
+    const int64_t spent = s.frameSpent + (coarseNanoseconds() - s.enteredAt);  // the clock enteredAt was read with
+    if (spent >= s.limits.deadlineNanoseconds) stopOverBudget(L, s, true);
+    if (!s.timerArmed) armTimer(s, s.limits.deadlineNanoseconds - spent);  // a timer armed in an earlier frame
+  }
+}
+
+// Runs every kTickSteps interpreted instructions, and on every one once a stop was decided or
+// memory was refused.
 void budgetHook(lua_State* L, lua_Debug*) {
   LuaHost::Shared& s = sharedOf(L);
   if (s.current != kNoSandbox) {
@@ -278,44 +328,18 @@ void budgetHook(lua_State* L, lua_Debug*) {
       }
       raiseStop(L, s);
     }
-    const int64_t spent = s.frameSpent + (coarseNanoseconds() - s.enteredAt);  // the clock enteredAt was read with
-    if (spent < s.limits.callNanoseconds) {  // early: a timer armed for an earlier frame, or the count hook
-      if (s.hookFast) hookAtNormalRate(s);
-      if (!s.timerArmed) armTimer(s, s.limits.callNanoseconds - spent);
-      return;
-    }
-    {
-      OpenReserve reserve(s);
-      s.expired = true;
-      hookEveryInstruction(s);
-      // Who spent the frame: the running call counts what it has run so far.
-      s.sandboxes[s.current].spent += coarseNanoseconds() - s.enteredAt;
-      s.enteredAt = coarseNanoseconds();
-      int hog = s.current;
-      for (size_t i = 0; i < s.sandboxes.size(); ++i)
-        if (s.sandboxes[i].spent > s.sandboxes[hog].spent) hog = static_cast<int>(i);
-      s.hog = hog;
-      std::string at = where(L, s);
-      if (at.empty()) at = s.sandboxes[s.current].name + ": ";
-      const std::string budget = milliseconds(s.limits.callNanoseconds);
-      if (hog == s.current) {
-        s.stopMessage =
-            at + "script stopped: it ran longer than the frame's script budget of " + budget + " (an endless loop?)";
-      } else {
-        s.stopMessage = at + "script stopped: the frame's script budget of " + budget + " is spent (" +
-                        s.sandboxes[hog].name + " ran " + milliseconds(s.sandboxes[hog].spent) + " of it)";
-      }
-    }
-    raiseStop(L, s);
+    charge(L, s, kTickSteps);
+    return;
   }
-  // Trusted code. A timer's signal that came as a sandboxed call returned: nothing is due.
+  // Trusted code, after a sandboxed call that was stopped: back to the normal rate.
   if (s.hookFast && !s.trustedExpired) {
     hookAtNormalRate(s);
     return;
   }
   if (!s.inCall) return;
-  const int64_t limit = 2 * s.limits.callNanoseconds;  // its own time and the sandboxes' it waited for
+  const int64_t limit = 2 * s.limits.deadlineNanoseconds;  // its own time and the sandboxes' it waited for
   if (!s.trustedExpired) {
+    if (++s.trustedTicks % kTrustedTicks != 0) return;
     const int64_t now = nowNanoseconds();
     if (s.callStart == 0) {
       s.callStart = now;
@@ -431,7 +455,7 @@ LuaHost::~LuaHost() {
 
 void LuaHost::openTrusted() {
   luaL_openlibs(L_);
-  lua_sethook(L_, budgetHook, LUA_MASKCOUNT, kHookInstructions);
+  hookAtNormalRate(*shared_);
   lua_pushcfunction(L_, tracebackHandler);
   lua_pushvalue(L_, -1);
   tracebackRef_ = luaL_ref(L_, LUA_REGISTRYINDEX);
@@ -520,6 +544,7 @@ void LuaHost::call(int nargs, int nresults) {
   Shared& shared = *shared_;
   shared.inCall = true;
   shared.callStart = 0;
+  shared.trustedTicks = 0;
   shared.trustedExpired = false;
   depth_ = 1;
   const int status = lua_pcall(L_, nargs, nresults, kTracebackSlot);
@@ -581,19 +606,27 @@ bool LuaHost::callSandboxed(int sandbox, int nargs, int nresults) {
   }
   const int outer = s.current;
   if (outer == kNoSandbox) {
-    if (s.frameSpent >= s.limits.callNanoseconds) {  // the frame's budget is spent: skipped
+    const bool late = s.frameSpent >= s.limits.deadlineNanoseconds;
+    if (late || s.frameSteps >= s.limits.frameSteps) {  // the frame's budget is spent: skipped
       lua_pop(L_, nargs + 1);
       if (!s.skipNoted && !s.stopNoted)
         keepError(ScriptError(
-            box.name + ": skipped: the frame's script budget of " + milliseconds(s.limits.callNanoseconds) +
-                " is spent (the level's scripts and mods share it; their other calls this frame are skipped)",
+            box.name + ": skipped: " +
+                (late ? "the frame's deadline of " + milliseconds(s.limits.deadlineNanoseconds) + " has passed"
+                      : "the frame's script budget of " + stepsText(s.limits.frameSteps) + " is spent") +
+                " (the level's scripts and mods share it; their other calls this frame are "
+                "skipped)",
             ""));
       s.skipNoted = true;
       return false;
     }
     s.enteredAt = coarseNanoseconds();
-    s.inSandbox = 1;
-    if (!s.timerArmed) armTimer(s, s.limits.callNanoseconds - s.frameSpent);
+    if (!s.timerArmed) armTimer(s, s.limits.deadlineNanoseconds - s.frameSpent);
+    // The count starts again here, and the call pays one tick for the instructions of its last
+    // tick, which no look counts: so its charge depends on nothing that ran before it.
+    hookAtNormalRate(s);
+    s.frameSteps += kTickSteps;
+    box.spent += kTickSteps;
   }
   s.current = sandbox;
   int below = 0;
@@ -616,16 +649,13 @@ bool LuaHost::callSandboxed(int sandbox, int nargs, int nresults) {
     return true;
   }
   // The outermost sandboxed call returned: its time goes to the frame.
-  const int64_t elapsed = coarseNanoseconds() - s.enteredAt;
-  s.frameSpent += elapsed;
-  box.spent += elapsed;
-  s.inSandbox = 0;
+  s.frameSpent += coarseNanoseconds() - s.enteredAt;
   const bool stopped = s.expired || s.memoryStop != kNoSandbox;
   if (s.hookFast) hookAtNormalRate(s);
   if (status == 0 && !stopped) [[likely]]
     return true;
   // An error, or a stop. A stop disables the sandbox that ran over: the one whose allocation was
-  // refused, or the one that spent the most of the frame's time.
+  // refused, or the one that spent the most of the frame's steps.
   std::string message, traceback;
   if (status != 0) {
     ScriptError error = errorFromStack(L_, status, s);
@@ -655,7 +685,7 @@ bool LuaHost::callSandboxed(int sandbox, int nargs, int nresults) {
   else if (s.expired)
     off = s.hog != kNoSandbox ? s.hog : sandbox;
   if (s.expired && s.memoryStop == kNoSandbox) {
-    s.frameSpent = s.limits.callNanoseconds;  // the rest of the frame's sandboxed calls are skipped
+    s.frameSteps = std::max(s.frameSteps, s.limits.frameSteps);  // the rest of the frame's calls are skipped
     s.stopNoted = true;
   }
   s.expired = false;
@@ -716,6 +746,7 @@ void LuaHost::pushCallFunction() {
 
 void LuaHost::beginFrame() {
   Shared& s = *shared_;
+  s.frameSteps = 0;
   s.frameSpent = 0;
   s.skipNoted = false;
   s.stopNoted = false;
@@ -752,6 +783,16 @@ void LuaHost::setPrintSink(std::function<void(std::string_view, std::string_view
 }
 
 size_t LuaHost::memoryUsed() const { return shared_->used; }
+int64_t LuaHost::frameSteps() const { return shared_->frameSteps; }
+
+void chargeSteps(lua_State* L, int64_t steps) {
+  void* ud = nullptr;
+  if (lua_getallocf(L, &ud) != limitedAlloc) return;  // a state of no host's (the pattern tests' own)
+  LuaHost::Shared& s = *static_cast<LuaHost::Shared*>(ud);
+  if (s.current == kNoSandbox) return;
+  if (s.expired) raiseStop(L, s);
+  charge(L, s, steps);
+}
 const LuaLimits& LuaHost::limits() const { return shared_->limits; }
 void LuaHost::setLimits(const LuaLimits& limits) { shared_->limits = limits; }
 void LuaHost::collectGarbage() {

@@ -11,11 +11,17 @@
 //    text only, with the JIT off for every function it defines (so hooks fire inside its loops).
 //
 // Sandboxed code runs only through callSandboxed() (engine.call from Lua), which enforces:
-//  - time: every sandboxed call of a frame shares one budget (limits.callNanoseconds, counted
-//    from beginFrame()). A POSIX timer fires at the deadline on the calling thread and its signal
-//    handler sets a hook on every instruction (lua_sethook is async-signal-safe), so a stop does
-//    not wait for an instruction count; the count hook stays as a fallback. After the budget is
-//    spent, the frame's further sandboxed calls are skipped.
+//  - work: every sandboxed call of a frame shares one budget of steps (limits.frameSteps, counted
+//    from beginFrame()). An interpreted instruction is a step, counted by a count hook every
+//    kTickSteps instructions (the counter starts again at each call from the engine, which is
+//    charged one tick for the part of a tick it may leave uncounted); C functions that loop charge
+//    their work too (chargeSteps: patterns, ordering keys, sorting). The same calls cost the same
+//    steps on every machine, so a stop happens at the same instruction everywhere and replays.
+//    After the budget is spent, the frame's further sandboxed calls are skipped.
+//  - time, the backstop: a wall-clock deadline (limits.deadlineNanoseconds) on the frame's
+//    sandboxed calls together, for work nothing charged. A POSIX timer fires at the deadline on
+//    the calling thread and its handler sets a flag the count hook and chargeSteps look at. A stop
+//    by the deadline depends on the machine and says so.
 //  - memory: sandboxed allocations are refused past limits.memoryBytes minus a reserve
 //    (kTrustedReserve of it), so the engine's own scripts can still run; after a refusal, the
 //    sandbox is stopped at its next instruction with its file:line and traceback.
@@ -39,8 +45,21 @@ namespace platon::script {
 
 struct LuaLimits {
   size_t memoryBytes = size_t{128} << 20;  // the whole state: every script and its data
-  int64_t callNanoseconds = 250'000'000;   // all sandboxed calls of one frame together
+  // All sandboxed calls of one frame together: about 0.1 s of interpreted Lua on a 2020s x86-64
+  // core (4-8 ns an instruction with the hook on), far above what a game's scripts use a frame.
+  int64_t frameSteps = 20'000'000;
+  // The same calls' wall-clock time, the backstop for uncharged work.
+  int64_t deadlineNanoseconds = 1'000'000'000;
 };
+
+// Interpreted instructions between two looks of the count hook, and what each look charges.
+inline constexpr int kTickSteps = 100;
+
+// Charges `steps` of C work (a C function's loop, where no hook runs) to the sandbox running now
+// and to the frame's budget; past the budget, or past the deadline, it stops that sandbox at its
+// line (raises the stop, which pcall cannot swallow). Does nothing when no sandbox runs. Call it
+// with no C++ object alive that needs its destructor: it may not return.
+void chargeSteps(lua_State* L, int64_t steps);
 
 enum class Trust { Trusted, Sandboxed };
 
@@ -80,7 +99,7 @@ class LuaHost {
   // for its errors (a limit's stop names the sandbox and says it is now disabled).
   bool callSandboxed(int sandbox, int nargs, int nresults);
 
-  // A new frame: the sandboxes' shared time budget starts again.
+  // A new frame: the sandboxes' shared budget of steps and time starts again.
   void beginFrame();
   // The game clock sandboxes read through os.time/os.clock/os.date (frames, 60 a second).
   void setGameFrame(uint64_t frame);
@@ -116,6 +135,9 @@ class LuaHost {
 
   // The part of memoryBytes sandboxes may not use: kept for trusted code.
   static constexpr size_t kTrustedReserveDivisor = 4;
+
+  // Steps charged to sandboxed calls this frame (interpreted instructions and C work).
+  int64_t frameSteps() const;
 
   struct Shared;  // what the allocator, the hook and the timer reach through the state
 

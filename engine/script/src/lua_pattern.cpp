@@ -18,6 +18,8 @@
 #include <cstddef>
 #include <cstring>
 
+#include "lua_host.h"
+
 namespace platon::script {
 namespace {
 
@@ -161,8 +163,10 @@ class Matcher {
  public:
   // The pattern ends at its first "\0" (as in LuaJIT); the byte at patternEnd is always readable
   // ("\0": an embedded one, or the terminator every Lua string has).
-  Matcher(const char* subject, size_t subjectLength, const char* pattern, size_t patternLength)
-      : subject_(subject),
+  // Its steps are added to `steps`, which the caller charges to the frame's budget.
+  Matcher(const char* subject, size_t subjectLength, const char* pattern, size_t patternLength, uint64_t& steps)
+      : steps_(steps),
+        subject_(subject),
         subjectEnd_(subject + subjectLength),
         pattern_(pattern),
         patternEnd_(pattern + strnlen(pattern, patternLength)) {}
@@ -392,13 +396,13 @@ class Matcher {
     return nullptr;
   }
 
+  uint64_t& steps_;
   const char* subject_;
   const char* subjectEnd_;
   const char* pattern_;
   const char* patternEnd_;
   int level_ = 0;
   int depth_ = 0;
-  uint64_t steps_ = 0;
   Capture capture_[kMaxCaptures];
   std::array<CompiledSet, size_t{1} << kSetCacheBits> sets_{};
 };
@@ -447,20 +451,26 @@ size_t startOf(lua_State* L, int index, size_t length) {
   return static_cast<size_t>(start) > length ? length : static_cast<size_t>(start);
 }
 
-// Runs f (which returns the number of results) and raises its refusal as a Lua error at the
-// caller's line once the handler is left.
+// Runs f(steps) (which returns the number of results) and raises its refusal as a Lua error at the
+// caller's line once the handler is left. The steps its matchers took are charged to the frame's
+// budget (which may stop the sandbox here: a C comparator or callback that matches again and again
+// runs no instruction a hook could count).
 template <class F>
 int refusing(lua_State* L, F&& f) {
   const char* message = "";
   bool costly = false;
+  uint64_t steps = 0;
+  int results = 0;
   try {
-    return f();
+    results = f(steps);
   } catch (const Refusal& r) {
     if (r.message)
       message = r.message;
     else
       costly = true;
   }
+  chargeSteps(L, static_cast<int64_t>(steps));
+  if (!message[0] && !costly) return results;
   if (costly) return luaL_error(L, "pattern too costly (more than %d steps)", static_cast<int>(kPatternStepBudget));
   return luaL_error(L, "%s", message);
 }
@@ -476,8 +486,8 @@ int findOrMatch(lua_State* L, bool find) {
   const char* s = luaL_checklstring(L, 1, &length);
   const char* p = luaL_checklstring(L, 2, &patternLength);
   const size_t start = startOf(L, 3, length);
-  return refusing(L, [&] {
-    Matcher m(s, length, p, patternLength);
+  return refusing(L, [&](uint64_t& steps) {
+    Matcher m(s, length, p, patternLength, steps);
     if (find && (lua_toboolean(L, 4) || !hasSpecials(p, patternLength))) {
       // Plain text: a linear search (two-way), charged by the bytes it passes.
       m.step((length - start + patternLength) / 16 + 1);
@@ -514,8 +524,8 @@ int gmatchNext(lua_State* L) {
   const char* s = lua_tolstring(L, lua_upvalueindex(1), &length);
   const char* p = lua_tolstring(L, lua_upvalueindex(2), &patternLength);
   const auto start = static_cast<size_t>(lua_tointeger(L, lua_upvalueindex(3)));
-  return refusing(L, [&] {
-    Matcher m(s, length, p, patternLength);
+  return refusing(L, [&](uint64_t& steps) {
+    Matcher m(s, length, p, patternLength, steps);
     for (const char* at = s + (start > length ? length + 1 : start); at <= s + length; ++at) {
       if (const char* e = m.matchAt(at, p)) {
         const size_t next = static_cast<size_t>(e - s) + (e == at ? 1 : 0);  // an empty match moves on by one
@@ -609,8 +619,8 @@ int patternGsub(lua_State* L) {
   lua_settop(L, 3);
   luaL_Buffer b;
   luaL_buffinit(L, &b);
-  return refusing(L, [&] {
-    Matcher m(s, length, p, patternLength);
+  return refusing(L, [&](uint64_t& steps) {
+    Matcher m(s, length, p, patternLength, steps);
     const bool anchored = *p == '^';
     if (anchored) ++p;
     const char* end = s + length;

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "lua_host.h"
+
 namespace platon::script {
 
 namespace {
@@ -89,8 +91,9 @@ int refuse(lua_State* L, const std::string& why) {
 // The first key of the fixed order and the array part's length, in one pass that builds nothing:
 // next(t) (what "is it empty?" asks) costs a walk over the keys, not a sort. Every key is still
 // visited, so a table whose keys have no fixed order is refused by next(t) as by pairs(t).
-int firstKey(lua_State* L) {
+int firstKey(lua_State* L, int64_t& cost) {
   const size_t n = arrayLength(L);
+  cost += static_cast<int64_t>(n);
   bool any = false;
   Key first{LUA_TNIL};
   auto rank = [](const Key& k) { return k.kind == LUA_TNUMBER ? 0 : k.kind == LUA_TSTRING ? 1 : k.boolean ? 3 : 2; };
@@ -101,6 +104,7 @@ int firstKey(lua_State* L) {
          (key.kind == LUA_TNUMBER ? key.number < first.number : key.kind == LUA_TSTRING && bytesBefore(key, first)));
     if (before) first = key;
     any = true;
+    ++cost;
   });
   if (!why.empty()) return refuse(L, why);
   if (n > 0)
@@ -113,11 +117,14 @@ int firstKey(lua_State* L) {
   return 2;
 }
 
-}  // namespace
+// What sorting m keys costs in steps: about m log2 m comparisons.
+int64_t sortCost(size_t m) {
+  int64_t log = 1;
+  while ((size_t{1} << log) < m) ++log;
+  return static_cast<int64_t>(m) * log;
+}
 
-int orderedKeys(lua_State* L) {
-  luaL_checktype(L, 1, LUA_TTABLE);
-  if (lua_isboolean(L, 2) && lua_toboolean(L, 2)) return firstKey(L);
+int allKeys(lua_State* L, int64_t& cost) {
   // The array part the walk began with, when a walk's first key came from firstKey: its keys keep
   // their place even if one of them was removed since (the rest would sort among the numbers).
   const size_t n = lua_isnumber(L, 2)
@@ -135,6 +142,8 @@ int orderedKeys(lua_State* L) {
       (key.boolean ? hasTrue : hasFalse) = true;
   });
   if (!why.empty()) return refuse(L, why);
+  cost += 2 * static_cast<int64_t>(n) + sortCost(numbers.size()) + sortCost(strings.size()) +
+          static_cast<int64_t>(numbers.size() + strings.size());
   std::sort(numbers.begin(), numbers.end());
   std::sort(strings.begin(), strings.end(), bytesBefore);
   lua_createtable(L, static_cast<int>(n + numbers.size() + strings.size() + 2), 0);
@@ -164,6 +173,18 @@ int orderedKeys(lua_State* L) {
     lua_rawseti(L, -2, ++k);
   }
   return 1;
+}
+
+}  // namespace
+
+// The keys are walked, and sorted, in C, where no hook counts: their work is charged here, once
+// the vectors are gone (the charge may stop the sandbox).
+int orderedKeys(lua_State* L) {
+  luaL_checktype(L, 1, LUA_TTABLE);
+  int64_t cost = 0;
+  const int results = lua_isboolean(L, 2) && lua_toboolean(L, 2) ? firstKey(L, cost) : allKeys(L, cost);
+  chargeSteps(L, cost);
+  return results;
 }
 
 // What a sandbox holds, and why each thing it lacks is missing (docs/scripting.md, "Sandbox"):

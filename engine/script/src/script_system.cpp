@@ -276,7 +276,8 @@ ScriptSystem::ScriptSystem(core::Scene& scene, std::string root) {
   // A level's manifest may lower the engine's limits, never raise them.
   LuaLimits limits;
   limits.memoryBytes = std::min(limits.memoryBytes, m.memoryMegabytes << 20);
-  limits.callNanoseconds = std::min(limits.callNanoseconds, static_cast<int64_t>(m.callMilliseconds * 1e6));
+  limits.frameSteps = std::min(limits.frameSteps, m.frameSteps);
+  limits.deadlineNanoseconds = std::min(limits.deadlineNanoseconds, static_cast<int64_t>(m.deadlineMilliseconds * 1e6));
   state_ = std::make_unique<State>(scene, std::move(root), limits);
   registerWorldApi(state_->host, state_->context);
   if (state_->ffi) registerWorldFfi(state_->host, state_->context);

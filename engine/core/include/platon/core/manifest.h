@@ -54,9 +54,11 @@ struct SceneManifest {
   // Where the manifest names each of its scripts and the level file ("scene.lua:7:13"), by the
   // path kept above: a file that cannot be opened is reported at that place.
   std::map<std::string, std::string> placeOf;
-  // limits = { memory_mb, call_ms }: the script system uses them only to lower its own limits.
+  // limits = { memory_mb, steps, deadline_ms }: the script system uses them only to lower its own
+  // limits (the Lua state's memory, the frame's budget of steps, the frame's wall-clock deadline).
   size_t memoryMegabytes = 128;
-  double callMilliseconds = 250;
+  int64_t frameSteps = 20'000'000;
+  double deadlineMilliseconds = 1000;
   uint32_t seed = 1;
 
   bool needs(std::string_view system) const;
