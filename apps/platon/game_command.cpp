@@ -309,6 +309,7 @@ int Game::run(bool quitAfterFirstFrame, const std::string& firstFrameShot) {
     return 1;
   }
   auto previous = std::chrono::steady_clock::now();
+  bool titleShown = false;
   while (!quit_) {
     if (std::optional<core::ReloadReport> r = live_->poll(0)) afterReload(*r);
     core::Display* d = display();
@@ -325,6 +326,11 @@ int Game::run(bool quitAfterFirstFrame, const std::string& firstFrameShot) {
     previous = now;
     stepSimulation(due, input.held);
     draw(screen_ == Screen::Playing ? clock_.alpha() : 1.0);
+    if (!titleShown) {  // the window shows the title and reads keys from now on (tests wait for it)
+      titleShown = true;
+      std::printf("title screen: %zu levels\n", levels_.size());
+      std::fflush(stdout);
+    }
     if (!firstFrameShot.empty()) {
       try {
         d->saveScreenshot(firstFrameShot);

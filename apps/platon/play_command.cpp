@@ -11,6 +11,7 @@
 #include <charconv>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <signal.h>
@@ -35,11 +36,11 @@ namespace {
 volatile sig_atomic_t stopSignal = 0;
 
 // A frame that never ends (a trusted script's compiled endless loop, a C call that runs for hours)
-// never gets back to the loop that reads stopSignal. So a second signal, or kStopGraceSeconds
+// never gets back to the loop that reads stopSignal. So a second signal, or stopGraceSeconds
 // after the first (`timeout` sends one), ends the process at once by the signal's default action.
 // No recording is written then: the frame may be changing it, and a signal handler cannot safely
-// write a file from it.
-constexpr unsigned kStopGraceSeconds = 3;
+// write a file from it. The grace is 3 s; $PLATON_STOP_GRACE (whole seconds, 1 to 3600) changes it.
+unsigned stopGraceSeconds = 3;
 
 void endNow(int signal) {
   constexpr char kNote[] = "platon play: the frame did not end: stopped at once, without writing a recording\n";
@@ -54,12 +55,18 @@ void endNow(int signal) {
 void onStopSignal(int signal) {
   if (stopSignal) return endNow(signal);
   stopSignal = signal;
-  alarm(kStopGraceSeconds);
+  alarm(stopGraceSeconds);
 }
 
 void onGraceOver(int) { endNow(stopSignal); }
 
 void stopOnSignals() {
+  if (const char* grace = std::getenv("PLATON_STOP_GRACE")) {
+    char* end = nullptr;
+    const long seconds = std::strtol(grace, &end, 10);
+    if (end != grace && *end == '\0' && seconds >= 1 && seconds <= 3600)
+      stopGraceSeconds = static_cast<unsigned>(seconds);
+  }
   struct sigaction action {};
   action.sa_handler = onStopSignal;
   sigemptyset(&action.sa_mask);
@@ -125,7 +132,7 @@ int usage() {
       "  --shot F     save the last frame shown to F (PNG) at the end\n"
       "keys in the window: arrows or WASD move, Space jumps, R restarts, F3 frame rate, F11 fullscreen, Esc quits\n"
       "SIGINT or SIGTERM ends the play after the frame; if the frame does not end, a second signal, or\n"
-      "3 s after the first, ends it at once, without writing the recording\n");
+      "3 s after the first ($PLATON_STOP_GRACE seconds if set), ends it at once, without writing the recording\n");
   return 2;
 }
 

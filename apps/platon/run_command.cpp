@@ -210,7 +210,7 @@ std::string startWorker(size_t index, const std::string& file, const script::Run
   std::fflush(nullptr);
   const pid_t pid = fork();
   if (pid < 0) {
-    const std::string error = std::string("cannot start a worker: fork: ") + std::strerror(errno);
+    std::string error = std::string("cannot start a worker: fork: ") + std::strerror(errno);
     close(fds[0]), close(fds[1]);
     return error;
   }

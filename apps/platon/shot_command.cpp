@@ -90,7 +90,7 @@ int shotCommand(int argc, char** argv) {
     core::InputEdges edges;
     for (uint64_t f = 0; f < frames; ++f) {
       if (std::optional<std::string> error = live.step(edges.next(f < input.held.size() ? input.held[f] : 0)))
-        std::fprintf(stderr, "frame %llu: %s\n", static_cast<unsigned long long>(f + 1), error->c_str());
+        std::fprintf(stderr, "frame %llu: %s\n", static_cast<unsigned long long>(f) + 1, error->c_str());
       view.step(live.scene(), status(), 1.0 / 60);
     }
     core::View v = view.view(live.scene(), 1.0);

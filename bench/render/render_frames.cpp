@@ -185,7 +185,7 @@ Frames measureLevel(const std::string& scenePath, const std::string& replayPath,
     t0 = Clock::now();
     floor->draw(vp);
     if (f == frames / 2) {  // the floor draws the scene: some pixels are not the clear colour
-      std::vector<uint8_t> px(1280 * 720 * 4);
+      std::vector<uint8_t> px(size_t{1280} * 720 * 4);
       glReadPixels(0, 0, 1280, 720, GL_RGBA, GL_UNSIGNED_BYTE, px.data());
       size_t drawn = 0;
       for (size_t i = 0; i < px.size(); i += 4) drawn += px[i] != px[0] || px[i + 1] != px[1] || px[i + 2] != px[2];

@@ -40,9 +40,11 @@ std::vector<Engine> engines(const std::vector<double>& rates) {
     for (const int upm : {64, 256, 1024, 4096})
       out.push_back({"Platon", std::to_string(upm) + "u/m", hz, [=] { return std::make_unique<PlatonWorld>(upm, hz); },
                      1.0 / upm, upm == 1024 && hz == 60});
-    for (const auto& [v, p] : std::vector<std::pair<int, int>>{{1, 1}, {3, 1}, {8, 3}, {20, 8}})
+    for (const auto& iterations : std::vector<std::pair<int, int>>{{1, 1}, {3, 1}, {8, 3}, {20, 8}}) {
+      const int v = iterations.first, p = iterations.second;  // plain variables: the lambda captures them
       out.push_back({"Box2D 2.4.1", "v" + std::to_string(v) + "p" + std::to_string(p), hz,
                      [=] { return makeBox2D(v, p); }, 0, v == 8 && hz == 60});
+    }
     for (const int it : {1, 5, 10, 30})
       out.push_back(
           {"Chipmunk 7.0.3", "it" + std::to_string(it), hz, [=] { return makeChipmunk(it); }, 0, it == 10 && hz == 60});

@@ -106,8 +106,8 @@ void Grid::forEachCell(const Segment& s, const CellRect& span, Visit&& visit) co
   for (int c = span.x0; c <= span.x1; ++c) {
     const int64_t xl = c == span.x0 ? a.x : xAxis_.cuts[c];
     const int64_t xr = c == span.x1 ? b.x : xAxis_.cuts[c + 1];
-    const int64_t yl = a.y + static_cast<int64_t>(floorDiv((xl - a.x) * dy, dx));
-    const int64_t yr = a.y + static_cast<int64_t>(floorDiv((xr - a.x) * dy, dx));
+    const int64_t yl = a.y + static_cast<int64_t>(floorDiv(i128{xl - a.x} * dy, dx));
+    const int64_t yr = a.y + static_cast<int64_t>(floorDiv(i128{xr - a.x} * dy, dx));
     // The floors round down; one more unit covers the ceiling. Clamp to the segment's own range.
     const int64_t lo = std::max<int64_t>(std::min(yl, yr), std::min(a.y, b.y));
     const int64_t hi = std::min<int64_t>(std::max(yl, yr) + 1, std::max(a.y, b.y));

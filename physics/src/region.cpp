@@ -2,7 +2,7 @@
 
 namespace platon::physics {
 namespace {
-inline size_t hashLine(uint32_t line, size_t mask) { return (line * 2654435761u) & mask; }
+inline size_t hashLine(uint32_t line, size_t mask) { return (size_t{line} * 2654435761u) & mask; }
 }  // namespace
 
 void Region::clear() {

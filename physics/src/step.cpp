@@ -506,7 +506,7 @@ class SubMove {
   // free of every line for every instance: a sub-move of its own, with its pierce events.
   bool liftEntity(Vec2w direction) {
     const Vec2w n = shortDirection(direction);
-    const int64_t length = static_cast<int64_t>(isqrt(static_cast<u128>(n.x * n.x + n.y * n.y)));
+    const int64_t length = static_cast<int64_t>(isqrt(static_cast<u128>(i128{n.x} * n.x + i128{n.y} * n.y)));
     if (length == 0) return false;
     for (int64_t units = 1; units <= 3; ++units) {
       const Vec2w step{static_cast<int64_t>(roundDiv(i128{n.x} * units, length)),

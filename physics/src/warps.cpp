@@ -95,7 +95,7 @@ bool WorldImpl::placeNear(const Entity& e, Instance& inst, Vec2w targetQ30, cons
 
 bool WorldImpl::liftCopy(const Entity& e, Instance& copy, Vec2w direction, Vec2w move) {
   const Vec2w n = shortDirection(direction);
-  const int64_t length = static_cast<int64_t>(isqrt(static_cast<u128>(n.x * n.x + n.y * n.y)));
+  const int64_t length = static_cast<int64_t>(isqrt(static_cast<u128>(i128{n.x} * n.x + i128{n.y} * n.y)));
   if (length == 0) return false;
   const Vec2 was = copy.position;
   std::vector<Vec2>& verts = scratch.probe;
@@ -224,13 +224,13 @@ void WorldImpl::updateLinks(Move& move) {
     const uint8_t bNow = edgeState(vb, targetSeg);
     // The pair ends when a side comes off its edge (or both are off): the side the source is on
     // says which copy stays. The source's face is left of p0 -> p1; the target's is right of t0 -> t1.
+    // The source's side decides when it came off its edge, or when both sides are off and the target
+    // was not on its edge before (had it been, the target's side decides).
     MapPartId eraseAt = 0;
-    if (link.fromState > 0 && aNow == 0) {
+    if (aNow == 0 && (link.fromState > 0 || (bNow == 0 && link.toState == 0))) {
       eraseAt = sideOf(va, warpSeg) > 0 ? link.toPart : link.fromPart;
     } else if (link.toState > 0 && bNow == 0) {
       eraseAt = sideOf(vb, targetSeg) > 0 ? link.toPart : link.fromPart;
-    } else if (aNow == 0 && bNow == 0) {
-      eraseAt = sideOf(va, warpSeg) > 0 ? link.toPart : link.fromPart;
     } else {
       link.fromState = aNow;
       link.toState = bNow;
@@ -256,7 +256,7 @@ bool insideFace(const MapPart& part, Vec2 p) {
     const Segment s = part.segments()[line];
     const Vec2w d = s.b - s.a;
     const i128 side = i128{d.x} * (i128{p.y} - s.a.y) - i128{d.y} * (i128{p.x} - s.a.x);
-    if (side < 0 && side * side > i128{kRounding * kRounding} * (i128{d.x} * d.x + i128{d.y} * d.y)) return false;
+    if (side < 0 && side * side > i128{kRounding} * kRounding * (i128{d.x} * d.x + i128{d.y} * d.y)) return false;
   }
   return true;
 }

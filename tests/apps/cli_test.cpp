@@ -123,7 +123,7 @@ class Process {
   Ran ran_;
 };
 
-Ran platon(const std::vector<std::string>& args, const std::string& cwd, double seconds = 60) {
+Ran platon(const std::vector<std::string>& args, const std::string& cwd, double seconds = 600) {
   return Process(args, cwd).finish(seconds);
 }
 
@@ -163,10 +163,9 @@ TEST(Run, ATimeLimitHoldsAtJ1AndTheNextScenarioStillRuns) {
   const std::string scene = sceneWith(folder, "s");
   folder.write("hang.lua", "while true do end\n");  // compiled: no hook stops it
   scenario(folder, "ok.lua", scene);
-  const Ran r = platon({"run", "--timeout", "1", "hang.lua", "ok.lua"}, folder.path(), 30);
-  EXPECT_LT(r.seconds, 20);
+  const Ran r = platon({"run", "--timeout", "5", "hang.lua", "ok.lua"}, folder.path(), 120);
   EXPECT_EQ(r.status, 1) << r.out << r.err;
-  EXPECT_TRUE(contains(r.out, "FAIL hang.lua: not finished within the time limit of 1 s (killed)")) << r.out;
+  EXPECT_TRUE(contains(r.out, "FAIL hang.lua: not finished within the time limit of 5 s (killed)")) << r.out;
   EXPECT_TRUE(contains(r.out, "PASS ok.lua: ")) << r.out;
 }
 
@@ -338,7 +337,7 @@ TEST(Play, FramesMustBeAWholeNumberFromOne) {
   Folder folder("cli_play_frames");
   const std::string scene = sceneWith(folder, "s");
   for (const char* frames : {"-1", "abc", "0", "10x", ""}) {
-    const Ran r = platon({"play", scene, "--headless", "--fast", "--frames", frames}, folder.path(), 10);
+    const Ran r = platon({"play", scene, "--headless", "--fast", "--frames", frames}, folder.path(), 120);
     EXPECT_EQ(r.status, 2) << "--frames '" << frames << "': " << r.out;
     EXPECT_TRUE(contains(r.err, "--frames")) << r.err;
   }
@@ -350,10 +349,10 @@ TEST(Play, ASignalEndsThePlayAndTheRecordingIsWritten) {
   for (const int s : {SIGTERM, SIGINT}) {
     std::filesystem::remove(folder.path("run.replay"));
     Process play({"play", scene, "--headless", "--record", "run.replay"}, folder.path());  // never ends by itself
-    ASSERT_TRUE(play.awaitOutput("playing", 10));
+    ASSERT_TRUE(play.awaitOutput("playing", 120));
     std::this_thread::sleep_for(std::chrono::milliseconds(300));
     play.signal(s);
-    const Ran r = play.finish(10);
+    const Ran r = play.finish(120);
     EXPECT_EQ(r.status, 128 + s) << r.out << r.err;
     EXPECT_TRUE(contains(r.out, "stopped by signal " + std::to_string(s))) << r.out;
     ASSERT_TRUE(std::filesystem::exists(folder.path("run.replay"))) << r.out;
@@ -396,43 +395,45 @@ std::string stuckScene(const Folder& folder) {
   return "scene.lua";
 }
 
-// Plays stuckScene until it is stuck.
-std::unique_ptr<Process> playStuck(const Folder& folder) {
+// Plays stuckScene until it is stuck, with a grace period of `grace` seconds after one signal.
+std::unique_ptr<Process> playStuck(const Folder& folder, int grace) {
   const std::string scene = stuckScene(folder);
   setenv("PLATON_ROOT", folder.path("root").c_str(), 1);
+  setenv("PLATON_STOP_GRACE", std::to_string(grace).c_str(), 1);
   auto play = std::make_unique<Process>(
       std::vector<std::string>{"play", scene, "--headless", "--fast", "--record", "run.replay"}, folder.path());
   unsetenv("PLATON_ROOT");
+  unsetenv("PLATON_STOP_GRACE");
   return play;
 }
 
 // Re-audit N3: SIGTERM and SIGINT only set a flag the loop reads between frames, so a stuck frame
-// could not be stopped (not by `timeout`, not by Ctrl-C). A second signal ends it at once.
+// could not be stopped (not by `timeout`, not by Ctrl-C). A second signal ends it at once: here
+// the grace period is an hour, so ending by SIGINT at all (before finish kills it) is that.
 TEST(Play, ASecondSignalEndsAStuckFrameAtOnce) {
   Folder folder("cli_play_stuck_twice");
-  std::unique_ptr<Process> play = playStuck(folder);
-  ASSERT_TRUE(play->awaitOutput("stuck in frame 3", 20));
+  std::unique_ptr<Process> play = playStuck(folder, 3600);
+  ASSERT_TRUE(play->awaitOutput("stuck in frame 3", 60));
   play->signal(SIGTERM);
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
   play->signal(SIGINT);
-  const Ran r = play->finish(10);
+  const Ran r = play->finish(120);
   EXPECT_EQ(r.status, 128 + SIGINT) << r.out << r.err;
-  EXPECT_LT(r.seconds, 1.5);
   EXPECT_TRUE(contains(r.err, "platon play: the frame did not end: stopped at once, without writing a recording"))
       << r.err;
   EXPECT_FALSE(std::filesystem::exists(folder.path("run.replay")));
 }
 
-// One signal (what `timeout` sends) ends a stuck frame after the grace period of 3 s.
+// One signal (what `timeout` sends) ends a stuck frame after the grace period (1 s here; 3 s unless
+// $PLATON_STOP_GRACE says otherwise): by SIGTERM's own default action, not before the grace.
 TEST(Play, OneSignalEndsAStuckFrameAfterTheGracePeriod) {
   Folder folder("cli_play_stuck_once");
-  std::unique_ptr<Process> play = playStuck(folder);
-  ASSERT_TRUE(play->awaitOutput("stuck in frame 3", 20));
+  std::unique_ptr<Process> play = playStuck(folder, 1);
+  ASSERT_TRUE(play->awaitOutput("stuck in frame 3", 60));
   play->signal(SIGTERM);
-  const Ran r = play->finish(10);
+  const Ran r = play->finish(120);
   EXPECT_EQ(r.status, 128 + SIGTERM) << r.out << r.err;
-  EXPECT_GT(r.seconds, 2.5);
-  EXPECT_LT(r.seconds, 6.0);
+  EXPECT_GE(r.seconds, 0.9);  // a lower bound: no machine makes it shorter
   EXPECT_TRUE(contains(r.err, "stopped at once, without writing a recording")) << r.err;
 }
 
@@ -451,7 +452,7 @@ TEST(Play, ARecordPathThatCannotBeWrittenIsRefusedBeforePlaying) {
        "platon play: --record x.replay: a scene path with '\"' or a line break cannot be written in a replay"},
   };
   for (const auto& [args, message] : cases) {
-    const Ran r = platon(args, folder.path(), 20);
+    const Ran r = platon(args, folder.path(), 120);
     EXPECT_EQ(r.status, 2) << args.back() << "\n" << r.out << r.err;
     EXPECT_TRUE(contains(r.err, message)) << r.err;
     EXPECT_FALSE(contains(r.out, "playing")) << r.out;
@@ -465,11 +466,11 @@ TEST(Play, ARecordingThatCannotBeWrittenAtTheEndIsReportedNotAnAbort) {
   Folder folder("cli_play_record_lost");
   const std::string scene = sceneWith(folder, "s");
   Process play({"play", scene, "--headless", "--record", "run.replay"}, folder.path());
-  ASSERT_TRUE(play.awaitOutput("playing", 10));
+  ASSERT_TRUE(play.awaitOutput("playing", 120));
   std::filesystem::create_directories(folder.path("run.replay/in_the_way"));
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
   play.signal(SIGTERM);
-  const Ran r = play.finish(10);
+  const Ran r = play.finish(120);
   EXPECT_EQ(r.status, 1) << r.out << r.err;
   EXPECT_TRUE(contains(
       r.err, "platon play: run.replay: cannot write the replay; this run's recording is left in run.replay.partial"))

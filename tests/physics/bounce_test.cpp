@@ -142,7 +142,7 @@ TEST(Bounce, RandomBodiesInRandomRoomsKeepTheirEnergy) {
     const EntityId body =
         world.createEntity(platon::testing::randomConvex(rng, between(rng, 5, 60), platon::testing::Turn::MaybeTurned));
     world.insert(body, 1, {between(rng, -800, 800), between(rng, -800, 800)}, 0);
-    world.setVelocity(body, {between(rng, -30, 30) * 65536, between(rng, -30, 30) * 65536});
+    world.setVelocity(body, {int64_t{between(rng, -30, 30)} * 65536, int64_t{between(rng, -30, 30)} * 65536});
     // Energy per unit mass, measured from the room's lowest point, so that it means the same at any
     // place and gravity.
     double lowest = 1e300;

@@ -25,8 +25,8 @@ constexpr int64_t kUnit = 65536;
 // The point at `length` units from `from` in direction `angle`, rounded.
 Vec2 along(Vec2 from, Angle angle, int64_t length) {
   const Rotation r = rotationOf(angle);
-  return {from.x + static_cast<int32_t>(roundDiv(r.c * length, i128{1} << 30)),
-          from.y + static_cast<int32_t>(roundDiv(r.s * length, i128{1} << 30))};
+  return {from.x + static_cast<int32_t>(roundDiv(i128{r.c} * length, i128{1} << 30)),
+          from.y + static_cast<int32_t>(roundDiv(i128{r.s} * length, i128{1} << 30))};
 }
 
 // Inserts somewhere above the line y = floorY (in a frame where the floor is the x axis) that is
@@ -291,8 +291,8 @@ bool makeCrease(Crease& c, std::mt19937_64& rng, int64_t alpha1, int64_t alpha2,
   part.line(along(apex, static_cast<Angle>(up + angleFromDegrees(alpha2)), length), apex);
   const Rotation down = rotationOf(static_cast<Angle>(up + kHalfTurn));
   const int64_t g = between(rng, 3000, 2 * kUnit);
-  c.gravity = {static_cast<int64_t>(roundDiv(down.c * g, i128{1} << 30)),
-               static_cast<int64_t>(roundDiv(down.s * g, i128{1} << 30))};
+  c.gravity = {static_cast<int64_t>(roundDiv(i128{down.c} * g, i128{1} << 30)),
+               static_cast<int64_t>(roundDiv(i128{down.s} * g, i128{1} << 30))};
   part.setGravity(c.gravity);
   part.initialize();
   c.body = c.world.createEntity(shape);
@@ -412,7 +412,7 @@ TEST(Creases, SettlingTakesAFewFramesOnceInTheCorner) {
       const InstanceView inst = c.world.entity(c.body).instance(0);
       const Vec2w v = c.world.entity(c.body).velocity();
       const double wx = static_cast<double>(c.gravity.x), wy = static_cast<double>(c.gravity.y);
-      if (std::hypot(static_cast<double>(v.x), static_cast<double>(v.y)) > kUnit / 4) return false;
+      if (std::hypot(static_cast<double>(v.x), static_cast<double>(v.y)) > static_cast<double>(kUnit) / 4) return false;
       std::vector<Vec2> poly;
       for (const Vec2 p : inst.shape) poly.push_back({inst.position.x + p.x, inst.position.y + p.y});
       for (const Segment& seg : c.world.mapPart(1).segments()) {

@@ -140,7 +140,7 @@ TEST(Errors, ABadRestitutionIsReportedAndTheFrameFinishes) {
     world.setRules(&rules);
     const EntityId box = world.createEntity(Convex::box(10, 10));
     world.insert(box, 1, {0, 40}, 0);
-    world.setVelocity(box, {0, -50 * 65536});
+    world.setVelocity(box, {0, int64_t{-50} * 65536});
     expectError([&] { world.solve(); }, "restitution");
     EXPECT_EQ(world.entity(box).instance(0).position, (Vec2{0, 10}));  // landed, slid: nothing bounced
     EXPECT_EQ(world.countOverlaps(), 0u);

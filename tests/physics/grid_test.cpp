@@ -24,7 +24,8 @@ void buildGrid(Grid& grid, std::span<const Segment> segments) {
 std::vector<Segment> randomSegments(std::mt19937_64& rng, int n, int32_t half, int32_t maxLength) {
   std::vector<Segment> out;
   while (static_cast<int>(out.size()) < n) {
-    const Vec2 a{static_cast<int32_t>(rng() % (2 * half)) - half, static_cast<int32_t>(rng() % (2 * half)) - half};
+    const Vec2 a{static_cast<int32_t>(rng() % (2 * static_cast<uint64_t>(half))) - half,
+                 static_cast<int32_t>(rng() % (2 * static_cast<uint64_t>(half))) - half};
     const Vec2 b{a.x + static_cast<int32_t>(rng() % (2 * maxLength + 1)) - maxLength,
                  a.y + static_cast<int32_t>(rng() % (2 * maxLength + 1)) - maxLength};
     if (a != b) out.push_back({a, b});

@@ -43,7 +43,7 @@ TEST(ObtuseCrease, ABodyThatSlidDownALeaningWallWalksAwayAlongTheFloor) {
       continue;  // the random shape does not fit there
     }
     ++trials;
-    world.setVelocity(body, {between(rng, 2, 20) * 65536, -between(rng, 10, 60) * 65536});
+    world.setVelocity(body, {int64_t{between(rng, 2, 20)} * 65536, -int64_t{between(rng, 10, 60)} * 65536});
     for (int f = 0; f < 400; ++f) {
       const Vec2w v = world.entity(body).velocity();
       world.setVelocity(body, {v.x + 65536 / 2, v.y});  // pressed toward the wall while it slides
@@ -52,7 +52,7 @@ TEST(ObtuseCrease, ABodyThatSlidDownALeaningWallWalksAwayAlongTheFloor) {
     // At the foot now. Walk away along the floor.
     const Vec2 before = world.entity(body).position();
     for (int f = 0; f < 60; ++f) {
-      world.setVelocity(body, {-9 * 65536, world.entity(body).velocity().y});
+      world.setVelocity(body, {int64_t{-9} * 65536, world.entity(body).velocity().y});
       world.solve();
       ASSERT_EQ(world.countOverlaps(), 0u);
     }

@@ -60,8 +60,8 @@ struct Fold {
     // The wall: the edge moved `wall` units into B, so it lies in B however the edge slopes.
     if (wall > 0) b.line(toB({e0.x + wall, e0.y}), toB({e1.x + wall, e1.y}));
     const Rotation r = rotationOf(angleFromDegrees(lean));
-    gravity = {static_cast<int64_t>(roundDiv(r.s * g, i128{1} << 30)),
-               -static_cast<int64_t>(roundDiv(r.c * g, i128{1} << 30))};
+    gravity = {static_cast<int64_t>(roundDiv(i128{r.s} * g, i128{1} << 30)),
+               -static_cast<int64_t>(roundDiv(i128{r.c} * g, i128{1} << 30))};
     a.setGravity(gravity);
     b.setGravity(rotateWide(turn, gravity));
     a.initialize();

@@ -168,8 +168,8 @@ TEST(Warp, EdgesAtAnyAngleKeepTheInvariant) {
           try {
             world.insert(id, 1, {300 + static_cast<int32_t>(rng() % 5400), 300 + static_cast<int32_t>(rng() % 5400)},
                          static_cast<Angle>(rng()));
-            world.setVelocity(id, {static_cast<int64_t>(rng() % (80 * 65536)) - 20 * 65536,
-                                   static_cast<int64_t>(rng() % (60 * 65536)) - 30 * 65536});
+            world.setVelocity(id, {static_cast<int64_t>(rng() % (int64_t{80} * 65536)) - int64_t{20} * 65536,
+                                   static_cast<int64_t>(rng() % (int64_t{60} * 65536)) - int64_t{30} * 65536});
             ids.push_back(id);
             break;
           } catch (const Error&) {}
@@ -217,7 +217,7 @@ TEST(Warp, WorldsRunInParallelThreads) {
     for (int i = 0; i < 8; ++i) {
       const EntityId id = world.createEntity(Convex::regular(6, 15));
       world.insert(id, 1, {100 + i * 100, 300}, 0);
-      world.setVelocity(id, {(3 + i) * 65536, 0});
+      world.setVelocity(id, {int64_t{3 + i} * 65536, 0});
     }
     for (int f = 0; f < 5000; ++f) world.solve();
     *hash = world.stateHash();

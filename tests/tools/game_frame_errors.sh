@@ -1,7 +1,7 @@
 #!/bin/sh
 # The game prints a script error once, not on every frame it repeats (60 tracebacks a second), and
-# again when it changes. A one-level campaign whose level errors on every frame is played for a
-# second in a real window (Xvfb, keys typed with xdotool). Run by ctest as
+# again when it changes. A one-level campaign whose level errors on every frame is played in a real
+# window (Xvfb, keys typed with xdotool) until the second error. Run by ctest as
 #   with_xvfb.sh game_frame_errors.sh PLATON
 set -eu
 platon=$1
@@ -19,25 +19,21 @@ local level = { start = { face = 0, x = 600, y = 700 } }
 function level.build(game) game.world.line(0, 0, 512, 4096, 512) end
 function level.tick(game, frame)
   if frame < 120 then error("the same error every frame") end
-  error("another error from frame 120 on")
+  if frame < 180 then error("another error from frame 120 on") end
+  game.message("frame " .. frame)
 end
 return level
 LUA
 XDG_DATA_HOME="$data" "$platon" game --campaign "$data/levels/campaign.txt" > "$log" 2>&1 &
 pid=$!
 fail() { echo "$1"; cat "$log"; kill "$pid" 2>/dev/null; rm -rf "$data"; exit 1; }
-. "$(dirname "$0")/focus_window.sh"
-focus_window || fail "no window appeared"
-sleep 0.3
+. "$(dirname "$0")/window_test.sh"
+await_title
 xdotool key Return
-for _ in $(seq 100); do grep -q "^playing broken" "$log" && break; sleep 0.1; done
-grep -q "^playing broken" "$log" || fail "Enter did not start the level"
-sleep 3  # 180 frames: 119 of the first error, then the second
-xdotool key Escape
-sleep 0.3
-xdotool key Down Down Down Return  # Quit
-for _ in $(seq 50); do kill -0 "$pid" 2>/dev/null || break; sleep 0.1; done
-kill -0 "$pid" 2>/dev/null && fail "Quit did not end the game"
+await "^playing broken"
+await "another error from frame 120 on"
+xdotool key Escape Down Down Down Return  # the pause menu: Quit
+await_exit "Quit did not end the game"
 wait "$pid" || fail "the game failed"
 first=$(grep -c "the same error every frame" "$log" || true)
 second=$(grep -c "another error from frame 120 on" "$log" || true)

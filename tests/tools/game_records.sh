@@ -12,43 +12,32 @@ rec="$data/rec"
 XDG_DATA_HOME="$data" "$platon" game --record "$rec" > "$log" 2>&1 &
 pid=$!
 fail() { echo "$1"; cat "$log"; kill "$pid" 2>/dev/null; xdotool keyup Right 2>/dev/null; rm -rf "$data"; exit 1; }
-await() {  # a line of the log, for up to $2 tenths of a second
-  for _ in $(seq "$2"); do grep -q "$1" "$log" && return 0; kill -0 "$pid" 2>/dev/null || fail "the game ended"; sleep 0.1; done
-  fail "no line '$1' in the log"
-}
-. "$(dirname "$0")/focus_window.sh"
-focus_window || fail "no window appeared"
-sleep 0.3
+. "$(dirname "$0")/window_test.sh"
+await_title
 # The first level to its goal: written there.
 xdotool key Return
-await "^playing cube_intro" 200
+await "^playing cube_intro"
 xdotool keydown Right
-await "^level complete: cube_intro" 1500
+await "^level complete: cube_intro"
 xdotool keyup Right
-await "^recorded cube_intro: .* to $rec/cube_intro.replay" 50
+await "^recorded cube_intro: .* to $rec/cube_intro.replay"
 # The next level, walked a little, then reloaded with F5: written at the reload.
 xdotool key Return
-await "^playing tetra_around" 200
+await "^playing tetra_around"
 xdotool keydown Right
-sleep 1
+sleep 1  # how far it walks does not matter
 xdotool keyup Right
 xdotool key F5
-await "^reloaded tetra_around" 100
-await "^recorded tetra_around: .* to $rec/tetra_around.replay" 50
+await "^reloaded tetra_around"
+await "^recorded tetra_around: .* to $rec/tetra_around.replay"
 # Restarted from the pause menu, walked, and quit: a second replay of the level, not overwriting.
-xdotool key Escape
-sleep 0.3
-xdotool key Down Return  # Restart the level
-await "playing tetra_around" 100
-[ "$(grep -c '^playing tetra_around' "$log")" -eq 2 ] || fail "the restart did not start the level again"
+xdotool key Escape Down Return  # the pause menu: Restart the level
+await "^playing tetra_around" 2
 xdotool keydown Right
 sleep 1
 xdotool keyup Right
-xdotool key Escape
-sleep 0.3
-xdotool key Down Down Down Return  # Quit
-for _ in $(seq 50); do kill -0 "$pid" 2>/dev/null || break; sleep 0.1; done
-kill -0 "$pid" 2>/dev/null && fail "Quit in the pause menu did not end the game"
+xdotool key Escape Down Down Down Return  # the pause menu: Quit
+await_exit "Quit in the pause menu did not end the game"
 wait "$pid" || fail "the game failed"
 grep -q "^recorded tetra_around: .* to $rec/tetra_around-2.replay" "$log" || fail "quitting did not write the second replay"
 cat "$log"

@@ -310,7 +310,7 @@ std::string insideFolder(const std::string& manifest, const std::string& folder,
                          const std::string& p) {
   const std::string realFolder = realPath(folder);
   if (realFolder.empty()) fieldError(manifest, where, "'" + folder + "': the scene's folder cannot be resolved");
-  const std::string file = realPath(folder + "/" + p);
+  std::string file = realPath(folder + "/" + p);
   if (file.empty()) return realFolder + "/" + p;
   if (file.rfind(realFolder + "/", 0) != 0)
     fieldError(manifest, where, "'" + p + "' leads to " + file + ", outside the scene's folder (a link?)");
@@ -391,7 +391,7 @@ SceneManifest loadManifest(const std::string& path) {
             path, *scripts->field(key),
             "'" + p + "': a script is a .lua path inside the level's folder or under scripts/ (no '..', not absolute)");
       trusted = engine;
-      const std::string kept = engine ? p : insideFolder(path, m.directory, *scripts->field(key), p);
+      std::string kept = engine ? p : insideFolder(path, m.directory, *scripts->field(key), p);
       m.placeOf[kept] = placeText(path, *scripts->field(key));
       return kept;
     };

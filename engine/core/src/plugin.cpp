@@ -47,7 +47,7 @@ PluginEntry* findEntry(const std::string& name, const std::string& module, const
 
 }  // namespace
 
-void SystemRegistry::addPlugin(std::string name, std::string module, std::vector<std::string> folders) {
+void SystemRegistry::addPlugin(const std::string& name, const std::string& module, std::vector<std::string> folders) {
   PluginEntry* entry = nullptr;  // found on first use, shared by every scene this factory makes
   add(name, [name, module, folders = std::move(folders), entry](Scene& scene) mutable -> std::unique_ptr<System> {
     if (!entry) entry = findEntry(name, module, folders);

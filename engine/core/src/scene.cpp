@@ -1,5 +1,6 @@
 #include "platon/core/scene.h"
 
+#include <cmath>
 #include <exception>
 #include <filesystem>
 #include <fstream>
@@ -158,7 +159,7 @@ stage::Stage meshStageOf(const stage::Level& level, MeshSource& source) {
 std::unique_ptr<Scene> loadScene(const std::string& manifestPath, const SystemRegistry& registry) {
   auto scene = std::make_unique<Scene>();
   SceneManifest manifest = loadManifest(manifestPath);
-  const auto gravity = static_cast<int64_t>(manifest.gravity * 65536.0 + 0.5);
+  const auto gravity = static_cast<int64_t>(std::llround(manifest.gravity * 65536.0));
   if (!manifest.levelFile.empty()) {
     // Parsed and checked whole before anything enters the world: a bad file builds nothing.
     stage::Level level = stage::parseLevel(stage::readLevelFile(manifest.levelFile), manifest.levelFile);

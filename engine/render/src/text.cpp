@@ -1,6 +1,7 @@
 #include "text.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <stdexcept>
 #include <unistd.h>
@@ -94,13 +95,13 @@ const Text::Texture* Text::texture(const std::string& text, int pixels, core::Co
 
 float Text::width(const std::string& text, float height) {
   int w = 0, h = 0;
-  if (text.empty() || TTF_SizeUTF8(font(static_cast<int>(height + 0.5f)), text.c_str(), &w, &h) != 0) return 0;
+  if (text.empty() || TTF_SizeUTF8(font(static_cast<int>(std::lround(height))), text.c_str(), &w, &h) != 0) return 0;
   return static_cast<float>(w);
 }
 
 float Text::draw(const std::string& text, core::Point2 at, float height, core::Color color) {
   if (text.empty()) return 0;
-  const Texture* t = texture(text, std::clamp(static_cast<int>(height + 0.5f), 6, 256), color);
+  const Texture* t = texture(text, std::clamp(static_cast<int>(std::lround(height)), 6, 256), color);
   if (!t) return 0;
   queued_.push_back({t->id, at.x, at.y, static_cast<float>(t->width), static_cast<float>(t->height)});
   return static_cast<float>(t->width);

@@ -35,7 +35,6 @@ class Window {
   SDL_Window* window_ = nullptr;
   SDL_GLContext context_ = nullptr;
   std::vector<SDL_GameController*> pads_;
-  uint8_t padHeld_ = 0;
   std::string title_;
 };
 

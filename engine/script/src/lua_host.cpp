@@ -367,7 +367,7 @@ void budgetHook(lua_State* L, lua_Debug*) {
 std::string printableMessage(lua_State* L, int index) {
   size_t length = 0;
   const char* raw = lua_tolstring(L, index, &length);
-  constexpr size_t kLongest = 16 * 1024;
+  constexpr size_t kLongest = size_t{16} * 1024;
   std::string text;
   text.reserve(std::min(length, kLongest) + 16);
   for (size_t i = 0; i < length && text.size() < kLongest; ++i) {
@@ -387,7 +387,7 @@ int tracebackHandler(lua_State* L) {
   if (!lua_checkstack(L, 8)) return 1;
   size_t length = 0;
   if (const char* raw = lua_type(L, 1) == LUA_TSTRING ? lua_tolstring(L, 1, &length) : nullptr;
-      raw && (std::memchr(raw, '\0', length) || length > 16 * 1024)) {  // the traceback takes it as a C string
+      raw && (std::memchr(raw, '\0', length) || length > size_t{16} * 1024)) {  // the traceback takes it as a C string
     const std::string whole = printableMessage(L, 1);
     lua_pushlstring(L, whole.data(), whole.size());
     lua_replace(L, 1);

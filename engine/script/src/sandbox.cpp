@@ -62,9 +62,8 @@ std::string visitKeys(lua_State* L, size_t n, Visit&& visit) {
     } else if (key.kind == LUA_TBOOLEAN) {
       key.boolean = lua_toboolean(L, -1);
     } else {
-      const std::string why =
-          std::string("pairs over ") + lua_typename(L, key.kind) +
-          " keys has no fixed order in a replayable game (key the table by numbers, strings or booleans)";
+      std::string why = std::string("pairs over ") + lua_typename(L, key.kind) +
+                        " keys has no fixed order in a replayable game (key the table by numbers, strings or booleans)";
       lua_pop(L, 1);
       return why;
     }

@@ -75,7 +75,7 @@ std::string realPath(const std::string& path) {
 std::string engineScript(const std::string& root, const std::string& path) {
   if (path.rfind("scripts/", 0) != 0) throw lua::ArgError("'" + path + "': an engine script is a path under scripts/");
   const std::string folder = realPath(root + "/scripts");
-  const std::string file = realPath(root + "/" + path);
+  std::string file = realPath(root + "/" + path);
   if (folder.empty() || file.empty()) throw ScriptError(root + "/" + path + ": cannot open the script", "");
   if (file.rfind(folder + "/", 0) != 0)
     throw lua::ArgError("'" + path + "' is " + file + ", outside the engine's scripts (" + folder + "/)");

@@ -166,7 +166,8 @@ int createEntity(lua_State* L) {
       throw lua::ArgError("createEntity: box = {halfWidth, halfHeight}, both > 0");
     shape = physics::Convex::box(half[0], half[1]);
   } else if (!lua_isnil(L, -1)) {
-    const std::vector<int32_t> xy = intList(L, lua_gettop(L), "createEntity: polygon", 2 * physics::kMaxConvexVertices);
+    const std::vector<int32_t> xy =
+        intList(L, lua_gettop(L), "createEntity: polygon", size_t{2} * physics::kMaxConvexVertices);
     if (xy.size() < 6 || xy.size() % 2)
       throw lua::ArgError("createEntity: polygon = {x0, y0, x1, y1, x2, y2, ...}: 3 to " +
                           std::to_string(physics::kMaxConvexVertices) + " points");

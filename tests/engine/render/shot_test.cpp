@@ -57,7 +57,7 @@ Difference compare(const Picture& a, const Picture& b) {
     }
     different += worst > 40;
   }
-  const double pixels = static_cast<double>(a.rgba.size() / 4);
+  const double pixels = static_cast<double>(a.rgba.size()) / 4;
   d.differentShare = static_cast<double>(different) / pixels;
   d.meanPerChannel = total / (pixels * 3);
   return d;
@@ -83,7 +83,7 @@ class Shots : public ::testing::Test {
  protected:
   static void SetUpTestSuite() { IMG_Init(IMG_INIT_PNG); }
   std::string shoot(const Case& c) {
-    const std::string out = folder.path(std::string(c.level) + ".png");
+    std::string out = folder.path(std::string(c.level) + ".png");
     const std::string command = std::string("SDL_VIDEODRIVER=offscreen ") + PLATON_EXE + " shot " + c.level +
                                 " --input tests/replays/" + c.replay + ".replay --frame " + std::to_string(c.frame) +
                                 " --size 320x180 --out " + out + " > /dev/null";

@@ -197,7 +197,8 @@ ReturnFigures retraceRandomCrossings(Built* b, int trials, uint64_t seed, double
       continue;
     }
     const physics::EntityView e0 = world.entity(body);
-    const auto [centre0, reach] = centreAndReach(*e0.instances().begin());
+    const auto [centre0, reach0] = centreAndReach(*e0.instances().begin());
+    const double reach = reach0;  // a plain variable: the lambda below captures it
     if (e0.instanceCount() != 1 ||
         depthInside(face.corners, centre0) < reach + 2) {  // wholly inside its face to begin with
       world.destroyEntity(body);
@@ -426,7 +427,7 @@ void walkAcross(Built& b, platon::testing::Rng& rng, const std::string& label) {
   }
   for (int walker = 0; walker < 6; ++walker) {
     const size_t face = static_cast<size_t>(rng.between(0, static_cast<int>(b.stage.faceCount()) - 1));
-    const int64_t speed = (walker % 2 ? -1 : 1) * rng.between(3, 14) * kQ16;
+    const int64_t speed = int64_t{walker % 2 ? -1 : 1} * rng.between(3, 14) * kQ16;
     const physics::EntityId body = b.world.createEntity(shapeNumber(walker % 2));
     double cx = 0, cy = 0;
     for (const Vec2 p : b.stage.faces[face].corners) cx += p.x, cy += p.y;
@@ -477,7 +478,7 @@ TEST(Crossing, WalkingAndFallingAcrossEveryShapeStaysOnTheFaces) {
 // grew with gravity (4 in 600 before the corner rule kept the next frame's motion clear of the
 // vertex).
 TEST(Crossing, ABodyPushedIntoACubeVertexNeverFreezes) {
-  platon::testing::Rng rng(7);
+  platon::testing::Rng rng{7};
   int frozen = 0;
   for (int trial = 0; trial < 600; ++trial) {
     auto b = std::make_unique<Built>();

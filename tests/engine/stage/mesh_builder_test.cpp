@@ -292,10 +292,10 @@ Eigen::Matrix3f noisyTurn(const Eigen::Matrix3i& exact) {
     for (int b = 0; b < 4; ++b)
       for (int c = 0; c < 4; ++c) {
         const float q = float(M_PI / 2);
-        const Eigen::Matrix3f r = (Eigen::AngleAxisf(float(c) * q, Eigen::Vector3f::UnitZ()) *
-                                   Eigen::AngleAxisf(float(b) * q, Eigen::Vector3f::UnitY()) *
-                                   Eigen::AngleAxisf(float(a) * q, Eigen::Vector3f::UnitX()))
-                                      .toRotationMatrix();
+        Eigen::Matrix3f r = (Eigen::AngleAxisf(float(c) * q, Eigen::Vector3f::UnitZ()) *
+                             Eigen::AngleAxisf(float(b) * q, Eigen::Vector3f::UnitY()) *
+                             Eigen::AngleAxisf(float(a) * q, Eigen::Vector3f::UnitX()))
+                                .toRotationMatrix();
         if (r.array().round().cast<int>().matrix() == exact) return r;
       }
   return Eigen::Matrix3f::Identity();

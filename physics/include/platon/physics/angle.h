@@ -15,8 +15,8 @@ inline constexpr Angle kHalfTurn = Angle{1} << 31;
 constexpr Angle angleFromDegrees(int64_t degrees, int64_t divisor = 1) {
   const i128 turn = i128{1} << 32;
   i128 d = degrees % (360 * divisor);
-  if (d < 0) d += 360 * divisor;
-  return static_cast<Angle>(roundDiv(d * turn, 360 * divisor) & 0xffffffff);
+  if (d < 0) d += i128{360} * divisor;
+  return static_cast<Angle>(roundDiv(d * turn, i128{360} * divisor) & 0xffffffff);
 }
 
 // cos and sin in Q30 fixed point (2^30 == 1.0), computed by integer CORDIC: bit-identical everywhere.

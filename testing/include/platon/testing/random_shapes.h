@@ -32,7 +32,7 @@ inline physics::Convex randomConvex(std::mt19937_64& rng, int32_t size, Turn tur
     for (const Vec2 v : hull)
       lo = {std::min(lo.x, v.x), std::min(lo.y, v.y)}, hi = {std::max(hi.x, v.x), std::max(hi.y, v.y)};
     for (Vec2& v : hull) v = {v.x - (lo.x + hi.x) / 2, v.y - (lo.y + hi.y) / 2};
-    const physics::Convex c(hull);
+    physics::Convex c(hull);
     if (turn == Turn::Upright || rng() % 2) return c;
     try {
       return c.rotated(static_cast<physics::Angle>(rng()));

@@ -50,7 +50,7 @@ class DrawList {
  public:
   static constexpr size_t kMaxShapes = 10'000;
   static constexpr size_t kMaxPoints = 100'000;
-  static constexpr size_t kMaxTextBytes = 64 * 1024;
+  static constexpr size_t kMaxTextBytes = size_t{64} * 1024;
 
   explicit DrawList(bool enabled = false) : enabled_(enabled) {}
   bool enabled() const { return enabled_; }

@@ -78,7 +78,7 @@ class SystemRegistry {
   // a scene needs it and kept loaded for the rest of the process (a system's code must outlive it).
   // Searched in $PLATON_PLUGIN_PATH (colon-separated folders), then `folders`. Creating it when no
   // folder has the module, or the module fails to load, throws naming every place tried.
-  void addPlugin(std::string name, std::string module, std::vector<std::string> folders);
+  void addPlugin(const std::string& name, const std::string& module, std::vector<std::string> folders);
   bool has(std::string_view name) const;
   // Creates the named system for `scene`. An unknown name throws, listing the known ones.
   std::unique_ptr<System> create(std::string_view name, Scene& scene) const;

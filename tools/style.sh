@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# The repository's declared style, checked: every C and C++ file as .clang-format writes it, and the
+# clang-tidy checks of .clang-tidy (bugprone, performance) clean on the project's own code.
+#   tools/style.sh [BUILD_DIR]      (default build/: its compile_commands.json tells clang-tidy how
+#                                    each file is compiled)
+# `tools/style.sh --fix` rewrites the files clang-format would change instead of failing.
+# Exits non-zero on the first kind of failure, naming the files.
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+cd "$root"
+fix=0
+[ "${1:-}" = "--fix" ] && { fix=1; shift; }
+build="${1:-$root/build}"
+
+# The project's C and C++ files: the tracked ones in a clone, every one under the source folders
+# otherwise (an unpacked archive).
+if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then
+  mapfile -t files < <(git ls-files '*.c' '*.cc' '*.cpp' '*.h' '*.hpp')
+else
+  mapfile -t files < <(find physics engine apps testing tests bench -name '*.c' -o -name '*.cc' -o -name '*.cpp' -o -name '*.h' -o -name '*.hpp' | sort)
+fi
+
+if ((fix)); then
+  clang-format -i "${files[@]}"
+  exit 0
+fi
+
+unformatted=()
+for f in "${files[@]}"; do
+  clang-format --dry-run --Werror "$f" >/dev/null 2>&1 || unformatted+=("$f")
+done
+if ((${#unformatted[@]})); then
+  echo "style: ${#unformatted[@]} of ${#files[@]} files differ from .clang-format (tools/style.sh --fix rewrites them):"
+  printf '  %s\n' "${unformatted[@]}"
+  exit 1
+fi
+echo "style: ${#files[@]} files as .clang-format writes them"
+
+[ -f "$build/compile_commands.json" ] || { echo "style: no $build/compile_commands.json (configure first)"; exit 1; }
+# Every translation unit of ours that the build compiles (headers are checked through them);
+# -Wno-unknown-warning-option: GCC's flags in the compile commands that clang does not know.
+mapfile -t units < <(printf '%s\n' "${files[@]}" | grep -E '\.(c|cc|cpp)$' | sed "s|^|$root/|")
+log="$(mktemp)"
+if ! run-clang-tidy -p "$build" -quiet -j "$(nproc)" -extra-arg=-Wno-unknown-warning-option "${units[@]}" >"$log" 2>&1; then
+  grep -E '(warning|error): ' "$log" | grep -v '^[0-9]* warnings' | sort -u | head -100
+  echo "style: clang-tidy found the above ($(grep -cE '(warning|error): ' "$log") lines; full log: $log)"
+  exit 1
+fi
+rm -f "$log"
+echo "style: clang-tidy clean on ${#units[@]} files (.clang-tidy)"
