@@ -38,9 +38,10 @@ double pile(PeerWorld& w) {
   w.addSegment(-10, 0, 10, 0);
   w.addSegment(-10, 0, -10, 30);
   w.addSegment(10, 0, 10, 30);
-  for (int i = 0; i < 150; ++i)
-    w.addBody(box(0.25), -7.5 + (i % 15) * 1.0 + 0.1 * static_cast<double>(i / 15 % 2),
-              1 + static_cast<double>(i / 15) * 1.2);
+  for (int i = 0; i < 150; ++i) {
+    const int row = i / 15, column = i % 15;
+    w.addBody(box(0.25), -7.5 + column * 1.0 + 0.1 * (row % 2), 1 + row * 1.2);
+  }
   const auto t0 = Clock::now();
   for (int f = 0; f < 600; ++f) w.step(1.0 / 60);
   return std::chrono::duration<double, std::nano>(Clock::now() - t0).count() / 600;

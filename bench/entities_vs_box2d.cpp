@@ -45,7 +45,8 @@ const char* name(Scene s) { return s == Scene::Resting ? "resting" : s == Scene:
 // towers of ten, towers 1 m apart.
 void place(Scene s, int i, double& x, double& y) {
   if (s == Scene::Stacks) {
-    x = static_cast<double>(i / 10);
+    const int column = i / 10;
+    x = column;
     y = kHalf + (i % 10) * 2 * kHalf;
   } else {
     x = i * 1.0;

@@ -79,7 +79,8 @@ struct Room {
 
 Room makeRoom(int room, int columns) {
   Rng rng{0x9a7e0000ULL + static_cast<uint64_t>(room) * 0x100000001b3ULL};
-  const double x0 = (room % columns) * kPitchX, y0 = static_cast<double>(room / columns) * kPitchY;
+  const int row = room / columns, column = room % columns;
+  const double x0 = column * kPitchX, y0 = row * kPitchY;
   auto at = [&](double x, double y) { return units(x0 + x, y0 + y); };
   Room r;
   // Floor: a rolling polyline 0-0.45 m high, slopes under 15 degrees, so the entity runs over it.

@@ -31,14 +31,23 @@ namespace {
 // top-level `return` as the best position there is.
 
 // A value of the scenario file and where it was written (line 0: computed by Lua, not written).
+struct DatumEntry;
+
 struct Datum {
   enum class Kind { Nil, Boolean, Number, String, Table, Other };
   Kind kind = Kind::Nil;
   bool boolean = false;
   double number = 0;
-  std::string text;                              // a string's bytes; for Other, what it is ("a function")
-  std::vector<std::pair<Datum, Datum>> entries;  // a table's keys and values, in file order
+  std::string text;                 // a string's bytes; for Other, what it is ("a function")
+  std::vector<DatumEntry> entries;  // a table's keys and values, in file order
   int line = 0, column = 0;
+};
+
+// A key and its value (a struct of its own, not a std::pair: a pair of an incomplete type cannot
+// be a member of that type).
+struct DatumEntry {
+  Datum first, second;
+  DatumEntry(Datum key, Datum value) : first(std::move(key)), second(std::move(value)) {}
 };
 
 std::string describe(const Datum& d) {
@@ -629,7 +638,7 @@ class PlanReader {
         b.face = static_cast<physics::MapPartId>(wholeNumber(required(item, "face", where), where + ".face", 0, 4095));
         b.where = at(*field(item, "face"), where + ".face");
         const Datum& box = required(item, "box", where);
-        const std::vector<std::pair<Datum, Datum>>& corners = box.entries;
+        const std::vector<DatumEntry>& corners = box.entries;
         bool isList = box.kind == Datum::Kind::Table && corners.size() == 4;
         for (size_t k = 0; isList && k < 4; ++k)
           isList =
