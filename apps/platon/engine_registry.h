@@ -13,7 +13,8 @@ enum class Presentation { Headless, Window };
 
 core::SystemRegistry engineRegistry(Presentation presentation);
 
-// Where plugins are looked for (after $PLATON_PLUGIN_PATH): beside the program, then the build's.
+// Where plugins are looked for (after $PLATON_PLUGIN_PATH): the program's plugin folder, found from
+// the program's own (core::pluginFolder()).
 std::vector<std::string> pluginFolders();
 
 }  // namespace platon::app

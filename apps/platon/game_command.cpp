@@ -16,6 +16,7 @@
 #include "campaign.h"
 #include "engine_registry.h"
 #include "game_view.h"
+#include "platon/core/data_root.h"
 #include "platon/core/display.h"
 #include "platon/core/fixed_step.h"
 #include "platon/core/live_scene.h"
@@ -379,7 +380,7 @@ int gameCommand(int argc, char** argv) {
     }
   }
   try {
-    Game game(readCampaign(campaignPath), Progress(progressPath), recordFolder);
+    Game game(readCampaign(core::resolveDataPath(campaignPath)), Progress(progressPath), recordFolder);
     return game.run(quitAfterFirstFrame, firstFrameShot);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s\n", e.what());

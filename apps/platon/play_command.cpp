@@ -21,6 +21,7 @@
 
 #include "engine_registry.h"
 #include "game_view.h"
+#include "platon/core/data_root.h"
 #include "platon/core/display.h"
 #include "platon/core/fixed_step.h"
 #include "platon/core/live_scene.h"
@@ -205,7 +206,7 @@ int playCommand(int argc, char** argv) {
   core::SystemRegistry registry = engineRegistry(headless ? Presentation::Headless : Presentation::Window);
   std::optional<core::LiveScene> live;
   try {
-    live.emplace(scenePath, registry, watch);
+    live.emplace(core::resolveDataPath(scenePath), registry, watch);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s\n", core::errorReport(e).c_str());
     return 1;

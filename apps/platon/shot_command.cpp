@@ -11,6 +11,7 @@
 
 #include "engine_registry.h"
 #include "game_view.h"
+#include "platon/core/data_root.h"
 #include "platon/core/display.h"
 #include "platon/core/error.h"
 #include "platon/core/live_scene.h"
@@ -35,11 +36,12 @@ bool exists(const std::string& path) {
   return stat(path.c_str(), &st) == 0;
 }
 
-// A scene.lua as given, a folder holding one, or a folder name under levels/.
+// A scene.lua as given, a folder holding one, or a folder name under levels/ (here, or the
+// program's own levels).
 std::string scenePathOf(const std::string& level) {
-  if (level.size() > 4 && level.substr(level.size() - 4) == ".lua") return level;
+  if (level.size() > 4 && level.substr(level.size() - 4) == ".lua") return core::resolveDataPath(level);
   for (const std::string& candidate : {level + "/scene.lua", "levels/" + level + "/scene.lua"})
-    if (exists(candidate)) return candidate;
+    if (const std::string found = core::resolveDataPath(candidate); exists(found)) return found;
   return level;
 }
 

@@ -9,8 +9,8 @@
 
 namespace platon::core {
 
-// PLATON_DATA_DIR and PLATON_PLUGIN_SUBDIR are the install layout's folders relative to the
-// install prefix ("share/platon", "lib/platon"), set by the build.
+// PLATON_DATA_FROM_BIN and PLATON_PLUGINS_FROM_BIN are the install layout's folders relative to
+// the program's ("../share/platon", "../lib/platon"), set by the build (cmake/layout.cmake).
 
 std::string programFolder() {
   char self[PATH_MAX];
@@ -22,16 +22,16 @@ std::string programFolder() {
 
 std::string dataRoot() {
   if (const char* root = std::getenv("PLATON_ROOT"); root && *root) return root;
-  const std::string root = programFolder() + "/../" PLATON_DATA_DIR;
+  const std::string root = programFolder() + "/" PLATON_DATA_FROM_BIN;
   std::error_code error;
   if (!std::filesystem::is_regular_file(root + "/scripts/scene.lua", error))
     throw std::runtime_error("cannot find the engine's scripts: no " + root +
-                             "/scripts/scene.lua (the program's data folder, beside its bin/ folder); set "
+                             "/scripts/scene.lua (the program's data folder, found from the program's own); set "
                              "PLATON_ROOT to a folder with scripts/ and levels/");
   return root;
 }
 
-std::string pluginFolder() { return programFolder() + "/../" PLATON_PLUGIN_SUBDIR; }
+std::string pluginFolder() { return programFolder() + "/" PLATON_PLUGINS_FROM_BIN; }
 
 std::string resolveDataPath(const std::string& path) {
   std::error_code error;

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "lua_host.h"
+#include "platon/core/data_root.h"
 #include "platon/core/input.h"
 #include "platon/core/live_scene.h"
 #include "platon/core/visible_text.h"
@@ -735,7 +736,7 @@ ScenarioResult runPlan(const std::string& path, const std::function<Plan()>& mak
     core::SystemRegistry registry;
     registry.add("scripting", makeScriptSystem);
     registry.addPlugin("meshes", "platon_meshes", options.pluginFolders);
-    std::unique_ptr<core::Scene> scene = core::loadScene(plan.scene, registry);
+    std::unique_ptr<core::Scene> scene = core::loadScene(core::resolveDataPath(plan.scene), registry);
     checkFaces(plan, *scene);
     const uint64_t filesHash = core::sceneFilesHash(core::sceneSourceFiles(*scene));
     const std::string filesNote = plan.sceneFilesHash && *plan.sceneFilesHash != filesHash

@@ -9,6 +9,7 @@
 #include <unordered_map>
 
 #include "lua_rules.h"
+#include "platon/core/data_root.h"
 #include "script_context.h"
 
 namespace platon::script {
@@ -532,13 +533,8 @@ void ScriptSystem::carryOver(core::Scene&, core::System& previous) {
 
 size_t ScriptSystem::luaMemoryBytes() const { return state_->host.memoryUsed(); }
 
-std::string engineRoot() {
-  if (const char* root = std::getenv("PLATON_ROOT"); root && *root) return root;
-  return PLATON_SOURCE_ROOT;
-}
-
 std::unique_ptr<core::System> makeScriptSystem(core::Scene& scene) {
-  return std::make_unique<ScriptSystem>(scene, engineRoot());
+  return std::make_unique<ScriptSystem>(scene, core::dataRoot());
 }
 
 }  // namespace platon::script

@@ -20,6 +20,7 @@ std::string programFolder();
 std::string dataRoot();
 
 // Where plugins are looked for after $PLATON_PLUGIN_PATH: <programFolder()>/../lib/platon.
+// (That folder does not depend on $PLATON_ROOT: the plugins belong to the program.)
 std::string pluginFolder();
 
 // A path a person or a file names (a scene, a campaign, a scenario's scene): as given when it exists

@@ -58,9 +58,8 @@ class ScriptSystem final : public core::System {
   std::unique_ptr<State> state_;
 };
 
-// The registry's factory for "scripting": finds the engine's scripts under PLATON_ROOT, or the
-// source tree the engine was built from.
+// The registry's factory for "scripting": finds the engine's scripts in core::dataRoot() (the
+// program's data folder, or $PLATON_ROOT).
 std::unique_ptr<core::System> makeScriptSystem(core::Scene& scene);
-std::string engineRoot();
 
 }  // namespace platon::script
