@@ -22,8 +22,12 @@ set(PLATON_ARROWS_platon_mesh "")
 
 set(PLATON_MODULES "" CACHE INTERNAL "")
 
-# Declares `target` a module: it gets the arrow check and a whole-archive link check.
+# Declares `target` a module: it gets the arrow check and a whole-archive link check (and, with
+# PLATON_UNITY, is built as a unity build).
 function(platon_module target)
+  if(PLATON_UNITY)
+    set_target_properties(${target} PROPERTIES UNITY_BUILD ON)
+  endif()
   set(PLATON_MODULES ${PLATON_MODULES} ${target} CACHE INTERNAL "")
   set(check ${target}_link_check)
   file(WRITE ${CMAKE_BINARY_DIR}/link_check_main.cpp "int main() { return 0; }\n")

@@ -1,19 +1,25 @@
 #!/usr/bin/env bash
 # Configures (Release) and builds into build/, using every core.
 #   tools/build.sh --game   only the game: its packages (tools/deps.sh game), the program and its
-#                           plugins; a build/ configured before keeps its options, a new one is
-#                           configured without tests and benchmarks
+#                           plugins. A new build/ is configured without tests and benchmarks, its
+#                           game targets as unity builds (half the compiler's work); a build/
+#                           configured before keeps its options.
 #   tools/build.sh [cmake options]   everything (tools/deps.sh all), tests and benchmarks on
+# A new build folder uses Ninja (it compiles the modules side by side where make waits for each
+# library in turn).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
+fresh=()
+[ -f "$root/build/CMakeCache.txt" ] || fresh=(-G Ninja)
 if [ "${1:-}" = "--game" ]; then
   "$root/tools/deps.sh" game
-  options=()
-  [ -f "$root/build/CMakeCache.txt" ] || options=(-DPLATON_BUILD_TESTS=OFF -DPLATON_BUILD_BENCH=OFF)
-  cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release "${options[@]}" >/dev/null
+  ((${#fresh[@]})) && fresh+=(-DPLATON_BUILD_TESTS=OFF -DPLATON_BUILD_BENCH=OFF -DPLATON_UNITY=ON)
+  cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release "${fresh[@]}" >/dev/null
   cmake --build "$root/build" -j"$(nproc)" --target platon platon_render_plugin platon_mesh_plugin
   exit 0
 fi
 "$root/tools/deps.sh" all
-cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release -DPLATON_BUILD_TESTS=ON -DPLATON_BUILD_BENCH=ON "$@" >/dev/null
+# The engine's sources one by one: tools/style.sh gives clang-tidy their compile commands.
+cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release -DPLATON_BUILD_TESTS=ON -DPLATON_BUILD_BENCH=ON \
+  -DPLATON_UNITY=OFF "${fresh[@]}" "$@" >/dev/null
 cmake --build "$root/build" -j"$(nproc)"

@@ -4,7 +4,7 @@
 #   tools/deps.sh all    that, and what the tests, checks, benchmarks and fuzzers need (tools/test)
 set -euo pipefail
 group="${1:-all}"
-game=(cmake make g++ pkg-config
+game=(cmake ninja-build make g++ pkg-config
   libluajit-5.1-dev  # the script module (LuaJIT 2.1)
   libeigen3-dev      # the stage and camera modules (header-only)
   libassimp-dev      # the meshes plugin: OBJ, glTF, PLY, STL stages

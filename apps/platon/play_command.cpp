@@ -117,7 +117,7 @@ bool frameCount(const char* text, uint64_t& out) {
   return error == std::errc() && stop == end && end != text && out >= 1;
 }
 
-int usage() {
+int playUsage() {
   std::fprintf(
       stderr,
       "usage: platon play scene.lua [--frames N] [--input run.replay] [--record out.replay]\n"
@@ -169,7 +169,7 @@ int playCommand(int argc, char** argv) {
     if (a == "--frames" && i + 1 < argc) {
       if (!frameCount(argv[++i], frames))
         return std::fprintf(stderr, "platon play: --frames %s: expected a whole number of frames from 1\n", argv[i]),
-               usage();
+               playUsage();
     } else if (a == "--input" && i + 1 < argc)
       inputPath = argv[++i];
     else if (a == "--record" && i + 1 < argc)
@@ -185,7 +185,7 @@ int playCommand(int argc, char** argv) {
     else if (scenePath.empty() && !a.empty() && a[0] != '-')
       scenePath = a;
     else
-      return usage();
+      return playUsage();
   }
   core::Replay input;
   try {
@@ -195,7 +195,7 @@ int playCommand(int argc, char** argv) {
     return 1;
   }
   if (scenePath.empty()) {
-    if (inputPath.empty()) return usage();
+    if (inputPath.empty()) return playUsage();
     scenePath = input.scene;
   }
   if (!recordPath.empty()) {

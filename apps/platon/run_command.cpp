@@ -143,7 +143,7 @@ bool writeJunit(const std::string& path, const std::vector<std::string>& names, 
   return static_cast<bool>(out.flush());
 }
 
-int usage() {
+int runUsage() {
   std::fprintf(stderr,
                "usage: platon run [-j N] [--junit report.xml] [--timeout seconds] [--trace frames]\n"
                "                  [--record dir] [--hash-every frames] scenario.lua|run.replay...\n"
@@ -322,7 +322,7 @@ bool seconds(const char* text, double& out) {
 
 int badValue(const char* option, const char* value, const char* expected) {
   std::fprintf(stderr, "platon run: %s %s: expected %s\n", option, value, expected);
-  return usage();
+  return runUsage();
 }
 
 }  // namespace
@@ -354,12 +354,12 @@ int runCommand(int argc, char** argv) {
       if (!wholeNumber(argv[++i], 0, UINT64_MAX, options.hashEvery))
         return badValue("--hash-every", argv[i], "a whole number of frames (0: only the last frame's hash)");
     } else if (!a.empty() && a[0] == '-') {
-      return usage();
+      return runUsage();
     } else {
       files.push_back(a);
     }
   }
-  if (files.empty()) return usage();
+  if (files.empty()) return runUsage();
   const auto start = Clock::now();
   std::vector<Outcome> outcomes(files.size());
   runInWorkers(files, options, recordPaths(files, recordDir), static_cast<int>(jobs), timeout, outcomes);

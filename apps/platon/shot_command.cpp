@@ -21,7 +21,7 @@
 namespace platon::app {
 namespace {
 
-int usage() {
+int shotUsage() {
   std::fprintf(stderr,
                "usage: platon shot LEVEL [--frame N] [--size WxH] [--input run.replay] --out file.png\n"
                "  LEVEL   a scene.lua, a level folder, or a folder name under levels/ (cube_intro)\n"
@@ -73,9 +73,9 @@ int shotCommand(int argc, char** argv) {
     else if (level.empty() && !a.empty() && a[0] != '-')
       level = a;
     else
-      return usage();
+      return shotUsage();
   }
-  if (level.empty() || out.empty()) return usage();
+  if (level.empty() || out.empty()) return shotUsage();
   setenv("SDL_VIDEODRIVER", "offscreen", 0);
   try {
     core::Replay input;

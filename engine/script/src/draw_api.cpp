@@ -67,7 +67,7 @@ int circle(lua_State* L) {
 }
 
 // line(place, x0, y0, x1, y1, width, colour [, alpha])
-int line(lua_State* L) {
+int drawLine(lua_State* L) {
   const core::Place place = checkPlace(L, 1);
   const core::Point2 a{checkFloat(L, 2), checkFloat(L, 3)}, b{checkFloat(L, 4), checkFloat(L, 5)};
   const float width = checkSize(L, 6);
@@ -129,7 +129,7 @@ int enabled(lua_State* L) {
 }
 
 constexpr luaL_Reg kDraw[] = {
-    {"circle", lua::bound<circle>}, {"line", lua::bound<line>},       {"polygon", lua::bound<polygon>},
+    {"circle", lua::bound<circle>}, {"line", lua::bound<drawLine>},   {"polygon", lua::bound<polygon>},
     {"text", lua::bound<text>},     {"enabled", lua::bound<enabled>}, {nullptr, nullptr},
 };
 

@@ -16,8 +16,8 @@
 
 namespace platon::script {
 
-namespace {
-
+// One sandbox's state (not in an anonymous namespace: LuaHost::Shared, which has external linkage,
+// holds a vector of them).
 struct Sandbox {
   std::string name;    // the chunk's file, as messages name it
   std::string source;  // its chunk name ("@file"): the frames of its functions carry it
@@ -25,8 +25,6 @@ struct Sandbox {
   bool disabled = false;
   int64_t spent = 0;  // steps of this frame's budget
 };
-
-}  // namespace
 
 // The allocator's, the hook's and the timer's view of the host: reached through lua_getallocf's
 // user data (and the timer's signal value), so none of them needs a global.

@@ -12,6 +12,11 @@
 
 namespace platon::script {
 
+// Lua numbers are units; the world's are Q16 (1/65536 unit).
+inline constexpr double kQ16 = 65536.0;
+// The world's largest move per frame, and largest gravity per frame: 2^30 units (2^46 in Q16).
+inline constexpr double kMaxPerFrame = 1073741824.0;
+
 struct ScriptContext {
   core::Scene* scene = nullptr;
   core::DrawList* draw = nullptr;  // set only while draw() runs with a renderer

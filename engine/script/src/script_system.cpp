@@ -190,7 +190,7 @@ constexpr luaL_Reg kEngine[] = {
 // kMaxCopiedEntries entries in all (a bigger save is refused: the copy runs in C, where no hook
 // runs). Runs inside a protected call of the destination, so running out of its memory is an
 // error there, not a panic.
-constexpr int kMaxDepth = 200;
+constexpr int kMaxCopyDepth = 200;
 constexpr size_t kMaxCopiedEntries = 100'000;
 
 struct PlainCopy {
@@ -207,7 +207,7 @@ struct PlainCopy {
 void copyPlain(PlainCopy& job, int index, lua_State* to, int depth) {
   lua_State* from = job.from;
   if (job.tooBig || job.tooDeep) return lua_pushnil(to);
-  if (depth > kMaxDepth || !lua_checkstack(to, 4) || !lua_checkstack(from, 4)) {
+  if (depth > kMaxCopyDepth || !lua_checkstack(to, 4) || !lua_checkstack(from, 4)) {
     job.tooDeep = true;
     return lua_pushnil(to);
   }
@@ -266,7 +266,7 @@ int copyPlainProtected(lua_State* to) {
   if (job->tooBig)
     return luaL_error(to, "save(): data too large to carry over (more than %d table entries)",
                       static_cast<int>(kMaxCopiedEntries));
-  if (job->tooDeep) return luaL_error(to, "save(): data nested more than %d tables deep to carry over", kMaxDepth);
+  if (job->tooDeep) return luaL_error(to, "save(): data nested more than %d tables deep to carry over", kMaxCopyDepth);
   return 1;
 }
 

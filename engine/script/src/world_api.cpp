@@ -20,8 +20,6 @@ using lua::checkUint32;
 using physics::EntityId;
 using physics::World;
 
-constexpr double kQ16 = 65536.0;
-
 World& worldOf(lua_State* L) { return contextOf(L).scene->world(); }
 
 using lua::pushEntity;
@@ -45,9 +43,6 @@ physics::PlatformId checkPlatform(lua_State* L, int index) {
   if (!bits) lua::argError(L, index, "a platform handle (from createPlatform)");
   return {bits->index, bits->generation};
 }
-
-// The world's largest move per frame, and largest gravity per frame: 2^30 units (2^46 in Q16).
-constexpr double kMaxPerFrame = 1073741824.0;
 
 int64_t toQ16(lua_State* L, int index, const char* what) {
   const double value = checkNumber(L, index);

@@ -29,8 +29,6 @@ enum Status : int {
   kBadValue3 = 8
 };
 
-constexpr double kQ16 = 65536.0;
-
 struct WorldFfi {
   void* context;
   int (*position)(void*, double, double*);
@@ -95,9 +93,6 @@ int ffiVelocity(void* context, double handle, double* out) {
     return static_cast<int>(kOk);
   });
 }
-
-// The world's largest move per frame: 2^30 units (as world_api.cpp checks it).
-constexpr double kMaxPerFrame = 1073741824.0;
 
 int ffiSetVelocity(void* context, double handle, double vx, double vy) {
   return withEntity(context, handle, [&](physics::World& world, EntityId e) {

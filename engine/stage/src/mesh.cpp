@@ -10,7 +10,7 @@
 namespace platon::stage {
 namespace {
 
-[[noreturn]] void fail(const std::string& reason) { throw StageError({}, reason); }
+using detail::fail;
 
 std::string triangleName(size_t t) { return "triangle " + std::to_string(t); }
 

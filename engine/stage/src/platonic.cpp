@@ -84,6 +84,28 @@ std::vector<std::vector<int>> hullFaces(const std::vector<Eigen::Vector3d>& poin
   return faces;
 }
 
+// The rotation that turns direction a into direction b: Eigen's Quaternion::FromTwoVectors, step for
+// step (so the same bits), but for opposite directions, where Eigen solves a singular value problem
+// for the axis (its JacobiSVD is a third of this module's build time) and any axis at right angles
+// will do (a face never looks straight away from +z here: the one chosen looks most toward it).
+Eigen::Quaterniond fromTwoVectors(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  const Eigen::Vector3d v0 = a.normalized(), v1 = b.normalized();
+  const double c = v1.dot(v0);
+  Eigen::Quaterniond q;
+  if (c < -1 + Eigen::NumTraits<double>::dummy_precision()) {
+    const double w2 = (1 + std::max(c, -1.0)) * 0.5;
+    q.w() = std::sqrt(w2);
+    q.vec() = v0.unitOrthogonal() * std::sqrt(1 - w2);
+    return q;
+  }
+  const Eigen::Vector3d axis = v0.cross(v1);
+  const double s = std::sqrt((1 + c) * 2);
+  const double invs = 1 / s;
+  q.vec() = axis * invs;
+  q.w() = s * 0.5;
+  return q;
+}
+
 }  // namespace
 
 Polyhedron platonicSolid(Solid solid, double edge) {
@@ -98,7 +120,7 @@ Polyhedron platonicSolid(Solid solid, double edge) {
   size_t front = 0;
   for (size_t f = 1; f < p.faces.size(); ++f)
     if (faceNormal(p, f).z() > faceNormal(p, front).z() + 1e-9) front = f;
-  const Eigen::Quaterniond toFront = Eigen::Quaterniond::FromTwoVectors(faceNormal(p, front), Eigen::Vector3d::UnitZ());
+  const Eigen::Quaterniond toFront = fromTwoVectors(faceNormal(p, front), Eigen::Vector3d::UnitZ());
   for (auto& v : p.vertices) v = toFront * v;
   const auto& cycle = p.faces[front];
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();

@@ -17,7 +17,7 @@ std::string vertexName(const Polyhedron& p, int v) {
   return text;
 }
 
-[[noreturn]] void fail(const std::string& reason) { throw StageError({}, reason); }
+using detail::fail;
 
 void checkFaceShape(const Polyhedron& p, size_t f, double tolerance, const detail::SurfaceNames& names) {
   const auto& cycle = p.faces[f];

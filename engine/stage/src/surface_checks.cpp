@@ -6,9 +6,10 @@
 #include "platon/stage/stage_error.h"
 
 namespace platon::stage::detail {
-namespace {
 
-[[noreturn]] void fail(const std::string& reason) { throw StageError({}, reason); }
+void fail(const std::string& reason) { throw StageError({}, reason); }
+
+namespace {
 
 size_t next(size_t i, size_t n) { return (i + 1) % n; }
 

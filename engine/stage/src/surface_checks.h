@@ -26,6 +26,9 @@
 
 namespace platon::stage::detail {
 
+// Throws the StageError of a solid or a mesh, which has no place in a text file.
+[[noreturn]] void fail(const std::string& reason);
+
 // How messages name a face and a point of the surface being checked.
 struct SurfaceNames {
   std::function<std::string(size_t face)> face;
