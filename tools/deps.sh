@@ -8,6 +8,7 @@ game=(cmake ninja-build make g++ pkg-config
   libluajit-5.1-dev  # the script module (LuaJIT 2.1)
   libeigen3-dev      # the stage and camera modules (header-only)
   libassimp-dev      # the meshes plugin: OBJ, glTF, PLY, STL stages
+  libtinyxml2-dev    # platon run's and merge's JUnit reports
   # the renderer plugin: SDL2 window, GL loader, text, PNG screenshots, the font; Mesa for GL
   # without a GPU (SDL_VIDEODRIVER=offscreen: tools/play's picture when there is no display)
   libsdl2-dev libsdl2-ttf-dev libsdl2-image-dev libepoxy-dev fonts-dejavu-core libgl1-mesa-dri libegl1)

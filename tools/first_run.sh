@@ -36,7 +36,7 @@ for run in $(seq "$runs"); do
     exit 1
   fi
   cp "$fresh/root/title.png" "$base.title.png"
-  echo "run $run: $seconds s from the clone to the title screen ($(grep -c '^Setting up' "$fresh.log" || true) packages set up)"
+  echo "run $run: $seconds s from the clone to the title screen"
   times+=("$seconds")
   rm -rf "$fresh"
 done

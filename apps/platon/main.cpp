@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "game_command.h"
+#include "merge_command.h"
 #include "platon/core/scene.h"
 #include "play_command.h"
 #include "run_command.h"
@@ -62,6 +63,7 @@ int main(int argc, char** argv) {
   if (argc > 1 && std::strcmp(argv[1], "game") == 0) return platon::app::gameCommand(argc - 1, argv + 1);
   if (argc > 1 && std::strcmp(argv[1], "play") == 0) return platon::app::playCommand(argc - 1, argv + 1);
   if (argc > 1 && std::strcmp(argv[1], "scenario") == 0) return platon::app::scenarioCommand(argc - 1, argv + 1);
+  if (argc > 1 && std::strcmp(argv[1], "merge") == 0) return platon::app::mergeCommand(argc - 1, argv + 1);
   if (argc > 1 && std::strcmp(argv[1], "check") == 0) return platon::app::checkCommand(argc - 1, argv + 1);
   if (argc > 1 && std::strcmp(argv[1], "net") == 0) return platon::app::netCommand(argc - 1, argv + 1);
   int frames = 3000;
@@ -74,13 +76,16 @@ int main(int argc, char** argv) {
           "usage: %s [--frames N]      the headless demo\n"
           "       %s game [--campaign levels/campaign.txt] [--progress file] [--record dir]   the game in a window\n"
           "       %s shot LEVEL [--frame N] [--size WxH] [--input run.replay] --out file.png\n"
-          "       %s run [-j N] [--junit report.xml] [--timeout s] [--record dir] scenario.lua|run.replay...\n"
+          "       %s run [-j N] [--junit report.xml] [--timeout s] [--record dir] [--shard I/N] [--list] "
+          "scenario.lua|run.replay...\n"
+          "       %s merge -o all.xml shard.xml...   the shards' JUnit reports, each scenario checked to have run "
+          "once\n"
           "       %s play scene.lua [--frames N] [--input run.replay] [--record out.replay] [--watch] [--fast] "
           "[--headless]\n"
           "       %s scenario run.replay [-o scenario.lua]\n"
           "       %s check level.level...           errors and warnings a level designer wants\n"
           "       %s net SOLID|level.level -o net.svg   the faces unfolded, numbered, with their axes\n",
-          argv[0], argv[0], argv[0], argv[0], argv[0], argv[0], argv[0], argv[0]);
+          argv[0], argv[0], argv[0], argv[0], argv[0], argv[0], argv[0], argv[0], argv[0]);
       return 2;
     }
   }

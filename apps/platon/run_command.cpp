@@ -16,6 +16,7 @@
 #include <cstring>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <poll.h>
 #include <signal.h>
 #include <string>
@@ -24,8 +25,10 @@
 #include <vector>
 
 #include "engine_registry.h"
+#include "junit.h"
 #include "platon/core/visible_text.h"
 #include "platon/script/scenario.h"
+#include "shard.h"
 
 namespace platon::app {
 namespace {
@@ -96,59 +99,19 @@ std::string workerDied(int status, const std::string& file) {
          " while running " + file + " and gave no result";
 }
 
-std::string xmlEscape(const std::string& s) {
-  std::string out;
-  for (const char c : printable(s)) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&apos;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
-
-bool writeJunit(const std::string& path, const std::vector<std::string>& names, const std::vector<Outcome>& outcomes,
-                double seconds) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  size_t failures = 0;
-  for (const Outcome& o : outcomes) failures += o.result.passed ? 0 : 1;
-  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuite name=\"platon scenarios\" tests=\"" << names.size()
-      << "\" failures=\"" << failures << "\" time=\"" << seconds << "\">\n";
-  for (size_t i = 0; i < names.size(); ++i) {
-    const script::ScenarioResult& r = outcomes[i].result;
-    out << "  <testcase classname=\"scenario\" name=\"" << xmlEscape(names[i]) << "\" time=\"" << r.seconds << "\"";
-    if (r.passed) {
-      out << "/>\n";
-    } else {
-      out << ">\n    <failure message=\"" << xmlEscape(r.message.substr(0, r.message.find('\n'))) << "\">"
-          << xmlEscape(r.message) << "</failure>\n  </testcase>\n";
-    }
-  }
-  out << "</testsuite>\n";
-  return static_cast<bool>(out.flush());
-}
-
 int runUsage() {
   std::fprintf(stderr,
                "usage: platon run [-j N] [--junit report.xml] [--timeout seconds] [--trace frames]\n"
-               "                  [--record dir] [--hash-every frames] scenario.lua|run.replay...\n"
+               "                  [--record dir] [--hash-every frames]\n"
+               "                  [--shard I/N | --shards N] [--durations last.xml] [--list]\n"
+               "                  scenario.lua|run.replay...\n"
                "  -j N          run N scenarios at a time (1..256; default 1)\n"
-               "  --timeout S   each scenario's wall-clock limit in seconds (default 600)\n");
+               "  --timeout S   each scenario's wall-clock limit in seconds (default 600)\n"
+               "  --shard I/N   run only the I-th of N shards (1 <= I <= N); without it, Bazel's, GoogleTest's\n"
+               "                and GitLab's sharding variables are read (docs/shipping.md)\n"
+               "  --shards N    N shards, this one JOB_COMPLETION_INDEX's (a Kubernetes indexed job)\n"
+               "  --durations F balance the shards by the times in JUnit report F (an earlier run's)\n"
+               "  --list        print this shard's scenarios, one a line, and run nothing\n");
   return 2;
 }
 
@@ -306,6 +269,22 @@ void printResult(const std::string& file, const script::ScenarioResult& r) {
   }
 }
 
+std::string text(const char* value) { return value ? value : ""; }
+
+// The files of `shard`, in the order given, balanced by the durations of report `durationsPath`
+// when there is one.
+std::vector<std::string> shardFiles(const std::vector<std::string>& suite, const Shard& shard,
+                                    const std::string& durationsPath) {
+  std::map<std::string, double> durations;
+  if (!durationsPath.empty())
+    for (const JunitCase& c : readJunit(durationsPath).cases) durations[c.name] = c.seconds;
+  const std::vector<uint32_t> of = splitIntoShards(suite, shard.total, durations);
+  std::vector<std::string> mine;
+  for (size_t i = 0; i < suite.size(); ++i)
+    if (of[i] == shard.index) mine.push_back(suite[i]);
+  return mine;
+}
+
 // A whole number in [low, high] from the whole of `text`.
 bool wholeNumber(const char* text, uint64_t low, uint64_t high, uint64_t& out) {
   const char* end = text + std::strlen(text);
@@ -330,7 +309,8 @@ int badValue(const char* option, const char* value, const char* expected) {
 int runCommand(int argc, char** argv) {
   uint64_t jobs = 1;
   double timeout = 600;
-  std::string junit;
+  std::string junit, shardFlag, shardsFlag, durationsPath;
+  bool list = false;
   script::RunOptions options;
   options.pluginFolders = pluginFolders();
   std::string recordDir;
@@ -350,6 +330,14 @@ int runCommand(int argc, char** argv) {
         return badValue("--trace", argv[i], "a whole number of frames from 1");
     } else if (a == "--record" && hasValue) {
       recordDir = argv[++i], options.record = true;
+    } else if (a == "--shard" && hasValue) {
+      shardFlag = argv[++i];
+    } else if (a == "--shards" && hasValue) {
+      shardsFlag = argv[++i];
+    } else if (a == "--durations" && hasValue) {
+      durationsPath = argv[++i];
+    } else if (a == "--list") {
+      list = true;
     } else if (a == "--hash-every" && hasValue) {
       if (!wholeNumber(argv[++i], 0, UINT64_MAX, options.hashEvery))
         return badValue("--hash-every", argv[i], "a whole number of frames (0: only the last frame's hash)");
@@ -360,21 +348,49 @@ int runCommand(int argc, char** argv) {
     }
   }
   if (files.empty()) return runUsage();
+  // Bazel names the report it wants, and a file to touch that says sharding is understood.
+  if (junit.empty()) junit = text(std::getenv("XML_OUTPUT_FILE"));
+  for (const char* status : {"TEST_SHARD_STATUS_FILE", "GTEST_SHARD_STATUS_FILE"})
+    if (const char* path = std::getenv(status); path && *path) std::ofstream(path, std::ios::app);
+  const std::vector<std::string> suite = files;
+  std::optional<Shard> shard;
+  try {
+    shard = askedShard(shardFlag, shardsFlag, [](const char* name) { return std::getenv(name); });
+    if (shard) files = shardFiles(suite, *shard, durationsPath);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "platon run: %s\n", e.what());
+    return 2;
+  }
+  if (list) {
+    for (const std::string& f : files) std::printf("%s\n", f.c_str());
+    return 0;
+  }
   const auto start = Clock::now();
   std::vector<Outcome> outcomes(files.size());
   runInWorkers(files, options, recordPaths(files, recordDir), static_cast<int>(jobs), timeout, outcomes);
 
   const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
   int failed = 0;
+  JunitReport report;
+  report.seconds = elapsed;
   for (size_t i = 0; i < files.size(); ++i) {
     Outcome& o = outcomes[i];
     failed += o.result.passed ? 0 : 1;
     printResult(files[i], o.result);
+    report.cases.push_back({files[i], o.result.seconds, o.result.passed, capped(o.result.message)});
   }
-  std::printf("%zu scenarios, %d failed, %.2f s with -j %llu\n", files.size(), failed, elapsed,
-              static_cast<unsigned long long>(jobs));
+  std::printf("%zu scenarios%s, %d failed, %.2f s with -j %llu\n", files.size(),
+              shard ? (" (shard " + std::to_string(shard->index + 1) + "/" + std::to_string(shard->total) + " of " +
+                       std::to_string(suite.size()) + ", from " + shard->from + ")")
+                          .c_str()
+                    : "",
+              failed, elapsed, static_cast<unsigned long long>(jobs));
   std::fflush(stdout);
-  if (!junit.empty() && !writeJunit(junit, files, outcomes, elapsed)) {
+  // What `platon merge` checks the shards by: which shard this is, of which suite.
+  report.properties["platon.suite"] = suiteIdentity(suite);
+  report.properties["platon.shard"] =
+      shard ? std::to_string(shard->index + 1) + "/" + std::to_string(shard->total) : "1/1";
+  if (!junit.empty() && !writeJunit(junit, report)) {
     std::fprintf(stderr, "%s: cannot write the JUnit report\n", junit.c_str());
     return 1;
   }

@@ -4,11 +4,13 @@
 // checked before playing, a stuck frame ended by a second signal or the grace period) and
 // `platon scenario` (any scene path). Each runs the built program in a temporary folder.
 // PLATON_EXE in the environment runs another build instead (to see these fail on an old one).
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <poll.h>
 #include <signal.h>
@@ -477,5 +479,138 @@ TEST(Play, ARecordingThatCannotBeWrittenAtTheEndIsReportedNotAnAbort) {
       << r.err;
   EXPECT_EQ(contents(folder.path("run.replay.partial")).rfind("platon replay 1\n", 0), 0u);
 }
+
+
+namespace shards {
+
+// A suite of `n` small scenarios in `folder` (s1.lua ...), all on one scene; returns their names.
+std::vector<std::string> suite(const Folder& folder, int n) {
+  const std::string scene = sceneWith(folder, "s");
+  std::vector<std::string> files;
+  for (int i = 1; i <= n; ++i) files.push_back(scenario(folder, "s" + std::to_string(i) + ".lua", scene, 10));
+  return files;
+}
+
+std::vector<std::string> withArgs(std::vector<std::string> args, const std::vector<std::string>& files) {
+  args.insert(args.end(), files.begin(), files.end());
+  return args;
+}
+
+// `platon run ARGS --list FILES` with the environment variables `env` set: the files it would run.
+std::vector<std::string> listed(const Folder& folder, const std::vector<std::string>& files,
+                                const std::vector<std::string>& args,
+                                const std::vector<std::pair<std::string, std::string>>& env) {
+  for (const auto& [name, value] : env) setenv(name.c_str(), value.c_str(), 1);
+  std::vector<std::string> all{"run", "--list"};
+  all.insert(all.end(), args.begin(), args.end());
+  const Ran r = platon(withArgs(all, files), folder.path());
+  for (const auto& [name, value] : env) unsetenv(name.c_str());
+  EXPECT_EQ(r.status, 0) << r.err;
+  return lines(r.out);
+}
+
+// Each way of asking for N shards (our flag, Bazel's, GoogleTest's and GitLab's variables, a
+// Kubernetes indexed job), for several N: the shards together run every scenario exactly once, and
+// every way gives the same shards.
+TEST(Shards, EveryWayOfAskingForNShardsCoversEachScenarioOnce) {
+  Folder folder("cli_shards");
+  const std::vector<std::string> files = suite(folder, 13);
+  for (const int n : {1, 2, 4, 5}) {
+    std::vector<std::vector<std::string>> byFlag;
+    for (int i = 0; i < n; ++i) {
+      const std::string i0 = std::to_string(i), i1 = std::to_string(i + 1), total = std::to_string(n);
+      const std::vector<std::vector<std::string>> ways = {
+          listed(folder, files, {"--shard", i1 + "/" + total}, {}),
+          listed(folder, files, {}, {{"TEST_SHARD_INDEX", i0}, {"TEST_TOTAL_SHARDS", total}}),
+          listed(folder, files, {}, {{"GTEST_SHARD_INDEX", i0}, {"GTEST_TOTAL_SHARDS", total}}),
+          listed(folder, files, {}, {{"CI_NODE_INDEX", i1}, {"CI_NODE_TOTAL", total}}),
+          listed(folder, files, {"--shards", total}, {{"JOB_COMPLETION_INDEX", i0}}),
+      };
+      for (const auto& way : ways) EXPECT_EQ(way, ways[0]) << "shard " << i1 << "/" << n;
+      byFlag.push_back(ways[0]);
+    }
+    std::map<std::string, int> runs;
+    for (const auto& shard : byFlag)
+      for (const std::string& f : shard) ++runs[f];
+    EXPECT_EQ(runs.size(), files.size()) << n << " shards";
+    for (const std::string& f : files) EXPECT_EQ(runs[f], 1) << f << " in " << n << " shards";
+  }
+}
+
+// With the last run's durations, the shards balance time, not counts: one scenario that took as
+// long as the rest together gets a shard of its own.
+TEST(Shards, DurationsBalanceTheShards) {
+  Folder folder("cli_shards_durations");
+  const std::vector<std::string> files = suite(folder, 9);
+  std::string report = "<?xml version=\"1.0\"?>\n<testsuite name=\"x\" tests=\"9\">\n";
+  for (const std::string& f : files)
+    report += "  <testcase name=\"" + f + "\" time=\"" + (f == "s5.lua" ? "80" : "10") + "\"/>\n";
+  folder.write("last.xml", report + "</testsuite>\n");
+  const auto first = listed(folder, files, {"--shard", "1/2", "--durations", "last.xml"}, {});
+  const auto second = listed(folder, files, {"--shard", "2/2", "--durations", "last.xml"}, {});
+  const auto& alone = std::find(first.begin(), first.end(), "s5.lua") != first.end() ? first : second;
+  EXPECT_EQ(alone, std::vector<std::string>{"s5.lua"});
+  EXPECT_EQ(first.size() + second.size(), files.size());
+  // A report that is not one is refused by name, before anything runs.
+  folder.write("bad.xml", "<html>");
+  const Ran r = platon(withArgs({"run", "--shard", "1/2", "--durations", "bad.xml"}, files), folder.path());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_TRUE(contains(r.err, "bad.xml:1: not XML")) << r.err;
+}
+
+// Four shards run with their reports; the merge joins them, and refuses a missing shard, a shard
+// given twice and a shard of another suite, naming each.
+TEST(Shards, TheMergeChecksEveryScenarioRanOnce) {
+  Folder folder("cli_shards_merge");
+  const std::vector<std::string> files = suite(folder, 10);
+  for (int i = 1; i <= 4; ++i) {
+    const Ran r = platon(
+        withArgs({"run", "--shard", std::to_string(i) + "/4", "--junit", "shard" + std::to_string(i) + ".xml"}, files),
+        folder.path());
+    ASSERT_EQ(r.status, 0) << r.out << r.err;
+    EXPECT_TRUE(contains(r.out, "(shard " + std::to_string(i) + "/4 of 10, from --shard)")) << r.out;
+  }
+  const Ran merged =
+      platon({"merge", "-o", "all.xml", "shard1.xml", "shard2.xml", "shard3.xml", "shard4.xml"}, folder.path());
+  EXPECT_EQ(merged.status, 0) << merged.err;
+  EXPECT_TRUE(contains(merged.out, "10 scenarios from 4 shards, each run once, 0 failed")) << merged.out;
+  const std::string all = contents(folder.path("all.xml"));
+  for (const std::string& f : files) EXPECT_TRUE(contains(all, "name=\"" + f + "\"")) << f;
+
+  const Ran missing = platon({"merge", "-o", "x.xml", "shard1.xml", "shard2.xml", "shard4.xml"}, folder.path());
+  EXPECT_EQ(missing.status, 1);
+  EXPECT_TRUE(contains(missing.err, "platon merge: shard(s) 3/4 missing")) << missing.err;
+  const Ran doubled = platon(
+      {"merge", "-o", "x.xml", "shard1.xml", "shard2.xml", "shard3.xml", "shard4.xml", "shard2.xml"}, folder.path());
+  EXPECT_EQ(doubled.status, 1);
+  EXPECT_TRUE(contains(doubled.err, "platon merge: shard 2/4 is given twice: shard2.xml and shard2.xml"))
+      << doubled.err;
+  // A shard of a suite with one scenario fewer (a runner that globbed another set of files).
+  std::vector<std::string> fewer(files.begin(), files.end() - 1);
+  ASSERT_EQ(platon(withArgs({"run", "--shard", "3/4", "--junit", "other3.xml"}, fewer), folder.path()).status, 0);
+  const Ran other =
+      platon({"merge", "-o", "x.xml", "shard1.xml", "shard2.xml", "other3.xml", "shard4.xml"}, folder.path());
+  EXPECT_EQ(other.status, 1);
+  EXPECT_TRUE(contains(other.err, "other3.xml and shard1.xml are shards of different suites")) << other.err;
+  EXPECT_FALSE(std::filesystem::exists(folder.path("x.xml")));
+}
+
+// Bazel: the status file is touched (sharding understood) and the report goes to XML_OUTPUT_FILE.
+TEST(Shards, BazelsFilesAreWritten) {
+  Folder folder("cli_shards_bazel");
+  const std::vector<std::string> files = suite(folder, 3);
+  setenv("TEST_SHARD_INDEX", "0", 1), setenv("TEST_TOTAL_SHARDS", "2", 1);
+  setenv("TEST_SHARD_STATUS_FILE", folder.path("status").c_str(), 1);
+  setenv("XML_OUTPUT_FILE", folder.path("bazel.xml").c_str(), 1);
+  const Ran r = platon(withArgs({"run"}, files), folder.path());
+  for (const char* v : {"TEST_SHARD_INDEX", "TEST_TOTAL_SHARDS", "TEST_SHARD_STATUS_FILE", "XML_OUTPUT_FILE"})
+    unsetenv(v);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(contains(r.out, "(shard 1/2 of 3, from Bazel)")) << r.out;
+  EXPECT_TRUE(std::filesystem::exists(folder.path("status")));
+  EXPECT_TRUE(contains(contents(folder.path("bazel.xml")), "<property name=\"platon.shard\" value=\"1/2\"/>"));
+}
+
+}  // namespace shards
 
 }  // namespace
