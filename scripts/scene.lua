@@ -53,13 +53,21 @@ end
 -- A level's own player or progression script (sandboxed) is the game's logic, so it gets the game
 -- state; its functions run as sandboxed code (engine.invoke: the budget and the memory limit, and
 -- their errors raised as if called directly).
+-- A function a sandbox can call runs inside its budget, where each interpreted instruction is a
+-- step: it runs interpreted too (a trace the JIT compiled would run uncounted, and whether one is
+-- compiled differs from one process to the next, which would make a stop differ between runs).
+local function interpreted(f)
+  jit.off(f, true)
+  return f
+end
+
 local function sandboxedFunctions(t, id)
   if type(t) ~= "table" then return t end
   local wrapped = {}
   for k, v in pairs(t) do
     if type(v) == "function" then
       local f = v
-      wrapped[k] = function(...) return invoke(id, f, ...) end
+      wrapped[k] = interpreted(function(...) return invoke(id, f, ...) end)
     else
       wrapped[k] = v
     end
@@ -81,7 +89,7 @@ local function sealed(t, name, seen)
   local entries = {}
   local view = setmetatable({}, {
     __index = entries,
-    __newindex = function(_, k) error(name .. " is read-only (tried to set " .. tostring(k) .. ")", 2) end,
+    __newindex = interpreted(function(_, k) error(name .. " is read-only (tried to set " .. tostring(k) .. ")", 2) end),
     __metatable = "locked",
   })
   seen[t] = view
@@ -200,8 +208,10 @@ local levelApi = {
 }
 game.levelApi = levelApi
 
+for _, f in pairs(levelApi) do interpreted(f) end  -- sandboxes call them
+
 -- The sandboxes' views: read-only, the world's too (platon.world as every sandbox sees it).
-local worldView = readonly(world, "game.world")
+local worldView = readonly(engine.sandboxApi().world, "game.world")
 levelApi.world = worldView
 local levelView = readonly(levelApi, "game")
 -- A sandboxed rules script: the same, and what the game's own rules do to the game.
@@ -209,6 +219,8 @@ local rulesApi = {}
 for k, v in pairs(levelApi) do rulesApi[k] = v end
 rulesApi.reachGoal = function() game.reachedGoal = true end
 rulesApi.touchCheckpoint = function() game.touchedCheckpoint = true end
+interpreted(rulesApi.reachGoal)
+interpreted(rulesApi.touchCheckpoint)
 local rulesView = readonly(rulesApi, "game")
 local drawView = readonly(drawApi, "draw")
 

@@ -9,8 +9,14 @@
 # library in turn).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
+# A build/ made where the checkout was before it moved names the old folder: start it again.
+cache="$root/build/CMakeCache.txt"
+if [ -f "$cache" ] && ! grep -qx "CMAKE_HOME_DIRECTORY:INTERNAL=$root" "$cache"; then
+  echo "build/ was configured for another folder: configuring it again"
+  rm -rf "$cache" "$root/build/CMakeFiles"
+fi
 fresh=()
-[ -f "$root/build/CMakeCache.txt" ] || fresh=(-G Ninja)
+[ -f "$cache" ] || fresh=(-G Ninja)
 if [ "${1:-}" = "--game" ]; then
   "$root/tools/deps.sh" game
   ((${#fresh[@]})) && fresh+=(-DPLATON_BUILD_TESTS=OFF -DPLATON_BUILD_BENCH=OFF -DPLATON_UNITY=ON)

@@ -10,6 +10,7 @@ set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 base="$1"
 runs="${2:-1}"
+command -v bc >/dev/null || apt-get install -y -qq bc >/dev/null
 if [ ! -d "$base/usr" ]; then
   command -v debootstrap >/dev/null || apt-get install -y -qq debootstrap >/dev/null
   debootstrap --variant=minbase bookworm "$base" http://deb.debian.org/debian >/dev/null
@@ -23,6 +24,7 @@ for run in $(seq "$runs"); do
   git clone -q "$root" "$fresh/root/platon"  # what was committed, as a clone has it
   mount -t proc proc "$fresh/proc"
   mount --bind /dev "$fresh/dev"
+  trap 'umount "$fresh/proc" "$fresh/dev" 2>/dev/null' EXIT
   start=$(date +%s.%N)
   status=0
   chroot "$fresh" /usr/bin/env -i PATH=/usr/sbin:/usr/bin:/sbin:/bin HOME=/root SDL_VIDEODRIVER=offscreen \

@@ -34,7 +34,7 @@ replays=("$usr"/share/platon/replays/*.replay)
 script=$(cat <<SH
 set -e
 cd "$scratch"
-env -i PATH=/usr/bin:/bin HOME="$scratch" "$usr/bin/platon" run -j $(nproc) ${scenarios[*]} ${replays[*]}
+env -i PATH=/usr/bin:/bin HOME="$scratch" "$usr/bin/platon" run --shard 1/1 -j $(nproc) ${scenarios[*]} ${replays[*]}
 env -i PATH=/usr/bin:/bin HOME="$scratch" SDL_VIDEODRIVER=offscreen "$usr/bin/platon" shot cube_intro --frame 60 --out "$scratch/shot.png"
 env -i PATH=/usr/bin:/bin HOME="$scratch" SDL_VIDEODRIVER=offscreen "$usr/bin/platon" game --first-frame-shot "$scratch/title.png"
 SH

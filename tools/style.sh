@@ -41,6 +41,13 @@ echo "style: ${#files[@]} files as .clang-format writes them"
 # testing; their headers are checked through them): the tests and benchmarks would double the time
 # for code no player runs. -Wno-unknown-warning-option: GCC's flags that clang does not know.
 mapfile -t units < <(printf '%s\n' "${files[@]}" | grep -E '^(physics|engine|apps|testing)/.*\.(c|cc|cpp)$' | sed "s|^|$root/|")
+# A build/ made by tools/play compiles the engine as unity builds: its compile commands name no
+# source file of ours, and clang-tidy would check nothing.
+for unit in "${units[@]}"; do
+  grep -qF "\"file\": \"$unit\"" "$build/compile_commands.json" && continue
+  echo "style: $unit is not in $build/compile_commands.json (a unity build? configure with -DPLATON_UNITY=OFF)"
+  exit 1
+done
 log="$(mktemp)"
 if ! run-clang-tidy -p "$build" -quiet -j "$(nproc)" -extra-arg=-Wno-unknown-warning-option "${units[@]}" >"$log" 2>&1; then
   grep -E '(warning|error): ' "$log" | grep -v '^[0-9]* warnings' | sort -u | head -100

@@ -1,6 +1,7 @@
 #include "merge_command.h"
 
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <set>
 #include <stdexcept>
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "junit.h"
+#include "shard.h"
 
 namespace platon::app {
 namespace {
@@ -25,7 +27,9 @@ int mergeUsage() {
 std::pair<unsigned long, unsigned long> shardNumbers(const std::string& text, const std::string& file) {
   unsigned long i = 0, n = 0;
   char slash = 0;
-  if (std::sscanf(text.c_str(), "%lu%c%lu", &i, &slash, &n) != 3 || slash != '/' || i < 1 || i > n)
+  int used = 0;
+  if (std::sscanf(text.c_str(), "%lu%c%lu%n", &i, &slash, &n, &used) != 3 || slash != '/' || i < 1 || i > n ||
+      static_cast<size_t>(used) != text.size())
     throw std::runtime_error(file + ": its platon.shard property is '" + text + "', not I/N");
   return {i, n};
 }
@@ -63,10 +67,16 @@ JunitReport merge(const std::vector<std::string>& files) {
   for (unsigned long i = 1; i <= total; ++i)
     if (!shards.count(i)) missing += (missing.empty() ? "" : ", ") + std::to_string(i) + "/" + std::to_string(total);
   if (!missing.empty()) throw std::runtime_error("shard(s) " + missing + " missing");
-  const unsigned long expected = std::stoul(suite.substr(0, suite.find(' ')));
-  if (all.cases.size() != expected)
-    throw std::runtime_error(std::to_string(expected - all.cases.size()) + " of the suite's " +
-                             std::to_string(expected) + " scenarios are in no report (a shard that stopped early?)");
+  // The suite is its files: the scenarios the reports name must be exactly those the split was of.
+  std::vector<std::string> names;
+  for (const JunitCase& c : all.cases) names.push_back(c.name);
+  if (suiteIdentity(names) != suite) {
+    const unsigned long expected = std::strtoul(suite.c_str(), nullptr, 10);
+    throw std::runtime_error(
+        "the reports name " + std::to_string(names.size()) + " scenarios, not the " + std::to_string(expected) +
+        " of the suite they were split from" +
+        (names.size() < expected ? " (a shard that stopped early?)" : " (a shard that ran other files?)"));
+  }
   all.properties["platon.suite"] = suite;
   all.properties["platon.shard"] = "1/1";
   all.properties["platon.merged"] = std::to_string(total) + " shards";

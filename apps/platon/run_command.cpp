@@ -357,6 +357,9 @@ int runCommand(int argc, char** argv) {
   try {
     shard = askedShard(shardFlag, shardsFlag, [](const char* name) { return std::getenv(name); });
     if (shard) files = shardFiles(suite, *shard, durationsPath);
+    if (!shard && !durationsPath.empty())
+      std::fprintf(stderr, "platon run: --durations %s: no shard was asked for, so every scenario runs\n",
+                   durationsPath.c_str());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "platon run: %s\n", e.what());
     return 2;

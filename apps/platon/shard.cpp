@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <numeric>
 #include <stdexcept>
@@ -51,15 +52,23 @@ std::optional<Shard> askedShard(const std::string& flag, const std::string& tota
                                (i ? index : total) + " is");
     asked.push_back(shardOf(i, n, base, from, std::string(index) + "=" + i + ", " + total + "=" + n));
   };
+  // The flag says what this run is for: it wins over whatever the environment holds (a run nested in
+  // a sharded CI job that must run its own suite whole says --shard 1/1).
   if (!flag.empty()) {
     const size_t slash = flag.find('/');
     if (slash == std::string::npos)
       throw std::runtime_error("--shard " + flag + ": expected I/N, the I-th of N shards (1 <= I <= N)");
-    asked.push_back(shardOf(flag.substr(0, slash), flag.substr(slash + 1), 1, "--shard", "--shard " + flag));
+    return shardOf(flag.substr(0, slash), flag.substr(slash + 1), 1, "--shard", "--shard " + flag);
   }
   pair("TEST_SHARD_INDEX", "TEST_TOTAL_SHARDS", 0, "Bazel");
   pair("GTEST_SHARD_INDEX", "GTEST_TOTAL_SHARDS", 0, "GoogleTest");
-  pair("CI_NODE_INDEX", "CI_NODE_TOTAL", 1, "GitLab");
+  // GitLab sets CI_NODE_INDEX and CI_NODE_TOTAL for `parallel: N` and also for `parallel: matrix`,
+  // whose jobs each run a whole suite of their own: only a job named "<name> I/N", as `parallel: N`
+  // names them, is a shard.
+  if (const char* job = env("CI_JOB_NAME");
+      !job || !env("CI_NODE_INDEX") || !env("CI_NODE_TOTAL") ||
+      std::string(job).ends_with(std::string(" ") + env("CI_NODE_INDEX") + "/" + env("CI_NODE_TOTAL")))
+    pair("CI_NODE_INDEX", "CI_NODE_TOTAL", 1, "GitLab");
   if (!totalFlag.empty()) {
     const char* index = env("JOB_COMPLETION_INDEX");
     if (!index)
@@ -91,9 +100,15 @@ std::vector<uint32_t> splitIntoShards(const std::vector<std::string>& files, uin
   };
   std::vector<uint32_t> shard(files.size(), 0);
   if (total <= 1) return shard;
+  // A duration that is no time (NaN, infinite, negative: a report edited by hand) is not known.
+  auto durationOf = [&](const std::string& f) -> std::optional<double> {
+    const auto d = durations.find(f);
+    if (d == durations.end() || !std::isfinite(d->second) || d->second < 0 || d->second > 1e9) return std::nullopt;
+    return d->second;
+  };
   std::vector<double> known;
   for (const std::string& f : files)
-    if (const auto d = durations.find(f); d != durations.end()) known.push_back(d->second);
+    if (const std::optional<double> d = durationOf(f)) known.push_back(*d);
   if (known.empty()) {
     std::sort(order.begin(), order.end(), byHash);
     for (size_t k = 0; k < order.size(); ++k) shard[order[k]] = static_cast<uint32_t>(k % total);
@@ -101,10 +116,7 @@ std::vector<uint32_t> splitIntoShards(const std::vector<std::string>& files, uin
   }
   const double mean = std::accumulate(known.begin(), known.end(), 0.0) / static_cast<double>(known.size());
   std::vector<double> seconds(files.size());
-  for (size_t i = 0; i < files.size(); ++i) {
-    const auto d = durations.find(files[i]);
-    seconds[i] = d != durations.end() ? d->second : mean;
-  }
+  for (size_t i = 0; i < files.size(); ++i) seconds[i] = durationOf(files[i]).value_or(mean);
   std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
     if (seconds[a] != seconds[b]) return seconds[a] > seconds[b];
     return byHash(a, b);

@@ -21,11 +21,13 @@ struct Shard {
 // Reads an environment variable (std::getenv; tests pass their own).
 using Environment = std::function<const char*(const char*)>;
 
-// The shard asked for, in this order: `flag` ("I/N", 1 <= I <= N, as Playwright and Jest write it);
+// The shard asked for: `flag` ("I/N", 1 <= I <= N, as Playwright and Jest write it), which wins
+// over the environment; else the runners' conventions, which must agree when several are set:
 // Bazel (TEST_SHARD_INDEX, TEST_TOTAL_SHARDS, 0-based); GoogleTest (GTEST_SHARD_INDEX,
-// GTEST_TOTAL_SHARDS, 0-based); GitLab's parallel jobs (CI_NODE_INDEX, CI_NODE_TOTAL, 1-based); a
-// Kubernetes indexed job (JOB_COMPLETION_INDEX, 0-based, with the total from `totalFlag`, since the
-// job passes it itself). Nothing: the whole suite. Throws std::runtime_error naming the flag or
+// GTEST_TOTAL_SHARDS, 0-based); GitLab's `parallel: N` jobs (CI_NODE_INDEX, CI_NODE_TOTAL,
+// 1-based; not a `parallel: matrix` job, which GitLab gives the same variables); a Kubernetes
+// indexed job (JOB_COMPLETION_INDEX, 0-based, with the total from `totalFlag`, since the job
+// passes it itself). Nothing: the whole suite. Throws std::runtime_error naming the flag or
 // variable for a value that is not a shard (I outside 1..N, N = 0, not a number), for a total
 // without an index, and when two conventions ask for different shards.
 std::optional<Shard> askedShard(const std::string& flag, const std::string& totalFlag, const Environment& env);

@@ -5,6 +5,7 @@
 // `platon scenario` (any scene path). Each runs the built program in a temporary folder.
 // PLATON_EXE in the environment runs another build instead (to see these fail on an old one).
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
@@ -31,6 +32,19 @@ using Folder = platon::testing::TempFolder;
 using Clock = std::chrono::steady_clock;
 
 const std::string kRoot = PLATON_SOURCE_ROOT;
+
+// The platon processes these tests start inherit their environment: a CI runner's sharding
+// variables would shard them. Cleared once gtest has read its own (it shards this program by them).
+class NoOuterShards : public testing::Environment {
+ public:
+  void SetUp() override {
+    for (const char* v :
+         {"TEST_SHARD_INDEX", "TEST_TOTAL_SHARDS", "TEST_SHARD_STATUS_FILE", "GTEST_SHARD_INDEX", "GTEST_TOTAL_SHARDS",
+          "GTEST_SHARD_STATUS_FILE", "CI_NODE_INDEX", "CI_NODE_TOTAL", "JOB_COMPLETION_INDEX", "XML_OUTPUT_FILE"})
+      unsetenv(v);
+  }
+};
+[[maybe_unused]] testing::Environment* const kNoOuterShards = testing::AddGlobalTestEnvironment(new NoOuterShards);
 
 std::string platonExe() {
   const char* other = std::getenv("PLATON_EXE");
@@ -480,7 +494,6 @@ TEST(Play, ARecordingThatCannotBeWrittenAtTheEndIsReportedNotAnAbort) {
   EXPECT_EQ(contents(folder.path("run.replay.partial")).rfind("platon replay 1\n", 0), 0u);
 }
 
-
 namespace shards {
 
 // A suite of `n` small scenarios in `folder` (s1.lua ...), all on one scene; returns their names.
@@ -612,5 +625,44 @@ TEST(Shards, BazelsFilesAreWritten) {
 }
 
 }  // namespace shards
+
+}  // namespace
+
+namespace {
+
+// A budget stop is the same in every process (where LuaJIT's hot counters and address layout
+// differ): a level that walks tables, sorts, formats and calls the level API in a loop until the
+// frame's budget stops it says how far it got, and three processes say the same.
+TEST(Budget, AStopComesAtTheSameIterationInEveryProcess) {
+  Folder folder("cli_budget_processes");
+  const std::string scene =
+      sceneWith(folder, "s",
+                "  local t = {}\n"
+                "  for i = 1, 200 do t['k' .. i] = i end\n"
+                "  local n = 0\n"
+                "  while true do\n"
+                "    n = n + 1\n"
+                "    for k, v in pairs(t) do end\n"
+                "    local k = next(t) while k do k = next(t, k) end\n"
+                "    local a = {} for i = 1, 60 do a[i] = (i * 7919) % 61 end table.sort(a)\n"
+                "    local s = tostring({}) .. string.format('%d', n) .. (('ab'):rep(20)):gsub('a', 'c')\n"
+                "    game.message(n)\n"
+                "  end");
+  std::vector<std::string> said;
+  for (int run = 0; run < 3; ++run) {
+    const Ran r = platon({"play", scene, "--headless", "--fast", "--frames", "1"}, folder.path());
+    EXPECT_EQ(r.status, 1) << r.out << r.err;
+    EXPECT_TRUE(contains(r.out, "script stopped: it ran past the frame's script budget")) << r.out;
+    std::string message;  // "frame 1: N", the level's last message (the error has a line of its own)
+    for (const std::string& line : lines(r.out))
+      if (line.rfind("frame 1: ", 0) == 0 && line.size() > 9 && std::isdigit(static_cast<unsigned char>(line[9])))
+        message = line;
+    ASSERT_FALSE(message.empty()) << r.out;
+    said.push_back(message);
+  }
+  EXPECT_GT(std::atoi(said[0].substr(9).c_str()), 100) << said[0];
+  EXPECT_EQ(said[1], said[0]);
+  EXPECT_EQ(said[2], said[0]);
+}
 
 }  // namespace

@@ -42,8 +42,8 @@ wait "$pid" || fail "the game failed"
 grep -q "^recorded tetra_around: .* to $rec/tetra_around-2.replay" "$log" || fail "quitting did not write the second replay"
 cat "$log"
 for replay in cube_intro tetra_around tetra_around-2; do
-  out=$("$platon" replay "$rec/$replay.replay") || fail "$replay.replay does not replay: $out"
+  out=$("$platon" replay --shard 1/1 "$rec/$replay.replay") || fail "$replay.replay does not replay: $out"
   echo "$out" | head -n 1
 done
-"$platon" replay "$rec/cube_intro.replay" | grep -q "goal at frame" || fail "cube_intro.replay does not reach the goal"
+"$platon" replay --shard 1/1 "$rec/cube_intro.replay" | grep -q "goal at frame" || fail "cube_intro.replay does not reach the goal"
 rm -rf "$data"

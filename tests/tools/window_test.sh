@@ -1,8 +1,9 @@
 # Sourced by the real-window tests (Xvfb, keys typed with xdotool). Every wait is for something the
-# game says or does, never a fixed time: a loaded machine, or an ASan build, is slow, not wrong. A
-# wait gives up after $PLATON_WINDOW_WAIT seconds (120), which only a broken game reaches.
+# game says or does, never a fixed time: a loaded machine, or an ASan build, is slow, not wrong (and
+# the game drops steps when it cannot keep up, so 18 s of play may take minutes). A wait gives up
+# after $PLATON_WINDOW_WAIT seconds (300), which only a broken game reaches.
 # The test sets $log (the game's output) and $pid, and defines fail MESSAGE.
-wait_limit=$(( ${PLATON_WINDOW_WAIT:-120} * 10 ))  # in tenths of a second
+wait_limit=$(( ${PLATON_WINDOW_WAIT:-300} * 10 ))  # in tenths of a second
 
 # Waits for the game's window and gives it the keyboard. A window can be found a moment before it
 # can take the focus, or be one SDL replaces as it starts (X answers BadWindow), so finding and

@@ -431,8 +431,8 @@ SceneManifest loadManifest(const std::string& path) {
     if (!limits->table()) fieldError(path, *limits, "'limits' must be a table {memory_mb =, steps =, deadline_ms =}");
     checkKeys(path, *limits, {"memory_mb", "steps", "deadline_ms"});
     m.memoryMegabytes = static_cast<size_t>(wholeField(path, *limits, "memory_mb", 128, 4, 4096));
-    m.frameSteps = static_cast<int64_t>(wholeField(path, *limits, "steps", 20'000'000, 1000, 1'000'000'000));
-    m.deadlineMilliseconds = numberField(path, *limits, "deadline_ms", 1000, 1, 60000);
+    m.frameSteps = static_cast<int64_t>(wholeField(path, *limits, "steps", 10'000'000, 1000, 1'000'000'000));
+    m.deadlineMilliseconds = numberField(path, *limits, "deadline_ms", 2000, 1, 60000);
   }
   return m;
 }

@@ -48,14 +48,13 @@ struct LuaHost::Shared {
   int hog = kNoSandbox;      // the sandbox disabled for the stop: the one that spent the most of the frame
   std::string stopMessage;   // what the hook raises once a limit stopped the call
   bool collectSoon = false;  // a disabled sandbox left garbage
+  int callbackDepth = 0;     // C callbacks nested now (CallbackDepth)
   volatile sig_atomic_t timerArmed = 0;
   volatile sig_atomic_t timerFired = 0;  // the deadline may have passed: the next charge reads the clock
   bool hookFast = false;                 // the hook runs on every instruction (a stop is under way)
-  // The fallback for trusted code: the count hook times each outermost call from its first run,
-  // reading the clock every kTrustedTicks of its looks.
+  // The fallback for trusted code: the count hook times each outermost call from its first look.
   bool inCall = false;
   int64_t callStart = 0;
-  int64_t trustedTicks = 0;
   bool trustedExpired = false;
   // The deadline's timer, made on (and aimed at) the thread that runs the calls.
   bool timerMade = false;
@@ -70,7 +69,7 @@ struct LuaHost::Shared {
 
 namespace {
 
-constexpr int64_t kTrustedTicks = 1000;
+constexpr int kTrustedHookInstructions = 100'000;
 
 int64_t nowNanoseconds() {
   timespec t{};
@@ -99,11 +98,19 @@ void hookEveryInstruction(LuaHost::Shared& s) {
   lua_sethook(s.L, budgetHook, LUA_MASKCOUNT, 1);
 }
 
-// Also starts the instruction counter again: a sandboxed call's first look comes after exactly
-// kTickSteps of its instructions, whatever ran before it.
-void hookAtNormalRate(LuaHost::Shared& s) {
+// Inside sandboxed calls: a look every kTickSteps instructions. Setting it starts the counter
+// again, so a sandboxed call's first look comes after exactly kTickSteps of its instructions,
+// whatever ran before it.
+void hookForSandbox(LuaHost::Shared& s) {
   s.hookFast = false;
   lua_sethook(s.L, budgetHook, LUA_MASKCOUNT, kTickSteps);
+}
+
+// Outside them, only the trusted fallback's rare look: a hook call aborts the JIT's trace
+// recording, so a frequent one would keep the engine's own scripts from compiling.
+void hookForTrusted(LuaHost::Shared& s) {
+  s.hookFast = false;
+  lua_sethook(s.L, budgetHook, LUA_MASKCOUNT, kTrustedHookInstructions);
 }
 
 // --- the deadline's timer ---
@@ -329,15 +336,14 @@ void budgetHook(lua_State* L, lua_Debug*) {
     charge(L, s, kTickSteps);
     return;
   }
-  // Trusted code, after a sandboxed call that was stopped: back to the normal rate.
+  // Trusted code, after a sandboxed call that was stopped: back to the rare look.
   if (s.hookFast && !s.trustedExpired) {
-    hookAtNormalRate(s);
+    hookForTrusted(s);
     return;
   }
   if (!s.inCall) return;
   const int64_t limit = 2 * s.limits.deadlineNanoseconds;  // its own time and the sandboxes' it waited for
   if (!s.trustedExpired) {
-    if (++s.trustedTicks % kTrustedTicks != 0) return;
     const int64_t now = nowNanoseconds();
     if (s.callStart == 0) {
       s.callStart = now;
@@ -453,7 +459,7 @@ LuaHost::~LuaHost() {
 
 void LuaHost::openTrusted() {
   luaL_openlibs(L_);
-  hookAtNormalRate(*shared_);
+  hookForTrusted(*shared_);
   lua_pushcfunction(L_, tracebackHandler);
   lua_pushvalue(L_, -1);
   tracebackRef_ = luaL_ref(L_, LUA_REGISTRYINDEX);
@@ -463,7 +469,11 @@ void LuaHost::openTrusted() {
   lua_newtable(L_);
   lua_setfield(L_, LUA_REGISTRYINDEX, "platon.api");
   // The sandbox factory: trusted Lua, run once (sandbox.cpp). It gets the C functions it hands on.
+  // Every function it defines runs interpreted: they run inside sandboxed calls (pairs, next,
+  // tostring, the read-only views...), where each instruction is a step, and a loop the JIT compiled
+  // would run uncounted (and whether one compiles differs from one process to the next).
   loadString(sandboxPrelude(), "=platon/sandbox", Trust::Trusted);
+  luaJIT_setmode(L_, -1, LUAJIT_MODE_ALLFUNC | LUAJIT_MODE_OFF);
   lua_newtable(L_);
   lua_pushcfunction(L_, printToSink);
   lua_setfield(L_, -2, "print");
@@ -471,6 +481,8 @@ void LuaHost::openTrusted() {
   lua_setfield(L_, -2, "frames");
   lua_pushcfunction(L_, orderedKeys);
   lua_setfield(L_, -2, "orderedKeys");
+  lua_pushcfunction(L_, countedComparator);
+  lua_setfield(L_, -2, "countedComparator");
   setPatternFunctions(L_, -1);
   call(1, 2);
   lua_setfield(L_, LUA_REGISTRYINDEX, "platon.readonly");
@@ -478,6 +490,38 @@ void LuaHost::openTrusted() {
 }
 
 void LuaHost::pushApi() { lua_getfield(L_, LUA_REGISTRYINDEX, "platon.api"); }
+
+void LuaHost::pushSandboxApi() {
+  lua_newtable(L_);
+  pushApi();
+  for (lua_pushnil(L_); lua_next(L_, -2);) {  // rawset below pops the value and a copy of the key
+    lua_pushvalue(L_, -2);
+    lua_insert(L_, -2);
+    lua_rawset(L_, -5);
+  }
+  lua_pop(L_, 1);
+  lua_getfield(L_, LUA_REGISTRYINDEX, "platon.sandboxOverrides");
+  if (lua_istable(L_, -1))
+    for (lua_pushnil(L_); lua_next(L_, -2);) {  // rawset below pops the value and a copy of the key
+      lua_pushvalue(L_, -2);
+      lua_insert(L_, -2);
+      lua_rawset(L_, -5);
+    }
+  lua_pop(L_, 1);
+}
+
+void LuaHost::setSandboxOverride(const char* name) {
+  lua_getfield(L_, LUA_REGISTRYINDEX, "platon.sandboxOverrides");
+  if (!lua_istable(L_, -1)) {
+    lua_pop(L_, 1);
+    lua_newtable(L_);
+    lua_pushvalue(L_, -1);
+    lua_setfield(L_, LUA_REGISTRYINDEX, "platon.sandboxOverrides");
+  }
+  lua_insert(L_, -2);
+  lua_setfield(L_, -2, name);
+  lua_pop(L_, 1);
+}
 
 void LuaHost::pushReadOnly(int index, std::string_view name) {
   if (index < 0 && index > LUA_REGISTRYINDEX) index = lua_gettop(L_) + 1 + index;
@@ -492,7 +536,7 @@ int LuaHost::newSandbox(const std::string& chunkName) {
       chunkName.size() > 1 && (chunkName[0] == '@' || chunkName[0] == '=') ? chunkName.substr(1) : chunkName;
   lua_getfield(L_, LUA_REGISTRYINDEX, "platon.newSandbox");
   lua_pushlstring(L_, name.data(), name.size());
-  pushApi();
+  pushSandboxApi();
   call(2, 1);
   Sandbox box;
   box.name = name;
@@ -542,7 +586,6 @@ void LuaHost::call(int nargs, int nresults) {
   Shared& shared = *shared_;
   shared.inCall = true;
   shared.callStart = 0;
-  shared.trustedTicks = 0;
   shared.trustedExpired = false;
   depth_ = 1;
   const int status = lua_pcall(L_, nargs, nresults, kTracebackSlot);
@@ -581,7 +624,7 @@ int LuaHost::protectedCall(int nargs, int nresults, int& below) {
 // garbage of a stopped script collected, and the error thrown.
 void LuaHost::afterFailedCall(int status, int below) {
   if (shared_->trustedExpired) {
-    hookAtNormalRate(*shared_);
+    hookForTrusted(*shared_);
     shared_->trustedExpired = false;
   }
   if (status == 0) return;
@@ -622,7 +665,8 @@ bool LuaHost::callSandboxed(int sandbox, int nargs, int nresults) {
     if (!s.timerArmed) armTimer(s, s.limits.deadlineNanoseconds - s.frameSpent);
     // The count starts again here, and the call pays one tick for the instructions of its last
     // tick, which no look counts: so its charge depends on nothing that ran before it.
-    hookAtNormalRate(s);
+    hookForSandbox(s);
+    s.callbackDepth = 0;
     s.frameSteps += kTickSteps;
     box.spent += kTickSteps;
   }
@@ -649,7 +693,9 @@ bool LuaHost::callSandboxed(int sandbox, int nargs, int nresults) {
   // The outermost sandboxed call returned: its time goes to the frame.
   s.frameSpent += coarseNanoseconds() - s.enteredAt;
   const bool stopped = s.expired || s.memoryStop != kNoSandbox;
-  if (s.hookFast) hookAtNormalRate(s);
+  // Back to the trusted rate at once: a look every kTickSteps in trusted code would abort the JIT's
+  // recording of every trace it records (measured: a frame with a level tick took twice as long).
+  hookForTrusted(s);
   if (status == 0 && !stopped) [[likely]]
     return true;
   // An error, or a stop. A stop disables the sandbox that ran over: the one whose allocation was
@@ -782,6 +828,16 @@ void LuaHost::setPrintSink(std::function<void(std::string_view, std::string_view
 
 size_t LuaHost::memoryUsed() const { return shared_->used; }
 int64_t LuaHost::frameSteps() const { return shared_->frameSteps; }
+
+CallbackDepth::CallbackDepth(lua_State* L) {
+  void* ud = nullptr;
+  static thread_local int otherStates = 0;  // a state of no host's (the pattern tests' own)
+  depth_ = lua_getallocf(L, &ud) == limitedAlloc ? &static_cast<LuaHost::Shared*>(ud)->callbackDepth : &otherStates;
+  if (*depth_ >= kMaxCallbackDepth)
+    luaL_error(L, "callbacks nested more than %d deep (a gsub or sort callback that calls gsub or sort again?)",
+               kMaxCallbackDepth);
+  ++*depth_;
+}
 
 void chargeSteps(lua_State* L, int64_t steps) {
   void* ud = nullptr;

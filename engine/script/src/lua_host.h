@@ -45,11 +45,12 @@ namespace platon::script {
 
 struct LuaLimits {
   size_t memoryBytes = size_t{128} << 20;  // the whole state: every script and its data
-  // All sandboxed calls of one frame together: about 0.1 s of interpreted Lua on a 2020s x86-64
+  // All sandboxed calls of one frame together: 0.04-0.08 s of interpreted Lua on a 2020s x86-64
   // core (4-8 ns an instruction with the hook on), far above what a game's scripts use a frame.
-  int64_t frameSteps = 20'000'000;
-  // The same calls' wall-clock time, the backstop for uncharged work.
-  int64_t deadlineNanoseconds = 1'000'000'000;
+  int64_t frameSteps = 10'000'000;
+  // The same calls' wall-clock time, the backstop for uncharged work: far enough above the steps'
+  // time (200 ns a step) that a machine or a step slower than usual still meets the budget first.
+  int64_t deadlineNanoseconds = 2'000'000'000;
 };
 
 // Interpreted instructions between two looks of the count hook, and what each look charges.
@@ -60,6 +61,23 @@ inline constexpr int kTickSteps = 100;
 // line (raises the stop, which pcall cannot swallow). Does nothing when no sandbox runs. Call it
 // with no C++ object alive that needs its destructor: it may not return.
 void chargeSteps(lua_State* L, int64_t steps);
+
+// Held by a C function of ours around a call back into Lua (a gsub replacement function or table, a
+// sort comparator). Such a callback can call the same C function again, nesting C frames that
+// LuaJIT does not count as Lua frames (a match's frame is large: gsub calling gsub crashed the
+// process before LuaJIT's own limit): past kMaxCallbackDepth nested callbacks the call is refused
+// with a Lua error, at the script's line. The depth starts again at each call from the engine.
+inline constexpr int kMaxCallbackDepth = 50;
+class CallbackDepth {
+ public:
+  explicit CallbackDepth(lua_State* L);  // raises the error past the limit (nothing is held then)
+  ~CallbackDepth() { --*depth_; }
+  CallbackDepth(const CallbackDepth&) = delete;
+  CallbackDepth& operator=(const CallbackDepth&) = delete;
+
+ private:
+  int* depth_;
+};
 
 enum class Trust { Trusted, Sandboxed };
 
@@ -82,8 +100,15 @@ class LuaHost {
   int loadFile(const std::string& path, Trust trust);
   int loadString(std::string_view code, const std::string& chunkName, Trust trust);
 
-  // The table of functions sandboxes see as `platon` (read-only for them). Pushes it.
+  // The table of functions trusted scripts see as `platon`. Pushes it.
   void pushApi();
+  // What sandboxes see as `platon` (read-only for them): the same table, but for the entries
+  // replaced for them with setSandboxOverride (a new table each call). Pushes it.
+  void pushSandboxApi();
+  // Pops a value that replaces api entry `name` in what sandboxes see (the world's classic C
+  // functions where trusted code calls FFI wrappers the JIT compiles: a sandbox's calls must cost
+  // the same steps in every run).
+  void setSandboxOverride(const char* name);
   // Pushes readonly(t, name) of the prelude: a read-only view of the table at `index` (nested
   // tables are views too), for the engine's tables that sandboxes are handed.
   void pushReadOnly(int index, std::string_view name);

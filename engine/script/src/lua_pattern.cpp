@@ -159,12 +159,24 @@ struct Capture {
   ptrdiff_t length;  // or kOpen, kPosition
 };
 
+// The steps one call takes (the per-call bound counts them all) and how many of them were charged to
+// the frame's budget already (before each callback: an error there unwinds past the call's end).
+struct StepCount {
+  uint64_t total = 0;
+  uint64_t charged = 0;
+  void chargeSoFar(lua_State* L) {
+    const uint64_t due = total - charged;
+    charged = total;
+    chargeSteps(L, static_cast<int64_t>(due));
+  }
+};
+
 class Matcher {
  public:
   // The pattern ends at its first "\0" (as in LuaJIT); the byte at patternEnd is always readable
   // ("\0": an embedded one, or the terminator every Lua string has).
   // Its steps are added to `steps`, which the caller charges to the frame's budget.
-  Matcher(const char* subject, size_t subjectLength, const char* pattern, size_t patternLength, uint64_t& steps)
+  Matcher(const char* subject, size_t subjectLength, const char* pattern, size_t patternLength, StepCount& steps)
       : steps_(steps),
         subject_(subject),
         subjectEnd_(subject + subjectLength),
@@ -176,9 +188,10 @@ class Matcher {
   const Capture& capture(int i) const { return capture_[i]; }
 
   void step(uint64_t n = 1) {
-    steps_ += n;
-    if (steps_ > kPatternStepBudget) throw Refusal{nullptr};
+    steps_.total += n;
+    if (steps_.total > kPatternStepBudget) throw Refusal{nullptr};
   }
+  StepCount& steps() { return steps_; }
 
   // Where a match of `p` starting at `s` ends, or nullptr. Captures are reset.
   const char* matchAt(const char* s, const char* p) {
@@ -396,7 +409,7 @@ class Matcher {
     return nullptr;
   }
 
-  uint64_t& steps_;
+  StepCount& steps_;
   const char* subject_;
   const char* subjectEnd_;
   const char* pattern_;
@@ -459,7 +472,7 @@ template <class F>
 int refusing(lua_State* L, F&& f) {
   const char* message = "";
   bool costly = false;
-  uint64_t steps = 0;
+  StepCount steps;
   int results = 0;
   try {
     results = f(steps);
@@ -469,7 +482,7 @@ int refusing(lua_State* L, F&& f) {
     else
       costly = true;
   }
-  chargeSteps(L, static_cast<int64_t>(steps));
+  steps.chargeSoFar(L);
   if (!message[0] && !costly) return results;
   if (costly) return luaL_error(L, "pattern too costly (more than %d steps)", static_cast<int>(kPatternStepBudget));
   return luaL_error(L, "%s", message);
@@ -486,7 +499,7 @@ int findOrMatch(lua_State* L, bool find) {
   const char* s = luaL_checklstring(L, 1, &length);
   const char* p = luaL_checklstring(L, 2, &patternLength);
   const size_t start = startOf(L, 3, length);
-  return refusing(L, [&](uint64_t& steps) {
+  return refusing(L, [&](StepCount& steps) {
     Matcher m(s, length, p, patternLength, steps);
     if (find && (lua_toboolean(L, 4) || !hasSpecials(p, patternLength))) {
       // Plain text: a linear search (two-way), charged by the bytes it passes.
@@ -524,7 +537,7 @@ int gmatchNext(lua_State* L) {
   const char* s = lua_tolstring(L, lua_upvalueindex(1), &length);
   const char* p = lua_tolstring(L, lua_upvalueindex(2), &patternLength);
   const auto start = static_cast<size_t>(lua_tointeger(L, lua_upvalueindex(3)));
-  return refusing(L, [&](uint64_t& steps) {
+  return refusing(L, [&](StepCount& steps) {
     Matcher m(s, length, p, patternLength, steps);
     for (const char* at = s + (start > length ? length + 1 : start); at <= s + length; ++at) {
       if (const char* e = m.matchAt(at, p)) {
@@ -571,13 +584,17 @@ void addReplacement(lua_State* L, luaL_Buffer& b, Matcher& m, const char* subjec
     }
     return;
   }
-  if (kind == LUA_TTABLE) {
-    pushCapture(L, m, 0, subject, s, e);
-    lua_gettable(L, 3);
-  } else {
-    lua_pushvalue(L, 3);
-    const int n = pushCaptures(L, m, subject, s, e);
-    lua_call(L, n, 1);
+  m.steps().chargeSoFar(L);  // the callback (or an __index) may raise: its error leaves this call here
+  {
+    const CallbackDepth nested(L);
+    if (kind == LUA_TTABLE) {
+      pushCapture(L, m, 0, subject, s, e);
+      lua_gettable(L, 3);
+    } else {
+      lua_pushvalue(L, 3);
+      const int n = pushCaptures(L, m, subject, s, e);
+      lua_call(L, n, 1);
+    }
   }
   if (!lua_toboolean(L, -1)) {
     lua_pop(L, 1);
@@ -619,7 +636,7 @@ int patternGsub(lua_State* L) {
   lua_settop(L, 3);
   luaL_Buffer b;
   luaL_buffinit(L, &b);
-  return refusing(L, [&](uint64_t& steps) {
+  return refusing(L, [&](StepCount& steps) {
     Matcher m(s, length, p, patternLength, steps);
     const bool anchored = *p == '^';
     if (anchored) ++p;

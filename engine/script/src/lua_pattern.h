@@ -7,17 +7,18 @@
 // (".-.-.-.-b" on 40 characters). These count their steps (every character tried against a pattern
 // item, every start position, every character a back-reference or a replacement copies, every byte
 // of a [set] read; a set is read once per call into a 256-bit table, not once per character) and give
-// up with "pattern too costly (more than 10000000 steps)" past kPatternStepBudget: about 10-30 ms
-// of work, whatever the pattern. The engine installs them in every sandbox's `string` and behind
-// the shared string metatable (s:find(...)), for every script; trusted code keeps LuaJIT's own in
-// its global `string`.
+// up with "pattern too costly (more than 2000000 steps)" past kPatternStepBudget: about 2-6 ms of
+// work, whatever the pattern, and a fifth of a frame's budget of steps (lua_host.h), so one call is
+// refused (an error pcall can catch) before it could spend the frame's budget. The engine installs them in every
+// sandbox's `string` and behind the shared string metatable (s:find(...)), for every script; trusted code keeps
+// LuaJIT's own in its global `string`.
 #pragma once
 #include <cstdint>
 #include <lua.hpp>
 
 namespace platon::script {
 
-inline constexpr uint64_t kPatternStepBudget = 10'000'000;
+inline constexpr uint64_t kPatternStepBudget = 2'000'000;
 
 int patternFind(lua_State* L);    // string.find(s, pattern [, init [, plain]])
 int patternMatch(lua_State* L);   // string.match(s, pattern [, init])

@@ -176,6 +176,30 @@ int allKeys(lua_State* L, int64_t& cost) {
 
 }  // namespace
 
+namespace {
+
+int countedLess(lua_State* L) {
+  chargeSteps(L, 1);
+  const CallbackDepth nested(L);  // the comparator, or an __lt metamethod, may sort again
+  if (lua_isnil(L, lua_upvalueindex(1))) {
+    lua_pushboolean(L, lua_lessthan(L, 1, 2));
+    return 1;
+  }
+  lua_pushvalue(L, lua_upvalueindex(1));
+  lua_pushvalue(L, 1);
+  lua_pushvalue(L, 2);
+  lua_call(L, 2, 1);
+  return 1;
+}
+
+}  // namespace
+
+int countedComparator(lua_State* L) {
+  lua_settop(L, 1);
+  lua_pushcclosure(L, countedLess, 1);
+  return 1;
+}
+
 // The keys are walked, and sorted, in C, where no hook counts: their work is charged here, once
 // the vectors are gone (the charge may stop the sandbox).
 int orderedKeys(lua_State* L) {
@@ -200,7 +224,8 @@ int orderedKeys(lua_State* L) {
 // is a deterministic generator per sandbox, os.time/clock/date read the game clock, pairs, next
 // and table.foreach walk keys in a fixed order, tostring names tables and functions by a counter,
 // not an address.
-// The pattern functions count their steps (lua_pattern.cpp); table.sort refuses huge tables (it
+// The pattern functions count their steps (lua_pattern.cpp); table.sort charges each comparison
+// and refuses huge tables (it
 // sorts in C, where no hook runs).
 // For every script: the shared string metatable is locked (getmetatable("") returns "locked"), and
 // its methods (s:find(...)) are the counted pattern functions, without dump.
@@ -416,14 +441,19 @@ local function safeForeach(t, f)
   end
 end
 
--- table.sort runs in C, where no hook stops it: a bound on what one call may sort.
+-- table.sort runs in C, where no hook counts: each comparison is charged a step (LuaJIT's quicksort
+-- takes n^2 of them on some orders), and one call sorts at most MAX_SORT items.
 local MAX_SORT = 1000000
+local countedComparator = C.countedComparator
 local function safeSort(t, less)
   refuseView(t, "sort")
   if type(t) == "table" and #t > MAX_SORT then
     error("table.sort: at most " .. MAX_SORT .. " items in a sandbox (this table has " .. #t .. ")", 2)
   end
-  return sort(t, less)
+  if less ~= nil and type(less) ~= "function" then
+    error("bad argument #2 to 'sort' (function expected, got " .. type(less) .. ")", 2)
+  end
+  return sort(t, countedComparator(less))
 end
 
 -- The game's clock: frames / 60 seconds since an epoch of 0 (os.time, os.clock), dates in UTC.
@@ -505,12 +535,6 @@ local function safeXpcall(f, handler, ...)
   local ok, n, results = packed(pcall(f, ...))
   if ok then return true, unpack(results, 1, n) end
   return false, handler(results[1])
-end
-
--- What a sandbox calls with its loops in them runs interpreted, so the hooks see them.
-for _, f in ipairs { safeTostring, safeFormat, safePairs, safeNext, safeIpairs, safeForeach, safeSort, safeTime, safeDate,
-                     safeXpcall } do
-  jit.off(f, true)
 end
 
 local function newSandbox(name, api)

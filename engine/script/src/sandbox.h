@@ -15,6 +15,10 @@ std::string_view sandboxPrelude();
 // orderedKeys(t, true) -> only the first key of that order (nil for an empty table), found in one
 // pass that builds nothing, or nil and why (the same refusals): what next(t) returns.
 int orderedKeys(lua_State* L);
+// countedComparator(less) -> a comparator for LuaJIT's table.sort that charges one step to the
+// frame's budget for each comparison, then compares with `less` (nil: with <). Sorting runs in C,
+// where no hook counts, and LuaJIT's quicksort takes n^2 comparisons on some orders.
+int countedComparator(lua_State* L);
 inline constexpr size_t kMaxOrderedKeys = 1'000'000;
 
 }  // namespace platon::script

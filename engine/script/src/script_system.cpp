@@ -145,6 +145,12 @@ int engineReadOnly(lua_State* L) {
   return 1;
 }
 
+// engine.sandboxApi() -> what sandboxes see as `platon` (LuaHost::pushSandboxApi), before its view.
+int engineSandboxApi(lua_State* L) {
+  stateOf(L).host.pushSandboxApi();
+  return 1;
+}
+
 // engine.disabled(sandbox) -> whether a limit stopped it for good.
 int engineDisabled(lua_State* L) {
   lua_pushboolean(L, stateOf(L).host.disabled(static_cast<int>(lua::checkInteger(L, 1, 0, INT_MAX))));
@@ -175,13 +181,10 @@ int engineInvoke(lua_State* L) {
 }
 
 constexpr luaL_Reg kEngine[] = {
-    {"load", lua::bound<engineLoad>},
-    {"setRules", lua::bound<engineSetRules>},
-    {"readonly", lua::bound<engineReadOnly>},
-    {"disabled", lua::bound<engineDisabled>},
-    {"protect", lua::bound<engineProtect>},
-    {"invoke", lua::bound<engineInvoke>},
-    {nullptr, nullptr},
+    {"load", lua::bound<engineLoad>},         {"setRules", lua::bound<engineSetRules>},
+    {"readonly", lua::bound<engineReadOnly>}, {"sandboxApi", lua::bound<engineSandboxApi>},
+    {"disabled", lua::bound<engineDisabled>}, {"protect", lua::bound<engineProtect>},
+    {"invoke", lua::bound<engineInvoke>},     {nullptr, nullptr},
 };
 
 // Copies plain data from one Lua state to another: nil, booleans, numbers, strings, and tables of

@@ -273,6 +273,18 @@ void registerWorldFfi(LuaHost& host, ScriptContext& context) {
   // The struct lives as long as the context (one per ScriptSystem); Lua holds a pointer to it.
   context.ffi = std::make_shared<WorldFfi>(WorldFfi{&context, ffiPosition, ffiVelocity, ffiSetVelocity, ffiGravity,
                                                     ffiContactCount, ffiContact, ffiValid, ffiLastError});
+  // Sandboxes keep the classic C functions: they run interpreted, where an FFI call is slow, and
+  // their calls must cost the same steps in every run (a wrapper the JIT compiled counts none).
+  host.pushApi();
+  lua_getfield(L, -1, "world");
+  lua_newtable(L);
+  for (lua_pushnil(L); lua_next(L, -3);) {  // rawset below pops the value and a copy of the key
+    lua_pushvalue(L, -2);
+    lua_insert(L, -2);
+    lua_rawset(L, -4);
+  }
+  host.setSandboxOverride("world");
+  lua_pop(L, 2);
   host.loadString(kWrappers, "=platon.world (FFI)", Trust::Trusted);
   lua_getglobal(L, "require");
   lua_pushliteral(L, "ffi");

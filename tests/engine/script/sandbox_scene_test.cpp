@@ -369,7 +369,7 @@ TEST(Finding6, StringMethodsAreTheCountedPatternFunctionsToo) {
   const core::SystemRegistry registry = scripting();
   core::LiveScene live(level.scene, registry, false);
   EXPECT_EQ(scriptsOf(live).status().message,
-            level.folder.path("level.lua") + ":2: pattern too costly (more than 10000000 steps) / dump: nil");
+            level.folder.path("level.lua") + ":2: pattern too costly (more than 2000000 steps) / dump: nil");
 }
 
 TEST(Finding7, CostlyPatternsAreRefusedWhateverTheirShape) {
@@ -398,7 +398,7 @@ TEST(Finding7, CostlyPatternsAreRefusedWhateverTheirShape) {
 // --- 8: a loop of slow C calls is stopped by the work they are charged ---
 
 TEST(Finding8, ALoopOfSlowCallsIsStoppedByTheirWork) {
-  // Each search of 4 MB is charged the bytes it passes (250,000 steps): the loop runs 80 times,
+  // Each search of 4 MB is charged the bytes it passes (250,000 steps): the loop runs 40 times,
   // not the 10^6 its instructions alone would allow.
   const char* level =
       "local n = 0\n"
@@ -411,10 +411,10 @@ TEST(Finding8, ALoopOfSlowCallsIsStoppedByTheirWork) {
   core::LiveScene live(charged.scene, registry, false);
   const Played p = play(live, 3);
   ASSERT_EQ(p.errors.size(), 1u) << joined(p.errors);
-  EXPECT_NE(p.errors[0].find("level.lua:4: script stopped: it ran past the frame's script budget of 20000000 steps"),
+  EXPECT_NE(p.errors[0].find("level.lua:4: script stopped: it ran past the frame's script budget of 10000000 steps"),
             std::string::npos)
       << p.errors[0];
-  EXPECT_EQ(p.status.message, "80");
+  EXPECT_EQ(p.status.message, "40");
 }
 
 // --- 9: a level's manifest may lower the limits, never raise them ---
@@ -426,7 +426,7 @@ TEST(Finding9, AManifestCannotRaiseTheLimits) {
   core::LiveScene live(level.scene, registry, false);
   const Played p = play(live, 2);
   ASSERT_EQ(p.errors.size(), 1u) << joined(p.errors);
-  EXPECT_NE(p.errors[0].find("mod.lua:1: script stopped: it ran past the frame's script budget of 20000000 steps"),
+  EXPECT_NE(p.errors[0].find("mod.lua:1: script stopped: it ran past the frame's script budget of 10000000 steps"),
             std::string::npos)
       << p.errors[0];
   Level hog(

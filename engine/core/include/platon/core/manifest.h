@@ -57,8 +57,8 @@ struct SceneManifest {
   // limits = { memory_mb, steps, deadline_ms }: the script system uses them only to lower its own
   // limits (the Lua state's memory, the frame's budget of steps, the frame's wall-clock deadline).
   size_t memoryMegabytes = 128;
-  int64_t frameSteps = 20'000'000;
-  double deadlineMilliseconds = 1000;
+  int64_t frameSteps = 10'000'000;
+  double deadlineMilliseconds = 2000;
   uint32_t seed = 1;
 
   bool needs(std::string_view system) const;
