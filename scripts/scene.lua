@@ -61,13 +61,23 @@ local function interpreted(f)
   return f
 end
 
-local function sandboxedFunctions(t, id)
+-- A sandboxed module's functions, each called as its code (engine.invoke); `after(f)`, when
+-- given, runs after each call returns (the checks of what the call wrote in `game`).
+local function sandboxedFunctions(t, id, after)
   if type(t) ~= "table" then return t end
   local wrapped = {}
   for k, v in pairs(t) do
     if type(v) == "function" then
       local f = v
-      wrapped[k] = interpreted(function(...) return invoke(id, f, ...) end)
+      if after then
+        local function finish(...)
+          after(f)
+          return ...
+        end
+        wrapped[k] = interpreted(function(...) return finish(invoke(id, f, ...)) end)
+      else
+        wrapped[k] = interpreted(function(...) return invoke(id, f, ...) end)
+      end
     else
       wrapped[k] = v
     end
@@ -141,6 +151,68 @@ local function lockGameTables()
 end
 lockGameTables()
 
+-- What the engine reads in `game` after a level's own player or progression script (sandboxed,
+-- handed `game`) ran: checked raw after each of its calls. The engine reads these fields with
+-- arithmetic, comparisons and indexing, so a value of another kind (a table whose __add loops, a
+-- table with an __index) would run that script's code outside its limits: it is the script's
+-- error, at its function's line, and the field is set back to what it was.
+local function wholeNumber(v) return type(v) == "number" and v == floor(v) and v >= 0 and v < 2 ^ 53 end
+local function isBoolean(v) return type(v) == "boolean" end
+local function isString(v) return type(v) == "string" end
+local function orNil(check) return function(v) return v == nil or check(v) end end
+local rawmeta = debug.getmetatable
+local function plainTable(v) return type(v) == "table" and (rawmeta(v) == nil or rawmeta(v) == LOCKED) end
+local function isTable(v) return type(v) == "table" end
+local function listOfWholes(v)  -- switch ids: at most 1000 of them
+  if not plainTable(v) then return false end
+  local n = 0
+  for k, x in next, v do
+    n = n + 1
+    if n > 1000 or type(k) ~= "number" or not wholeNumber(x) then return false end
+  end
+  return true
+end
+local function checkpointPlace(v)
+  return v == nil or (plainTable(v) and type(rawget(v, "face")) == "number" and type(rawget(v, "x")) == "number"
+                      and type(rawget(v, "y")) == "number")
+end
+local GAME_FIELDS = {
+  time = { wholeNumber, "a whole number" }, deaths = { wholeNumber, "a whole number" },
+  wonFrame = { wholeNumber, "a whole number" }, won = { isBoolean, "a boolean" },
+  killed = { isBoolean, "a boolean" }, message = { isString, "a string" },
+  reachedGoal = { orNil(isBoolean), "a boolean" }, touchedCheckpoint = { orNil(isBoolean), "a boolean" },
+  restoredPlayer = { orNil(isBoolean), "a boolean" }, switches = { plainTable, "a table with no metatable" },
+  openSwitches = { listOfWholes, "a list of switch ids" }, pendingToggles = { listOfWholes, "a list of switch ids" },
+  checkpoint = { checkpointPlace, "nil or a table { face =, x =, y = } of numbers" },
+  player = { orNil(isTable), "nil or a table" },  -- the player module's object: the engine reads it raw
+}
+local gameGood = {}  -- the values last found right, to set a wrong one back to
+local engineTables = {}  -- the engine's own tables in `game`, which must stay themselves
+local function gameChecked(f)
+  local problem
+  for key, rule in pairs(GAME_FIELDS) do
+    local v = rawget(game, key)
+    if rule[1](v) then
+      gameGood[key] = v
+    else
+      problem = problem or ("game." .. key .. " was left " .. (type(v) == "table" and "a table of another kind"
+                or ("a " .. type(v))) .. ", where the engine reads " .. rule[2] .. "; it is set back")
+      rawset(game, key, gameGood[key])
+    end
+  end
+  for key, t in pairs(engineTables) do
+    if rawget(game, key) ~= t then
+      problem = problem or ("game." .. key .. " is the engine's: it was replaced; it is set back")
+      rawset(game, key, t)
+    end
+  end
+  if problem then
+    local info = debug.getinfo(f, "S")
+    error(info.short_src .. ":" .. info.linedefined .. ": " .. problem, 0)
+  end
+end
+interpreted(gameChecked)
+
 -- The player's entity, read raw (the player table may be a sandboxed script's).
 local function playerEntity()
   local p = rawget(game, "player")
@@ -171,9 +243,10 @@ local function checkCoordinate(what, name, v)
   end
 end
 
+local showValue = engine.tostring  -- the sandboxes' tostring: no address (it would differ between runs)
 local levelApi = {
   message = function(text)
-    text = tostring(text)
+    text = showValue(text)
     if #text > MESSAGE_BYTES then  -- cut at a character boundary (UTF-8)
       local cut = MESSAGE_BYTES
       while cut > 0 and band(text:byte(cut + 1), 0xC0) == 0x80 do cut = cut - 1 end
@@ -248,11 +321,16 @@ function scene.build()
   local start = Level.start
   game.level = { start = start and { face = start.face, x = start.x, y = start.y } }
   local Player, playerId = load(setup.player, setup.trusted.player, game)
-  PlayerModule = setup.trusted.player and Player or sandboxedFunctions(Player, playerId)
+  PlayerModule = setup.trusted.player and Player or sandboxedFunctions(Player, playerId, gameChecked)
   game.Player = sealed(PlayerModule, "game.Player")
   local progression, progressionId = load(setup.progression, setup.trusted.progression, game)
-  Progression = (setup.trusted.progression and progression or sandboxedFunctions(progression, progressionId)) or {}
+  Progression = (setup.trusted.progression and progression or sandboxedFunctions(progression, progressionId,
+                                                                                  gameChecked)) or {}
   game.progression = sealed(Progression, "game.progression")
+  for _, key in ipairs { "input", "levelApi", "Player", "progression", "level" } do engineTables[key] = rawget(game, key) end
+  for key, rule in pairs(GAME_FIELDS) do
+    if rule[1](rawget(game, key)) then gameGood[key] = rawget(game, key) end
+  end
   Mods = {}
   for i, path in ipairs(setup.mods) do
     local mod, id = load(path, false, levelView)
@@ -350,13 +428,15 @@ local function restorePlayer(saved)
   setVelocity(rawget(player, "entity"), saved.vx, saved.vy)
   if PlayerModule.onReload then PlayerModule.onReload(player, saved.state)
   else
-    for k, v in pairs(saved.state or {}) do if k ~= "entity" and type(player[k]) == type(v) then player[k] = v end end
+    -- Raw: the player object may be a sandboxed script's, with metamethods of its own.
+    for k, v in pairs(saved.state or {}) do
+      if k ~= "entity" and type(rawget(player, k)) == type(v) then rawset(player, k, v) end
+    end
   end
   return true
 end
 
--- note: why the level's and mods' saved state did not cross (too large, say), or nil.
-function scene.restore(saved, note)
+function scene.restore(saved)
   local newMessage = game.message  -- what the new version's build said, if anything, wins
   for _, key in ipairs(KEPT) do
     if saved.game[key] ~= nil then game[key] = saved.game[key] end
@@ -369,7 +449,6 @@ function scene.restore(saved, note)
   protectPlayer()
   moduleHook(Level, "onReload", levelView, saved.level)
   for i = 1, #Mods do run(Mods[i], "onReload", levelView, saved.mods[i]) end
-  if note then levelApi.message(note) end
 end
 
 function scene.draw()

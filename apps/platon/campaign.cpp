@@ -9,6 +9,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "platon/files/read_file.h"
+
 namespace platon::app {
 namespace {
 
@@ -32,8 +34,7 @@ void makeFolders(const std::string& path) {
 }  // namespace
 
 std::vector<CampaignLevel> readCampaign(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(path + ": cannot read the campaign");
+  std::istringstream in(files::readBoundedFile(path, size_t{1} << 20));
   const size_t slash = path.find_last_of('/');
   const std::string base = slash == std::string::npos ? "" : path.substr(0, slash + 1);
   std::vector<CampaignLevel> levels;
@@ -61,7 +62,13 @@ std::string Progress::defaultPath() {
 }
 
 Progress::Progress(std::string path) : path_(std::move(path)) {
-  std::ifstream in(path_);
+  std::istringstream in;
+  try {
+    in.str(files::readBoundedFile(path_, size_t{16} << 20));
+  } catch (const files::FileError&) {
+    // No progress yet (or a file that is none: a folder, a FIFO): nothing is done. Saving
+    // replaces it, or says why it cannot.
+  }
   std::string line;
   auto count = [](const std::string& word, uint64_t limit, uint64_t& out) {  // digits only: no sign, no wrap
     if (word.empty() || word.size() > 18 || word.find_first_not_of("0123456789") != std::string::npos) return false;

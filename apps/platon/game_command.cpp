@@ -22,6 +22,7 @@
 #include "platon/core/live_scene.h"
 #include "platon/core/manifest.h"
 #include "platon/core/replay.h"
+#include "platon/core/visible_text.h"
 #include "platon/script/script_system.h"
 
 namespace platon::app {
@@ -52,7 +53,15 @@ class LevelRecorder {
   void start(const CampaignLevel& level, core::Scene& loaded) {
     if (!on()) return;
     level_ = level.folder;
-    recorder_.emplace(level.scene, 60, core::sceneFilesHash(core::sceneSourceFiles(loaded)));
+    // Named from the game's data folder or the current one (a replay names no absolute path); a
+    // campaign elsewhere is not recorded, and says so.
+    const std::optional<std::string> scene = core::portableScenePath(level.scene);
+    if (!scene) {
+      std::fprintf(stderr, "not recording %s: %s is in neither the current folder nor the game's data folder\n",
+                   level.folder.c_str(), level.scene.c_str());
+      return;
+    }
+    recorder_.emplace(*scene, 60, core::sceneFilesHash(core::sceneSourceFiles(loaded)));
   }
   void frame(uint8_t held, uint64_t stateHash) {
     if (recorder_) recorder_->frame(held, stateHash);
@@ -159,7 +168,7 @@ bool Game::load(size_t level) {
     next = std::make_unique<core::LiveScene>(levels_[level].scene, registry_, true);
   } catch (const std::exception& e) {
     notice_ = core::errorReport(e);
-    std::fprintf(stderr, "%s\n", notice_.c_str());
+    std::fprintf(stderr, "%s\n", core::visibleText(notice_, true).c_str());
     return false;
   }
   core::System* rendering = next->scene().findSystem("rendering");
@@ -243,7 +252,7 @@ void Game::handle(const core::WindowInput& input) {
 void Game::stepSimulation(int due, uint8_t held) {
   for (int s = 0; s < due && screen_ == Screen::Playing; ++s) {
     if (std::optional<std::string> error = live_->step(edges_.next(held)); error && *error != lastFrameError_) {
-      std::fprintf(stderr, "frame error (the game goes on):\n%s\n", error->c_str());
+      std::fprintf(stderr, "frame error (the game goes on):\n%s\n", core::visibleText(*error, true).c_str());
       lastFrameError_ = *error;
     }
     recording_.frame(held, live_->scene().world().stateHash());

@@ -3,8 +3,8 @@
 #include <stdexcept>
 #include <tinyxml2.h>
 
-#include "platon/core/file_read.h"
 #include "platon/core/visible_text.h"
+#include "platon/files/read_file.h"
 
 namespace platon::app {
 
@@ -43,7 +43,7 @@ bool writeJunit(const std::string& path, const JunitReport& report) {
 }
 
 JunitReport readJunit(const std::string& path) {
-  const std::string text = core::readBoundedFile(path, size_t{256} << 20);
+  const std::string text = files::readBoundedFile(path, size_t{256} << 20);
   tinyxml2::XMLDocument doc;
   if (doc.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS)
     throw std::runtime_error(path + ":" + std::to_string(doc.ErrorLineNum()) + ": not XML: " + doc.ErrorStr());

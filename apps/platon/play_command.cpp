@@ -26,6 +26,7 @@
 #include "platon/core/fixed_step.h"
 #include "platon/core/live_scene.h"
 #include "platon/core/replay.h"
+#include "platon/core/visible_text.h"
 #include "platon/script/script_system.h"
 
 namespace platon::app {
@@ -83,6 +84,10 @@ void stopOnSignals() {
 std::string whyUnrecordable(const std::string& scenePath, const std::string& path) {
   if (scenePath.find_first_of("\"\n\r") != std::string::npos)
     return "a scene path with '\"' or a line break cannot be written in a replay (rename its folder)";
+  if (!core::portableScenePath(scenePath))
+    return "the scene " + scenePath +
+           " is in neither the current folder nor the game's data folder: a replay names its scene by a path from "
+           "one of them (replays are shared), so play it from a folder that holds it";
   std::error_code error;
   if (std::filesystem::is_directory(path, error)) return "is a folder";
   const std::string partial = path + ".partial";
@@ -208,7 +213,7 @@ int playCommand(int argc, char** argv) {
   try {
     live.emplace(core::resolveDataPath(scenePath), registry, watch);
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "%s\n", core::errorReport(e).c_str());
+    std::fprintf(stderr, "%s\n", core::visibleText(core::errorReport(e), true).c_str());
     return 1;
   }
   core::Display* display = displayOf(live->scene());
@@ -224,13 +229,15 @@ int playCommand(int argc, char** argv) {
     std::fprintf(stderr, "--shot needs a window: the scene names no \"rendering\", or there is no display\n");
     return 1;
   }
-  std::printf("playing %s%s\n", live->scene().manifest().name.c_str(),
+  std::printf("playing %s%s\n", core::visibleText(live->scene().manifest().name).c_str(),
               watch ? " (watching its files: save one to reload)" : "");
   std::fflush(stdout);
 
   std::optional<core::ReplayRecorder> recorder;
   bool recordFailed = false;
-  if (!recordPath.empty()) recorder.emplace(scenePath, 60, core::sceneFilesHash(core::sceneSourceFiles(live->scene())));
+  if (!recordPath.empty())
+    recorder.emplace(*core::portableScenePath(scenePath), 60,
+                     core::sceneFilesHash(core::sceneSourceFiles(live->scene())));
   stopOnSignals();
   uint64_t frameErrors = 0;  // frames whose scripts raised an error
   core::FixedStep clock(60);
@@ -260,7 +267,7 @@ int playCommand(int argc, char** argv) {
           recorder.reset();
         }
       } else {
-        std::printf("reload refused, the last good version goes on:\n%s\n", r->error.c_str());
+        std::printf("reload refused, the last good version goes on:\n%s\n", core::visibleText(r->error, true).c_str());
       }
     }
     uint8_t keys = 0;
@@ -281,7 +288,7 @@ int playCommand(int argc, char** argv) {
         ++frameErrors;
         if (*error != lastError)
           std::printf("frame %llu: error (the game goes on):\n%s\n", static_cast<unsigned long long>(frame),
-                      error->c_str());
+                      core::visibleText(*error, true).c_str());
         lastError = *error;
       }
       if (recorder) recorder->frame(held, live->scene().world().stateHash());
@@ -290,7 +297,8 @@ int playCommand(int argc, char** argv) {
       if (!scripts) continue;
       const script::GameStatus status = scripts->status();
       if (status.message != lastMessage) {
-        std::printf("frame %llu: %s\n", static_cast<unsigned long long>(frame), status.message.c_str());
+        std::printf("frame %llu: %s\n", static_cast<unsigned long long>(frame),
+                    core::visibleText(status.message).c_str());  // a script's text: no terminal escapes
         lastMessage = status.message;
       }
       if (status.won && !won) {

@@ -41,7 +41,7 @@ bool exists(const std::string& path) {
 std::string scenePathOf(const std::string& level) {
   if (level.size() > 4 && level.substr(level.size() - 4) == ".lua") return core::resolveDataPath(level);
   for (const std::string& candidate : {level + "/scene.lua", "levels/" + level + "/scene.lua"})
-    if (const std::string found = core::resolveDataPath(candidate); exists(found)) return found;
+    if (std::string found = core::resolveDataPath(candidate); exists(found)) return found;
   return level;
 }
 

@@ -17,6 +17,7 @@
 #include <signal.h>
 #include <sstream>
 #include <string>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
@@ -663,6 +664,74 @@ TEST(Budget, AStopComesAtTheSameIterationInEveryProcess) {
   EXPECT_GT(std::atoi(said[0].substr(9).c_str()), 100) << said[0];
   EXPECT_EQ(said[1], said[0]);
   EXPECT_EQ(said[2], said[0]);
+}
+
+// Every file content names is opened only if it is a regular file of bounded size: a FIFO (a tar
+// archive can carry one) blocked the load for ever, /dev/zero was read until memory ran out. Each
+// file a scenario run opens (the scenario, its scene's manifest, the level file, the level's
+// scripts, a mod, the replay and its scene) is replaced in turn by each kind of file that is not
+// one, and the run must end, refuse it by name with the reason, and name the line that named it.
+TEST(ContentFiles, EveryNamedFileIsARegularFileOfBoundedSize) {
+  namespace fs = std::filesystem;
+  struct Named {
+    std::string file;     // in the folder
+    std::string command;  // "run sc.lua" or "replay r.replay"
+    std::string namedAt;  // the naming file and line ("" for the file given on the command line)
+  };
+  const Named named[] = {
+      {"sc.lua", "run", ""},
+      {"lvl/scene.lua", "run", "sc.lua:1:"},
+      {"lvl/l.level", "run", "scene.lua:2:"},
+      {"lvl/level.lua", "run", "scene.lua:3:"},
+      {"lvl/mod.lua", "run", "scene.lua:3:"},
+      {"r.replay", "replay", ""},
+      {"lvl/scene.lua", "replay", "r.replay:2:"},
+  };
+  struct Kind {
+    std::string name, reason;
+  };
+  const Kind kinds[] = {{"fifo", "not a regular file (a FIFO)"},
+                        {"folder", "not a regular file (a folder)"},
+                        {"device", "/dev/zero"},
+                        {"huge", "MB, more than the"}};
+  for (const Named& n : named)
+    for (const Kind& k : kinds) {
+      Folder folder("cli_content_files");
+      std::ifstream level(kRoot + "/levels/cube_intro/cube_intro.level", std::ios::binary);
+      std::stringstream levelText;
+      levelText << level.rdbuf();
+      folder.write("lvl/l.level", levelText.str());
+      folder.write("lvl/scene.lua",
+                   "return { systems = { 'scripting' },\n  stage = { level = 'l.level' },\n"
+                   "  scripts = { preset = 'game', level = 'level.lua', mods = { 'mod.lua' } } }\n");
+      folder.write("lvl/level.lua", "return { start = { face = 0, x = 600, y = 700 } }\n");
+      folder.write("lvl/mod.lua", "return {}\n");
+      folder.write("sc.lua", "return { scene = 'lvl/scene.lua', frames = 5 }\n");
+      folder.write("r.replay", "platon replay 1\nscene \"lvl/scene.lua\"\nframes 5\nhash_every 0\ninput\n5 -\nend\n");
+      const std::string target = folder.path(n.file);
+      fs::remove(target);
+      if (k.name == "fifo") {
+        ASSERT_EQ(mkfifo(target.c_str(), 0600), 0);
+      } else if (k.name == "folder") {
+        fs::create_directories(target);
+      } else if (k.name == "device") {
+        fs::create_symlink("/dev/zero", target);
+      } else {
+        std::ofstream(target) << "-- huge\n";
+        fs::resize_file(target, size_t{300} << 20);  // sparse: over every cap, nothing written
+      }
+      const std::string given = n.command == "run" ? "sc.lua" : "r.replay";
+      const Ran r = platon({n.command, "--shard", "1/1", given}, folder.path(), 120);
+      const std::string said = r.out + r.err;
+      const std::string what = n.file + " as a " + k.name + " (" + n.command + "):\n" + said;
+      EXPECT_NE(r.status, 0) << what;
+      EXPECT_LT(r.status, 128) << what;  // ended by itself: no crash, no time limit
+      EXPECT_TRUE(contains(said, fs::path(n.file).filename().string())) << what;
+      EXPECT_TRUE(contains(said, k.reason) || (k.name == "device" && contains(said, "(a device)"))) << what;
+      if (!n.namedAt.empty()) {
+        EXPECT_TRUE(contains(said, n.namedAt)) << what;
+      }
+    }
 }
 
 }  // namespace

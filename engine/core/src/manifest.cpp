@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <stdlib.h>
 
+#include "platon/files/read_file.h"
+
 namespace platon::core {
 
 const DataTable* DataValue::table() const {
@@ -330,11 +332,12 @@ bool SceneManifest::needs(std::string_view system) const {
 }
 
 SceneManifest loadManifest(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot open the manifest");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  const std::string text = buffer.str();
+  std::string text;
+  try {
+    text = files::readBoundedFile(path, kMaxManifestBytes);
+  } catch (const files::FileError& e) {
+    throw std::runtime_error(path + ": the manifest: " + e.reason());
+  }
   const DataValue root = parseDataFile(text, path);
   if (!root.table()) fieldError(path, root, "a manifest is a table: return { ... }");
   checkKeys(path, root, {"name", "systems", "stage", "gravity", "scripts", "limits", "seed"});

@@ -9,6 +9,7 @@
 
 #include "platon/core/input.h"
 #include "platon/core/visible_text.h"
+#include "platon/files/read_file.h"
 
 namespace platon::core {
 namespace {
@@ -180,8 +181,15 @@ Replay parseReplay(const std::string& text, const std::string& fileName) {
   line("scene \"path\"");
   in.expect(w, "scene", 2, "scene \"path\"");
   r.scene = w[1].text;
+  r.sceneAt = fileName + ":" + std::to_string(in.line()) + ":" + std::to_string(w[1].column);
   if (!w[1].quoted) in.fail(w[1].column, "the scene path is written in double quotes");
   if (r.scene.empty()) in.fail(w[1].column, "empty scene path");
+  if (r.scene[0] == '/')
+    in.fail(w[1].column,
+            "'" + r.scene +
+                "': a replay's scene path is relative, from the replay's folder, the current folder or the game's "
+                "data folder "
+                "(replays are shared: an absolute path could name any file)");
   if (hasParentStep(r.scene))
     in.fail(w[1].column,
             "'" + r.scene +
@@ -206,11 +214,13 @@ Replay parseReplay(const std::string& text, const std::string& fileName) {
 }
 
 Replay readReplay(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw std::runtime_error(path + ": cannot open the replay");
-  std::ostringstream text;
-  text << file.rdbuf();
-  return parseReplay(text.str(), path);
+  std::string text;
+  try {
+    text = files::readBoundedFile(path, kMaxReplayBytes);
+  } catch (const files::FileError& e) {
+    throw std::runtime_error(path + ": the replay: " + e.reason());
+  }
+  return parseReplay(text, path);
 }
 
 namespace {
@@ -258,10 +268,12 @@ uint64_t sceneFilesHash(const std::vector<std::string>& files) {
     for (const char c : bytes) h = (h ^ static_cast<unsigned char>(c)) * 1099511628211ull;
   };
   for (const std::string& file : files) {
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream text;
-    if (in) text << in.rdbuf();
-    const std::string contents = in ? text.str() : std::string("\0unreadable", 11);
+    std::string contents;
+    try {
+      contents = files::readBoundedFile(file, size_t{256} << 20);
+    } catch (const files::FileError&) {
+      contents = std::string("\0unreadable", 11);
+    }
     mix(std::to_string(contents.size()) + ":");  // lengths keep "ab"+"c" apart from "a"+"bc"
     mix(contents);
   }

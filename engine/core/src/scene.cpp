@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "platon/core/mesh_source.h"
+#include "platon/files/read_file.h"
 #include "platon/stage/mesh.h"
 
 namespace platon::core {
@@ -67,10 +68,7 @@ stage::Stage meshStage(const stage::Level& level, const SceneManifest& manifest,
 // "file:line:column" of the manifest's entry naming `system` in its systems list, or the file.
 std::string systemEntry(const SceneManifest& manifest, const std::string& system) {
   try {
-    std::ifstream in(manifest.path, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    const DataValue root = parseDataFile(text.str(), manifest.path);
+    const DataValue root = parseDataFile(files::readBoundedFile(manifest.path, kMaxManifestBytes), manifest.path);
     if (const DataValue* list = root.field("systems"); list && list->table())
       for (const auto& [key, v] : *list->table())
         if (v.string() && *v.string() == system)
@@ -132,7 +130,11 @@ std::string meshFileOf(const stage::Level& level) {
   if (inside.empty() || *inside.begin() == "..")
     refuse("the mesh file leads out of the level's folder (to " + file.string() +
            "): it must be a file in that folder");
-  if (!fs::is_regular_file(file, error)) refuse("the mesh file is not a regular file (" + file.string() + ")");
+  try {
+    files::checkBoundedFile(file.string(), kMaxMeshFileBytes);
+  } catch (const files::FileError& e) {
+    refuse("the mesh file (" + file.string() + "): " + e.reason());
+  }
   return file.string();
 }
 
@@ -162,7 +164,14 @@ std::unique_ptr<Scene> loadScene(const std::string& manifestPath, const SystemRe
   const auto gravity = static_cast<int64_t>(std::llround(manifest.gravity * 65536.0));
   if (!manifest.levelFile.empty()) {
     // Parsed and checked whole before anything enters the world: a bad file builds nothing.
-    stage::Level level = stage::parseLevel(stage::readLevelFile(manifest.levelFile), manifest.levelFile);
+    std::string text;
+    try {
+      text = stage::readLevelFile(manifest.levelFile);
+    } catch (const stage::StageError& e) {  // a file that is no level file is the naming line's error
+      const auto place = manifest.placeOf.find(manifest.levelFile);
+      throw std::runtime_error((place == manifest.placeOf.end() ? manifestPath : place->second) + ": " + e.what());
+    }
+    stage::Level level = stage::parseLevel(text, manifest.levelFile);
     stage::Stage solid = level.solid ? stage::platonicStageOf(level) : meshStage(level, manifest, registry, *scene);
     stage::checkLevelOnStage(level, solid);
     stage::buildLevel(level, solid, scene->world(), 0, gravity);

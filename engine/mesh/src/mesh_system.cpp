@@ -9,6 +9,8 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "platon/files/read_file.h"
+
 namespace platon::mesh {
 namespace {
 
@@ -43,12 +45,12 @@ double determinant3(const Transform& t) {
 // Refuses a file too big to be a stage before it is read whole: over the size cap, or a binary STL
 // whose header counts more triangles than a stage takes.
 void checkBeforeReading(const std::string& path) {
-  std::error_code error;
-  const auto bytes = std::filesystem::file_size(path, error);
-  if (error) return;  // assimp says why it cannot read it
-  if (bytes > core::kMaxMeshFileBytes)
-    fail(path, "the file is " + std::to_string(bytes >> 20) + " MB; a mesh file may be at most " +
-                   std::to_string(core::kMaxMeshFileBytes >> 20) + " MB");
+  size_t bytes = 0;
+  try {  // assimp opens the file itself: a FIFO would block it, a device never end
+    bytes = files::checkBoundedFile(path, core::kMaxMeshFileBytes);
+  } catch (const files::FileError& e) {
+    fail(path, e.reason());
+  }
   if (bytes < 84) return;
   std::ifstream in(path, std::ios::binary);
   char header[84];

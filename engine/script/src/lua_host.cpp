@@ -12,6 +12,8 @@
 #include <unistd.h>
 
 #include "lua_pattern.h"
+#include "platon/core/visible_text.h"
+#include "platon/files/read_file.h"
 #include "sandbox.h"
 
 namespace platon::script {
@@ -49,6 +51,7 @@ struct LuaHost::Shared {
   std::string stopMessage;   // what the hook raises once a limit stopped the call
   bool collectSoon = false;  // a disabled sandbox left garbage
   int callbackDepth = 0;     // C callbacks nested now (CallbackDepth)
+  size_t printed = 0;        // bytes sandboxes printed this frame
   volatile sig_atomic_t timerArmed = 0;
   volatile sig_atomic_t timerFired = 0;  // the deadline may have passed: the next charge reads the clock
   bool hookFast = false;                 // the hook runs on every instruction (a stop is under way)
@@ -231,17 +234,35 @@ struct OpenReserve {
 std::string where(lua_State* L, const LuaHost::Shared& s) {
   const std::string* own = s.current != kNoSandbox ? &s.sandboxes[s.current].source : nullptr;
   lua_Debug ar{};
-  std::string any;
   for (int level = 0; lua_getstack(L, level, &ar); ++level) {
     if (!lua_getinfo(L, "Sl", &ar) || ar.currentline <= 0 || ar.source[0] != '@') continue;
-    std::string here = std::string(ar.short_src) + ":" + std::to_string(ar.currentline) + ": ";
-    if (!own || *own == ar.source) return here;
-    if (any.empty()) any = here;
+    // A sandbox's error is placed in its own file or nowhere (its name only): a line of the
+    // engine's scripts that happened to call it would send the modder to the wrong file (a world
+    // call the sandbox made as a tail call left no frame of its own).
+    if (!own || *own == ar.source) return std::string(ar.short_src) + ":" + std::to_string(ar.currentline) + ": ";
   }
-  return any;
+  return "";
 }
 
-// Whether a message already starts with "place:line: " (on its first line).
+// Whether `message` starts with "file:line: " naming a Lua function that is on the stack now: a
+// place Lua put there. A message that only looks like one ("the time is 12:30:45", "fake.lua:99:
+// x" raised with level 0) is not, and gets the real place in front.
+bool placedOnStack(lua_State* L, const char* message) {
+  lua_Debug ar{};
+  for (int level = 0; lua_getstack(L, level, &ar); ++level) {
+    if (!lua_getinfo(L, "S", &ar) || ar.what == nullptr || std::strcmp(ar.what, "C") == 0) continue;
+    const size_t n = std::strlen(ar.short_src);
+    if (std::strncmp(message, ar.short_src, n) != 0 || message[n] != ':') continue;
+    const char* q = message + n + 1;
+    if (*q < '0' || *q > '9') continue;
+    while (*q >= '0' && *q <= '9') ++q;
+    if (*q == ':') return true;
+  }
+  return false;
+}
+
+// Whether a message already starts with "place:line: " (on its first line): after the call, where
+// the handler has placed every message it could.
 bool located(const char* message) {
   for (const char* p = message; *p && *p != '\n'; ++p) {
     if (*p != ':' || !(p[1] >= '0' && p[1] <= '9')) continue;
@@ -368,9 +389,7 @@ void budgetHook(lua_State* L, lua_Debug*) {
 // could loop there for ever.
 // An error message as text that prints whole: a NUL (which would end it early wherever it is shown
 // as a C string) becomes \0, and it is cut at 16 KB (a script may raise an error of megabytes).
-std::string printableMessage(lua_State* L, int index) {
-  size_t length = 0;
-  const char* raw = lua_tolstring(L, index, &length);
+std::string printableText(const char* raw, size_t length) {
   constexpr size_t kLongest = size_t{16} * 1024;
   std::string text;
   text.reserve(std::min(length, kLongest) + 16);
@@ -382,6 +401,12 @@ std::string printableMessage(lua_State* L, int index) {
   }
   if (text.size() >= kLongest && length > kLongest) text += "... (cut: " + std::to_string(length) + " bytes in all)";
   return text;
+}
+
+std::string printableMessage(lua_State* L, int index) {
+  size_t length = 0;
+  const char* raw = lua_tolstring(L, index, &length);
+  return printableText(raw, length);
 }
 
 int tracebackHandler(lua_State* L) {
@@ -398,8 +423,10 @@ int tracebackHandler(lua_State* L) {
   }
   const char* message = lua_tostring(L, 1);
   if (!message) message = lua_pushfstring(L, "(error object is a %s value)", luaL_typename(L, 1));
-  if (!located(message) && (s.current != kNoSandbox || !lua_isstring(L, 1) || std::strstr(message, "stack overflow"))) {
-    const std::string at = where(L, s);
+  if (!placedOnStack(L, message) &&
+      (s.current != kNoSandbox || !lua_isstring(L, 1) || std::strstr(message, "stack overflow"))) {
+    std::string at = where(L, s);
+    if (at.empty() && s.current != kNoSandbox) at = s.sandboxes[s.current].name + ": ";
     lua_pushlstring(L, at.data(), at.size());
     lua_pushstring(L, message);
     lua_concat(L, 2);
@@ -409,15 +436,28 @@ int tracebackHandler(lua_State* L) {
   return 1;
 }
 
+// What print() from sandboxes may write in one frame (all of them together): past it the frame's
+// further prints are dropped, once said (503 MB of output in 60 frames filled a disk).
+constexpr size_t kPrintBytesPerFrame = size_t{16} * 1024;
+
 int printToSink(lua_State* L) {
   LuaHost::Shared& shared = sharedOf(L);
   size_t nameLength = 0, textLength = 0;
   const char* name = luaL_checklstring(L, 1, &nameLength);
   const char* text = luaL_checklstring(L, 2, &textLength);
+  chargeSteps(L, static_cast<int64_t>(textLength / 16 + 1));
+  std::string shown;
+  if (shared.current != kNoSandbox) {
+    if (shared.printed >= kPrintBytesPerFrame) return 0;
+    shared.printed += textLength + 1;
+    if (shared.printed > kPrintBytesPerFrame)
+      shown = "print: more than 16 KB printed this frame: the frame's further prints are dropped";
+  }
+  if (shown.empty()) shown = core::visibleText(std::string(text, textLength), true);  // no terminal escapes
   if (shared.print) {
-    shared.print({name, nameLength}, {text, textLength});
+    shared.print({name, nameLength}, shown);
   } else {
-    std::fprintf(stderr, "[%.*s] %.*s\n", static_cast<int>(nameLength), name, static_cast<int>(textLength), text);
+    std::fprintf(stderr, "[%.*s] %s\n", static_cast<int>(nameLength), name, shown.c_str());
   }
   return 0;
 }
@@ -428,16 +468,21 @@ int gameFrames(lua_State* L) {
   return 1;
 }
 
+// The message and its traceback, each made printable and cut on its own (cutting them together
+// lost the traceback of a long message).
 ScriptError errorFromStack(lua_State* L, int status, const LuaHost::Shared& shared) {
-  std::string text = lua_isstring(L, -1) ? printableMessage(L, -1) : "(error object is not a string)";
+  if (!lua_isstring(L, -1)) return ScriptError("(error object is not a string)", "");
+  size_t length = 0;
+  const char* raw = lua_tolstring(L, -1, &length);
+  const std::string_view whole(raw, length);
   if (status == LUA_ERRMEM) {
     return ScriptError("script stopped: its Lua state reached the memory limit of " +
-                           std::to_string(shared.limits.memoryBytes >> 20) + " MB (" + text + ")",
+                           std::to_string(shared.limits.memoryBytes >> 20) + " MB (" + printableText(raw, length) + ")",
                        "");
   }
-  const size_t split = text.find("\nstack traceback:");
-  if (split == std::string::npos) return ScriptError(text, "");
-  return ScriptError(text.substr(0, split), text.substr(split + 1));
+  const size_t split = whole.rfind("\nstack traceback:");
+  if (split == std::string_view::npos) return ScriptError(printableText(raw, length), "");
+  return ScriptError(printableText(raw, split), printableText(raw + split + 1, length - split - 1));
 }
 
 }  // namespace
@@ -484,7 +529,8 @@ void LuaHost::openTrusted() {
   lua_pushcfunction(L_, countedComparator);
   lua_setfield(L_, -2, "countedComparator");
   setPatternFunctions(L_, -1);
-  call(1, 2);
+  call(1, 3);
+  lua_setfield(L_, LUA_REGISTRYINDEX, "platon.tostring");
   lua_setfield(L_, LUA_REGISTRYINDEX, "platon.readonly");
   lua_setfield(L_, LUA_REGISTRYINDEX, "platon.newSandbox");
 }
@@ -568,13 +614,12 @@ int LuaHost::loadString(std::string_view code, const std::string& chunkName, Tru
 }
 
 int LuaHost::loadFile(const std::string& path, Trust trust) {
-  std::FILE* file = std::fopen(path.c_str(), "rb");
-  if (!file) throw ScriptError(path + ": cannot open the script", "");
   std::string code;
-  char buffer[65536];
-  size_t n = 0;
-  while ((n = std::fread(buffer, 1, sizeof buffer, file)) > 0) code.append(buffer, n);
-  std::fclose(file);
+  try {
+    code = files::readBoundedFile(path, kMaxScriptBytes);
+  } catch (const files::FileError& e) {
+    throw ScriptError(path + ": the script: " + e.reason(), "");
+  }
   return loadString(code, "@" + path, trust);
 }
 
@@ -792,6 +837,7 @@ void LuaHost::beginFrame() {
   Shared& s = *shared_;
   s.frameSteps = 0;
   s.frameSpent = 0;
+  s.printed = 0;
   s.skipNoted = false;
   s.stopNoted = false;
   for (Sandbox& box : s.sandboxes) box.spent = 0;

@@ -98,6 +98,7 @@ class LuaHost {
   // function inside it, and the sandbox's id is returned (kNoSandbox for trusted code). Run the
   // chunk with callSandboxed(id, ...).
   int loadFile(const std::string& path, Trust trust);
+  static constexpr size_t kMaxScriptBytes = size_t{16} << 20;  // a script file (a regular file)
   int loadString(std::string_view code, const std::string& chunkName, Trust trust);
 
   // The table of functions trusted scripts see as `platon`. Pushes it.

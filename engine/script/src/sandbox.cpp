@@ -248,7 +248,9 @@ end
 -- tostring with no address in it: a table, function or coroutine without __tostring is named by
 -- the order in which tostring first saw it.
 local ids, lastId = setmetatable({}, { __mode = "k" }), 0
-local function safeTostring(v)
+local function safeTostring(...)
+  if select("#", ...) == 0 then error("bad argument #1 to 'tostring' (value expected)", 2) end
+  local v = ...
   local kind = type(v)
   if kind == "table" or kind == "function" or kind == "thread" or kind == "userdata" then
     local mt = rawmeta(v)
@@ -264,8 +266,12 @@ local function safeTostring(v)
   return tostring(v)
 end
 
--- string.format's %s of a table or function would print its address.
+-- string.format's %s of a table or function would print its address, and %p prints one.
 local function safeFormat(f, ...)
+  if type(f) == "string" and f:gsub("%%%%", ""):find("%%[-+ #0-9.]*p") then
+    error("bad argument #1 to 'format' (%p shows an address, which differs from one run to the next: "
+          .. "use tostring)", 2)
+  end
   local n = select("#", ...)
   if n == 0 then return format(f) end
   local args = { ... }
@@ -509,12 +515,19 @@ local function deterministicRandom(m)
     state = bit.bxor(state, bit.rshift(state, 17))
     state = bit.bxor(state, bit.lshift(state, 5))
     local r = (state % 4294967296) / 4294967296
+    -- The bounds as LuaJIT reads them: numbers (or numeric strings), not checked for order, so
+    -- random(0) is 1 and random(3, 1) is 2, as in stock LuaJIT.
     if low == nil then return r end
-    if high == nil then low, high = 1, low end
-    if type(low) ~= "number" or type(high) ~= "number" or low > high then
-      error("bad argument to 'random' (interval is empty)", 2)
+    local lo = tonumber(low)
+    if type(low) ~= "number" and (type(low) ~= "string" or lo == nil) then
+      error("bad argument #1 to 'random' (number expected, got " .. type(low) .. ")", 2)
     end
-    return low + floor(r * (high - low + 1))
+    if high == nil then return floor(r * lo) + 1 end
+    local hi = tonumber(high)
+    if type(high) ~= "number" and (type(high) ~= "string" or hi == nil) then
+      error("bad argument #2 to 'random' (number expected, got " .. type(high) .. ")", 2)
+    end
+    return floor(r * (hi - lo + 1)) + lo
   end
   m.randomseed = function(seed)
     if type(seed) ~= "number" then error("bad argument to 'randomseed' (number expected)", 2) end
@@ -534,7 +547,9 @@ local function packed(ok, ...) return ok, select("#", ...), { ... } end
 local function safeXpcall(f, handler, ...)
   local ok, n, results = packed(pcall(f, ...))
   if ok then return true, unpack(results, 1, n) end
-  return false, handler(results[1])
+  local handled, message = pcall(handler, results[1])
+  if not handled then return false, "error in error handling" end  -- as stock LuaJIT says it
+  return false, message
 end
 
 local function newSandbox(name, api)
@@ -552,8 +567,12 @@ local function newSandbox(name, api)
   env.coroutine = copy(coroutine)
   env.os = { time = safeTime, date = safeDate, clock = safeClock }
   env.collectgarbage = function(option)
-    if option == "count" then return collectgarbage("count") end
-    error("collectgarbage: a sandbox may only ask for \"count\"", 2)
+    if option == "count" then
+      error("collectgarbage(\"count\") is not for sandboxes: the Lua state's memory differs from one run to "
+            .. "the next (JIT traces, the engine's own scripts), and what a sandbox sees must not (the engine "
+            .. "stops a sandbox that uses too much: docs/scripting.md, Limits)", 2)
+    end
+    error("collectgarbage: a sandbox may not drive the garbage collector", 2)
   end
   env.print = function(...)
     local parts = {}
@@ -564,7 +583,7 @@ local function newSandbox(name, api)
   return env
 end
 
-return newSandbox, readonly
+return newSandbox, readonly, safeTostring
 )lua";
 }
 

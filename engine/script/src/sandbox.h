@@ -6,7 +6,8 @@
 namespace platon::script {
 
 // A chunk that takes a table of C functions (print, frames, orderedKeys and the pattern functions)
-// and returns newSandbox(name, api) -> environment table, and readonly(t, name) -> a read-only view.
+// and returns newSandbox(name, api) -> environment table, readonly(t, name) -> a read-only view,
+// and the sandboxes' tostring (no address in it: what the engine shows of a sandbox's value).
 std::string_view sandboxPrelude();
 
 // orderedKeys(t) -> the keys of t in a fixed order (the array part 1..n, then the other numbers

@@ -18,6 +18,7 @@
 #include "platon/core/input.h"
 #include "platon/core/live_scene.h"
 #include "platon/core/visible_text.h"
+#include "platon/files/read_file.h"
 #include "platon/script/script_system.h"
 
 namespace platon::script {
@@ -399,13 +400,12 @@ Datum runScenarioFile(const std::string& path, std::string_view text) {
 }
 
 Datum readScenarioFile(const std::string& path) {
-  if (std::error_code error; std::filesystem::is_directory(path, error))  // a folder opens as an empty file
-    throw ScriptError(path + ": a folder, not a scenario file", "");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ScriptError(path + ": cannot open the scenario", "");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  const std::string text = buffer.str();
+  std::string text;
+  try {
+    text = files::readBoundedFile(path, kMaxScenarioBytes);
+  } catch (const files::FileError& e) {
+    throw ScriptError(path + ": the scenario: " + e.reason(), "");
+  }
   try {
     return LiteralReader(text).file();
   } catch (const NotALiteral&) {
@@ -428,6 +428,7 @@ struct Box {
 
 struct Plan {
   std::string scene;
+  std::string sceneAt;  // "file:line:column" where the scene was named, for errors about its file
   uint64_t frames = 0;
   std::vector<uint8_t> held;  // per frame, from frame 1
   std::optional<uint64_t> goalBy;
@@ -466,6 +467,12 @@ class PlanReader {
     if (scene->kind != Datum::Kind::String || scene->text.empty())
       fail(*scene, "scene", "expected the manifest's path (a string), got " + describe(*scene));
     plan.scene = scene->text;
+    plan.sceneAt = at(*scene, "scene");
+    plan.sceneAt.resize(plan.sceneAt.size() - std::string(": scene: ").size());
+    if (!plan.scene.empty() && plan.scene[0] == '/')
+      fail(*scene, "scene",
+           "is relative, from the scenario's folder, the current folder or the game's data folder (" + plan.scene +
+               "): scenarios are shared, and an absolute path could name any file");
     if (core::hasParentStep(plan.scene))
       fail(*scene, "scene", "may not contain '..' (" + plan.scene + "): a scenario names its scene's own path");
     const Datum* frames = field(root, "frames");
@@ -736,7 +743,13 @@ ScenarioResult runPlan(const std::string& path, const std::function<Plan()>& mak
     core::SystemRegistry registry;
     registry.add("scripting", makeScriptSystem);
     registry.addPlugin("meshes", "platon_meshes", options.pluginFolders);
-    std::unique_ptr<core::Scene> scene = core::loadScene(core::resolveDataPath(plan.scene), registry);
+    const std::string scenePath = core::resolveNamedPath(plan.scene, path);
+    try {  // a scene path that names no readable manifest is the naming line's error
+      files::checkBoundedFile(scenePath, core::kMaxManifestBytes);
+    } catch (const files::FileError& e) {
+      return finish(false, plan.sceneAt + ": scene \"" + plan.scene + "\": " + e.reason());
+    }
+    std::unique_ptr<core::Scene> scene = core::loadScene(scenePath, registry);
     checkFaces(plan, *scene);
     const uint64_t filesHash = core::sceneFilesHash(core::sceneSourceFiles(*scene));
     const std::string filesNote = plan.sceneFilesHash && *plan.sceneFilesHash != filesHash
@@ -803,6 +816,7 @@ ScenarioResult runReplay(const std::string& path, const RunOptions& options) {
         const core::Replay replay = core::readReplay(path);
         Plan plan;
         plan.scene = replay.scene;
+        plan.sceneAt = replay.sceneAt;
         plan.frames = replay.frames();
         plan.held.assign(1, 0);
         plan.held.insert(plan.held.end(), replay.held.begin(), replay.held.end());

@@ -1,6 +1,7 @@
 #include "platon/script/script_system.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <limits.h>
@@ -10,6 +11,7 @@
 
 #include "lua_rules.h"
 #include "platon/core/data_root.h"
+#include "platon/files/read_file.h"
 #include "script_context.h"
 
 namespace platon::script {
@@ -102,8 +104,11 @@ int engineLoad(lua_State* L) {
     throw ScriptError(e.what() + named, e.traceback());
   }
   state.files.push_back(file);
-  if (!trusted && !std::filesystem::is_regular_file(file))
-    throw ScriptError(file + ": cannot open the script" + named, "");
+  try {  // a file that is no script (a FIFO, a folder, too big) is the naming line's error
+    files::checkBoundedFile(file, LuaHost::kMaxScriptBytes);
+  } catch (const files::FileError& e) {
+    throw ScriptError(file + ": the script: " + e.reason() + named, "");
+  }
   const int sandbox = state.host.loadFile(file, trusted ? Trust::Trusted : Trust::Sandboxed);
   lua_insert(L, 3);
   if (trusted) {
@@ -188,30 +193,46 @@ constexpr luaL_Reg kEngine[] = {
 };
 
 // Copies plain data from one Lua state to another: nil, booleans, numbers, strings, and tables of
-// them keyed by strings or numbers. Functions, userdata and coroutines are left out. A table met
-// twice (shared, or a cycle) is copied once and shared (or cyclic) the same way in the copy; at most
-// kMaxCopiedEntries entries in all (a bigger save is refused: the copy runs in C, where no hook
-// runs). Runs inside a protected call of the destination, so running out of its memory is an
-// error there, not a panic.
+// them keyed by strings or numbers. Functions, userdata and coroutines are left out. A value met
+// twice is copied once: a table (shared, or a cycle) is shared (or cyclic) the same way in the
+// copy, and a string is copied once however many places hold it (99,999 references to one 24 MB
+// string hung the reload when each was copied anew). The copy runs in C, where no hook runs, so
+// it is bounded: at most kMaxCopiedEntries table entries, kMaxCopiedBytes of distinct strings and
+// kMaxCopySeconds of time; past any of them the reload is refused. Runs inside a protected call
+// of the destination, so running out of its memory is an error there, not a panic.
 constexpr int kMaxCopyDepth = 200;
-constexpr size_t kMaxCopiedEntries = 100'000;
+constexpr size_t kMaxCopiedEntries = 1'000'000;
+constexpr size_t kMaxCopiedBytes = size_t{32} << 20;
+constexpr double kMaxCopySeconds = 1.0;
 
 struct PlainCopy {
   lua_State* from;
   int index;
-  int copies = 0;  // `to`'s stack slot of the table: source table -> its copy
+  int copies = 0;  // `to`'s stack slot of the table: source table or string -> its copy
   size_t entries = 0;
-  bool tooBig = false;
-  bool tooDeep = false;
+  size_t bytes = 0;
+  std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+  const char* tooMuch = nullptr;  // why the copy stopped: it is refused
 };
+
+// Whether the copy may go on; flags why not.
+bool withinBounds(PlainCopy& job) {
+  if (job.tooMuch) return false;
+  if (job.entries > kMaxCopiedEntries) job.tooMuch = "more than 1000000 table entries";
+  if (job.bytes > kMaxCopiedBytes) job.tooMuch = "more than 32 MB of strings";
+  if (job.entries % 4096 == 0 &&
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - job.start).count() > kMaxCopySeconds)
+    job.tooMuch = "more than a second of copying";
+  return !job.tooMuch;
+}
 
 // Pushes the copy of `from`'s value at `index` onto `to` (nil for what is not plain data).
 // Errors are flagged in the job and nil pushed (no Lua error unwinds this C++ frame).
 void copyPlain(PlainCopy& job, int index, lua_State* to, int depth) {
   lua_State* from = job.from;
-  if (job.tooBig || job.tooDeep) return lua_pushnil(to);
+  if (job.tooMuch) return lua_pushnil(to);
   if (depth > kMaxCopyDepth || !lua_checkstack(to, 4) || !lua_checkstack(from, 4)) {
-    job.tooDeep = true;
+    job.tooMuch = "tables nested more than 200 deep";
     return lua_pushnil(to);
   }
   switch (lua_type(from, index)) {
@@ -220,9 +241,21 @@ void copyPlain(PlainCopy& job, int index, lua_State* to, int depth) {
     case LUA_TNUMBER:
       return lua_pushnumber(to, lua_tonumber(from, index));
     case LUA_TSTRING: {
+      // LuaJIT interns strings: one object per distinct string, so its address names its copy.
+      const void* original = lua_topointer(from, index);
+      lua_pushlightuserdata(to, const_cast<void*>(original));
+      lua_rawget(to, job.copies);
+      if (!lua_isnil(to, -1)) return;
+      lua_pop(to, 1);
       size_t n = 0;
       const char* text = lua_tolstring(from, index, &n);
-      return lua_pushlstring(to, text, n);
+      job.bytes += n;
+      if (!withinBounds(job)) return lua_pushnil(to);
+      lua_pushlstring(to, text, n);
+      lua_pushlightuserdata(to, const_cast<void*>(original));
+      lua_pushvalue(to, -2);
+      lua_rawset(to, job.copies);
+      return;
     }
     case LUA_TTABLE:
       break;
@@ -240,8 +273,8 @@ void copyPlain(PlainCopy& job, int index, lua_State* to, int depth) {
   lua_pushvalue(to, -2);
   lua_rawset(to, job.copies);
   for (lua_pushnil(from); lua_next(from, source); lua_pop(from, 1)) {
-    if (++job.entries > kMaxCopiedEntries) {
-      job.tooBig = true;
+    ++job.entries;
+    if (!withinBounds(job)) {
       lua_pop(from, 2);
       return;
     }
@@ -253,7 +286,7 @@ void copyPlain(PlainCopy& job, int index, lua_State* to, int depth) {
       lua_pop(to, 2);
     else
       lua_rawset(to, -3);
-    if (job.tooBig || job.tooDeep) {
+    if (job.tooMuch) {
       lua_pop(from, 2);
       return;
     }
@@ -266,10 +299,7 @@ int copyPlainProtected(lua_State* to) {
   lua_newtable(to);  // source table -> copy
   job->copies = lua_gettop(to);
   copyPlain(*job, job->index, to, 0);
-  if (job->tooBig)
-    return luaL_error(to, "save(): data too large to carry over (more than %d table entries)",
-                      static_cast<int>(kMaxCopiedEntries));
-  if (job->tooDeep) return luaL_error(to, "save(): data nested more than %d tables deep to carry over", kMaxCopyDepth);
+  if (job->tooMuch) return luaL_error(to, "save(): too much to carry over (%s)", job->tooMuch);
   return 1;
 }
 
@@ -310,6 +340,8 @@ void ScriptSystem::build(core::Scene& scene) {
   lua_pop(L, 1);
   state_->host.pushCallFunction();
   lua_setfield(L, -2, "call");
+  lua_getfield(L, LUA_REGISTRYINDEX, "platon.tostring");  // what the level API shows of a value
+  lua_setfield(L, -2, "tostring");
   lua_newtable(L);  // setup: the manifest's scripts and numbers
   auto field = [&](const char* key, const std::string& value) {
     lua_pushlstring(L, value.data(), value.size());
@@ -508,29 +540,17 @@ void ScriptSystem::carryOver(core::Scene&, core::System& previous) {
   PlainCopy job{from, lua_gettop(from)};
   lua_pushcfunction(to, copyPlainProtected);
   lua_pushlightuserdata(to, &job);
-  std::string note;
   try {
     state_->host.call(1, 1);
   } catch (const ScriptError& e) {
-    // Too much (or too deep) to carry over: the game's own state crosses without what the level
-    // script and mods saved, and the message says why.
-    note = std::string("reloaded without the level's saved state: ") + e.what();
-    lua_pushnil(from);
-    lua_setfield(from, job.index, "level");
-    lua_newtable(from);
-    lua_setfield(from, job.index, "mods");
-    PlainCopy again{from, job.index};
-    lua_pushcfunction(to, copyPlainProtected);
-    lua_pushlightuserdata(to, &again);
-    state_->host.call(1, 1);
+    // Too much (or too deep) to carry over: the reload is refused and the old version goes on.
+    // Restarting the level loads the new version afresh, with nothing carried.
+    throw ScriptError(std::string("reload refused, the old version goes on: the level's ") + e.what() +
+                          "; restart the level to start the new version without it",
+                      "");
   }
   state_->host.beginFrame();
-  if (note.empty()) {
-    state_->callDriver("restore", 1, 0);
-  } else {
-    lua_pushlstring(to, note.data(), note.size());
-    state_->callDriver("restore", 2, 0);
-  }
+  state_->callDriver("restore", 1, 0);
   state_->throwKeptErrors();
 }
 

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "face_geometry.h"
+#include "platon/files/read_file.h"
 #include "walls_near.h"
 
 namespace platon::stage {
@@ -203,15 +204,11 @@ void buildLevel(const Level& level, Stage& stage, physics::World& world, physics
 }
 
 std::string readLevelFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) throw StageError({path, 0, 0}, "cannot open the level file");
-  const std::streamoff size = in.tellg();
-  if (size < 0 || size > (std::streamoff{1} << 30))
-    throw StageError({path, 0, 0}, "cannot read the level file (or it is over 1 GB)");
-  std::string text(static_cast<size_t>(size), '\0');
-  in.seekg(0);
-  if (!in.read(text.data(), size)) throw StageError({path, 0, 0}, "cannot read the level file");
-  return text;
+  try {
+    return files::readBoundedFile(path, kMaxLevelFileBytes);
+  } catch (const files::FileError& e) {
+    throw StageError({path, 0, 0}, "the level file: " + e.reason());
+  }
 }
 
 }  // namespace platon::stage

@@ -234,7 +234,7 @@ TEST(MeshFiles, FilesOverTheCapsAreRefusedBeforeReading) {
   const std::string big = scratch("big.obj");
   std::ofstream(big) << "v 0 0 0\n";
   std::filesystem::resize_file(big, (size_t{65} << 20) + 5);
-  EXPECT_EQ(refusal(big), big + ": the file is 65 MB; a mesh file may be at most 64 MB");
+  EXPECT_EQ(refusal(big), big + ": 65 MB, more than the 64 MB such a file may have");
   const std::string stl = scratch("many.stl");
   {
     std::ofstream out(stl, std::ios::binary);
@@ -311,7 +311,7 @@ TEST(MeshFiles, TheMeshMustStayInTheLevelsFolder) {
                                     "passwd.obj: the mesh file leads out of the level's folder (to /etc/passwd): it "
                                     "must be a file in that folder");
   EXPECT_EQ(load("meshes"),
-            file + ":1:6: " + folder + "meshes: the mesh file is not a regular file (" + folder + "meshes)");
+            file + ":1:6: " + folder + "meshes: the mesh file (" + folder + "meshes): not a regular file (a folder)");
   EXPECT_EQ(load("nowhere.obj"), file + ":1:6: " + folder + "nowhere.obj: cannot find the mesh file");
   fs::create_symlink("/dev/zero", root / "level" / "meshes" / "zero.obj");  // a link in a subfolder
   EXPECT_NE(load("meshes/zero.obj").find("leads out of the level's folder (to /dev/zero)"), std::string::npos);

@@ -18,7 +18,7 @@ namespace {
 
 using Folder = testing::TempFolder;
 
-const std::string kScene = std::string(PLATON_SOURCE_ROOT) + "/levels/cube_intro/scene.lua";
+const std::string kScene = "levels/cube_intro/scene.lua";  // from the game's data folder
 
 // A scenario of 100 frames on the first level whose third line is `line`.
 std::string scenarioText(const std::string& line, const std::string& frames = "100") {
@@ -163,8 +163,9 @@ TEST(ScenarioReader, AFolderOrAMissingFileIsNamedAsSuch) {
   Folder folder("scenario_folder");
   const std::string sub = folder.path("sub.lua");
   std::filesystem::create_directories(sub);
-  EXPECT_EQ(runScenario(sub).message, sub + ": a folder, not a scenario file");
-  EXPECT_EQ(runScenario(folder.path("none.lua")).message, folder.path("none.lua") + ": cannot open the scenario");
+  EXPECT_EQ(runScenario(sub).message, sub + ": the scenario: not a regular file (a folder)");
+  EXPECT_EQ(runScenario(folder.path("none.lua")).message,
+            folder.path("none.lua") + ": the scenario: cannot open it: No such file or directory");
 }
 
 TEST(ScenarioReader, AScenarioWithAMetatableIsReadRawAndRuns) {
@@ -193,7 +194,8 @@ TEST(ScenarioReader, LiteralsComputedScenariosAndCommentsReadTheSame) {
   // Every escape Lua knows reads the same in a literal, \ddd included.
   const ScenarioResult escaped =
       runScenario(folder.write("c.lua", "return { scene = \"" + kScene + "\\116\", frames = 1 }\n"));
-  EXPECT_NE(escaped.message.find(kScene + "t: cannot open the manifest"), std::string::npos) << escaped.message;
+  EXPECT_NE(escaped.message.find("c.lua:1:18: scene \"" + kScene + "t\": cannot open it"), std::string::npos)
+      << escaped.message;
 }
 
 // D4: a replay records a hash of its scene's files, and says when they changed.
@@ -212,7 +214,7 @@ TEST(ScenarioReplay, AChangedSceneIsNamedBeforeTheFirstHashMismatch) {
   RunOptions record;
   record.record = true;
   const ScenarioResult walk =
-      runScenario(folder.write("walk.lua", "return { scene = '" + scene +
+      runScenario(folder.write("walk.lua", "return { scene = '" + std::string("scene.lua") +
                                                "', frames = 120, input = { { hold = 'right', from = 1, to = 120 } } }"),
                   record);
   ASSERT_TRUE(walk.passed) << walk.message;
@@ -265,8 +267,8 @@ TEST(ScenarioReplay, AScenarioFromAReplayQuotesItsScenePath) {
   const std::string text = scenarioFromReplay(replay, outcome, "a\nb.replay");
   EXPECT_EQ(text.find("a\nb"), std::string::npos) << "the name broke out of the comment";
   const ScenarioResult r = runScenario(folder.write("sc.lua", text));
-  EXPECT_NE(r.message.find(replay.scene + ": cannot open the manifest"), std::string::npos) << text << "\n"
-                                                                                            << r.message;
+  EXPECT_NE(r.message.find("scene \"" + replay.scene + "\": cannot open it"), std::string::npos) << text << "\n"
+                                                                                                 << r.message;
 }
 
 }  // namespace

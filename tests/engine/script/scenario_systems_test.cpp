@@ -28,8 +28,7 @@ TEST(ScenarioSystems, MeshesListedForAPlatonicLevelLoadNoAssimp) {
   folder.write("level.lua",
                "return { start = { face = 0, x = 600, y = 700 },\n"
                "  build = function(game) game.world.line(0, 0, 512, 4096, 512) end }\n");
-  const std::string scenario =
-      folder.write("run.lua", "return { scene = '" + folder.path("scene.lua") + "', frames = 30 }\n");
+  const std::string scenario = folder.write("run.lua", "return { scene = 'scene.lua', frames = 30 }\n");
   EXPECT_EXIT(
       {
         RunOptions options;

@@ -175,7 +175,11 @@ const char* kFloorLevel =
     "return level\n";
 
 std::string scenarioFor(const Folder& folder, const std::string& scene, const std::string& body) {
-  return folder.write("scenario.lua", "return { scene = '" + scene + "', " + body + " }");
+  // Named from the scenario's folder: a scenario names no absolute path.
+  const std::string named = std::filesystem::path(scene)
+                                .lexically_relative(std::filesystem::path(folder.path()).parent_path())
+                                .generic_string();
+  return folder.write("scenario.lua", "return { scene = '" + named + "', " + body + " }");
 }
 
 TEST(Scripts, AnErrorInARuleCallbackNamesItsLineAndTheWorldStaysWhole) {
@@ -259,7 +263,7 @@ TEST(Scenarios, AHazardKillsAndTheGoalWins) {
 TEST(Scenarios, FailWhenTheirExpectationsDoNotHold) {
   const std::string walk = std::string(PLATON_SOURCE_ROOT) + "/tests/scenarios/cube_intro_walk.lua";
   Folder folder("expect");
-  const std::string scene = std::string(PLATON_SOURCE_ROOT) + "/levels/cube_intro/scene.lua";
+  const std::string scene = folder.path("levels/cube_intro/scene.lua");  // read from the game's data folder
   const ScenarioResult early = runScenario(scenarioFor(
       folder, scene, "frames = 400, input = { { hold = 'right', from = 1, to = 400 } }, expect = { goal_by = 100 }"));
   EXPECT_FALSE(early.passed);

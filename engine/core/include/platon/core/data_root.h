@@ -7,6 +7,7 @@
 // the sources' scripts/ and levels/, so a program in any folder one level below the build's top
 // (build/apps/platon, build/tests/...) finds them the same way.
 #pragma once
+#include <optional>
 #include <string>
 
 namespace platon::core {
@@ -28,5 +29,15 @@ std::string pluginFolder();
 // (so "levels/cube_intro/scene.lua" names the shipped level from any folder), else as given (its
 // reader then says it is missing).
 std::string resolveDataPath(const std::string& path);
+
+// A scene path a replay or scenario (`namingFile`) names: from that file's own folder when the
+// scene is there (a level shared with its replays), else as resolveDataPath finds it.
+std::string resolveNamedPath(const std::string& path, const std::string& namingFile);
+
+// The path a replay or scenario written here should name a scene by, so that it can be shared:
+// relative and without "..", from the game's data folder when the scene is in it (an installed
+// campaign level: "levels/cube_intro/scene.lua"), else from the current folder. Nothing when it is
+// in neither (a replay names no absolute path: a stranger's could name any file).
+std::optional<std::string> portableScenePath(const std::string& path);
 
 }  // namespace platon::core

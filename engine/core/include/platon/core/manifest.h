@@ -65,6 +65,8 @@ struct SceneManifest {
 };
 
 // Reads and checks a manifest file; throws std::runtime_error "file:line:column: reason".
+// A manifest is a regular file of at most this.
+inline constexpr size_t kMaxManifestBytes = size_t{1} << 20;
 SceneManifest loadManifest(const std::string& path);
 
 // The manifest's name for a solid ("cube", "icosahedron", ...), or nothing.

@@ -35,7 +35,8 @@ struct ReplayHash {
 };
 
 struct Replay {
-  std::string scene;  // the scene's manifest, as the run named it
+  std::string scene;    // the scene's manifest, as the run named it
+  std::string sceneAt;  // "file:line:column" of that path in the replay read, for errors about the scene
   // A hash of the contents of the scene's files when it was recorded (core/live_scene.h's
   // sceneSourceFiles): a replay that goes another way can say whether they changed since. Files
   // from before this line existed have none.
@@ -53,6 +54,8 @@ bool hasParentStep(const std::string& path);
 
 // Throws std::runtime_error "file:line:column: reason" for anything malformed (and a scene path
 // with "..").
+// A replay file is a regular file of at most this (hours of play take a few MB).
+inline constexpr size_t kMaxReplayBytes = size_t{64} << 20;
 Replay readReplay(const std::string& path);
 Replay parseReplay(const std::string& text, const std::string& fileName);
 std::string formatReplay(const Replay& replay);

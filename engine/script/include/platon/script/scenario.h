@@ -42,6 +42,8 @@ struct ScenarioResult {
   std::optional<core::Replay> recorded;  // with RunOptions::record
 };
 
+// A scenario file is a regular file of at most this.
+inline constexpr size_t kMaxScenarioBytes = size_t{16} << 20;
 ScenarioResult runScenario(const std::string& path, const RunOptions& options = {});
 // Replays a recorded run headless and checks every recorded hash: the first frame whose state
 // differs fails it.

@@ -93,7 +93,9 @@ Stage platonicStageOf(const Level& level);
 void buildLevel(const Level& level, Stage& stage, physics::World& world, physics::MapPartId firstPart,
                 int64_t defaultGravityQ16);
 
-// Reads a level file (throws StageError naming the file for one that cannot be read).
+// Reads a level file: a regular file of at most kMaxLevelFileBytes (throws StageError naming the
+// file for one that cannot be read: missing, a FIFO or a device, too large).
+inline constexpr size_t kMaxLevelFileBytes = size_t{256} << 20;
 std::string readLevelFile(const std::string& path);
 
 }  // namespace platon::stage
