@@ -97,6 +97,7 @@ struct Entity {
   std::vector<Instance> instances;
   std::vector<WarpLink> links;
   std::vector<Contact> contacts;  // solid contacts of the latest solve(), in the order they happened
+  uint32_t work = 0;              // lines and bodies its moves were tested against in the latest solve()
 
   Instance* instanceIn(MapPartId part) {
     for (Instance& i : instances)

@@ -15,6 +15,7 @@ uint64_t EntityView::userData() const { return entity_->userData; }
 const EntityFilter& EntityView::filter() const { return entity_->filter; }
 size_t EntityView::instanceCount() const { return entity_->instances.size(); }
 std::span<const Contact> EntityView::contacts() const { return entity_->contacts; }
+uint32_t EntityView::work() const { return entity_->work; }
 
 namespace {
 InstanceView viewOf(const Entity& e, const Instance& inst) {

@@ -118,11 +118,13 @@ class SubMove {
   // 2. The earliest event over all instances: a solid line, the world's edge, or a warp whose target
   //    has no instance yet (the move stops there so the new instance starts touching).
   void findFirstEvent() {
+    uint32_t tested = 0;
     for (size_t i = 0; i < n_; ++i) {
       Instance& inst = e_.instances[i];
       const MapPart& part = w_.part(inst.part);
       const auto lines = inst.region.lines();
       const Box box = sweptBox(verts_[i], moves_[i]);
+      tested += static_cast<uint32_t>(lines.size());
       for (size_t k = 0; k < lines.size(); ++k) {
         const Segment& seg = part.segments()[lines[k]];
         if (outside(seg, box)) continue;
@@ -158,6 +160,7 @@ class SubMove {
       }
       if (moves_[i] == Vec2w{}) continue;
       w_.forEachPlatformLine(inst.part, box, [&](const PlatformLine& l, LineIndex key) {
+        ++tested;
         if (l.kind == LineKind::OneWay && !wholyInFront(verts_[i], l.segment)) return;
         const Sweep s = sweep(verts_[i], moves_[i], l.segment);
         if (s.hitsWithinFrame() && hit_.improvedBy(s.enter, HitKind::Solid, i, key))
@@ -165,6 +168,7 @@ class SubMove {
       });
       std::vector<Vec2>& other = w_.scratch.probe;
       w_.forEachSolidNear(e_, inst.part, box, [&](const Entity& o, const Instance& oi) {
+        ++tested;
         worldVertices(oi, other);
         const Sweep s = sweep(verts_[i], moves_[i], other);
         if (!s.hitsWithinFrame()) return;
@@ -173,6 +177,8 @@ class SubMove {
           hit_ = {HitKind::Entity, s.enter, i, key, s, s.enterAxis, o.id.index};
       });
     }
+    e_.work += tested;
+    w_.report.tested += tested;
   }
 
   // At the instant of a solid hit, the lines the polygon touches decide where it slides

@@ -782,27 +782,48 @@ bool LuaHost::callSandboxed(int sandbox, int nargs, int nresults) {
   s.hog = kNoSandbox;
   s.stopMessage.clear();
   if (off != kNoSandbox) {
-    Sandbox& gone = s.sandboxes[static_cast<size_t>(off)];
-    gone.disabled = true;
-    // Its globals go, so what it holds can be collected once the engine drops its functions.
-    gone.env.push();
-    if (lua_istable(L_, -1)) {
-      lua_pushnil(L_);
-      while (lua_next(L_, -2)) {
-        lua_pop(L_, 1);
-        lua_pushvalue(L_, -1);
-        lua_pushnil(L_);
-        lua_rawset(L_, -4);
-      }
-    }
-    lua_pop(L_, 1);
-    // What it held is garbage now (its functions too, once the engine drops them: again then).
-    lua_gc(L_, LUA_GCCOLLECT, 0);
-    s.collectSoon = true;
-    message += "; " + gone.name + " disabled: fix it and save to reload";
+    disable(off);
+    message += "; " + s.sandboxes[static_cast<size_t>(off)].name + " disabled: fix it and save to reload";
     if (s.stopNoted && off == sandbox) message += " (the frame's other sandboxed calls are skipped)";
   }
   throw ScriptError(message, traceback);
+}
+
+void LuaHost::disable(int sandbox) {
+  Sandbox& gone = shared_->sandboxes[static_cast<size_t>(sandbox)];
+  gone.disabled = true;
+  // Its globals go, so what it holds can be collected once the engine drops its functions.
+  gone.env.push();
+  if (lua_istable(L_, -1)) {
+    lua_pushnil(L_);
+    while (lua_next(L_, -2)) {
+      lua_pop(L_, 1);
+      lua_pushvalue(L_, -1);
+      lua_pushnil(L_);
+      lua_rawset(L_, -4);
+    }
+  }
+  lua_pop(L_, 1);
+  // What it held is garbage now (its functions too, once the engine drops them: again then).
+  lua_gc(L_, LUA_GCCOLLECT, 0);
+  shared_->collectSoon = true;
+}
+
+std::optional<ScriptError> LuaHost::chargeWork(int sandbox, int64_t steps, const std::string& what) {
+  Shared& s = *shared_;
+  if (sandbox < 0 || sandbox >= static_cast<int>(s.sandboxes.size())) return std::nullopt;
+  Sandbox& box = s.sandboxes[static_cast<size_t>(sandbox)];
+  if (box.disabled || steps <= 0) return std::nullopt;
+  box.spent += steps;
+  s.frameSteps += steps;
+  if (s.frameSteps <= s.limits.frameSteps) return std::nullopt;
+  disable(sandbox);
+  s.frameSteps = std::max(s.frameSteps, s.limits.frameSteps);
+  return ScriptError(box.name + ": stopped: " + what + " cost " + stepsText(steps) +
+                         " this frame, past the frame's script budget of " + stepsText(s.limits.frameSteps) +
+                         " (what a script makes the engine do is charged to it); what it made is removed; " + box.name +
+                         " disabled: fix it and save to reload",
+                     "");
 }
 
 int LuaHost::luaCallSandboxed(lua_State* L) {

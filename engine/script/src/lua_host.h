@@ -34,6 +34,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -130,6 +131,12 @@ class LuaHost {
   // The game clock sandboxes read through os.time/os.clock/os.date (frames, 60 a second).
   void setGameFrame(uint64_t frame);
 
+  // Charges sandbox `sandbox` for engine work done for it outside its calls (the physics of the
+  // bodies it made: `steps` of the same budget its instructions spend). Past the frame's budget the
+  // sandbox is disabled and the returned error says why, with `what` (what the work was); else
+  // nothing. A disabled sandbox is not charged.
+  std::optional<ScriptError> chargeWork(int sandbox, int64_t steps, const std::string& what);
+
   bool disabled(int sandbox) const;
   // The sandbox whose code runs now, or kNoSandbox (trusted code, or nothing).
   int runningSandbox() const;
@@ -176,6 +183,7 @@ class LuaHost {
   static constexpr int kTracebackSlot = 1;
   void openTrusted();
   int newSandbox(const std::string& chunkName);
+  void disable(int sandbox);  // for good: its globals dropped, its garbage collected
   void callNested(int nargs, int nresults);
   int protectedCall(int nargs, int nresults, int& below);
   [[gnu::cold]] void afterFailedCall(int status, int below);

@@ -146,11 +146,16 @@ inline std::optional<HandleBits> toHandle(lua_State* L, int index) {
 // wrong object.
 inline double platformNumber(uint32_t index, uint32_t generation) { return -1.0 - handleNumber(index, generation); }
 
+// The parts of a platform number (platformNumber's inverse; the number must be one).
+inline HandleBits platformBits(double value) {
+  const auto bits = static_cast<uint64_t>(-1.0 - value);
+  return HandleBits{static_cast<uint32_t>(bits % (1u << 24)), static_cast<uint32_t>(bits >> 24)};
+}
+
 inline std::optional<HandleBits> toPlatformHandle(lua_State* L, int index) {
   const double value = lua_type(L, index) == LUA_TNUMBER ? lua_tonumber(L, index) : 1;
   if (!(value <= -1) || value != std::floor(value) || value <= -9007199254740992.0) return std::nullopt;
-  const auto bits = static_cast<uint64_t>(-1.0 - value);
-  return HandleBits{static_cast<uint32_t>(bits % (1u << 24)), static_cast<uint32_t>(bits >> 24)};
+  return platformBits(value);
 }
 
 inline HandleBits checkHandle(lua_State* L, int index, std::string_view what) {

@@ -1,6 +1,7 @@
 // What the Lua API functions reach through their upvalue: the scene they act on, the draw list of
 // the current frame (or none), the current input. One per ScriptSystem; no globals.
 #pragma once
+#include <map>
 #include <memory>
 #include <set>
 #include <string>
@@ -24,7 +25,12 @@ struct ScriptContext {
   std::shared_ptr<void> ffi;          // the FFI fast path's function table (world_ffi.cpp), when registered
   std::string ffiError;               // the message of the FFI path's last exception
   physics::EntityId protectedEntity;  // the player's: no sandbox may destroy or erase it
-  std::set<double> platforms;         // the live platforms scripts made (as handle numbers)
+  // The live platforms scripts made (as handle numbers) -> the sandbox that made each (kNoSandbox:
+  // trusted code).
+  std::map<double, int> platforms;
+  // The live bodies sandboxes made (EntityId index << 32 | generation) -> the sandbox: the physics
+  // they cost is charged to it, and a sandbox stopped for it loses them.
+  std::map<uint64_t, int> madeBy;
   // Draw calls this frame that were dropped over DrawList's limits (one error a frame says so).
   bool drawOverflowReported = false;
 };

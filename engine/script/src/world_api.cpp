@@ -138,6 +138,8 @@ void onlyKnownKeys(lua_State* L, int table, const char* function, std::initializ
   }
 }
 
+uint64_t entityKey(EntityId id) { return uint64_t{id.index} << 32 | id.generation; }
+
 int createEntity(lua_State* L) {
   lua::checkTable(L, 1);
   onlyKnownKeys(L, 1, "createEntity", {"circle", "sides", "box", "polygon"});
@@ -172,7 +174,10 @@ int createEntity(lua_State* L) {
   } else {
     throw lua::ArgError("createEntity: give a shape: {circle = r}, {box = {hw, hh}} or {polygon = {x0, y0, ...}}");
   }
-  pushEntity(L, worldOf(L).createEntity(*shape));
+  const EntityId id = worldOf(L).createEntity(*shape);
+  if (const int maker = contextOf(L).host->runningSandbox(); maker != kNoSandbox)
+    contextOf(L).madeBy[entityKey(id)] = maker;
+  pushEntity(L, id);
   return 1;
 }
 
@@ -190,6 +195,7 @@ int destroyEntity(lua_State* L) {
   const EntityId id = checkEntity(L, 1);
   checkNotProtected(L, id, "destroyEntity");
   worldOf(L).destroyEntity(id);
+  contextOf(L).madeBy.erase(entityKey(id));
   return 0;
 }
 
@@ -419,7 +425,7 @@ int createPlatform(lua_State* L) {
   std::vector<physics::PlatformLine> lines;
   for (size_t i = 0; i < xy.size(); i += 4) lines.push_back({{{xy[i], xy[i + 1]}, {xy[i + 2], xy[i + 3]}}, tag, kind});
   const physics::PlatformId id = worldOf(L).createPlatform(part, lines);
-  context.platforms.insert(lua::platformNumber(id.index, id.generation));
+  context.platforms[lua::platformNumber(id.index, id.generation)] = context.host->runningSandbox();
   lua_pushnumber(L, lua::platformNumber(id.index, id.generation));
   return 1;
 }

@@ -1022,5 +1022,68 @@ TEST(ReAuditN7, PairsNextAndIpairsWalkAViewsEntriesAndItStaysReadOnly) {
             "checkpoint:function world:table 0 0 draw circle,enabled,line,polygon,text");
 }
 
+// --- The physics of what a sandbox makes is charged to it ---
+
+// `count` bodies of `shape` dropped on face 3 by `maker` (the level's build or tick, or a mod's
+// tick), with the level's and the mod's ticks saying they still run.
+std::string bodiesMaker(const std::string& shape, int count) {
+  return "local made = false\n"
+         "local function make(w)\n"
+         "  if made then return end made = true\n"
+         "  for i = 0, " +
+         std::to_string(count - 1) +
+         " do\n"
+         "    local e = w.createEntity(" +
+         shape +
+         ")\n"
+         "    w.insert(e, w.face(4), 200 + (i % 40) * 90, 700 + math.floor(i / 40) * 90)\n"
+         "  end\n"
+         "end\n";
+}
+
+TEST(MadeBodies, ThePhysicsOfWhatASandboxMakesIsChargedToItAndOverTheBudgetItStops) {
+  const core::SystemRegistry registry = scripting();
+  const std::string shapes[] = {"{ circle = 20 }", "{ box = { 20, 15 } }",
+                                "{ polygon = { -20, -20, 20, -20, 0, 25 } }"};
+  for (const std::string maker : {"tick", "mod"})  // (a build cannot insert: the stage is not joined yet)
+    for (const std::string& shape : shapes) {
+      SCOPED_TRACE(maker + " " + shape);
+      const std::string levelMakes =
+          bodiesMaker(shape, 400) + "return { build = function(game) " + (maker == "build" ? "make(game.world)" : "") +
+          " end, tick = function(game, frame) " + (maker == "tick" ? "make(game.world)" : "") +
+          " game.message('level ' .. frame) end }\n";
+      const std::string modMakes =
+          bodiesMaker(shape, 400) + "return { tick = function(game, frame) make(game.world) end }\n";
+      // 400 bodies: each frame at least 400 * 16 * 20 = 128,000 steps, over a budget of 100,000.
+      Level over("made_over",
+                 maker == "mod" ? bodiesMaker(shape, 0) +
+                                      "return { tick = function(game, frame) "
+                                      "game.message('level ' .. frame) end }\n"
+                                : levelMakes,
+                 maker == "mod" ? modMakes : "return { tick = function() end }\n", "", ", limits = { steps = 1e5 }");
+      core::LiveScene live(over.scene, registry, false);
+      const Played p = play(live, 30);
+      const std::string file = maker == "mod" ? "mod.lua" : "level.lua";
+      bool stopped = false;
+      for (const std::string& e : p.errors)
+        stopped = stopped || (e.find(file + ": stopped: the physics of the 400 bodies it made") != std::string::npos &&
+                              e.find("past the frame's script budget of 100000 steps") != std::string::npos &&
+                              e.find(file + " disabled: fix it and save to reload") != std::string::npos);
+      EXPECT_TRUE(stopped) << joined(p.errors);
+      EXPECT_EQ(live.scene().world().entityCount(), 1u) << "what it made is removed; the player stays";
+      if (maker == "mod") {
+        EXPECT_EQ(p.status.message, "level 30");  // the level goes on without the mod
+      }
+      // Under the budget the same bodies run, and stay.
+      Level under("made_under", fileText(over.folder.path("level.lua")),
+                  maker == "mod" ? fileText(over.folder.path("mod.lua")) : "return { tick = function() end }\n", "",
+                  ", limits = { steps = 1e7 }");
+      core::LiveScene fine(under.scene, registry, false);
+      const Played q = play(fine, 30);
+      EXPECT_TRUE(q.errors.empty()) << joined(q.errors);
+      EXPECT_EQ(fine.scene().world().entityCount(), 401u);
+    }
+}
+
 }  // namespace
 }  // namespace platon::script

@@ -48,6 +48,9 @@ class EntityView {
 
   // Solid contacts of the latest solve(), in the order they happened (what Rules::contact saw).
   std::span<const Contact> contacts() const;
+  // Its share of the latest solve()'s work: the lines, platform lines and bodies its moves were
+  // tested against (SolveReport::tested), and a fixed amount for its step (as much as 16 tests).
+  uint32_t work() const;
 
   class Instances;
   Instances instances() const;  // for (InstanceView i : view.instances())

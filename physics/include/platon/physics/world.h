@@ -26,6 +26,9 @@ struct SolveReport {
   uint32_t instancesErased = 0;
   uint32_t copiesReplaced = 0;  // copies moved within two units to free them from a rounding snag
   uint32_t cornerReturns = 0;   // entities put back on a face after going through a vertex
+  // The frame's work: every line, platform line and body a move was tested against. A frame's time
+  // grows with it (EntityView::work has each entity's share), so a caller can bound what it costs.
+  uint64_t tested = 0;
 };
 
 // A line of a moving platform: solid, or one-way (solid from its left side).
