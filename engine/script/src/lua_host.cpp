@@ -250,13 +250,15 @@ std::string where(lua_State* L, const LuaHost::Shared& s) {
 bool placedOnStack(lua_State* L, const char* message) {
   lua_Debug ar{};
   for (int level = 0; lua_getstack(L, level, &ar); ++level) {
-    if (!lua_getinfo(L, "S", &ar) || ar.what == nullptr || std::strcmp(ar.what, "C") == 0) continue;
+    if (!lua_getinfo(L, "Sl", &ar) || ar.what == nullptr || std::strcmp(ar.what, "C") == 0) continue;
     const size_t n = std::strlen(ar.short_src);
     if (std::strncmp(message, ar.short_src, n) != 0 || message[n] != ':') continue;
     const char* q = message + n + 1;
     if (*q < '0' || *q > '9') continue;
-    while (*q >= '0' && *q <= '9') ++q;
-    if (*q == ':') return true;
+    long line = 0;
+    while (*q >= '0' && *q <= '9' && line < 100'000'000) line = line * 10 + (*q++ - '0');
+    // The frame's own line: "mod.lua:99: x" raised at line 1 only looks like a place.
+    if (*q == ':' && line == ar.currentline) return true;
   }
   return false;
 }
@@ -758,7 +760,7 @@ bool LuaHost::callSandboxed(int sandbox, int nargs, int nresults) {
       if (!located(message.c_str()))
         message = box.name + ": " + message + " (a function or metamethod that calls itself without end?)";
       lua_gc(L_, LUA_GCCOLLECT, 0);
-    } else if (!located(message.c_str())) {
+    } else if (!located(message.c_str()) && message.rfind(box.name + ": ", 0) != 0) {
       message = box.name + ": " + message;
     }
   } else {
