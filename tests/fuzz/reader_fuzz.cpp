@@ -1,0 +1,60 @@
+// libFuzzer target: the readers of the files players share and modders write, other than levels:
+// the scene manifest's data reader (a Lua table literal, read as data: no Lua runs) and the replay
+// reader. Any text is either refused with an error that starts with the file's name and a line
+// ("f.lua:3:7: ..."), or read; a replay read writes back to text that reads to the same replay.
+// Anything else (another exception, a crash, a sanitizer report) is a bug.
+#include <cstdio>
+#include <cstdlib>
+#include <stdexcept>
+#include <string>
+
+#include "platon/core/manifest.h"
+#include "platon/core/replay.h"
+
+using namespace platon;
+
+namespace {
+
+[[noreturn]] void bug(const std::string& what, const std::string& text) {
+  std::string shown;  // the whole input, NUL bytes shown (the fuzzer puts them in)
+  for (const char c : text) shown += c == '\0' ? std::string("\\0") : std::string(1, c);
+  std::fprintf(stderr, "BUG: %s\n--- input ---\n%s\n-------------\n", what.c_str(), shown.c_str());
+  std::abort();
+}
+
+// "file:line:" with a line of at least 1.
+bool placed(const std::string& message, const std::string& file) {
+  if (message.rfind(file + ":", 0) != 0) return false;
+  const size_t digits = message.find_first_not_of("0123456789", file.size() + 1);
+  return digits != std::string::npos && digits > file.size() + 1 && message[digits] == ':' &&
+         message.compare(file.size() + 1, 2, "0:") != 0;
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  const std::string text(reinterpret_cast<const char*>(data), size);
+  try {
+    (void)core::parseDataFile(text, "f.lua");
+  } catch (const std::runtime_error& e) {
+    if (!placed(e.what(), "f.lua")) bug(std::string("a manifest refusal without its place: ") + e.what(), text);
+  }
+  core::Replay replay;
+  try {
+    replay = core::parseReplay(text, "f.replay");
+  } catch (const std::runtime_error& e) {
+    if (!placed(e.what(), "f.replay")) bug(std::string("a replay refusal without its place: ") + e.what(), text);
+    return 0;
+  }
+  const std::string written = core::formatReplay(replay);
+  core::Replay again;
+  try {
+    again = core::parseReplay(written, "again.replay");
+  } catch (const std::runtime_error& e) {
+    bug(std::string("a replay read does not read back: ") + e.what(), text);
+  }
+  if (again.scene != replay.scene || again.held != replay.held || again.hashEvery != replay.hashEvery ||
+      again.sceneFiles != replay.sceneFiles || again.hashes.size() != replay.hashes.size())
+    bug("a replay read back differs", text);
+  return 0;
+}
