@@ -63,18 +63,21 @@ end
 
 -- A sandboxed module's functions, each called as its code (engine.invoke); `after(f)`, when
 -- given, runs after each call returns (the checks of what the call wrote in `game`).
-local function sandboxedFunctions(t, id, after)
+local function sandboxedFunctions(t, id, checks)
   if type(t) ~= "table" then return t end
   local wrapped = {}
   for k, v in pairs(t) do
     if type(v) == "function" then
       local f = v
-      if after then
+      if checks then  -- checks.before() ahead of each call, checks.after(f) once it returned
         local function finish(...)
-          after(f)
+          checks.after(f)
           return ...
         end
-        wrapped[k] = interpreted(function(...) return finish(invoke(id, f, ...)) end)
+        wrapped[k] = interpreted(function(...)
+          checks.before()
+          return finish(invoke(id, f, ...))
+        end)
       else
         wrapped[k] = interpreted(function(...) return invoke(id, f, ...) end)
       end
@@ -186,8 +189,15 @@ local GAME_FIELDS = {
   checkpoint = { checkpointPlace, "nil or a table { face =, x =, y = } of numbers" },
   player = { orNil(isTable), "nil or a table" },  -- the player module's object: the engine reads it raw
 }
-local gameGood = {}  -- the values last found right, to set a wrong one back to
+local gameGood = {}  -- the values before the call, to set a wrong one back to
 local engineTables = {}  -- the engine's own tables in `game`, which must stay themselves
+local function gameRemembered()
+  for key, rule in pairs(GAME_FIELDS) do
+    local v = rawget(game, key)
+    if rule[1](v) then gameGood[key] = v end
+  end
+end
+interpreted(gameRemembered)
 local function gameChecked(f)
   local problem
   for key, rule in pairs(GAME_FIELDS) do
@@ -212,6 +222,7 @@ local function gameChecked(f)
   end
 end
 interpreted(gameChecked)
+local GAME_CHECKS = { before = gameRemembered, after = gameChecked }
 
 -- The player's entity, read raw (the player table may be a sandboxed script's).
 local function playerEntity()
@@ -321,11 +332,11 @@ function scene.build()
   local start = Level.start
   game.level = { start = start and { face = start.face, x = start.x, y = start.y } }
   local Player, playerId = load(setup.player, setup.trusted.player, game)
-  PlayerModule = setup.trusted.player and Player or sandboxedFunctions(Player, playerId, gameChecked)
+  PlayerModule = setup.trusted.player and Player or sandboxedFunctions(Player, playerId, GAME_CHECKS)
   game.Player = sealed(PlayerModule, "game.Player")
   local progression, progressionId = load(setup.progression, setup.trusted.progression, game)
   Progression = (setup.trusted.progression and progression or sandboxedFunctions(progression, progressionId,
-                                                                                  gameChecked)) or {}
+                                                                                  GAME_CHECKS)) or {}
   game.progression = sealed(Progression, "game.progression")
   for _, key in ipairs { "input", "levelApi", "Player", "progression", "level" } do engineTables[key] = rawget(game, key) end
   for key, rule in pairs(GAME_FIELDS) do

@@ -1085,5 +1085,57 @@ TEST(MadeBodies, ThePhysicsOfWhatASandboxMakesIsChargedToItAndOverTheBudgetItSto
     }
 }
 
+// A level's own player may write into `game`, but every field the engine reads is checked after
+// each of its calls: a wrong type (one with metamethods the engine would run outside every limit,
+// game.time + 1 with an __add among them) is set back, and is the player's error at its file:line;
+// the game goes on.
+TEST(OwnPlayer, EveryFieldTheEngineReadsIsCheckedAndSetBack) {
+  const std::string spin =
+      "setmetatable({}, { __add = function() while true do end end, __index = function() "
+      "while true do end end, __eq = function() while true do end end })";
+  const std::pair<const char*, std::string> writes[] = {
+      {"time", spin},
+      {"time", "'12'"},
+      {"time", "1.5"},
+      {"deaths", spin},
+      {"deaths", "true"},
+      {"wonFrame", "{}"},
+      {"won", "'yes'"},
+      {"won", spin},
+      {"message", "{}"},
+      {"message", spin},
+      {"checkpoint", "{ face = 'a', x = 1, y = 2 }"},
+      {"checkpoint", spin},
+      {"checkpoint", "5"},
+      {"switches", spin},
+      {"switches", "'none'"},
+      {"openSwitches", "{ 'a' }"},
+      {"player", "5"},
+  };
+  const core::SystemRegistry registry = scripting();
+  const std::string stock = fileText(std::string(PLATON_SOURCE_ROOT) + "/scripts/player.lua");
+  for (const auto& [field, value] : writes) {
+    SCOPED_TRACE(std::string(field) + " = " + value);
+    Level level("own_player_fields", "return {}\n", "", "", "");
+    std::string player = stock;
+    const std::string tick = "function Player.tick(self, input)\n";
+    player.replace(player.find(tick), tick.size(), tick + "  game." + field + " = " + value + "\n");
+    level.folder.write("player.lua", player);
+    level.folder.write(
+        "scene.lua",
+        "return { name = 'own player', systems = { 'scripting' }, stage = { level = 'cube_intro.level' },"
+        " gravity = 0.35, scripts = { preset = 'game', player = 'player.lua', level = 'level.lua' },"
+        " limits = { steps = 1e6 } }\n");
+    core::LiveScene live(level.scene, registry, false);
+    const Played p = play(live, 20);
+    ASSERT_FALSE(p.errors.empty());
+    EXPECT_NE(p.errors[0].find("player.lua:"), std::string::npos) << p.errors[0];
+    EXPECT_NE(p.errors[0].find(std::string("game.") + field + " was left "), std::string::npos) << p.errors[0];
+    EXPECT_NE(p.errors[0].find("; it is set back"), std::string::npos) << p.errors[0];
+    for (const std::string& e : p.errors) EXPECT_EQ(e.find("stopped"), std::string::npos) << e;
+    EXPECT_EQ(p.status.time, 20u) << "the game's clock goes on";
+  }
+}
+
 }  // namespace
 }  // namespace platon::script
