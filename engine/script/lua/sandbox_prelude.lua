@@ -1,0 +1,353 @@
+local C = ...
+local printSink, gameFrames, orderedKeys = C.print, C.frames, C.orderedKeys
+local pairs, next, type, setmetatable, getmetatable, error, select, tostring, rawget, rawequal, ipairs =
+      pairs, next, type, setmetatable, getmetatable, error, select, tostring, rawget, rawequal, ipairs
+local string, table, math, bit, coroutine, os, collectgarbage, jit, debug =
+      string, table, math, bit, coroutine, os, collectgarbage, jit, debug
+local floor, concat, sort, format, rawmeta = math.floor, table.concat, table.sort, string.format, debug.getmetatable
+
+local function copy(t)
+  local c = {}
+  for k, v in pairs(t) do c[k] = v end
+  return c
+end
+
+-- tostring with no address in it: a table, function or coroutine without __tostring is named by
+-- the order in which tostring first saw it.
+local ids, lastId = setmetatable({}, { __mode = "k" }), 0
+local function safeTostring(...)
+  if select("#", ...) == 0 then error("bad argument #1 to 'tostring' (value expected)", 2) end
+  local v = ...
+  local kind = type(v)
+  if kind == "table" or kind == "function" or kind == "thread" or kind == "userdata" then
+    local mt = rawmeta(v)
+    if mt and rawget(mt, "__tostring") ~= nil then return tostring(v) end
+    local id = ids[v]
+    if not id then
+      lastId = lastId + 1
+      id = lastId
+      ids[v] = id
+    end
+    return kind .. ": #" .. id
+  end
+  return tostring(v)
+end
+
+-- string.format's %s of a table or function would print its address, and %p prints one.
+local function safeFormat(f, ...)
+  if type(f) == "string" and f:gsub("%%%%", ""):find("%%[-+ #0-9.]*p") then
+    error("bad argument #1 to 'format' (%p shows an address, which differs from one run to the next: "
+          .. "use tostring)", 2)
+  end
+  local n = select("#", ...)
+  if n == 0 then return format(f) end
+  local args = { ... }
+  for i = 1, n do
+    local kind = type(args[i])
+    if kind ~= "string" and kind ~= "number" then args[i] = safeTostring(args[i]) end
+  end
+  return format(f, unpack(args, 1, n))
+end
+
+-- The methods of every string: LuaJIT's, but the pattern functions count their steps and there
+-- is no dump. Trusted code keeps LuaJIT's own in its global `string`.
+local methods = copy(string)
+methods.dump = nil
+methods.find, methods.match, methods.gmatch, methods.gsub = C.find, C.match, C.gmatch, C.gsub
+methods.format = safeFormat
+local stringMeta = getmetatable("")
+stringMeta.__index = methods
+stringMeta.__metatable = "locked"
+
+-- A read-only view of an engine table, built once; nested tables are views too. A view of a view
+-- is the view itself. The view is an empty table whose metatable reads `entries`; pairs, next and
+-- ipairs walk those entries (views[view].entries) without ever handing the table out, so a view
+-- lists what it shows and stays read-only. Messages name keys by the sandbox's tostring: an
+-- address in an error would differ between runs and break replays.
+local views = setmetatable({}, { __mode = "k" })  -- view -> { entries = what it shows, name = its name }
+local function readonly(t, name)
+  if views[t] then return t end
+  local entries = {}
+  for k, v in pairs(t) do
+    entries[k] = type(v) == "table" and readonly(v, name .. "." .. safeTostring(k)) or v
+  end
+  local view = setmetatable({}, {
+    __index = entries,
+    __newindex = function(_, k)
+      error(name .. " is read-only (tried to set " .. safeTostring(k) .. ")", 2)
+    end,
+    __metatable = "locked",
+  })
+  views[view] = { entries = entries, name = name }
+  return view
+end
+
+-- What pairs, next and ipairs walk: a view's entries, any other table itself.
+local function shownBy(t)
+  local view = views[t]
+  return view and view.entries or t
+end
+
+-- pairs and next in a fixed order (sandbox.cpp, orderedKeys): LuaJIT's order depends on the
+-- string hash's random seed and on addresses. pairs orders the keys once per traversal.
+local function safePairs(t)
+  if type(t) ~= "table" then error("bad argument #1 to 'pairs' (table expected, got " .. type(t) .. ")", 2) end
+  local shown = shownBy(t)
+  local keys, why = orderedKeys(shown)
+  if not keys then error(why, 2) end
+  local i = 0
+  return function()
+    while true do
+      i = i + 1
+      local k = keys[i]
+      if k == nil then return nil end
+      local v = rawget(shown, k)
+      if v ~= nil then return k, v end
+    end
+  end, t, nil
+end
+
+-- The keys of t in the fixed order, and the position of each (arrayLength: see orderedKeys).
+local function orderOf(t, arrayLength)
+  local keys, why = orderedKeys(t, arrayLength)
+  if not keys then return nil, why end
+  local at = {}
+  for i = 1, #keys do at[keys[i]] = i end
+  return { keys = keys, at = at }
+end
+
+-- next in the same order. next(t) finds the first key in one pass that builds nothing (the "is it
+-- empty?" idiom must not sort); the walk it starts orders the keys at its second call and keeps
+-- them (walks[t]), so next(t, k) with the key the last call returned costs O(1) amortized, and the
+-- walk is dropped at its end. Any other k orders the keys again (a new traversal sees the keys
+-- added since), unless k was removed after this walk returned it (as Lua allows). Keys added
+-- during a traversal are not seen by it; keys whose value became nil are skipped.
+local walks = setmetatable({}, { __mode = "k" })  -- t -> { keys, at, last = index of lastKey, lastKey }
+local function safeNext(t, k)
+  if type(t) ~= "table" then error("bad argument #1 to 'next' (table expected, got " .. type(t) .. ")", 2) end
+  t = shownBy(t)
+  if k == nil then
+    local first, arrayLength = orderedKeys(t, true)
+    if type(arrayLength) == "string" then error(arrayLength, 2) end
+    if first == nil then
+      walks[t] = nil
+      return nil
+    end
+    walks[t] = { lastKey = first, arrayLength = arrayLength }  -- ordered at the next call, if any
+    return first, rawget(t, first)
+  end
+  local walk, i = walks[t], nil
+  if walk and rawequal(walk.lastKey, k) then
+    if not walk.keys then
+      local ordered, why = orderOf(t, walk.arrayLength)
+      if not ordered then error(why, 2) end
+      walk.keys, walk.at = ordered.keys, ordered.at
+      walk.last = walk.at[k] or 0  -- k was the first key: if it was removed, every key comes after it
+    end
+    i = walk.last
+  elseif rawget(t, k) ~= nil then
+    local why
+    walk, why = orderOf(t)
+    if not walk then error(why, 2) end
+    walks[t] = walk
+    i = walk.at[k]
+  elseif walk and walk.at and walk.at[k] then
+    i = walk.at[k]
+  else
+    error("invalid key to 'next'", 2)
+  end
+  local keys = walk.keys
+  while true do
+    i = i + 1
+    local key = keys[i]
+    if key == nil then
+      walks[t] = nil
+      return nil
+    end
+    local v = rawget(t, key)
+    if v ~= nil then
+      walk.last, walk.lastKey = i, key
+      return key, v
+    end
+  end
+end
+
+-- ipairs over a view walks its entries; over any other table it is LuaJIT's.
+local function safeIpairs(t)
+  if not views[t] then return ipairs(t) end
+  local shown = views[t].entries
+  return function(_, i)
+    i = i + 1
+    local v = rawget(shown, i)
+    if v ~= nil then return i, v end
+  end, t, 0
+end
+
+-- table's functions read and write raw: on a view, insert would write past its read-only
+-- metatable into the table every sandbox is shown (a mod's note in the level's `game`), and
+-- foreach would walk LuaJIT's order, which differs between processes.
+local function refuseView(t, what)
+  local view = views[t]
+  if view then error(view.name .. " is read-only (tried to " .. what .. " in it)", 3) end
+end
+local insert, remove = table.insert, table.remove
+local function safeInsert(t, ...)
+  refuseView(t, "insert")
+  return insert(t, ...)
+end
+local function safeRemove(t, ...)
+  refuseView(t, "remove")
+  return remove(t, ...)
+end
+local function safeForeach(t, f)
+  if type(t) ~= "table" then error("bad argument #1 to 'foreach' (table expected, got " .. type(t) .. ")", 2) end
+  if type(f) ~= "function" then error("bad argument #2 to 'foreach' (function expected, got " .. type(f) .. ")", 2) end
+  local shown = shownBy(t)
+  local keys, why = orderedKeys(shown)
+  if not keys then error(why, 2) end
+  for i = 1, #keys do
+    local v = rawget(shown, keys[i])
+    if v ~= nil then
+      local r = f(keys[i], v)
+      if r ~= nil then return r end
+    end
+  end
+end
+
+-- table.sort runs in C, where no hook counts: each comparison is charged a step (LuaJIT's quicksort
+-- takes n^2 of them on some orders), and one call sorts at most MAX_SORT items.
+local MAX_SORT = 1000000
+local countedComparator = C.countedComparator
+local function safeSort(t, less)
+  refuseView(t, "sort")
+  if type(t) == "table" and #t > MAX_SORT then
+    error("table.sort: at most " .. MAX_SORT .. " items in a sandbox (this table has " .. #t .. ")", 2)
+  end
+  if less ~= nil and type(less) ~= "function" then
+    error("bad argument #2 to 'sort' (function expected, got " .. type(less) .. ")", 2)
+  end
+  return sort(t, countedComparator(less))
+end
+
+-- The game's clock: frames / 60 seconds since an epoch of 0 (os.time, os.clock), dates in UTC.
+local function gameSeconds() return floor(gameFrames() / 60) end
+local function daysFromCivil(y, m, d)  -- days since 1970-01-01 of a proleptic Gregorian date
+  y = m <= 2 and y - 1 or y
+  local era = floor(y / 400)
+  local yoe = y - era * 400
+  local doy = floor((153 * (m + (m > 2 and -3 or 9)) + 2) / 5) + d - 1
+  local doe = yoe * 365 + floor(yoe / 4) - floor(yoe / 100) + doy
+  return era * 146097 + doe - 719468
+end
+local function field(t, key, default)
+  local v = rawget(t, key)
+  if v == nil then
+    if default == nil then error("field '" .. key .. "' missing in date table", 3) end
+    return default
+  end
+  if type(v) ~= "number" or v ~= v or v == math.huge or v == -math.huge then
+    error("field '" .. key .. "' is not a number", 3)
+  end
+  return floor(v)
+end
+local function safeTime(t)
+  if t == nil then return gameSeconds() end
+  if type(t) ~= "table" then error("bad argument #1 to 'time' (table expected, got " .. type(t) .. ")", 2) end
+  local year, month = field(t, "year"), field(t, "month")
+  local day, hour, min, sec = field(t, "day"), field(t, "hour", 12), field(t, "min", 0), field(t, "sec", 0)
+  year = year + floor((month - 1) / 12)
+  month = (month - 1) % 12 + 1
+  return (daysFromCivil(year, month, 1) + day - 1) * 86400 + hour * 3600 + min * 60 + sec
+end
+local realDate = os.date
+local function safeDate(f, time)
+  f = f == nil and "%c" or f
+  if type(f) ~= "string" and type(f) ~= "number" then
+    error("bad argument #1 to 'date' (string expected, got " .. type(f) .. ")", 2)
+  end
+  f = tostring(f)
+  if f:sub(1, 1) == "!" then f = f:sub(2) end
+  if time ~= nil and type(time) ~= "number" then
+    error("bad argument #2 to 'date' (number expected, got " .. type(time) .. ")", 2)
+  end
+  return realDate("!" .. f, time or gameSeconds())
+end
+local function safeClock() return gameFrames() / 60 end
+
+-- xorshift32: the same sequence on every machine and build.
+local function deterministicRandom(m)
+  local state = 0x2545F491
+  m.random = function(low, high)
+    state = bit.bxor(state, bit.lshift(state, 13))
+    state = bit.bxor(state, bit.rshift(state, 17))
+    state = bit.bxor(state, bit.lshift(state, 5))
+    local r = (state % 4294967296) / 4294967296
+    -- The bounds as LuaJIT reads them: numbers (or numeric strings), not checked for order, so
+    -- random(0) is 1 and random(3, 1) is 2, as in stock LuaJIT.
+    if low == nil then return r end
+    local lo = tonumber(low)
+    if type(low) ~= "number" and (type(low) ~= "string" or lo == nil) then
+      error("bad argument #1 to 'random' (number expected, got " .. type(low) .. ")", 2)
+    end
+    if high == nil then return floor(r * lo) + 1 end
+    local hi = tonumber(high)
+    if type(high) ~= "number" and (type(high) ~= "string" or hi == nil) then
+      error("bad argument #2 to 'random' (number expected, got " .. type(high) .. ")", 2)
+    end
+    return floor(r * (hi - lo + 1)) + lo
+  end
+  m.randomseed = function(seed)
+    if type(seed) ~= "number" then error("bad argument to 'randomseed' (number expected)", 2) end
+    state = bit.tobit(floor(seed))
+    if state == 0 then state = 0x2545F491 end
+  end
+end
+
+local SAFE = { "assert", "error", "pcall", "select", "tonumber", "type", "unpack", "rawequal",
+               "rawget", "getmetatable", "setmetatable" }
+
+-- LuaJIT runs an xpcall handler where the error was raised, before unwinding; for the error the
+-- time budget raises, that is inside the hook, where no hook fires, so an endless handler would
+-- never be stopped. The sandbox's xpcall runs the handler after unwinding instead.
+local pcall, unpack = pcall, unpack
+local function packed(ok, ...) return ok, select("#", ...), { ... } end
+local function safeXpcall(f, handler, ...)
+  local ok, n, results = packed(pcall(f, ...))
+  if ok then return true, unpack(results, 1, n) end
+  local handled, message = pcall(handler, results[1])
+  if not handled then return false, "error in error handling" end  -- as stock LuaJIT says it
+  return false, message
+end
+
+local function newSandbox(name, api)
+  local env = {}
+  for _, k in ipairs(SAFE) do env[k] = _G[k] end
+  env.pairs, env.next, env.ipairs, env.tostring, env.xpcall = safePairs, safeNext, safeIpairs, safeTostring, safeXpcall
+  env._G = env
+  env._VERSION = _VERSION
+  env.string = copy(methods)
+  env.table = copy(table)
+  env.table.sort, env.table.insert, env.table.remove, env.table.foreach = safeSort, safeInsert, safeRemove, safeForeach
+  env.math = copy(math)
+  deterministicRandom(env.math)
+  env.bit = copy(bit)
+  env.coroutine = copy(coroutine)
+  env.os = { time = safeTime, date = safeDate, clock = safeClock }
+  env.collectgarbage = function(option)
+    if option == "count" then
+      error("collectgarbage(\"count\") is not for sandboxes: the Lua state's memory differs from one run to "
+            .. "the next (JIT traces, the engine's own scripts), and what a sandbox sees must not (the engine "
+            .. "stops a sandbox that uses too much: docs/scripting.md, Limits)", 2)
+    end
+    error("collectgarbage: a sandbox may not drive the garbage collector", 2)
+  end
+  env.print = function(...)
+    local parts = {}
+    for i = 1, select("#", ...) do parts[i] = safeTostring((select(i, ...))) end
+    printSink(name, concat(parts, "\t"))
+  end
+  env.platon = readonly(api, "platon")
+  return env
+end
+
+return newSandbox, readonly, safeTostring
