@@ -6,18 +6,12 @@
 #include <cstdlib>
 #include <string>
 
+#include "fuzz_bug.h"
 #include "platon/stage/level_check.h"
 
 using namespace platon;
 
 namespace {
-
-[[noreturn]] void bug(const std::string& what, const std::string& text) {
-  std::string shown;  // the whole input, NUL bytes shown (the fuzzer puts them in)
-  for (const char c : text) shown += c == '\0' ? std::string("\\0") : std::string(1, c);
-  std::fprintf(stderr, "BUG: %s\n--- input ---\n%s\n-------------\n", what.c_str(), shown.c_str());
-  std::abort();
-}
 
 // The game's rules for what the player passes through (scripts/rules/game.lua): edges, the goal,
 // checkpoints and switches; doors stay shut. The level check counts lines as walls the same way.

@@ -8,19 +8,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "fuzz_bug.h"
 #include "platon/core/manifest.h"
 #include "platon/core/replay.h"
 
 using namespace platon;
 
 namespace {
-
-[[noreturn]] void bug(const std::string& what, const std::string& text) {
-  std::string shown;  // the whole input, NUL bytes shown (the fuzzer puts them in)
-  for (const char c : text) shown += c == '\0' ? std::string("\\0") : std::string(1, c);
-  std::fprintf(stderr, "BUG: %s\n--- input ---\n%s\n-------------\n", what.c_str(), shown.c_str());
-  std::abort();
-}
 
 // "file:line:" with a line of at least 1.
 bool placed(const std::string& message, const std::string& file) {
