@@ -13,238 +13,7 @@
 
 namespace platon::core {
 
-const DataTable* DataValue::table() const {
-  const auto* t = std::get_if<std::shared_ptr<DataTable>>(&value);
-  return t ? t->get() : nullptr;
-}
-const std::string* DataValue::string() const { return std::get_if<std::string>(&value); }
-const double* DataValue::number() const { return std::get_if<double>(&value); }
-const bool* DataValue::boolean() const { return std::get_if<bool>(&value); }
-const DataValue* DataValue::field(std::string_view key) const {
-  if (const DataTable* t = table())
-    for (const auto& [k, v] : *t)
-      if (k == key) return &v;
-  return nullptr;
-}
-
 namespace {
-
-// A recursive-descent reader of the literal subset of Lua.
-class DataReader {
- public:
-  DataReader(std::string_view text, const std::string& file) : text_(text), file_(file) {}
-
-  DataValue file() {
-    skipSpace();
-    expectWord("return");
-    DataValue v = value(0);
-    skipSpace();
-    if (pos_ < text_.size()) fail("unexpected text after the table");
-    return v;
-  }
-
- private:
-  [[noreturn]] void fail(const std::string& reason) const {
-    throw std::runtime_error(file_ + ":" + std::to_string(line_) + ":" + std::to_string(column_) + ": " + reason);
-  }
-  char peek() const { return pos_ < text_.size() ? text_[pos_] : '\0'; }
-  void advance() {
-    if (text_[pos_] == '\n')
-      ++line_, column_ = 1;
-    else
-      ++column_;
-    ++pos_;
-  }
-  void skipSpace() {
-    for (;;) {
-      while (pos_ < text_.size() && std::isspace(static_cast<unsigned char>(peek()))) advance();
-      if (text_.substr(pos_, 2) == "--") {
-        advance(), advance();
-        if (longBracketLevel() >= 0) {
-          (void)longBracket("comment");
-        } else {
-          while (pos_ < text_.size() && peek() != '\n') advance();
-        }
-        continue;
-      }
-      return;
-    }
-  }
-  // At a Lua long bracket, [[ or [=[ or [==[ ...: its level (the number of '='), else -1.
-  int longBracketLevel() const {
-    if (peek() != '[') return -1;
-    size_t i = pos_ + 1;
-    while (i < text_.size() && text_[i] == '=') ++i;
-    return i < text_.size() && text_[i] == '[' ? static_cast<int>(i - pos_ - 1) : -1;
-  }
-  // A long-bracket string or comment's text, from its opening to the matching ]=*] (a newline
-  // right after the opening is dropped, as Lua does).
-  std::string longBracket(const char* what) {
-    const int level = longBracketLevel();
-    const std::string close = "]" + std::string(static_cast<size_t>(level), '=') + "]";
-    const int openLine = line_, openColumn = column_;
-    for (int i = 0; i < level + 2; ++i) advance();
-    if (peek() == '\r') advance();
-    if (peek() == '\n') advance();
-    const size_t end = text_.find(close, pos_);
-    if (end == std::string_view::npos) {
-      line_ = openLine, column_ = openColumn;
-      fail(std::string("unfinished long ") + what + " (no " + close + ")");
-    }
-    std::string out(text_.substr(pos_, end - pos_));
-    while (pos_ < end + close.size()) advance();
-    return out;
-  }
-
-  std::string_view word() {
-    size_t end = pos_;
-    while (end < text_.size() && (std::isalnum(static_cast<unsigned char>(text_[end])) || text_[end] == '_')) ++end;
-    return text_.substr(pos_, end - pos_);
-  }
-  void expectWord(std::string_view w) {
-    if (word() != w) fail("expected '" + std::string(w) + "'");
-    for (size_t i = 0; i < w.size(); ++i) advance();
-  }
-
-  DataValue value(int depth) {
-    if (depth > 32) fail("tables nested more than 32 deep");
-    skipSpace();
-    DataValue v;
-    v.line = line_, v.column = column_;
-    const char c = peek();
-    if (c == '{') {
-      v.value = table(depth);
-    } else if (c == '"' || c == '\'') {
-      v.value = quoted();
-    } else if (longBracketLevel() >= 0) {
-      v.value = longBracket("string");
-    } else if (c == '-' || c == '.' || std::isdigit(static_cast<unsigned char>(c))) {
-      v.value = number();
-    } else {
-      const std::string_view w = word();
-      if (w == "true" || w == "false") {
-        v.value = w == "true";
-        expectWord(w);
-      } else if (w == "nil") {
-        expectWord(w);
-      } else if (w.empty()) {
-        fail(pos_ < text_.size() ? std::string("unexpected '") + c + "'" : "unexpected end of file");
-      } else {
-        fail("'" + std::string(w) + "': a manifest holds only strings, numbers, booleans and tables");
-      }
-    }
-    return v;
-  }
-
-  std::shared_ptr<DataTable> table(int depth) {
-    auto t = std::make_shared<DataTable>();
-    advance();  // {
-    int nextIndex = 1;
-    for (;;) {
-      skipSpace();
-      if (pos_ >= text_.size()) fail("unexpected end of file (a '}' is missing)");
-      if (peek() == '}') {
-        advance();
-        return t;
-      }
-      std::string key;
-      const std::string_view w = word();
-      const int keyLine = line_, keyColumn = column_;
-      size_t save = pos_;
-      int saveLine = line_, saveColumn = column_;
-      bool keyed = false;
-      if (!w.empty() && !std::isdigit(static_cast<unsigned char>(w[0])) && w != "true" && w != "false" && w != "nil") {
-        for (size_t i = 0; i < w.size(); ++i) advance();
-        skipSpace();
-        if (peek() == '=') {
-          advance();
-          key = std::string(w);
-          keyed = true;
-        } else {
-          pos_ = save, line_ = saveLine, column_ = saveColumn;
-        }
-      } else if (peek() == '[') {
-        advance();
-        skipSpace();
-        if (peek() != '"' && peek() != '\'') fail("a [key] must be a string");
-        key = quoted();
-        skipSpace();
-        if (peek() != ']') fail("expected ']'");
-        advance();
-        skipSpace();
-        if (peek() != '=') fail("expected '='");
-        advance();
-        keyed = true;
-      }
-      if (!keyed) key = std::to_string(nextIndex++);
-      for (const auto& entry : *t)
-        if (entry.first == key) {
-          line_ = keyLine, column_ = keyColumn;
-          fail("'" + key + "' is given twice");
-        }
-      t->emplace_back(std::move(key), value(depth + 1));
-      skipSpace();
-      if (peek() == ',' || peek() == ';') {
-        advance();
-      } else if (pos_ >= text_.size()) {
-        fail("unexpected end of file (a '}' is missing)");
-      } else if (peek() != '}') {
-        fail("expected ',' or '}'");
-      }
-    }
-  }
-
-  std::string quoted() {
-    const char quote = peek();
-    advance();
-    std::string out;
-    for (;;) {
-      if (pos_ >= text_.size() || peek() == '\n') fail("unfinished string");
-      char c = peek();
-      advance();
-      if (c == quote) return out;
-      if (c == '\\') {
-        if (pos_ >= text_.size()) fail("unfinished string");
-        const char e = peek();
-        advance();
-        switch (e) {
-          case 'n':
-            c = '\n';
-            break;
-          case 't':
-            c = '\t';
-            break;
-          case '\\':
-          case '"':
-          case '\'':
-            c = e;
-            break;
-          default:
-            fail(std::string("unknown escape '\\") + e + "'");
-        }
-      }
-      out += c;
-    }
-  }
-
-  double number() {
-    size_t end = pos_;
-    while (end < text_.size() && (std::isalnum(static_cast<unsigned char>(text_[end])) || text_[end] == '.' ||
-                                  text_[end] == '-' || text_[end] == '+'))
-      ++end;
-    const std::string token(text_.substr(pos_, end - pos_));
-    char* stop = nullptr;
-    const double v = std::strtod(token.c_str(), &stop);
-    if (token.empty() || *stop != '\0' || !std::isfinite(v)) fail("'" + token + "' is not a number");
-    while (pos_ < end) advance();
-    return v;
-  }
-
-  std::string_view text_;
-  const std::string& file_;
-  size_t pos_ = 0;
-  int line_ = 1, column_ = 1;
-};
 
 std::string placeText(const std::string& file, const DataValue& v) {
   return file + ":" + std::to_string(v.line) + ":" + std::to_string(v.column);
@@ -257,8 +26,8 @@ std::string placeText(const std::string& file, const DataValue& v) {
 std::string stringField(const std::string& file, const DataValue& table, const char* key, std::string fallback) {
   const DataValue* v = table.field(key);
   if (!v) return fallback;
-  if (!v->string()) fieldError(file, *v, std::string("'") + key + "' must be a string");
-  return *v->string();
+  if (!v->isString()) fieldError(file, *v, std::string("'") + key + "' must be a string");
+  return v->text;
 }
 
 std::string shown(double v) {
@@ -271,12 +40,12 @@ double numberField(const std::string& file, const DataValue& table, const char* 
                    double high) {
   const DataValue* v = table.field(key);
   if (!v) return fallback;
-  if (!v->number()) fieldError(file, *v, std::string("'") + key + "' must be a number");
-  if (*v->number() < low || *v->number() > high)
-    fieldError(file, *v,
-               std::string("'") + key + "' must be within [" + shown(low) + ", " + shown(high) + "], not " +
-                   shown(*v->number()));
-  return *v->number();
+  if (!v->isNumber()) fieldError(file, *v, std::string("'") + key + "' must be a number");
+  if (v->number < low || v->number > high)
+    fieldError(
+        file, *v,
+        std::string("'") + key + "' must be within [" + shown(low) + ", " + shown(high) + "], not " + shown(v->number));
+  return v->number;
 }
 
 // A whole number within [low, high] (an edge, a seed, a limit: 4096.7 is a mistake, not 4096).
@@ -289,13 +58,14 @@ double wholeField(const std::string& file, const DataValue& table, const char* k
 }
 
 void checkKeys(const std::string& file, const DataValue& table, std::initializer_list<const char*> known) {
-  for (const auto& [key, v] : *table.table()) {
+  for (const DataEntry& e : table.entries) {
     bool ok = false;
-    for (const char* k : known) ok = ok || key == k;
+    for (const char* k : known) ok = ok || (e.key.isString() && e.key.text == k);
     if (!ok) {
       std::string list;
       for (const char* k : known) list += std::string(list.empty() ? "" : ", ") + k;
-      fieldError(file, v, "unknown field '" + key + "' (known: " + list + ")");
+      const std::string name = e.key.isString() ? dataKeyText(e.key) : "[" + dataKeyText(e.key) + "]";
+      fieldError(file, e.key.line ? e.key : e.value, "unknown field " + name + " (known: " + list + ")");
     }
   }
 }
@@ -321,10 +91,6 @@ std::string insideFolder(const std::string& manifest, const std::string& folder,
 
 }  // namespace
 
-DataValue parseDataFile(std::string_view text, const std::string& fileName) {
-  return DataReader(text, fileName).file();
-}
-
 bool SceneManifest::needs(std::string_view system) const {
   for (const auto& s : systems)
     if (s == system) return true;
@@ -338,8 +104,8 @@ SceneManifest loadManifest(const std::string& path) {
   } catch (const files::FileError& e) {
     throw std::runtime_error(path + ": the manifest: " + e.reason());
   }
-  const DataValue root = parseDataFile(text, path);
-  if (!root.table()) fieldError(path, root, "a manifest is a table: return { ... }");
+  const DataValue root = readLuaData(text, path);
+  if (!root.isTable()) fieldError(path, root, "a manifest is a table: return { ... }");
   checkKeys(path, root, {"name", "systems", "stage", "gravity", "scripts", "limits", "seed"});
 
   SceneManifest m;
@@ -348,17 +114,18 @@ SceneManifest loadManifest(const std::string& path) {
   m.directory = slash == std::string::npos ? "." : path.substr(0, slash);
   m.name = stringField(path, root, "name", path);
   if (const DataValue* systems = root.field("systems")) {
-    if (!systems->table()) fieldError(path, *systems, "'systems' must be a list of names");
-    for (const auto& [key, v] : *systems->table()) {
-      if (!v.string()) fieldError(path, v, "'systems' must be a list of names");
-      const std::string& s = *v.string();
+    if (!systems->isTable()) fieldError(path, *systems, "'systems' must be a list of names");
+    for (const DataEntry& e : systems->entries) {
+      const DataValue& v = e.value;
+      if (!v.isString()) fieldError(path, v, "'systems' must be a list of names");
+      const std::string& s = v.text;
       if (s != "scripting" && s != "rendering" && s != "meshes" && s != "audio")
         fieldError(path, v, "unknown system '" + s + "' (known: scripting, rendering, meshes, audio)");
       m.systems.push_back(s);
     }
   }
   if (const DataValue* stage = root.field("stage")) {
-    if (!stage->table()) fieldError(path, *stage, "'stage' must be a table {solid =, edge =} or {level =}");
+    if (!stage->isTable()) fieldError(path, *stage, "'stage' must be a table {solid =, edge =} or {level =}");
     checkKeys(path, *stage, {"solid", "edge", "level"});
     if (const DataValue* level = stage->field("level")) {
       if (stage->field("solid") || stage->field("edge"))
@@ -379,7 +146,7 @@ SceneManifest loadManifest(const std::string& path) {
   m.gravity = numberField(path, root, "gravity", m.gravity, 0, 1000);
   m.seed = static_cast<uint32_t>(wholeField(path, root, "seed", m.seed, 0, 4294967295.0));
   if (const DataValue* scripts = root.field("scripts")) {
-    if (!scripts->table()) fieldError(path, *scripts, "'scripts' must be a table");
+    if (!scripts->isTable()) fieldError(path, *scripts, "'scripts' must be a table");
     checkKeys(path, *scripts, {"preset", "rules", "player", "progression", "level", "mods"});
     // Trust is decided here, once, from what the manifest wrote: "scripts/..." names an engine
     // script (trusted; the script system finds it under the engine's root), anything else is the
@@ -404,7 +171,7 @@ SceneManifest loadManifest(const std::string& path) {
     // preset = "game": the game's own rules, player and progression, for any of the three the
     // manifest does not name itself (every campaign level uses them).
     if (const DataValue* preset = scripts->field("preset")) {
-      if (!preset->string() || *preset->string() != "game")
+      if (!preset->isString() || preset->text != "game")
         fieldError(path, *preset, "unknown script preset (known: \"game\")");
       if (m.rules.empty()) m.rules = "scripts/rules/game.lua", m.rulesTrusted = true;
       if (m.player.empty()) m.player = "scripts/player.lua", m.playerTrusted = true;
@@ -412,12 +179,13 @@ SceneManifest loadManifest(const std::string& path) {
     }
     m.level = script("level", m.levelTrusted);
     if (const DataValue* mods = scripts->field("mods")) {
-      if (!mods->table()) fieldError(path, *mods, "'mods' must be a list of paths");
-      int index = 0;
-      for (const auto& [key, v] : *mods->table()) {
-        if (key != std::to_string(++index))
+      if (!mods->isTable()) fieldError(path, *mods, "'mods' must be a list of paths");
+      double index = 0;
+      for (const DataEntry& e : mods->entries) {
+        const DataValue& v = e.value;
+        if (!e.key.isNumber() || e.key.number != ++index)
           fieldError(path, v, "'mods' must be a list of paths ({ \"a.lua\", \"b.lua\" }), not keyed");
-        const std::string* p = v.string();
+        const std::string* p = v.isString() ? &v.text : nullptr;
         if (!p || p->size() < 5 || p->substr(p->size() - 4) != ".lua" || p->find("..") != std::string::npos ||
             p->rfind("scripts/", 0) == 0 || (*p)[0] == '/')
           fieldError(path, v,
@@ -431,7 +199,7 @@ SceneManifest loadManifest(const std::string& path) {
         fieldError(path, *scripts, "the scene has scripts but does not list \"scripting\" in its systems");
   }
   if (const DataValue* limits = root.field("limits")) {
-    if (!limits->table()) fieldError(path, *limits, "'limits' must be a table {memory_mb =, steps =, deadline_ms =}");
+    if (!limits->isTable()) fieldError(path, *limits, "'limits' must be a table {memory_mb =, steps =, deadline_ms =}");
     checkKeys(path, *limits, {"memory_mb", "steps", "deadline_ms"});
     m.memoryMegabytes = static_cast<size_t>(wholeField(path, *limits, "memory_mb", 128, 4, 4096));
     m.frameSteps = static_cast<int64_t>(wholeField(path, *limits, "steps", 10'000'000, 1000, 1'000'000'000));

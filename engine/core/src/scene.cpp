@@ -68,11 +68,11 @@ stage::Stage meshStage(const stage::Level& level, const SceneManifest& manifest,
 // "file:line:column" of the manifest's entry naming `system` in its systems list, or the file.
 std::string systemEntry(const SceneManifest& manifest, const std::string& system) {
   try {
-    const DataValue root = parseDataFile(files::readBoundedFile(manifest.path, kMaxManifestBytes), manifest.path);
-    if (const DataValue* list = root.field("systems"); list && list->table())
-      for (const auto& [key, v] : *list->table())
-        if (v.string() && *v.string() == system)
-          return manifest.path + ":" + std::to_string(v.line) + ":" + std::to_string(v.column);
+    const DataValue root = readLuaData(files::readBoundedFile(manifest.path, kMaxManifestBytes), manifest.path);
+    if (const DataValue* list = root.field("systems"))
+      for (const DataEntry& e : list->entries)
+        if (e.value.isString() && e.value.text == system)
+          return manifest.path + ":" + std::to_string(e.value.line) + ":" + std::to_string(e.value.column);
   } catch (const std::exception&) {}
   return manifest.path;
 }

@@ -26,286 +26,16 @@ namespace {
 
 // ---- Reading a scenario file ---------------------------------------------------------------
 //
-// A scenario is a table literal in every example, so it is read as data first, the way the
-// manifest is: every value keeps the line:column it was written at, and each error names it. A
-// trusted scenario may compute its values instead (a loop, a local, a call): one that is not a
-// plain literal runs as Lua, and its result is read by the same checks, with the line of its
-// top-level `return` as the best position there is.
+// A scenario is a table literal in every example, so it is read as data first by the reader the
+// manifest uses (core/lua_data.h): every value keeps the line:column it was written at, and each
+// error names it. A trusted scenario may compute its values instead (a loop, a local, a call): one
+// that is not a plain literal runs as Lua, and its result is read by the same checks, with the
+// line of its top-level `return` as the best position there is. A repeated key or a file past the
+// data reader's size limits is refused, not run: Lua would keep the last key silently, and would
+// build the same oversized table.
 
-// A value of the scenario file and where it was written (line 0: computed by Lua, not written).
-struct DatumEntry;
-
-struct Datum {
-  enum class Kind { Nil, Boolean, Number, String, Table, Other };
-  Kind kind = Kind::Nil;
-  bool boolean = false;
-  double number = 0;
-  std::string text;                 // a string's bytes; for Other, what it is ("a function")
-  std::vector<DatumEntry> entries;  // a table's keys and values, in file order
-  int line = 0, column = 0;
-};
-
-// A key and its value (a struct of its own, not a std::pair: a pair of an incomplete type cannot
-// be a member of that type).
-struct DatumEntry {
-  Datum first, second;
-  DatumEntry(Datum key, Datum value) : first(std::move(key)), second(std::move(value)) {}
-};
-
-std::string describe(const Datum& d) {
-  char number[64];
-  switch (d.kind) {
-    case Datum::Kind::Nil:
-      return "nil";
-    case Datum::Kind::Boolean:
-      return d.boolean ? "true" : "false";
-    case Datum::Kind::Number:
-      if (std::isnan(d.number)) return "nan";
-      std::snprintf(number, sizeof number, "%.17g", d.number);
-      return number;
-    case Datum::Kind::String:
-      return "'" + core::visibleText(d.text.substr(0, 40)) + (d.text.size() > 40 ? "...'" : "'") + " (a string)";
-    case Datum::Kind::Table:
-      return "a table";
-    case Datum::Kind::Other:
-      return d.text;
-  }
-  return "?";
-}
-
-// A table key as a scenario writes it: 'name' or a number.
-std::string keyText(const Datum& key) {
-  if (key.kind == Datum::Kind::String) return "'" + core::visibleText(key.text) + "'";
-  if (key.kind == Datum::Kind::Number) return describe(key);
-  return describe(key);
-}
-
-// Thrown by the literal reader for text that is valid Lua but not a literal: the file then runs.
-struct NotALiteral {};
-// A key given twice in one table (Lua would silently keep the last).
-struct RepeatedKey {
-  Datum key;
-};
-
-// A recursive-descent reader of `return <table constructor>` with literal values only: strings,
-// numbers, booleans, nil, tables with name = , [literal] = and positional fields, comments.
-class LiteralReader {
- public:
-  explicit LiteralReader(std::string_view text) : text_(text) {}
-
-  Datum file() {
-    skipSpace();
-    if (word() != "return") throw NotALiteral{};
-    skip(6);
-    Datum d = value(0);
-    skipSpace();
-    if (peek() == ';') advance(), skipSpace();
-    if (pos_ < text_.size()) throw NotALiteral{};
-    return d;
-  }
-
- private:
-  char peek(size_t ahead = 0) const { return pos_ + ahead < text_.size() ? text_[pos_ + ahead] : '\0'; }
-  void advance() {
-    if (text_[pos_] == '\n')
-      ++line_, column_ = 1;
-    else
-      ++column_;
-    ++pos_;
-  }
-  void skip(size_t n) {
-    for (size_t i = 0; i < n && pos_ < text_.size(); ++i) advance();
-  }
-  // "[[", "[=[", ...: the level of a long bracket at pos_, or -1.
-  int longBracket() const {
-    if (peek() != '[') return -1;
-    size_t i = 1;
-    while (peek(i) == '=') ++i;
-    return peek(i) == '[' ? static_cast<int>(i - 1) : -1;
-  }
-  std::string longString(int level) {
-    skip(static_cast<size_t>(level) + 2);
-    if (peek() == '\r') advance();
-    if (peek() == '\n') advance();  // Lua skips a first newline
-    const std::string close = "]" + std::string(static_cast<size_t>(level), '=') + "]";
-    const size_t end = text_.find(close, pos_);
-    if (end == std::string_view::npos) throw NotALiteral{};
-    std::string out(text_.substr(pos_, end - pos_));
-    skip(end - pos_ + close.size());
-    return out;
-  }
-  void skipSpace() {
-    for (;;) {
-      while (pos_ < text_.size() && std::isspace(static_cast<unsigned char>(peek()))) advance();
-      if (peek() == '-' && peek(1) == '-') {
-        skip(2);
-        if (const int level = longBracket(); level >= 0) {
-          longString(level);
-        } else {
-          while (pos_ < text_.size() && peek() != '\n') advance();
-        }
-        continue;
-      }
-      if (pos_ == 0 && peek() == '#') {  // a #! line, as Lua allows
-        while (pos_ < text_.size() && peek() != '\n') advance();
-        continue;
-      }
-      return;
-    }
-  }
-  std::string_view word() const {
-    size_t end = pos_;
-    while (end < text_.size() && (std::isalnum(static_cast<unsigned char>(text_[end])) || text_[end] == '_')) ++end;
-    if (end == pos_ || std::isdigit(static_cast<unsigned char>(text_[pos_]))) return {};
-    return text_.substr(pos_, end - pos_);
-  }
-
-  Datum value(int depth) {
-    if (depth > 32) throw NotALiteral{};  // Lua reads it, and the checks refuse what it is
-    skipSpace();
-    Datum d;
-    d.line = line_, d.column = column_;
-    const char c = peek();
-    const std::string_view w = word();
-    if (c == '{') {
-      d.kind = Datum::Kind::Table;
-      table(d, depth);
-    } else if (c == '"' || c == '\'') {
-      d.kind = Datum::Kind::String;
-      d.text = quoted();
-    } else if (longBracket() >= 0) {
-      d.kind = Datum::Kind::String;
-      d.text = longString(longBracket());
-    } else if (c == '-' || c == '.' || std::isdigit(static_cast<unsigned char>(c))) {
-      d.kind = Datum::Kind::Number;
-      d.number = number();
-    } else if (w == "true" || w == "false") {
-      d.kind = Datum::Kind::Boolean;
-      d.boolean = w == "true";
-      skip(w.size());
-    } else if (w == "nil") {
-      skip(3);
-    } else {
-      throw NotALiteral{};
-    }
-    skipSpace();
-    if (peek() != ',' && peek() != ';' && peek() != '}' && peek() != ']' && peek() != '\0')
-      throw NotALiteral{};  // an operator
-    return d;
-  }
-
-  void table(Datum& t, int depth) {
-    advance();  // {
-    double nextIndex = 1;
-    std::set<std::string> keys;  // Lua would keep the last of two equal keys: a scenario may not repeat one
-    for (;;) {
-      skipSpace();
-      if (peek() == '}') return advance();
-      Datum key;
-      key.line = line_, key.column = column_;
-      const std::string_view w = word();
-      const size_t save = pos_;
-      const int saveLine = line_, saveColumn = column_;
-      bool keyed = false;
-      if (!w.empty() && w != "true" && w != "false" && w != "nil") {
-        skip(w.size());
-        skipSpace();
-        if (peek() == '=' && peek(1) != '=') {
-          advance();
-          key.kind = Datum::Kind::String;
-          key.text = std::string(w);
-          keyed = true;
-        } else {
-          pos_ = save, line_ = saveLine, column_ = saveColumn;
-        }
-      } else if (peek() == '[' && longBracket() < 0) {
-        advance();
-        key = value(depth + 1);
-        if (peek() != ']') throw NotALiteral{};
-        advance();
-        skipSpace();
-        if (peek() != '=') throw NotALiteral{};
-        advance();
-        keyed = true;
-      }
-      if (!keyed) key.kind = Datum::Kind::Number, key.number = nextIndex++;
-      if (!keys.insert((key.kind == Datum::Kind::String ? "s" + key.text : "n" + describe(key))).second)
-        throw RepeatedKey{key};
-      t.entries.emplace_back(std::move(key), value(depth + 1));
-      if (peek() == ',' || peek() == ';')
-        advance();
-      else if (peek() != '}')
-        throw NotALiteral{};
-    }
-  }
-
-  std::string quoted() {
-    const char quote = peek();
-    advance();
-    std::string out;
-    for (;;) {
-      if (pos_ >= text_.size() || peek() == '\n') throw NotALiteral{};  // Lua says where
-      char c = peek();
-      advance();
-      if (c == quote) return out;
-      if (c == '\\') {
-        const char e = peek();
-        if (pos_ >= text_.size()) throw NotALiteral{};
-        advance();
-        switch (e) {
-          case 'n':
-            c = '\n';
-            break;
-          case 't':
-            c = '\t';
-            break;
-          case 'r':
-            c = '\r';
-            break;
-          case '\\':
-          case '"':
-          case '\'':
-            c = e;
-            break;
-          default: {
-            if (!std::isdigit(static_cast<unsigned char>(e))) throw NotALiteral{};  // \x, \z, ...: Lua reads them
-            int byte = e - '0';
-            for (int k = 0; k < 2 && std::isdigit(static_cast<unsigned char>(peek())); ++k)
-              byte = byte * 10 + (peek() - '0'), advance();
-            if (byte > 255) throw NotALiteral{};
-            c = static_cast<char>(byte);
-          }
-        }
-      }
-      out += c;
-    }
-  }
-
-  double number() {
-    bool negative = false;
-    if (peek() == '-') {
-      if (peek(1) == '-') throw NotALiteral{};
-      negative = true;
-      advance();
-      skipSpace();
-    }
-    size_t end = pos_;
-    while (end < text_.size() && (std::isalnum(static_cast<unsigned char>(text_[end])) || text_[end] == '.' ||
-                                  ((text_[end] == '-' || text_[end] == '+') && end > pos_ &&
-                                   (text_[end - 1] == 'e' || text_[end - 1] == 'E') && text_.substr(pos_, 2) != "0x")))
-      ++end;
-    const std::string token(text_.substr(pos_, end - pos_));
-    char* stop = nullptr;
-    const double v = std::strtod(token.c_str(), &stop);
-    if (token.empty() || *stop != '\0') throw NotALiteral{};
-    skip(end - pos_);
-    return negative ? -v : v;
-  }
-
-  std::string_view text_;
-  size_t pos_ = 0;
-  int line_ = 1, column_ = 1;
-};
+using core::DataEntry;
+using core::DataValue;
 
 // The line of the file's last top-level `return` (a line that starts with it): the best position
 // for values a scenario computed. 0 when there is none.
@@ -320,52 +50,57 @@ int returnLine(std::string_view text) {
   return found;
 }
 
-// Reads the Lua value at `index` into a Datum (raw reads only: a metatable runs no code).
+// Reads the Lua value at `index` into a DataValue (raw reads only: a metatable runs no code).
 struct Conversion {
-  Datum out;
+  DataValue out;
   std::string error;  // why it could not be read
   int line = 0;
+  size_t values = 0;  // read so far: at most core::kMaxDataValues, as for a literal
 };
 
-Datum datumOf(lua_State* L, int index, int depth, int line) {
+DataValue valueOf(lua_State* L, int index, int depth, Conversion& job) {
   index = index < 0 ? lua_gettop(L) + index + 1 : index;
-  Datum d;
-  d.line = line;
+  if (++job.values > core::kMaxDataValues)
+    throw std::runtime_error("more than " + std::to_string(core::kMaxDataValues) + " keys and values");
+  DataValue d;
+  d.line = job.line;
   switch (lua_type(L, index)) {
     case LUA_TNIL:
       break;
     case LUA_TBOOLEAN:
-      d.kind = Datum::Kind::Boolean, d.boolean = lua_toboolean(L, index) != 0;
+      d.kind = DataValue::Kind::Boolean, d.boolean = lua_toboolean(L, index) != 0;
       break;
     case LUA_TNUMBER:
-      d.kind = Datum::Kind::Number, d.number = lua_tonumber(L, index);
+      d.kind = DataValue::Kind::Number, d.number = lua_tonumber(L, index);
       break;
     case LUA_TSTRING: {
       size_t length = 0;
       const char* text = lua_tolstring(L, index, &length);
-      d.kind = Datum::Kind::String, d.text.assign(text, length);
+      d.kind = DataValue::Kind::String, d.text.assign(text, length);
       break;
     }
     case LUA_TTABLE:
-      if (depth > 32) throw std::runtime_error("tables nested more than 32 deep (a table that holds itself?)");
+      if (depth >= core::kMaxDataDepth)
+        throw std::runtime_error("tables nested more than " + std::to_string(core::kMaxDataDepth) +
+                                 " deep (a table that holds itself?)");
       if (!lua_checkstack(L, 4)) throw std::runtime_error("out of Lua stack");
-      d.kind = Datum::Kind::Table;
+      d.kind = DataValue::Kind::Table;
       for (lua_pushnil(L); lua_next(L, index); lua_pop(L, 1)) {
-        Datum key = datumOf(L, -2, depth + 1, line);
-        Datum value = datumOf(L, -1, depth + 1, line);
+        DataValue key = valueOf(L, -2, depth + 1, job);
+        DataValue value = valueOf(L, -1, depth + 1, job);
         d.entries.emplace_back(std::move(key), std::move(value));
       }
       // lua_next's order is the hash's: list items and frames are read in key order.
       std::stable_sort(d.entries.begin(), d.entries.end(), [](const auto& a, const auto& b) {
-        const bool an = a.first.kind == Datum::Kind::Number, bn = b.first.kind == Datum::Kind::Number;
+        const bool an = a.key.kind == DataValue::Kind::Number, bn = b.key.kind == DataValue::Kind::Number;
         if (an != bn) return an;
-        if (an) return a.first.number < b.first.number;
-        return a.first.kind == Datum::Kind::String && b.first.kind == Datum::Kind::String &&
-               a.first.text < b.first.text;
+        if (an) return a.key.number < b.key.number;
+        return a.key.kind == DataValue::Kind::String && b.key.kind == DataValue::Kind::String &&
+               a.key.text < b.key.text;
       });
       break;
     default:
-      d.kind = Datum::Kind::Other, d.text = std::string("a ") + lua_typename(L, lua_type(L, index));
+      d.kind = DataValue::Kind::Other, d.text = std::string("a ") + lua_typename(L, lua_type(L, index));
       break;
   }
   return d;
@@ -374,7 +109,7 @@ Datum datumOf(lua_State* L, int index, int depth, int line) {
 int convertProtected(lua_State* L) {
   auto* job = static_cast<Conversion*>(lua_touserdata(L, 1));
   try {
-    job->out = datumOf(L, 2, 0, job->line);
+    job->out = valueOf(L, 2, 0, *job);
   } catch (const std::exception& e) {
     job->error = e.what();
   }
@@ -382,7 +117,7 @@ int convertProtected(lua_State* L) {
 }
 
 // Runs a scenario that is not a literal (trusted) and reads what it returns.
-Datum runScenarioFile(const std::string& path, std::string_view text) {
+DataValue runScenarioFile(const std::string& path, std::string_view text) {
   LuaHost host;  // the scenario's own state: it only makes the plan
   lua_State* L = host.state();
   lua::StackGuard guard(L);
@@ -399,7 +134,7 @@ Datum runScenarioFile(const std::string& path, std::string_view text) {
   return std::move(job.out);
 }
 
-Datum readScenarioFile(const std::string& path) {
+DataValue readScenarioFile(const std::string& path) {
   std::string text;
   try {
     text = files::readBoundedFile(path, kMaxScenarioBytes);
@@ -407,14 +142,11 @@ Datum readScenarioFile(const std::string& path) {
     throw ScriptError(path + ": the scenario: " + e.reason(), "");
   }
   try {
-    return LiteralReader(text).file();
-  } catch (const NotALiteral&) {
-    return runScenarioFile(path, text);
-  } catch (const RepeatedKey& repeated) {
-    throw ScriptError(path + ":" + std::to_string(repeated.key.line) + ":" + std::to_string(repeated.key.column) +
-                          ": " + "the key " + keyText(repeated.key) + " is given twice in one table",
-                      "");
+    return core::readLuaData(text, path);
+  } catch (const core::DataError& e) {
+    if (e.kind != core::DataError::Kind::NotData) throw ScriptError(e.what(), "");
   }
+  return runScenarioFile(path, text);
 }
 
 // ---- The plan: what a scenario asks for, checked whole before anything runs ----------------
@@ -458,14 +190,15 @@ class PlanReader {
  public:
   explicit PlanReader(std::string path) : path_(std::move(path)) {}
 
-  Plan read(const Datum& root) {
-    if (root.kind != Datum::Kind::Table) fail(root, "scenario", "a scenario returns a table, got " + describe(root));
+  Plan read(const DataValue& root) {
+    if (root.kind != DataValue::Kind::Table)
+      fail(root, "scenario", "a scenario returns a table, got " + core::describeData(root));
     knownKeys(root, "scenario", {"scene", "frames", "input", "expect"});
     Plan plan;
-    const Datum* scene = field(root, "scene");
+    const DataValue* scene = field(root, "scene");
     if (!scene) fail(root, "scenario", "'scene' (the manifest's path) is missing");
-    if (scene->kind != Datum::Kind::String || scene->text.empty())
-      fail(*scene, "scene", "expected the manifest's path (a string), got " + describe(*scene));
+    if (scene->kind != DataValue::Kind::String || scene->text.empty())
+      fail(*scene, "scene", "expected the manifest's path (a string), got " + core::describeData(*scene));
     plan.scene = scene->text;
     plan.sceneAt = at(*scene, "scene");
     plan.sceneAt.resize(plan.sceneAt.size() - std::string(": scene: ").size());
@@ -475,17 +208,17 @@ class PlanReader {
                "): scenarios are shared, and an absolute path could name any file");
     if (core::hasParentStep(plan.scene))
       fail(*scene, "scene", "may not contain '..' (" + plan.scene + "): a scenario names its scene's own path");
-    const Datum* frames = field(root, "frames");
+    const DataValue* frames = field(root, "frames");
     if (!frames) fail(root, "scenario", "'frames' (how many frames to run) is missing");
     plan.frames = wholeNumber(*frames, "frames", 1, kMaxFrames);
     plan.held.assign(plan.frames + 1, 0);
-    if (const Datum* input = field(root, "input")) readInput(*input, plan);
-    if (const Datum* expect = field(root, "expect")) readExpect(*expect, plan);
+    if (const DataValue* input = field(root, "input")) readInput(*input, plan);
+    if (const DataValue* expect = field(root, "expect")) readExpect(*expect, plan);
     return plan;
   }
 
   // "file:line:column: where: " for a value (the line alone for a computed one).
-  std::string at(const Datum& d, const std::string& where) const {
+  std::string at(const DataValue& d, const std::string& where) const {
     std::string out = path_;
     if (d.line > 0) out += ":" + std::to_string(d.line);
     if (d.column > 0) out += ":" + std::to_string(d.column);
@@ -493,81 +226,82 @@ class PlanReader {
   }
 
  private:
-  [[noreturn]] void fail(const Datum& d, const std::string& where, const std::string& reason) const {
+  [[noreturn]] void fail(const DataValue& d, const std::string& where, const std::string& reason) const {
     throw ScriptError(at(d, where) + reason, "");
   }
 
-  static const Datum* field(const Datum& table, std::string_view key) {
+  static const DataValue* field(const DataValue& table, std::string_view key) {
     for (const auto& [k, v] : table.entries)
-      if (k.kind == Datum::Kind::String && k.text == key) return v.kind == Datum::Kind::Nil ? nullptr : &v;
+      if (k.kind == DataValue::Kind::String && k.text == key) return v.kind == DataValue::Kind::Nil ? nullptr : &v;
     return nullptr;
   }
 
-  void knownKeys(const Datum& table, const std::string& where, std::initializer_list<const char*> known) const {
+  void knownKeys(const DataValue& table, const std::string& where, std::initializer_list<const char*> known) const {
     std::string list;
     for (const char* k : known) list += std::string(list.empty() ? "" : ", ") + k;
     for (const auto& [key, value] : table.entries) {
       bool ok = false;
-      for (const char* k : known) ok = ok || (key.kind == Datum::Kind::String && key.text == k);
+      for (const char* k : known) ok = ok || (key.kind == DataValue::Kind::String && key.text == k);
       if (ok) continue;
-      const std::string name = key.kind == Datum::Kind::String ? keyText(key) : "[" + keyText(key) + "]";
+      const std::string name =
+          key.kind == DataValue::Kind::String ? core::dataKeyText(key) : "[" + core::dataKeyText(key) + "]";
       fail(key.line ? key : value, where, "unknown key " + name + " (known: " + list + ")");
     }
   }
 
-  int64_t integer(const Datum& d, const std::string& where, double low, double high) const {
+  int64_t integer(const DataValue& d, const std::string& where, double low, double high) const {
     char range[96];
     std::snprintf(range, sizeof range, "%.0f..%.0f", low, high);
-    if (d.kind != Datum::Kind::Number || !std::isfinite(d.number) || d.number != std::floor(d.number))
-      fail(d, where, "expected a whole number in " + std::string(range) + ", got " + describe(d));
-    if (d.number < low || d.number > high) fail(d, where, describe(d) + " is outside " + range);
+    if (d.kind != DataValue::Kind::Number || !std::isfinite(d.number) || d.number != std::floor(d.number))
+      fail(d, where, "expected a whole number in " + std::string(range) + ", got " + core::describeData(d));
+    if (d.number < low || d.number > high) fail(d, where, core::describeData(d) + " is outside " + range);
     return static_cast<int64_t>(d.number);
   }
-  uint64_t wholeNumber(const Datum& d, const std::string& where, double low, double high) const {
+  uint64_t wholeNumber(const DataValue& d, const std::string& where, double low, double high) const {
     return static_cast<uint64_t>(integer(d, where, low, high));
   }
   // A box corner: a position on a face.
-  int32_t coordinate(const Datum& d, const std::string& where) const {
+  int32_t coordinate(const DataValue& d, const std::string& where) const {
     return static_cast<int32_t>(integer(d, where, -kMaxCoordinate, kMaxCoordinate));
   }
   // A list: keys 1, 2, ... n with no holes, each a table.
-  std::vector<const Datum*> list(const Datum& d, const std::string& where, const char* ofWhat) const {
-    if (d.kind != Datum::Kind::Table)
-      fail(d, where, std::string("expected a list of ") + ofWhat + ", got " + describe(d));
-    std::vector<const Datum*> items;
+  std::vector<const DataValue*> list(const DataValue& d, const std::string& where, const char* ofWhat) const {
+    if (d.kind != DataValue::Kind::Table)
+      fail(d, where, std::string("expected a list of ") + ofWhat + ", got " + core::describeData(d));
+    std::vector<const DataValue*> items;
     for (const auto& [key, value] : d.entries) {
-      const std::string item = where + "[" + keyText(key) + "]";
-      if (key.kind != Datum::Kind::Number || key.number != static_cast<double>(items.size() + 1))
+      const std::string item = where + "[" + core::dataKeyText(key) + "]";
+      if (key.kind != DataValue::Kind::Number || key.number != static_cast<double>(items.size() + 1))
         fail(key.line ? key : value, item,
              std::string("not item ") + std::to_string(items.size() + 1) + " of a list (" + where + " is a list of " +
                  ofWhat + ", items 1, 2, 3... with no holes)");
-      if (value.kind != Datum::Kind::Table)
-        fail(value, item, std::string("expected ") + ofWhat + ", got " + describe(value));
+      if (value.kind != DataValue::Kind::Table)
+        fail(value, item, std::string("expected ") + ofWhat + ", got " + core::describeData(value));
       items.push_back(&value);
     }
     return items;
   }
-  uint64_t frameKey(const Datum& key, const Datum& value, const std::string& where, const Plan& plan) const {
+  uint64_t frameKey(const DataValue& key, const DataValue& value, const std::string& where, const Plan& plan) const {
     return wholeNumber(key.line ? key : value, where + " (a frame)", 1, static_cast<double>(plan.frames));
   }
 
-  core::Button button(const Datum& d, const std::string& where) const {
+  core::Button button(const DataValue& d, const std::string& where) const {
     core::Button b{};
-    if (d.kind != Datum::Kind::String || !core::buttonFromName(d.text, b))
+    if (d.kind != DataValue::Kind::String || !core::buttonFromName(d.text, b))
       fail(d, where,
-           "unknown button " + (d.kind == Datum::Kind::String ? keyText(d) : describe(d)) +
+           "unknown button " + (d.kind == DataValue::Kind::String ? core::dataKeyText(d) : core::describeData(d)) +
                " (left, right, up, down, jump, restart, pause, reload)");
     return b;
   }
 
-  void readInput(const Datum& input, Plan& plan) const {
-    const std::vector<const Datum*> items =
+  void readInput(const DataValue& input, Plan& plan) const {
+    const std::vector<const DataValue*> items =
         list(input, "input", "{ hold = \"button\", from =, to = } or { press = \"button\", at =, frames = }");
     for (size_t i = 0; i < items.size(); ++i) {
-      const Datum& item = *items[i];
+      const DataValue& item = *items[i];
       const std::string where = "input[" + std::to_string(i + 1) + "]";
-      const Datum* hold = field(item, "hold");
-      const Datum* press = field(item, "press");
+      const DataValue* hold = field(item, "hold");
+      const DataValue* press = field(item, "press");
       if (hold && press) fail(*press, where, "give hold or press, not both");
       const auto last = static_cast<double>(plan.frames);
       uint64_t from = 0, to = 0;
@@ -584,7 +318,7 @@ class PlanReader {
         knownKeys(item, where, {"press", "at", "frames"});
         b = button(*press, where);
         from = wholeNumber(required(item, "at", where), where + ".at", 1, last);
-        const Datum* count = field(item, "frames");
+        const DataValue* count = field(item, "frames");
         to = from + (count ? wholeNumber(*count, where + ".frames", 1, last) : 1) - 1;
         if (to > plan.frames)
           fail(*count, where + ".frames",
@@ -597,64 +331,65 @@ class PlanReader {
     }
   }
 
-  const Datum& required(const Datum& table, const char* key, const std::string& where) const {
-    const Datum* v = field(table, key);
+  const DataValue& required(const DataValue& table, const char* key, const std::string& where) const {
+    const DataValue* v = field(table, key);
     if (!v) fail(table, where, std::string("'") + key + "' is missing");
     return *v;
   }
 
-  void readExpect(const Datum& expect, Plan& plan) const {
-    if (expect.kind != Datum::Kind::Table)
-      fail(expect, "expect", "expected a table of checks, got " + describe(expect));
+  void readExpect(const DataValue& expect, Plan& plan) const {
+    if (expect.kind != DataValue::Kind::Table)
+      fail(expect, "expect", "expected a table of checks, got " + core::describeData(expect));
     knownKeys(expect, "expect", {"goal_by", "deaths", "face", "inside", "hash"});
     const auto last = static_cast<double>(plan.frames);
-    if (const Datum* goal = field(expect, "goal_by")) plan.goalBy = wholeNumber(*goal, "expect.goal_by", 1, last);
-    if (const Datum* deaths = field(expect, "deaths"))
+    if (const DataValue* goal = field(expect, "goal_by")) plan.goalBy = wholeNumber(*goal, "expect.goal_by", 1, last);
+    if (const DataValue* deaths = field(expect, "deaths"))
       plan.deaths = static_cast<int>(wholeNumber(*deaths, "expect.deaths", 0, 2147483647.0));
-    if (const Datum* face = field(expect, "face")) {
-      if (face->kind != Datum::Kind::Table)
-        fail(*face, "expect.face", "expected { [frame] = face, ... }, got " + describe(*face));
+    if (const DataValue* face = field(expect, "face")) {
+      if (face->kind != DataValue::Kind::Table)
+        fail(*face, "expect.face", "expected { [frame] = face, ... }, got " + core::describeData(*face));
       for (const auto& [key, value] : face->entries) {
-        const std::string where = "expect.face[" + keyText(key) + "]";
+        const std::string where = "expect.face[" + core::dataKeyText(key) + "]";
         const uint64_t f = frameKey(key, value, where, plan);
         plan.faceAt[f] = static_cast<physics::MapPartId>(wholeNumber(value, where, 0, 4095));
         plan.faceWhere[f] = at(value, where);
       }
     }
-    if (const Datum* hash = field(expect, "hash")) {
-      if (hash->kind != Datum::Kind::Table)
-        fail(*hash, "expect.hash", "expected { [frame] = \"16 hex digits\", ... }, got " + describe(*hash));
+    if (const DataValue* hash = field(expect, "hash")) {
+      if (hash->kind != DataValue::Kind::Table)
+        fail(*hash, "expect.hash", "expected { [frame] = \"16 hex digits\", ... }, got " + core::describeData(*hash));
       for (const auto& [key, value] : hash->entries) {
-        const std::string where = "expect.hash[" + keyText(key) + "]";
+        const std::string where = "expect.hash[" + core::dataKeyText(key) + "]";
         const uint64_t f = frameKey(key, value, where, plan);
-        if (value.kind != Datum::Kind::String || value.text.size() != 16 ||
+        if (value.kind != DataValue::Kind::String || value.text.size() != 16 ||
             value.text.find_first_not_of("0123456789abcdef") != std::string::npos)
           fail(value, where,
-               "frame " + std::to_string(f) + ": state hash " + describe(value) + " is not 16 lower-case hex digits");
+               "frame " + std::to_string(f) + ": state hash " + core::describeData(value) +
+                   " is not 16 lower-case hex digits");
         plan.hashAt[f] = value.text;
       }
     }
-    if (const Datum* inside = field(expect, "inside")) {
-      const std::vector<const Datum*> items =
+    if (const DataValue* inside = field(expect, "inside")) {
+      const std::vector<const DataValue*> items =
           list(*inside, "expect.inside", "{ frame =, face =, box = { x0, y0, x1, y1 } }");
       for (size_t i = 0; i < items.size(); ++i) {
-        const Datum& item = *items[i];
+        const DataValue& item = *items[i];
         const std::string where = "expect.inside[" + std::to_string(i + 1) + "]";
         knownKeys(item, where, {"frame", "face", "box"});
         Box b{};
         b.frame = wholeNumber(required(item, "frame", where), where + ".frame", 1, last);
         b.face = static_cast<physics::MapPartId>(wholeNumber(required(item, "face", where), where + ".face", 0, 4095));
         b.where = at(*field(item, "face"), where + ".face");
-        const Datum& box = required(item, "box", where);
-        const std::vector<DatumEntry>& corners = box.entries;
-        bool isList = box.kind == Datum::Kind::Table && corners.size() == 4;
+        const DataValue& box = required(item, "box", where);
+        const std::vector<DataEntry>& corners = box.entries;
+        bool isList = box.kind == DataValue::Kind::Table && corners.size() == 4;
         for (size_t k = 0; isList && k < 4; ++k)
           isList =
-              corners[k].first.kind == Datum::Kind::Number && corners[k].first.number == static_cast<double>(k + 1);
-        if (!isList) fail(box, where + ".box", "expected { x0, y0, x1, y1 }, got " + describe(box));
+              corners[k].key.kind == DataValue::Kind::Number && corners[k].key.number == static_cast<double>(k + 1);
+        if (!isList) fail(box, where + ".box", "expected { x0, y0, x1, y1 }, got " + core::describeData(box));
         int32_t* out[] = {&b.x0, &b.y0, &b.x1, &b.y1};
         for (size_t k = 0; k < 4; ++k)
-          *out[k] = coordinate(corners[k].second, where + ".box[" + std::to_string(k + 1) + "]");
+          *out[k] = coordinate(corners[k].value, where + ".box[" + std::to_string(k + 1) + "]");
         if (b.x1 < b.x0 || b.y1 < b.y0)
           fail(box, where + ".box", "an inverted box: x0 <= x1 and y0 <= y1 (corners lower left, upper right)");
         plan.inside.push_back(b);

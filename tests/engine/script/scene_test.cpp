@@ -34,7 +34,8 @@ std::string manifestError(const std::string& text) {
 
 TEST(Manifest, ErrorsNameFileLineColumn) {
   EXPECT_EQ(manifestError("return {\n  name = 'x',\n  gravity = os.time(),\n}"),
-            "scene.lua:3:13: 'os': a manifest holds only strings, numbers, booleans and tables");
+            "scene.lua:3:13: 'os': a data file holds only strings, numbers, booleans, nil and tables (no names, "
+            "calls or expressions)");
   EXPECT_EQ(manifestError("return { stage = { solid = 'torus' } }"),
             "scene.lua:1:28: unknown solid 'torus' (known: tetrahedron, cube, octahedron, dodecahedron, icosahedron)");
   EXPECT_EQ(manifestError("return { systems = { 'scripting' }, scripts = { level = '../../etc/passwd.lua' } }"),
@@ -42,11 +43,13 @@ TEST(Manifest, ErrorsNameFileLineColumn) {
             "scripts/ (no '..', not absolute)");
   EXPECT_EQ(manifestError("return { scripts = { level = 'level.lua' } }"),
             "scene.lua:1:20: the scene has scripts but does not list \"scripting\" in its systems");
-  EXPECT_EQ(manifestError("return { name = 'a', name = 'b' }"), "scene.lua:1:22: 'name' is given twice");
-  EXPECT_EQ(manifestError("return { gravity = 1e999 }"), "scene.lua:1:20: '1e999' is not a number");
-  EXPECT_EQ(manifestError("return { colour = 3 }").substr(0, 40), "scene.lua:1:19: unknown field 'colour' (");
-  EXPECT_EQ(manifestError("return { name = 'x'"), "scene.lua:1:20: unexpected end of file (a '}' is missing)");
-  EXPECT_EQ(manifestError("return { name = 'unfinished }"), "scene.lua:1:30: unfinished string");
+  EXPECT_EQ(manifestError("return { name = 'a', name = 'b' }"),
+            "scene.lua:1:22: the key 'name' is given twice in one table");
+  EXPECT_EQ(manifestError("return { gravity = 1e999 }"),
+            "scene.lua:1:20: '1e999' is too large or too small for a number");
+  EXPECT_EQ(manifestError("return { colour = 3 }").substr(0, 40), "scene.lua:1:10: unknown field 'colour' (");
+  EXPECT_EQ(manifestError("return { name = 'x'"), "scene.lua:1:8: unfinished table (no '}' for this '{')");
+  EXPECT_EQ(manifestError("return { name = 'unfinished }"), "scene.lua:1:17: unfinished string");
 }
 
 // The audit's gaps: fractions where whole numbers are meant, mods that are not .lua paths in a

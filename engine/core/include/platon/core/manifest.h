@@ -1,35 +1,17 @@
-// A scene manifest: a Lua table literal that names what a scene needs. It is data, read here in
-// C++ without a Lua state (a scene with no scripts never creates one): `return { ... }` with
-// strings, numbers, booleans and nested tables, `--` comments. Anything else (a function call, an
-// expression, a variable) is an error at file:line:column. docs/scripting.md documents the fields.
+// A scene manifest: a Lua table literal that names what a scene needs. It is data, read in C++
+// without a Lua state by the data reader (lua_data.h; a scene with no scripts never creates one).
+// Anything else (a function call, an expression, a variable) is an error at file:line:column.
+// docs/scripting.md documents the fields.
 #pragma once
 #include <map>
-#include <memory>
 #include <optional>
 #include <string>
-#include <variant>
 #include <vector>
 
+#include "platon/core/lua_data.h"
 #include "platon/stage/polyhedron.h"
 
 namespace platon::core {
-
-struct DataValue;
-using DataTable = std::vector<std::pair<std::string, DataValue>>;  // keys in file order; list items "1", "2", ...
-
-struct DataValue {
-  std::variant<std::monostate, bool, double, std::string, std::shared_ptr<DataTable>> value;
-  int line = 0, column = 0;  // where it was written
-
-  const DataTable* table() const;
-  const std::string* string() const;
-  const double* number() const;
-  const bool* boolean() const;
-  const DataValue* field(std::string_view key) const;  // nullptr when absent or not a table
-};
-
-// Parses `text` (the file's contents); throws std::runtime_error "file:line:column: reason".
-DataValue parseDataFile(std::string_view text, const std::string& fileName);
 
 struct SceneManifest {
   std::string path;       // the manifest file
