@@ -12,10 +12,11 @@ fix=0
 [ "${1:-}" = "--fix" ] && { fix=1; shift; }
 build="${1:-$root/build}"
 
-# The project's C and C++ files: the tracked ones in a clone, every one under the source folders
-# otherwise (an unpacked archive).
+# The project's C and C++ files: in a clone, the tracked ones and the new ones not yet added (a
+# --fix before `git add` left four new files unformatted, and CI's style stage failed); every one
+# under the source folders otherwise (an unpacked archive).
 if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then
-  mapfile -t files < <(git ls-files '*.c' '*.cc' '*.cpp' '*.h' '*.hpp')
+  mapfile -t files < <(git ls-files --cached --others --exclude-standard '*.c' '*.cc' '*.cpp' '*.h' '*.hpp' | sort -u)
 else
   mapfile -t files < <(find physics engine apps testing tests bench -name '*.c' -o -name '*.cc' -o -name '*.cpp' -o -name '*.h' -o -name '*.hpp' | sort)
 fi

@@ -55,15 +55,15 @@ bool isHex(char c) { return isDigit(c) || (c >= 'a' && c <= 'f') || (c >= 'A' &&
 int hexValue(char c) { return isDigit(c) ? c - '0' : (c | 0x20) - 'a' + 10; }
 // Lua's identifier characters (LuaJIT counts every byte from 0x80 as one).
 bool isNameChar(char c) {
-  return isDigit(c) || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_' || static_cast<unsigned char>(c) >= 0x80;
+  return isDigit(c) || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_' ||
+         static_cast<unsigned char>(c) >= 0x80;
 }
 bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f' || c == '\n' || c == '\r'; }
 
 bool isKeyword(std::string_view w) {
-  static constexpr std::string_view kKeywords[] = {"and",   "break", "do",  "else", "elseif", "end",
-                                                   "false", "for",   "function", "goto", "if",   "in",
-                                                   "local", "nil",   "not", "or",   "repeat", "return",
-                                                   "then",  "true",  "until", "while"};
+  static constexpr std::string_view kKeywords[] = {
+      "and", "break", "do",  "else", "elseif", "end",    "false",  "for",  "function", "goto",  "if",
+      "in",  "local", "nil", "not",  "or",     "repeat", "return", "then", "true",     "until", "while"};
   for (std::string_view k : kKeywords)
     if (k == w) return true;
   return false;
@@ -384,7 +384,8 @@ class Reader {
           break;
         }
         default: {
-          if (!isDigit(e)) bad(atEnd() ? "unfinished string" : "unknown escape '\\" + visibleText(std::string(1, e)) + "'");
+          if (!isDigit(e))
+            bad(atEnd() ? "unfinished string" : "unknown escape '\\" + visibleText(std::string(1, e)) + "'");
           int byte = 0;
           for (int k = 0; k < 3 && isDigit(peek()); ++k) byte = byte * 10 + (peek() - '0'), advance();
           if (byte > 255) bad("\\ddd is past 255");
@@ -402,8 +403,7 @@ class Reader {
     size_t end = pos_;
     while (end < text_.size()) {
       const char c = text_[end];
-      if (isNameChar(c) || c == '.' ||
-          ((c == '-' || c == '+') && end > pos_ && (text_[end - 1] | 0x20) == exponent))
+      if (isNameChar(c) || c == '.' || ((c == '-' || c == '+') && end > pos_ && (text_[end - 1] | 0x20) == exponent))
         ++end;
       else
         break;
@@ -431,8 +431,7 @@ class Reader {
     }
     if (!ok || i != token.size()) {
       const std::string shown = visibleText(std::string(token.substr(0, 40)));
-      if (ok && (token.back() | 0x20) == 'l')
-        fail("'" + shown + "' is a 64-bit integer (a cdata), not a number");
+      if (ok && (token.back() | 0x20) == 'l') fail("'" + shown + "' is a 64-bit integer (a cdata), not a number");
       if (ok && (token.back() | 0x20) == 'i') fail("'" + shown + "' is a complex number (a cdata), not a number");
       fail("'" + shown + "' is not a number");
     }

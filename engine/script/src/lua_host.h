@@ -56,6 +56,9 @@ struct LuaLimits {
 
 // Interpreted instructions between two looks of the count hook, and what each look charges.
 inline constexpr int kTickSteps = 100;
+// What an error a sandbox catches (pcall, xpcall, coroutine.resume) or an engine call's failure
+// is charged: the unwinding costs 3 to 12 us (docs/scripting.md, Limits), 1,000 to 3,000 steps.
+inline constexpr int kErrorSteps = 3000;
 
 // Charges `steps` of C work (a C function's loop, where no hook runs) to the sandbox running now
 // and to the frame's budget; past the budget, or past the deadline, it stops that sandbox at its

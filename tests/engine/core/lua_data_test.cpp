@@ -3,14 +3,15 @@
 // literals (every escape and byte, number spellings, newline kinds, long brackets, key forms, and
 // some thousands of random texts, half of them broken); what it refuses names its line:column;
 // a key given twice in any spelling Lua takes as equal is refused; the caps on size and depth.
-#include <gtest/gtest.h>
+#include "platon/core/lua_data.h"
 
 #include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "platon/core/lua_data.h"
+#include <gtest/gtest.h>
+
 #include "platon/testing/lua_reference.h"
 #include "platon/testing/rng.h"
 
@@ -55,13 +56,24 @@ std::string escaped(const std::string& text) {
 
 TEST(LuaData, NumbersInEverySpellingReadAsLuaReadsThem) {
   LuaState lua;
-  const std::vector<std::string> mantissas = {"0",    "1",   "08",    "123456789012345678901234567890",
-                                              ".5",   "5.",  "1.25",  "9007199254740993",
-                                              "0.1",  "000", "2.50", "17976931348623157"};
+  const std::vector<std::string> mantissas = {"0",   "1",   "08",   "123456789012345678901234567890",
+                                              ".5",  "5.",  "1.25", "9007199254740993",
+                                              "0.1", "000", "2.50", "17976931348623157"};
   const std::vector<std::string> exponents = {"", "e0", "e+5", "E-3", "e270", "e-300", "E+0"};
-  const std::vector<std::string> hex = {"0x0",   "0xff",     "0XfF",      "0x1p4",  "0x.8",
-                                        "0x1.",  "0x1.8p-3", "0X1P+2",    "0xep1",  "0xFFFFFFFFFFFFFFFFF",
-                                        "0x10",  "0x7fffffff", "0x1.fffffffffffffp1023", "0xA.Bp2"};
+  const std::vector<std::string> hex = {"0x0",
+                                        "0xff",
+                                        "0XfF",
+                                        "0x1p4",
+                                        "0x.8",
+                                        "0x1.",
+                                        "0x1.8p-3",
+                                        "0X1P+2",
+                                        "0xep1",
+                                        "0xFFFFFFFFFFFFFFFFF",
+                                        "0x10",
+                                        "0x7fffffff",
+                                        "0x1.fffffffffffffp1023",
+                                        "0xA.Bp2"};
   std::vector<std::string> numbers = hex;
   for (const auto& m : mantissas)
     for (const auto& e : exponents) numbers.push_back(m + e);
@@ -98,7 +110,8 @@ TEST(LuaData, EveryByteAndEscapeReadsAsLuaReadsIt) {
       const std::string open = std::string("[") + level + "[", close = std::string("]") + level + "]";
       const std::string notClose = *level ? "]]" : "]=]";  // a bracket of another level is text
       strings.push_back("return " + open + nl + "a" + nl + notClose + "b" + nl + close);
-      strings.push_back(std::string("--") + open + nl + "comment " + notClose + " " + close + nl + "return " + open + close);
+      strings.push_back(std::string("--") + open + nl + "comment " + notClose + " " + close + nl + "return " + open +
+                        close);
     }
   for (const auto& text : strings) EXPECT_EQ(compare(lua.L.get(), text, false), "") << escaped(text);
 }
@@ -188,7 +201,9 @@ TEST(LuaData, SizeAndDepthAreCapped) {
     }
     return -1;
   };
-  auto nested = [](int n) { return "return " + std::string(static_cast<size_t>(n), '{') + std::string(static_cast<size_t>(n), '}'); };
+  auto nested = [](int n) {
+    return "return " + std::string(static_cast<size_t>(n), '{') + std::string(static_cast<size_t>(n), '}');
+  };
   EXPECT_EQ(kindOf(nested(core::kMaxDataDepth)), -1);
   EXPECT_EQ(kindOf(nested(core::kMaxDataDepth + 1)), static_cast<int>(DataError::Kind::TooLarge));
   std::string many = "return {";
@@ -204,8 +219,8 @@ TEST(LuaData, SizeAndDepthAreCapped) {
 TEST(LuaData, RandomTextsAreReadAsLuaReadsThemOrRefusedAtTheirPlace) {
   LuaState lua;
   platon::testing::Rng rng{2026};
-  const char* atoms[] = {"1",     "-2.5",   "0x1F",   ".5e3",  "'s'",     "\"q\\n\"", "[[l]]", "[=[\n]]]=]",
-                         "true",  "false",  "nil",    "'\\65'", "'\\x41'", "'\\z \n x'", "1e308", "0x1p-1022"};
+  const char* atoms[] = {"1",    "-2.5",  "0x1F", ".5e3",   "'s'",     "\"q\\n\"",   "[[l]]", "[=[\n]]]=]",
+                         "true", "false", "nil",  "'\\65'", "'\\x41'", "'\\z \n x'", "1e308", "0x1p-1022"};
   const char* names[] = {"a", "b", "_x", "and_", "k9"};
   const char* noise[] = {" ", "\n", "\r\n", "--c\n", "--[[c]]", "\t"};
   std::function<std::string(int)> value = [&](int depth) -> std::string {

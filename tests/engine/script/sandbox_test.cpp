@@ -787,7 +787,6 @@ TEST(StockLua, TheSandboxGivesWhatStockLuaJITGives) {
       "coroutine.status(coroutine.create(print))",
       "coroutine.wrap(function() coroutine.yield(1, 2) end)()",
       "coroutine.running()",
-      "coroutine.resume(coroutine.running())",
       "coroutine.yield()",
       "select('#', coroutine.resume(coroutine.create(function() end)))",
   };
@@ -799,6 +798,8 @@ TEST(StockLua, TheSandboxGivesWhatStockLuaJITGives) {
       {"string.format('%p', {})", "err string=bad argument #1 to 'format' (%p shows an address"},
       {"collectgarbage('count')", "err string=collectgarbage(\"count\") is not for sandboxes"},
       {"next({}, 'nokey')", "err string=invalid key to 'next'"},
+      // The sandbox's resume charges a caught error: its argument errors name it even in a tail call.
+      {"coroutine.resume(coroutine.running())", "err string=bad argument #1 to 'resume' (coroutine expected)"},
   };
   for (const auto& [e, result] : documented)
     EXPECT_EQ(sandboxResult(e).substr(0, std::string(result).size()), result) << e;
@@ -842,6 +843,33 @@ TEST(Messages, ThePlaceIsRealAndTheTracebackSurvives) {
 }
 
 // What a sandbox prints is capped a frame (503 MB of output in 60 frames), and charged.
+// A caught error costs microseconds of unwinding and only a few instructions: a loop of them ran
+// into the deadline (2 s), not the step budget. Each way of catching one is charged
+// (kErrorSteps), so every such loop meets the budget, in every process at the same point.
+TEST(CaughtErrors, ALoopOfCaughtErrorsMeetsTheStepBudgetNotTheDeadline) {
+  const char* loops[] = {
+      "while true do pcall(error, 'x') end",
+      "while true do pcall(error) end",
+      "while true do pcall(string.rep) end",                        // a C function's argument error
+      "while true do pcall(function() local x = nil + 1 end) end",  // the VM's own error
+      "while true do xpcall(error, function(m) return m end) end",
+      "while true do coroutine.resume(coroutine.create(error)) end",
+      "while true do pcall(coroutine.wrap(error)) end",
+      "local t = setmetatable({}, { __index = error }) while true do pcall(function() return t.x end) end",
+      "while true do pcall(pcall, error) pcall(select, -1) end",
+  };
+  for (const char* code : loops) {
+    // A deadline of 0.5 s: the budget's 3,333 charged errors take some 10-40 ms; uncharged, the
+    // budget allowed over a million of them (1.5-12 us each).
+    LuaLimits limits;
+    limits.deadlineNanoseconds = 500'000'000;
+    LuaHost host(limits);
+    const std::string error = runSandboxed(host, code);
+    EXPECT_NE(error.find("past the frame's script budget"), std::string::npos) << code << "\n" << error;
+    EXPECT_EQ(error.find("deadline"), std::string::npos) << code << "\n" << error;
+  }
+}
+
 TEST(Messages, PrintIsCappedAFrame) {
   LuaHost host;
   std::string printed;

@@ -1,12 +1,11 @@
 // The data reader's reference (core/lua_data.h): whether a value LuaJIT read is the value the
 // reader read. Shared by the data reader's tests and its fuzz target.
 #pragma once
-#include <lua.hpp>
-
 #include <bit>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <lua.hpp>
 #include <string>
 
 #include "platon/core/lua_data.h"
@@ -75,6 +74,5 @@ inline bool sameAsLua(lua_State* L, int index, const core::DataValue& v, std::st
   why = std::string("Lua reads a ") + lua_typename(L, type) + ", the reader " + core::describeData(v);
   return false;
 }
-
 
 }  // namespace platon::testing

@@ -23,9 +23,9 @@ struct DataValue {
   Kind kind = Kind::Nil;
   bool boolean = false;
   double number = 0;
-  std::string text;                 // a string's bytes; for Other, what it is ("a function")
-  std::vector<DataEntry> entries;   // a table's keys and values, in the order written
-  int line = 0, column = 0;         // where it was written (0: computed by Lua, not written)
+  std::string text;                // a string's bytes; for Other, what it is ("a function")
+  std::vector<DataEntry> entries;  // a table's keys and values, in the order written
+  int line = 0, column = 0;        // where it was written (0: computed by Lua, not written)
 
   bool isTable() const { return kind == Kind::Table; }
   bool isString() const { return kind == Kind::String; }
