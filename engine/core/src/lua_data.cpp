@@ -1,8 +1,9 @@
 #include "platon/core/lua_data.h"
 
-#include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <locale.h>
+#include <stdlib.h>
 #include <unordered_set>
 
 #include "platon/core/visible_text.h"
@@ -38,7 +39,8 @@ std::string describeData(const DataValue& d) {
 }
 
 std::string dataKeyText(const DataValue& key) {
-  if (key.kind == DataValue::Kind::String) return "'" + visibleText(key.text) + "'";
+  if (key.kind == DataValue::Kind::String)
+    return "'" + visibleText(key.text.substr(0, 60)) + (key.text.size() > 60 ? "...'" : "'");
   return describeData(key);
 }
 
@@ -95,6 +97,11 @@ class Reader {
   Reader(std::string_view text, const std::string& file) : text_(text), file_(file) {}
 
   DataValue file() {
+    // As LuaJIT's lexer (lj_lex_setup): a UTF-8 byte order mark, then a first line starting with
+    // '#' (a #! line), are skipped.
+    if (text_.substr(0, 3) == "\xEF\xBB\xBF") pos_ = 3;
+    if (peek() == '#')
+      while (!atEnd() && !atNewline()) advance();
     skipSpace();
     if (name() != "return") fail("a data file is 'return { ... }'");
     skip(6);
@@ -233,7 +240,7 @@ class Reader {
         fail(atEnd() ? "unexpected end of file (a value is missing)"
                      : "unexpected '" + visibleText(std::string(1, c)) + "' (a value is missing)");
       } else {
-        fail("'" + visibleText(std::string(w)) +
+        fail("'" + visibleText(std::string(w.substr(0, 40))) +
              "': a data file holds only strings, numbers, booleans, nil and tables (no names, calls or expressions)");
       }
     }
@@ -287,7 +294,8 @@ class Reader {
         if (peek() == '=' && peek(1) != '=') {
           if (isKeyword(w))
             failAt(key.line, key.column,
-                   "'" + std::string(w) + "' is a Lua keyword, not a name: write [\"" + std::string(w) + "\"] =");
+                   "'" + std::string(w) + "' is a Lua keyword, not a name: write [\"" + std::string(w) +
+                       "\"] =");  // a keyword: short
           advance();
           count();
           key.kind = DataValue::Kind::String;
@@ -301,6 +309,7 @@ class Reader {
         keyed = true;
       }
       if (!keyed) {
+        count();  // a list item's key is a value read too
         key.kind = DataValue::Kind::Number;
         key.number = nextIndex++;
       }
@@ -435,11 +444,14 @@ class Reader {
       if (ok && (token.back() | 0x20) == 'i') fail("'" + shown + "' is a complex number (a cdata), not a number");
       fail("'" + shown + "' is not a number");
     }
-    double v = 0;
-    const auto [stop, error] = std::from_chars(token.data() + start, token.data() + token.size(), v,
-                                               hex ? std::chars_format::hex : std::chars_format::general);
-    if (error != std::errc() || stop != token.data() + token.size() || !std::isfinite(v))
-      fail("'" + visibleText(std::string(token.substr(0, 40))) + "' is too large or too small for a number");
+    // strtod in the C locale reads what LuaJIT reads, correctly rounded, underflow (1e-400: 0,
+    // 1e-310: a subnormal) included; std::from_chars calls underflow an error.
+    static const locale_t cLocale = newlocale(LC_ALL_MASK, "C", nullptr);
+    const std::string text(token);
+    char* stop = nullptr;
+    const double v = strtod_l(text.c_str(), &stop, cLocale);
+    if (stop != text.c_str() + text.size() || !std::isfinite(v))
+      fail("'" + visibleText(text.substr(0, 40)) + "' is too large for a number");
     skip(token.size());
     return v;
   }

@@ -311,14 +311,38 @@ local SAFE = { "assert", "error", "pcall", "select", "tonumber", "type", "unpack
 -- of 1,000 to 3,000 steps; `while true do pcall(error) end` ran into the deadline, not the
 -- budget). So every error a sandbox catches (pcall, xpcall, coroutine.resume) is charged
 -- C.chargeError's steps (kErrorSteps in lua_host.h).
-local chargeError, resume = C.chargeError, coroutine.resume
+local chargeError, resume, create = C.chargeError, coroutine.resume, coroutine.create
+local enterCoroutine, leaveCoroutine = C.enterCoroutine, C.leaveCoroutine
 local function charged(ok, ...)
   if not ok then chargeError() end
   return ok, ...
 end
 local pcall, unpack = pcall, unpack
 local function countedPcall(f, ...) return charged(pcall(f, ...)) end
-local function countedResume(co, ...) return charged(resume(co, ...)) end
+-- A coroutine resumed inside another nests C frames in LuaJIT (deep nesting overflows the C
+-- stack): resumes nest at most as deep as C callbacks do (kMaxCallbackDepth), on the same count,
+-- which starts again at each call from the engine. wrap is built on the counted resume, so each
+-- level a wrapped coroutine's error passes through is charged.
+local function leave(ok, ...)
+  leaveCoroutine()
+  if not ok then chargeError() end
+  return ok, ...
+end
+local function countedResume(co, ...)
+  enterCoroutine()
+  return leave(resume(co, ...))
+end
+local function unwrap(ok, ...)
+  if ok then return ... end
+  error((...), 0)  -- the coroutine's error object as it is, as stock wrap raises it
+end
+local function countedWrap(f)
+  if type(f) ~= "function" then
+    error("bad argument #1 to 'wrap' (function expected, got " .. type(f) .. ")", 2)
+  end
+  local co = create(f)
+  return function(...) return unwrap(countedResume(co, ...)) end
+end
 
 -- LuaJIT runs an xpcall handler where the error was raised, before unwinding; for the error the
 -- time budget raises, that is inside the hook, where no hook fires, so an endless handler would
@@ -345,7 +369,7 @@ local function newSandbox(name, api)
   deterministicRandom(env.math)
   env.bit = copy(bit)
   env.coroutine = copy(coroutine)
-  env.coroutine.resume = countedResume
+  env.coroutine.resume, env.coroutine.wrap = countedResume, countedWrap
   env.pcall = countedPcall
   env.os = { time = safeTime, date = safeDate, clock = safeClock }
   env.collectgarbage = function(option)

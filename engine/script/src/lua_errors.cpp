@@ -101,7 +101,10 @@ int tracebackHandler(lua_State* L) {
   }
   const char* message = lua_tostring(L, 1);
   if (!message) message = lua_pushfstring(L, "(error object is a %s value)", luaL_typename(L, 1));
-  if (!placedOnStack(L, message) &&
+  // A stop's message was placed when the stop was decided; it is raised again at every instruction
+  // until the call returns, so where it is raised last is no place of its own.
+  const bool stop = s.expired && s.stopMessage == message;
+  if (!stop && !placedOnStack(L, message) &&
       (s.current != kNoSandbox || !lua_isstring(L, 1) || std::strstr(message, "stack overflow"))) {
     std::string at = where(L, s);
     if (at.empty() && s.current != kNoSandbox) at = s.sandboxes[s.current].name + ": ";

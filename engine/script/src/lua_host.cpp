@@ -51,6 +51,26 @@ int chargeCaughtError(lua_State* L) {
   return 0;
 }
 
+// A sandbox's coroutine resumed inside another (the prelude's resume): on the C callbacks' count.
+// The error has no place of its own: the message handler puts the sandbox's line in front.
+int enterCoroutine(lua_State* L) {
+  LuaHost::Shared& s = sharedOf(L);
+  if (s.current == kNoSandbox) return 0;
+  if (s.callbackDepth >= kMaxCallbackDepth) {
+    lua_pushfstring(L, "coroutines nested more than %d deep (a coroutine that resumes another without end?)",
+                    kMaxCallbackDepth);
+    return lua_error(L);
+  }
+  ++s.callbackDepth;
+  return 0;
+}
+
+int leaveCoroutine(lua_State* L) {
+  LuaHost::Shared& s = sharedOf(L);
+  if (s.current != kNoSandbox && s.callbackDepth > 0) --s.callbackDepth;
+  return 0;
+}
+
 // The game clock, in frames: what a sandbox's os.time, os.clock and os.date read.
 int gameFrames(lua_State* L) {
   lua_pushnumber(L, static_cast<double>(sharedOf(L).gameFrame));
@@ -102,6 +122,10 @@ void LuaHost::openTrusted() {
   lua_setfield(L_, -2, "countedComparator");
   lua_pushcfunction(L_, chargeCaughtError);
   lua_setfield(L_, -2, "chargeError");
+  lua_pushcfunction(L_, enterCoroutine);
+  lua_setfield(L_, -2, "enterCoroutine");
+  lua_pushcfunction(L_, leaveCoroutine);
+  lua_setfield(L_, -2, "leaveCoroutine");
   setPatternFunctions(L_, -1);
   call(1, 3);
   lua_setfield(L_, LUA_REGISTRYINDEX, "platon.tostring");
@@ -286,6 +310,7 @@ bool LuaHost::callSandboxed(int sandbox, int nargs, int nresults) {
     // tick, which no look counts: so its charge depends on nothing that ran before it.
     hookForSandbox(s);
     s.callbackDepth = 0;
+    s.stopMessage.clear();  // a stopped trusted call's, which a memory stop would take for its own
     s.frameSteps += kTickSteps;
     box.spent += kTickSteps;
   }

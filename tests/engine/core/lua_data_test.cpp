@@ -130,6 +130,10 @@ TEST(LuaData, TablesKeysAndCommentsReadAsLuaReadsThem) {
       "-- comment\nreturn --[[ inline ]] { a --[==[ x ]==] = -- line\n 1 } ; -- after",
       "return\t{\va\f=\r1\r\n}",
       "return 'single' ;",
+      "\xEF\xBB\xBFreturn { bom = true }",
+      "#!/usr/bin/env platon\nreturn { shebang = 1 }",
+      "return { tiny = 1e-400, subnormal = 1e-310, hex = 0x1p-1074 }",
+      "return { caf\xC3\xA9 = 1 }",
   };
   for (const auto& text : tables) EXPECT_EQ(compare(lua.L.get(), text, false), "") << escaped(text);
 }
@@ -159,7 +163,7 @@ TEST(LuaData, WhatIsNotDataIsRefusedAtItsPlace) {
       {"--[[ open\nreturn 1", "t.lua:1:3: unfinished long comment (no ]])"},
       {"return 0x10LL", "t.lua:1:8: '0x10LL' is a 64-bit integer (a cdata), not a number"},
       {"return 3i", "t.lua:1:8: '3i' is a complex number (a cdata), not a number"},
-      {"return 1e999", "t.lua:1:8: '1e999' is too large or too small for a number"},
+      {"return 1e999", "t.lua:1:8: '1e999' is too large for a number"},
       {"return 1..2", "t.lua:1:8: '1..2' is not a number"},
       {"return 0x", "t.lua:1:8: '0x' is not a number"},
       {"return -'a'", "t.lua:1:9: '-' in data is the sign of a number"},

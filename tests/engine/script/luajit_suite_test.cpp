@@ -5,6 +5,7 @@
 // third-party is copied in) and CI cannot fetch it (Debian's archive has no package of it): set
 // PLATON_LUAJIT_TESTS to a checkout's test/ folder; tools/test passes it on when it is set, and
 // says when it is not. StockLua (sandbox_test.cpp) is the part CI always runs.
+#include <cctype>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -51,6 +52,18 @@ std::string namedRefusal(const std::string& error) {
   return "";
 }
 
+// Whether `code` calls or indexes `name` as a whole identifier ("debug.getinfo", "load(", not
+// "payload(").
+bool uses(const std::string& code, const std::string& name) {
+  for (size_t at = code.find(name); at != std::string::npos; at = code.find(name, at + 1)) {
+    const char before = at > 0 ? code[at - 1] : ' ';
+    const char after = at + name.size() < code.size() ? code[at + name.size()] : ' ';
+    if (!std::isalnum(static_cast<unsigned char>(before)) && before != '_' && (after == '.' || after == '('))
+      return true;
+  }
+  return false;
+}
+
 // The refusal a failing test ran into, or "": its error names what the sandbox leaves out, or
 // its code uses it (an xpcall handler that calls debug.getlocal fails inside, and the test then
 // fails on what the handler should have returned).
@@ -58,11 +71,9 @@ std::string refusal(const SuiteTest& t, const std::string& error) {
   for (const char* c : kCountsGlobals)
     if (t.name.rfind(c, 0) == 0) return "the sandbox's globals are the safe part of LuaJIT's";
   if (std::string named = namedRefusal(error); !named.empty()) return named;
-  for (const char* name : kLeftOut) {
-    const std::string n = name;
-    if (n != "require" && (t.code.find(n + ".") != std::string::npos || t.code.find(n + "(") != std::string::npos))
-      return "the test uses " + n + ", which is not in the sandbox";
-  }
+  for (const char* name : kLeftOut)
+    if (std::string(name) != "require" && uses(t.code, name))
+      return "the test uses " + std::string(name) + ", which is not in the sandbox";
   return "";
 }
 

@@ -857,6 +857,8 @@ TEST(CaughtErrors, ALoopOfCaughtErrorsMeetsTheStepBudgetNotTheDeadline) {
       "while true do pcall(coroutine.wrap(error)) end",
       "local t = setmetatable({}, { __index = error }) while true do pcall(function() return t.x end) end",
       "while true do pcall(pcall, error) pcall(select, -1) end",
+      // One error unwound through 40 wrapped coroutines: each level is charged.
+      "local function f(n) if n < 1 then error() end return coroutine.wrap(f)(n-1) end while 1 do pcall(f, 40) end",
   };
   for (const char* code : loops) {
     // A deadline of 0.5 s: the budget's 3,333 charged errors take some 10-40 ms; uncharged, the
@@ -868,6 +870,21 @@ TEST(CaughtErrors, ALoopOfCaughtErrorsMeetsTheStepBudgetNotTheDeadline) {
     EXPECT_NE(error.find("past the frame's script budget"), std::string::npos) << code << "\n" << error;
     EXPECT_EQ(error.find("deadline"), std::string::npos) << code << "\n" << error;
   }
+}
+
+// Coroutines resumed inside coroutines nest C frames in LuaJIT (deep nesting overflows the C
+// stack): they nest at most 50 deep, an error at the script's line, by wrap or by resume.
+TEST(CaughtErrors, CoroutinesNestAtMostFiftyDeep) {
+  EXPECT_EQ(runSandboxed("local function f() return coroutine.wrap(f)() end\nf()").substr(0, 60),
+            "mod.lua:2: coroutines nested more than 50 deep (a coroutine ");
+  // resume catches the error where it is raised, and each level goes on: it ends, nothing crashed.
+  EXPECT_EQ(runSandboxed("local n = 0\nlocal function f() n = n + 1 coroutine.resume(coroutine.create(f)) end\n"
+                         "f()\nassert(n == 51, n)"),
+            "");
+  EXPECT_EQ(runSandboxed("local w = coroutine.wrap(function() end) w()\nassert(select(2, pcall(w)) == "
+                         "'cannot resume dead coroutine')\nassert(select('#', coroutine.wrap(function(...) return ... "
+                         "end)(1, nil, 3, nil)) == 4)"),
+            "");
 }
 
 TEST(Messages, PrintIsCappedAFrame) {

@@ -59,7 +59,7 @@ class DataError : public std::runtime_error {
 };
 
 inline constexpr int kMaxDataDepth = 32;          // tables nested in tables
-inline constexpr size_t kMaxDataValues = 500000;  // keys and values in one file (each is ~100 bytes read)
+inline constexpr size_t kMaxDataValues = 250000;  // keys and values in one file (each costs 100-400 bytes read)
 
 // Reads `text` (the file's contents); throws DataError "file:line:column: reason".
 DataValue readLuaData(std::string_view text, const std::string& fileName);
