@@ -344,6 +344,26 @@ local function countedWrap(f)
   return function(...) return unwrap(countedResume(co, ...)) end
 end
 
+-- error(m, level) counts the script's frames as stock Lua does: the counted pcall above adds a
+-- frame of this prelude between a function and the one that called pcall, which error(m, 3) would
+-- otherwise name ("platon/sandbox:NNN:") instead of the script's line.
+local getinfo, PRELUDE = debug.getinfo, debug.getinfo(1, "S").source
+local function countedError(message, level)
+  if level == nil then level = 1 end
+  if type(level) ~= "number" then return error(message, level) end  -- stock's own argument error
+  if level < 2 then
+    error(message, level > 0 and level + 1 or level)  -- not a tail call: level 2 is the caller
+  end
+  local frame, seen = 2, 1  -- frame 2: the function that called error, its level 1
+  while seen < level do
+    frame = frame + 1
+    local info = getinfo(frame, "S")
+    if not info then break end
+    if info.source ~= PRELUDE then seen = seen + 1 end
+  end
+  error(message, frame)  -- not a tail call: this frame is level 1 of the count
+end
+
 -- LuaJIT runs an xpcall handler where the error was raised, before unwinding; for the error the
 -- time budget raises, that is inside the hook, where no hook fires, so an endless handler would
 -- never be stopped. The sandbox's xpcall runs the handler after unwinding instead.
@@ -370,7 +390,7 @@ local function newSandbox(name, api)
   env.bit = copy(bit)
   env.coroutine = copy(coroutine)
   env.coroutine.resume, env.coroutine.wrap = countedResume, countedWrap
-  env.pcall = countedPcall
+  env.pcall, env.error = countedPcall, countedError
   env.os = { time = safeTime, date = safeDate, clock = safeClock }
   env.collectgarbage = function(option)
     if option == "count" then

@@ -887,6 +887,20 @@ TEST(CaughtErrors, CoroutinesNestAtMostFiftyDeep) {
             "");
 }
 
+// error(m, level) names the line stock Lua names: the sandbox's counted pcall adds a frame of its
+// own that error(m, 3) named ("platon/sandbox:NNN:") before.
+TEST(Messages, ErrorLevelsCountTheScriptsFramesAsStockLuaDoes) {
+  EXPECT_EQ(runSandboxed("local function f() error('deep', 3) end\nlocal ok, m = pcall(f)\n"
+                         "assert(m == 'mod.lua:2: deep', m)"),
+            "");
+  EXPECT_EQ(runSandboxed("local function f() error('two', 2) end\nlocal ok, m = pcall(f)\n"
+                         "assert(m == 'two', m)"),  // level 2 is pcall, a C function: no place
+            "");
+  EXPECT_EQ(runSandboxed("local ok, m = pcall(error, 'zero', 0)\nassert(m == 'zero', m)"), "");
+  EXPECT_EQ(runSandboxed("local ok, m = pcall(function() error('one') end)\nassert(m == 'mod.lua:1: one', m)"), "");
+  EXPECT_EQ(runSandboxed("error('x', 'a')").substr(0, 46), "mod.lua:1: bad argument #2 to 'error' (number ");
+}
+
 TEST(Messages, PrintIsCappedAFrame) {
   LuaHost host;
   std::string printed;
