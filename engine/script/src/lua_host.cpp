@@ -111,21 +111,19 @@ void LuaHost::openTrusted() {
   // would run uncounted (and whether one compiles differs from one process to the next).
   loadString(sandboxPrelude(), "=platon/sandbox", Trust::Trusted);
   luaJIT_setmode(L_, -1, LUAJIT_MODE_ALLFUNC | LUAJIT_MODE_OFF);
+  static const luaL_Reg kPreludeFunctions[] = {{"print", printToSink},
+                                               {"frames", gameFrames},
+                                               {"orderedKeys", orderedKeys},
+                                               {"countedComparator", countedComparator},
+                                               {"chargeError", chargeCaughtError},
+                                               {"enterCoroutine", enterCoroutine},
+                                               {"leaveCoroutine", leaveCoroutine},
+                                               {nullptr, nullptr}};
   lua_newtable(L_);
-  lua_pushcfunction(L_, printToSink);
-  lua_setfield(L_, -2, "print");
-  lua_pushcfunction(L_, gameFrames);
-  lua_setfield(L_, -2, "frames");
-  lua_pushcfunction(L_, orderedKeys);
-  lua_setfield(L_, -2, "orderedKeys");
-  lua_pushcfunction(L_, countedComparator);
-  lua_setfield(L_, -2, "countedComparator");
-  lua_pushcfunction(L_, chargeCaughtError);
-  lua_setfield(L_, -2, "chargeError");
-  lua_pushcfunction(L_, enterCoroutine);
-  lua_setfield(L_, -2, "enterCoroutine");
-  lua_pushcfunction(L_, leaveCoroutine);
-  lua_setfield(L_, -2, "leaveCoroutine");
+  for (const luaL_Reg* f = kPreludeFunctions; f->name; ++f) {
+    lua_pushcfunction(L_, f->func);
+    lua_setfield(L_, -2, f->name);
+  }
   setPatternFunctions(L_, -1);
   call(1, 3);
   lua_setfield(L_, LUA_REGISTRYINDEX, "platon.tostring");
