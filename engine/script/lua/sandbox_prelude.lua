@@ -12,6 +12,30 @@ local function copy(t)
   return c
 end
 
+-- C work over bytes and values. A library function that makes or reads a long string, or pushes
+-- or moves many values, loops in C, where no hook counts (`while true do local r = s:upper() end`
+-- over 100 KB spent seconds inside a budget of steps). Each such function is charged before it
+-- runs, a step per 16 bytes and a step per value (C.chargeWork), and then tail-called, so an error
+-- it raises still names the script's line and the function as the script called it.
+local chargeWork = C.chargeWork
+local function bytesOf(v)  -- what v is as a string: its bytes (a number's at most 24), or none
+  local kind = type(v)
+  if kind == "string" then return #v end
+  if kind == "number" then return 24 end
+  return 0
+end
+-- The length of string.sub(s, i, j) by string.sub's own rules, for a string of `len` bytes
+-- (0 when an index is not a number: the call raises its own error).
+local function span(len, i, j)
+  i, j = tonumber(i), tonumber(j)
+  if not i or not j then return 0 end
+  if i < 0 then i = len + i + 1 end
+  if j < 0 then j = len + j + 1 end
+  if i < 1 then i = 1 end
+  if j > len then j = len end
+  return j >= i and j - i + 1 or 0
+end
+
 -- tostring with no address in it: a table, function or coroutine without __tostring is named by
 -- the order in which tostring first saw it.
 local ids, lastId = setmetatable({}, { __mode = "k" }), 0
@@ -40,12 +64,17 @@ local function safeFormat(f, ...)
           .. "use tostring)", 2)
   end
   local n = select("#", ...)
-  if n == 0 then return format(f) end
-  local args = { ... }
+  if n == 0 then
+    chargeWork(bytesOf(f), 0)
+    return format(f)
+  end
+  local args, bytes = { ... }, bytesOf(f)
   for i = 1, n do
     local kind = type(args[i])
     if kind ~= "string" and kind ~= "number" then args[i] = safeTostring(args[i]) end
+    bytes = bytes + bytesOf(args[i])
   end
+  chargeWork(bytes, n)
   return format(f, unpack(args, 1, n))
 end
 
@@ -55,6 +84,54 @@ local methods = copy(string)
 methods.dump = nil
 methods.find, methods.match, methods.gmatch, methods.gsub = C.find, C.match, C.gmatch, C.gsub
 methods.format = safeFormat
+local rep, upper, lower, reverse, sub, byte, char = string.rep, string.upper, string.lower, string.reverse,
+                                                    string.sub, string.byte, string.char
+local MAX_STRING = 0x7fffff00  -- LuaJIT's longest string: past it rep raises its own error
+methods.rep = function(...)
+  local s, n, sep = ...
+  n = tonumber(n)
+  if n and n > 0 then
+    local bytes = (bytesOf(s) + bytesOf(sep)) * n
+    if bytes <= MAX_STRING then chargeWork(bytes, 0) end
+  end
+  return rep(...)
+end
+-- Up to SHORT bytes or values, a call's work is less than the wrapper's own instructions, which
+-- the hook counts: only longer ones are charged (byte and sub run in parsers' inner loops).
+local SHORT = 64
+methods.upper = function(...)
+  local s = ...
+  if type(s) == "string" and #s > SHORT then chargeWork(#s, 0) end
+  return upper(...)
+end
+methods.lower = function(...)
+  local s = ...
+  if type(s) == "string" and #s > SHORT then chargeWork(#s, 0) end
+  return lower(...)
+end
+methods.reverse = function(...)
+  local s = ...
+  if type(s) == "string" and #s > SHORT then chargeWork(#s, 0) end
+  return reverse(...)
+end
+methods.sub = function(...)
+  local s, i, j = ...
+  if type(s) == "string" and #s > SHORT then chargeWork(span(#s, i, j == nil and -1 or j), 0) end
+  return sub(...)
+end
+methods.byte = function(...)
+  local s, i, j = ...
+  if type(s) == "string" and #s > SHORT then
+    if i == nil then i = 1 end
+    chargeWork(0, span(#s, i, j == nil and i or j))
+  end
+  return byte(...)
+end
+methods.char = function(...)
+  local n = select("#", ...)
+  if n > SHORT then chargeWork(0, n) end
+  return char(...)
+end
 local stringMeta = getmetatable("")
 stringMeta.__index = methods
 stringMeta.__metatable = "locked"
@@ -190,14 +267,65 @@ local function refuseView(t, what)
   local view = views[t]
   if view then error(view.name .. " is read-only (tried to " .. what .. " in it)", 3) end
 end
-local insert, remove = table.insert, table.remove
+local insert, remove, tconcat, maxn = table.insert, table.remove, table.concat, table.maxn
+-- insert and remove at a place move every value after it.
+local function moved(t, pos)
+  pos = tonumber(pos)
+  if type(t) ~= "table" or not pos then return 0 end
+  local after = #t - pos + 1
+  return after > 0 and after or 0
+end
 local function safeInsert(t, ...)
   refuseView(t, "insert")
+  if select("#", ...) >= 2 then chargeWork(0, moved(t, (...))) end
   return insert(t, ...)
 end
 local function safeRemove(t, ...)
   refuseView(t, "remove")
+  if select("#", ...) >= 1 then chargeWork(0, moved(t, (...))) end
   return remove(t, ...)
+end
+-- concat reads each value up to the first it cannot join: C.chargeConcat walks them first.
+local chargeConcat = C.chargeConcat
+local function safeConcat(...)
+  chargeConcat(...)
+  return tconcat(...)
+end
+-- unpack pushes each value (past about 8,000, LUAI_MAXCSTACK, it raises its own error).
+local MAX_VALUES = 8000
+local rawUnpack = unpack
+local function safeUnpack(...)
+  local t, i, j = ...
+  if type(t) == "table" then
+    i, j = tonumber(i == nil and 1 or i), tonumber(j == nil and #t or j)
+    if i and j and j >= i then chargeWork(0, j - i + 1 <= MAX_VALUES and j - i + 1 or 0) end
+  end
+  return rawUnpack(...)
+end
+-- maxn walks every key in C: here the walk is interpreted, so the hook counts it (the largest
+-- positive numeric key does not depend on the order of the walk).
+local function safeMaxn(...)
+  local t = ...
+  if type(t) ~= "table" then return maxn(...) end  -- stock's own argument error
+  local most = 0
+  for k in next, t do
+    if type(k) == "number" and k > most then most = k end
+  end
+  return most
+end
+-- select copies the values after n (for i = 1, select("#", ...) do select(i, ...) end is n^2/2).
+local rawSelect = select
+local function safeSelect(...)
+  local n = rawSelect("#", ...)
+  if n > SHORT then chargeWork(0, n) end
+  return rawSelect(...)
+end
+-- tonumber reads the whole string.
+local rawTonumber = tonumber
+local function safeTonumber(...)
+  local v = ...
+  if type(v) == "string" and #v > SHORT then chargeWork(#v, 0) end
+  return rawTonumber(...)
 end
 local function safeForeach(t, f)
   if type(t) ~= "table" then error("bad argument #1 to 'foreach' (table expected, got " .. type(t) .. ")", 2) end
@@ -266,6 +394,7 @@ local function safeDate(f, time)
     error("bad argument #1 to 'date' (string expected, got " .. type(f) .. ")", 2)
   end
   f = tostring(f)
+  chargeWork(#f, 0)
   if f:sub(1, 1) == "!" then f = f:sub(2) end
   if time ~= nil and type(time) ~= "number" then
     error("bad argument #2 to 'date' (number expected, got " .. type(time) .. ")", 2)
@@ -385,6 +514,8 @@ local function newSandbox(name, api)
   env.string = copy(methods)
   env.table = copy(table)
   env.table.sort, env.table.insert, env.table.remove, env.table.foreach = safeSort, safeInsert, safeRemove, safeForeach
+  env.table.concat, env.table.maxn = safeConcat, safeMaxn
+  env.unpack, env.select, env.tonumber = safeUnpack, safeSelect, safeTonumber
   env.math = copy(math)
   deterministicRandom(env.math)
   env.bit = copy(bit)
@@ -395,14 +526,18 @@ local function newSandbox(name, api)
   env.collectgarbage = function(option)
     if option == "count" then
       error("collectgarbage(\"count\") is not for sandboxes: the Lua state's memory differs from one run to "
-            .. "the next (JIT traces, the engine's own scripts), and what a sandbox sees must not (the engine "
+            .. "the next (the engine's own scripts, LuaJIT's hash seeds), and what a sandbox sees must not (the engine "
             .. "stops a sandbox that uses too much: docs/scripting.md, Limits)", 2)
     end
     error("collectgarbage: a sandbox may not drive the garbage collector", 2)
   end
   env.print = function(...)
-    local parts = {}
-    for i = 1, select("#", ...) do parts[i] = safeTostring((select(i, ...))) end
+    local parts, bytes = {}, 0
+    for i = 1, select("#", ...) do
+      parts[i] = safeTostring((select(i, ...)))
+      bytes = bytes + bytesOf(parts[i])
+    end
+    chargeWork(bytes, 0)
     printSink(name, concat(parts, "\t"))
   end
   env.platon = readonly(api, "platon")

@@ -51,6 +51,52 @@ int chargeCaughtError(lua_State* L) {
   return 0;
 }
 
+// C work over bytes and values (the prelude's string and table wrappers, before the call): a step
+// per 16 bytes a library function makes or reads, a step per value it pushes or moves. Copying 16
+// bytes costs about what an interpreted instruction does (docs/scripting.md, Limits).
+void chargeBytesAndValues(lua_State* L, double bytes, double values) {
+  // What cannot fit in the state's memory is never made: the allocator refuses it (a memory stop).
+  if (bytes > static_cast<double>(sharedOf(L).limits.memoryBytes)) bytes = 0;
+  const double steps = bytes / 16 + values;
+  // Past any budget already (and not NaN): a huge count is charged as the most a budget holds.
+  constexpr double kMost = 4.0e18;
+  chargeSteps(L, steps > 0 ? static_cast<int64_t>(std::min(steps, kMost)) : 0);
+}
+
+int chargeLibraryWork(lua_State* L) {
+  chargeBytesAndValues(L, lua_tonumber(L, 1), lua_tonumber(L, 2));
+  return 0;
+}
+
+// table.concat's work, before it runs: the bytes of each value it will join (a number's at most
+// 24) and of the separators, up to the first value it cannot join (where it raises). This walk is
+// as long as concat's own, and charged, so a loop of joins is stopped by the budget.
+int chargeConcat(lua_State* L) {
+  if (lua_type(L, 1) != LUA_TTABLE) return 0;  // concat raises its own argument error
+  size_t between = 0;
+  if (lua_type(L, 2) == LUA_TSTRING) lua_tolstring(L, 2, &between);
+  if (lua_type(L, 2) == LUA_TNUMBER) between = 24;
+  // Bounds as concat reads them; any other is concat's own error (or an empty join).
+  if (!lua_isnoneornil(L, 3) && !lua_isnumber(L, 3)) return 0;
+  if (!lua_isnoneornil(L, 4) && !lua_isnumber(L, 4)) return 0;
+  const double first = lua_isnoneornil(L, 3) ? 1 : lua_tonumber(L, 3);
+  const double last = lua_isnoneornil(L, 4) ? static_cast<double>(lua_objlen(L, 1)) : lua_tonumber(L, 4);
+  if (!(first >= INT32_MIN && last <= INT32_MAX)) return 0;
+  double bytes = 0, values = 0;
+  for (double k = first; k <= last; ++k) {
+    lua_rawgeti(L, 1, static_cast<int>(k));
+    const int type = lua_type(L, -1);
+    size_t length = 24;
+    if (type == LUA_TSTRING) lua_tolstring(L, -1, &length);
+    lua_pop(L, 1);
+    if (type != LUA_TSTRING && type != LUA_TNUMBER) break;
+    bytes += static_cast<double>(length + between);
+    ++values;
+  }
+  chargeBytesAndValues(L, bytes, values);
+  return 0;
+}
+
 // A sandbox's coroutine resumed inside another (the prelude's resume): on the C callbacks' count.
 // The error has no place of its own: the message handler puts the sandbox's line in front.
 int enterCoroutine(lua_State* L) {
@@ -116,6 +162,8 @@ void LuaHost::openTrusted() {
                                                {"orderedKeys", orderedKeys},
                                                {"countedComparator", countedComparator},
                                                {"chargeError", chargeCaughtError},
+                                               {"chargeWork", chargeLibraryWork},
+                                               {"chargeConcat", chargeConcat},
                                                {"enterCoroutine", enterCoroutine},
                                                {"leaveCoroutine", leaveCoroutine},
                                                {nullptr, nullptr}};

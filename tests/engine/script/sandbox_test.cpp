@@ -108,7 +108,7 @@ TEST(Sandbox, ChangesToTheSharedLibrariesStayInTheSandbox) {
 TEST(Sandbox, StringMethodsAreTheSandboxsForEveryone) {
   LuaHost host;
   host.loadString(
-      "return ('').dump == nil, string.dump ~= nil, ('').find ~= string.find, ('').sub == string.sub, "
+      "return ('').dump == nil, string.dump ~= nil, ('').find ~= string.find, ('').len == string.len, "
       "getmetatable('')",
       "=trusted", Trust::Trusted);
   host.call(0, 5);
@@ -297,6 +297,62 @@ TEST(Runaway, CWorkIsChargedWithNoInstructionBetween) {
   EXPECT_EQ(error.rfind("mod.lua:2: script stopped: it ran past the frame's script budget", 0), 0u) << error;
   EXPECT_GE(walks, 1);
   EXPECT_LE(walks, 5);
+}
+
+// Library functions that make or read long strings, or push or move many values, loop in C: each
+// call is charged its bytes (a step per 16) or values (a step each) before it runs, so a loop of
+// them meets the budget after as many calls as their charges allow. Uncharged, their few
+// instructions a call let each loop run for minutes (upper over 100 KB: about 2 million calls,
+// 200 GB of bytes), stopped by the deadline only. Short calls cost their own instructions.
+TEST(Runaway, CWorkOverBytesAndValuesIsCharged) {
+  struct Case {
+    const char* setup;  // runs once; `big` is 100,000 bytes, `list` 6,000 numbers
+    const char* call;   // runs in the loop
+    int most;           // the calls the budget allows with their charges
+  };
+  const Case cases[] = {
+      // 100,000 bytes are 6,250 steps: 1,600 calls in 10 million steps.
+      {"", "local r = string.rep('ab', 50000)", 1'600},
+      {"", "local r = ('x'):rep(100, big)", 16},  // 10 MB a call
+      {"", "local r = big:upper()", 1'600},
+      {"", "local r = big:lower()", 1'600},
+      {"", "local r = big:reverse()", 1'600},
+      {"", "local r = big:sub(2)", 1'600},
+      {"", "local r = string.format('%s', big)", 1'600},
+      {"", "local r = string.format('%s%s%s', big, big, big)", 534},
+      {"", "local r = big:byte(1, 6000)", 1'667},                   // 6,000 values
+      {"", "local r = string.char(unpack(list, 1, 100))", 50'000},  // 200 values
+      {"", "local r = unpack(list)", 1'667},
+      {"", "local r = select(2, unpack(list))", 834},
+      {"local t = {} for i = 1, 100 do t[i] = big end", "local r = table.concat(t)", 16},
+      {"local t = {} for i = 1, 6000 do t[i] = 'ab' end", "local r = table.concat(t, ',')", 1'404},
+      {"local pad = string.rep(' ', 100000) .. '1'", "local r = tonumber(pad)", 1'600},
+      {"local t = {} for i = 1, 100000 do t[i] = i end", "table.insert(t, 1, 0) table.remove(t, 1)", 50},
+      {"local t = {} for i = 1, 100000 do t[i] = i end", "local r = table.maxn(t)", 30},  // interpreted
+      {"", "print(big)", 1'600},
+      {"", "local r = os.date(big)", 1'600},
+  };
+  for (const Case& c : cases) {
+    LuaLimits limits;  // the game's budget (10 million steps); a deadline far past what it allows
+    limits.deadlineNanoseconds = int64_t{20} * 1'000'000'000;
+    LuaHost host(limits);
+    host.setPrintSink([](std::string_view, std::string_view) {});
+    const std::string code = std::string(
+                                 "local t0, big, list = ..., string.rep('x', 100000), {}\n"
+                                 "for i = 1, 6000 do list[i] = 65 end\n") +
+                             c.setup + "\nwhile true do t0.n = t0.n + 1 " + c.call + " end";
+    const auto [error, calls] = runCounting(host, code);
+    EXPECT_NE(error.find("past the frame's script budget"), std::string::npos) << c.call << "\n" << error;
+    EXPECT_LE(calls, c.most) << c.call;
+  }
+  // Short calls are charged nothing past their instructions: a parser's inner loop stays cheap.
+  LuaHost host;
+  EXPECT_EQ(runSandboxed(host,
+                         "local s, n = string.rep('ab', 5000), 0\n"
+                         "for i = 1, #s do if s:sub(i, i) == 'a' and s:byte(i) == 97 then n = n + 1 end end\n"
+                         "assert(n == 5000)"),
+            "");
+  EXPECT_LT(host.frameSteps(), 1'000'000);
 }
 
 // C functions that call back into Lua nest C frames a script can pile up without end (gsub calling
