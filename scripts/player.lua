@@ -6,14 +6,15 @@ local game = ...
 local world, draw = platon.world, platon.draw
 local createEntity, insert, destroyEntity = world.createEntity, world.insert, world.destroyEntity
 local position, gravity, contactCount, contact = world.position, world.gravity, world.contactCount, world.contact
-local velocity, setVelocity, instanceCount, instance = world.velocity, world.setVelocity, world.instanceCount, world.instance
-local drawEnabled, drawCircle = draw.enabled, draw.circle
+local velocity, setVelocity = world.velocity, world.setVelocity
+local look = draw.look
 local sqrt, min, max, pcall, error, setmetatable = math.sqrt, math.min, math.max, pcall, error, setmetatable
 
 local Player = {}
 Player.__index = Player
 
 Player.RADIUS = 96          -- units
+Player.COLOUR = 0xf2c14e    -- gold
 Player.WALK_SPEED = 9       -- units per frame
 Player.GROUND_ACCEL = 0.6   -- per frame, towards the walk speed
 Player.GROUND_BRAKE = 0.9   -- per frame, towards standing still with no input
@@ -32,6 +33,7 @@ function Player.spawn(_, face, x, y)
     destroyEntity(e)
     error(err, 2)
   end
+  look(e, Player.COLOUR, "ball")  -- the engine draws it, once, however many faces it spans
   return setmetatable({ entity = e, coyote = 0, buffer = 0, grounded = false }, Player)
 end
 
@@ -79,13 +81,8 @@ function Player.tick(self, input)
   setVelocity(e, rx * along + dx * fall, ry * along + dy * fall)
 end
 
--- The engine passes platon.draw; the copies taken above are what is called.
-function Player.draw(self)
-  if not drawEnabled() then return end
-  for i = 1, instanceCount(self.entity) do
-    local part, x, y = instance(self.entity, i)
-    drawCircle(part, x, y, Player.RADIUS, 0xf2c14e)
-  end
-end
+-- The engine draws the player's body by its look (set in spawn): a player that wants more (a
+-- face, a trail) draws it here with platon.draw.
+function Player.draw(_) end
 
 return Player

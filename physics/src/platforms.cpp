@@ -98,6 +98,13 @@ PlatformView World::platform(PlatformId id) const {
   return {pl.part, pl.offset, pl.motion, pl.lines};
 }
 
+std::vector<PlatformId> World::platforms() const {
+  std::vector<PlatformId> ids;
+  for (uint32_t slot = 0; slot < impl_->platforms.size(); ++slot)
+    if (impl_->platforms[slot].alive) ids.push_back({slot, impl_->platforms[slot].generation});
+  return ids;
+}
+
 // One platform's frame: find who stands on it, move it as far as its motion goes or until a push
 // is impossible, then carry those standing on it by what it moved (less what it pushed them).
 void WorldImpl::movePlatforms() {

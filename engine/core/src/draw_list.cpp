@@ -4,19 +4,29 @@
 
 namespace platon::core {
 
-bool DrawList::circle(Place place, Point2 centre, float radius, Color color) {
+bool DrawList::circle(Place place, Point2 centre, float radius, Color color, uint32_t body) {
   if (!enabled_) return true;
   if (shapes_.size() >= kMaxShapes) return false;
-  shapes_.push_back({ShapeKind::Circle, place, color, radius, centre, 0, 0});
+  shapes_.push_back({ShapeKind::Circle, place, color, radius, centre, 0, 0, body});
   return true;
 }
 
-bool DrawList::polygon(Place place, std::span<const Point2> points, Color color) {
+bool DrawList::polygon(Place place, std::span<const Point2> points, Color color, uint32_t body) {
   if (!enabled_ || points.size() < 3) return true;
   if (shapes_.size() >= kMaxShapes || points_.size() + points.size() > kMaxPoints) return false;
   shapes_.push_back({ShapeKind::Polygon, place, color, 0, points[0], static_cast<uint32_t>(points_.size()),
-                     static_cast<uint32_t>(points.size())});
+                     static_cast<uint32_t>(points.size()), body});
   points_.insert(points_.end(), points.begin(), points.end());
+  return true;
+}
+
+bool DrawList::wall(Place place, Point2 a, Point2 b, uint32_t tag, uint8_t lineKind) {
+  if (!enabled_) return true;
+  if (shapes_.size() >= kMaxShapes || points_.size() + 2 > kMaxPoints) return false;
+  shapes_.push_back(
+      {ShapeKind::Wall, place, Color{}, 0, a, static_cast<uint32_t>(points_.size()), 2, 0, tag, lineKind});
+  points_.push_back(a);
+  points_.push_back(b);
   return true;
 }
 
@@ -49,7 +59,7 @@ DrawList DrawList::between(const DrawList& from, const DrawList& to, float t) {
     if (b.kind != ShapeKind::Text && a.count != b.count) continue;
     b.at = mix(a.at, b.at);
     b.size = a.size + (b.size - a.size) * t;
-    if (b.kind == ShapeKind::Polygon || b.kind == ShapeKind::Line)
+    if (b.kind == ShapeKind::Polygon || b.kind == ShapeKind::Line || b.kind == ShapeKind::Wall)
       for (uint32_t k = 0; k < b.count; ++k)
         out.points_[b.first + k] = mix(from.points_[a.first + k], out.points_[b.first + k]);
   }

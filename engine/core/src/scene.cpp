@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "platon/core/mesh_source.h"
+#include "platon/core/world_drawing.h"
 #include "platon/files/read_file.h"
 #include "platon/stage/mesh.h"
 
@@ -45,6 +46,7 @@ physics::SolveReport Scene::step(const InputFrame& input) {
 
 void Scene::draw(DrawList& out) const {
   if (!out.enabled()) return;
+  drawWorld(world_, looks_, out);
   for (const auto& s : systems_) s->draw(*this, out);
 }
 

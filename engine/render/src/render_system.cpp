@@ -135,6 +135,8 @@ void RenderSystem::paint(const core::View& view, const core::DrawList& draw) {
       case core::ShapeKind::Text:
         g.text.draw(std::string(draw.text(s)), at(s.at), std::max(6.0f, s.size * dpi), s.color);
         break;
+      case core::ShapeKind::Wall:  // on faces only (the world's platforms)
+        break;
     }
   }
   g.batch.flush(width, height);

@@ -55,6 +55,43 @@ const std::vector<Vector3f>& unitSphere() {
   return sphere;
 }
 
+// How far p lies outside the convex polygon `corners` (counter-clockwise): 0 inside or on it.
+float outside(std::span<const core::Point2> corners, core::Point2 p) {
+  bool inside = true;
+  float nearest = 1e30f;
+  const size_t n = corners.size();
+  for (size_t k = 0; k < n; ++k) {
+    const core::Point2 a = corners[k], b = corners[(k + 1) % n];
+    const float ex = b.x - a.x, ey = b.y - a.y, px = p.x - a.x, py = p.y - a.y;
+    if (ex * py - ey * px < 0) inside = false;
+    const float len2 = ex * ex + ey * ey;
+    const float t = len2 > 0 ? std::clamp((px * ex + py * ey) / len2, 0.0f, 1.0f) : 0;
+    nearest = std::min(nearest, std::hypot(px - t * ex, py - t * ey));
+  }
+  return inside ? 0 : nearest;
+}
+
+// `shape` cut to the convex polygon `window` (both counter-clockwise): Sutherland-Hodgman.
+std::vector<core::Point2> clipped(std::vector<core::Point2> shape, std::span<const core::Point2> window) {
+  const size_t n = window.size();
+  for (size_t k = 0; k < n && !shape.empty(); ++k) {
+    const core::Point2 a = window[k], b = window[(k + 1) % n];
+    auto side = [&](core::Point2 p) { return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x); };
+    std::vector<core::Point2> kept;
+    for (size_t i = 0; i < shape.size(); ++i) {
+      const core::Point2 p = shape[i], q = shape[(i + 1) % shape.size()];
+      const float sp = side(p), sq = side(q);
+      if (sp >= 0) kept.push_back(p);
+      if ((sp >= 0) != (sq >= 0)) {
+        const float t = sp / (sp - sq);
+        kept.push_back({p.x + (q.x - p.x) * t, p.y + (q.y - p.y) * t});
+      }
+    }
+    shape = std::move(kept);
+  }
+  return shape;
+}
+
 }  // namespace
 
 void addTriangle(std::vector<LitVertex>& out, const Vector3f& a, const Vector3f& b, const Vector3f& c,
@@ -71,7 +108,7 @@ StageMesh::StageMesh(const core::StageView& stage) : flat_(stage.flat) {
   const Vector3f centre = vec(stage.centre);
   for (const core::ViewFace& f : stage.faces)
     frames_.push_back({f.part, (vec(f.origin) - centre) * scale_, vec(f.xAxis) * scale_, vec(f.yAxis) * scale_,
-                       vec(f.normal).normalized()});
+                       vec(f.normal).normalized(), f.corners});
   for (size_t i = 0; i < stage.faces.size(); ++i) addFace(stage.faces[i], i);
 }
 
@@ -151,14 +188,23 @@ void StageMesh::addDoors(std::span<const uint32_t> openTags, std::vector<LitVert
   }
 }
 
-void StageMesh::addWall(const Frame& f, const core::ViewLine& line, std::vector<LitVertex>& out,
-                        float heightScale) const {
+void StageMesh::addWall(const Frame& f, const core::ViewLine& line, std::vector<LitVertex>& out, float heightScale,
+                        bool moving) const {
   Color color = wallColor(line);
   if (heightScale < 1)
     color = {static_cast<uint8_t>(color.r / 2), static_cast<uint8_t>(color.g / 2), static_cast<uint8_t>(color.b / 2),
              255};
+  // Walls scale with the solid, but never past a few level units: on a large face (a prism's 6144
+  // long side) a wall as tall as the player's ball hid it.
+  // A moving platform is a plank, thicker than a wall and in its own colour (a plain or one-way
+  // line's; a tagged one keeps its tag's), so a lift reads as a lift.
   const bool oneWay = line.kind == 2;
-  const float height = (oneWay ? 0.008f : 0.02f) * edge_ * heightScale, halfWidth = (oneWay ? 0.004f : 0.006f) * edge_;
+  float height = std::min((oneWay ? 0.008f : 0.02f) * edge_, (oneWay ? 24.0f : 48.0f) * scale_) * heightScale;
+  float halfWidth = std::min((oneWay ? 0.004f : 0.006f) * edge_, (oneWay ? 12.0f : 20.0f) * scale_);
+  if (moving) {
+    height = halfWidth = 32.0f * scale_;
+    if (line.tag == 0) color = oneWay ? Color{120, 215, 205, 255} : Color{70, 190, 185, 255};
+  }
   const Vector3f a = f.origin + line.a.x * f.xAxis + line.a.y * f.yAxis;
   const Vector3f b = f.origin + line.b.x * f.xAxis + line.b.y * f.yAxis;
   Vector3f along = b - a;
@@ -174,14 +220,87 @@ void StageMesh::addWall(const Frame& f, const core::ViewLine& line, std::vector<
   quad(out, b0, b1, b1 + up, b0 + up, along, color);
 }
 
+void StageMesh::addBall(std::span<const core::DrawShape> instances, std::vector<LitVertex>& out) const {
+  // The ball sits on the face that holds its centre; near an edge it leans over it: the direction
+  // it is lifted in blends the normals of the faces within its radius (each by how far inside that
+  // radius it reaches), so it rolls over an edge with no jump and shows once.
+  const core::DrawShape* home = nullptr;
+  const Frame* homeFrame = nullptr;
+  float homeOutside = 1e30f;
+  Vector3f lift = Vector3f::Zero();
+  for (const core::DrawShape& s : instances) {
+    const Frame* f = frameOf(s.place.face);
+    if (!f) continue;
+    const float d = outside(f->corners, s.at);
+    lift += std::max(0.0f, s.size - d) * f->normal;
+    if (d < homeOutside) home = &s, homeFrame = f, homeOutside = d;
+  }
+  if (!home) return;
+  const Vector3f n = lift.norm() > 1e-9f ? Vector3f(lift.normalized()) : homeFrame->normal;
+  const float r = home->size * scale_;
+  const Vector3f centre = homeFrame->origin + home->at.x * homeFrame->xAxis + home->at.y * homeFrame->yAxis + r * n;
+  const core::Color c = home->color;
+  for (const Vector3f& v : unitSphere()) {
+    const Vector3f p = centre + r * v;
+    out.push_back({p.x(), p.y(), p.z(), v.x(), v.y(), v.z(), c.r, c.g, c.b, c.a});
+  }
+}
+
+void StageMesh::addBodyPolygon(const Frame& f, const core::DrawShape& s, std::span<const core::Point2> points,
+                               std::vector<LitVertex>& out) const {
+  // The instance cut at its face's edges (the next face draws the rest), raised as a block.
+  std::vector<core::Point2> shape(points.begin() + s.first, points.begin() + s.first + s.count);
+  core::Point2 mid{0, 0};
+  for (const core::Point2 p : shape)
+    mid.x += p.x / static_cast<float>(s.count), mid.y += p.y / static_cast<float>(s.count);
+  float inradius = 1e30f;
+  for (size_t k = 0; k < shape.size(); ++k) {
+    const core::Point2 a = shape[k], b = shape[(k + 1) % shape.size()];
+    const float len = std::hypot(b.x - a.x, b.y - a.y);
+    if (len > 0)
+      inradius = std::min(inradius, std::fabs((mid.x - a.x) * (b.y - a.y) - (mid.y - a.y) * (b.x - a.x)) / len);
+  }
+  shape = clipped(std::move(shape), f.corners);
+  if (shape.size() < 3) return;
+  const Vector3f up = std::min(0.6f * inradius, 48.0f) * scale_ * f.normal;
+  auto at = [&](core::Point2 p) { return Vector3f(f.origin + p.x * f.xAxis + p.y * f.yAxis); };
+  for (size_t k = 1; k + 1 < shape.size(); ++k)
+    addTriangle(out, at(shape[0]) + up, at(shape[k]) + up, at(shape[k + 1]) + up, f.normal, s.color);
+  const core::Color side{static_cast<uint8_t>(s.color.r * 3 / 4), static_cast<uint8_t>(s.color.g * 3 / 4),
+                         static_cast<uint8_t>(s.color.b * 3 / 4), s.color.a};
+  for (size_t k = 0; k < shape.size(); ++k) {
+    const Vector3f a = at(shape[k]), b = at(shape[(k + 1) % shape.size()]);
+    const Vector3f outward = (b - a).cross(f.normal);
+    if (outward.norm() < 1e-12f) continue;
+    quad(out, a, b, b + up, a + up, outward.normalized(), side);
+  }
+}
+
 void StageMesh::addShapes(const core::DrawList& draw, physics::MapPartId onlyFace, std::vector<LitVertex>& out) const {
   const auto points = draw.points();
-  for (core::DrawShape s : draw.shapes()) {
+  const auto shapes = draw.shapes();
+  for (size_t index = 0; index < shapes.size(); ++index) {
+    core::DrawShape s = shapes[index];
     if (s.place.screen || s.kind == core::ShapeKind::Text) continue;
     if (s.color.a == kGlow) s.color.a = 255;  // the glow marker is the stage's own, not the scripts'
+    if (s.kind == core::ShapeKind::Circle && s.body != 0 && !flat_) {
+      size_t end = index + 1;  // the entity's instances come one after another
+      while (end < shapes.size() && shapes[end].kind == core::ShapeKind::Circle && shapes[end].body == s.body) ++end;
+      addBall(shapes.subspan(index, end - index), out);
+      index = end - 1;
+      continue;
+    }
     if (flat_ && s.place.face != onlyFace) continue;
     const Frame* f = frameOf(s.place.face);
     if (!f) continue;
+    if (s.kind == core::ShapeKind::Wall) {
+      addWall(*f, {points[s.first], points[s.first + 1], s.tag, s.lineKind}, out, 1, true);
+      continue;
+    }
+    if (s.kind == core::ShapeKind::Polygon && s.body != 0) {
+      addBodyPolygon(*f, s, points, out);
+      continue;
+    }
     auto at = [&](core::Point2 p, float lift) {
       return Vector3f(f->origin + p.x * f->xAxis + p.y * f->yAxis + lift * edge_ * f->normal);
     };
@@ -213,6 +332,7 @@ void StageMesh::addShapes(const core::DrawList& draw, physics::MapPartId onlyFac
         }
         break;
       case core::ShapeKind::Text:
+      case core::ShapeKind::Wall:
         break;
     }
   }

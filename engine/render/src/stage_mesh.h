@@ -49,10 +49,16 @@ class StageMesh {
   struct Frame {
     physics::MapPartId part;
     Eigen::Vector3f origin, xAxis, yAxis, normal;  // in stage space (axes scaled too)
+    std::vector<core::Point2> corners;             // the face's outline, in its own units
   };
+  // The draw list's shapes [first, last): one entity's instances, drawn as one body.
+  void addBall(std::span<const core::DrawShape> instances, std::vector<LitVertex>& out) const;
+  void addBodyPolygon(const Frame& f, const core::DrawShape& s, std::span<const core::Point2> points,
+                      std::vector<LitVertex>& out) const;
   const Frame* frameOf(physics::MapPartId part) const;
   void addFace(const core::ViewFace& face, size_t index);
-  void addWall(const Frame& f, const core::ViewLine& line, std::vector<LitVertex>& out, float heightScale = 1) const;
+  void addWall(const Frame& f, const core::ViewLine& line, std::vector<LitVertex>& out, float heightScale = 1,
+               bool moving = false) const;
   struct Door {
     size_t frame;
     core::ViewLine line;

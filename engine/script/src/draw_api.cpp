@@ -123,14 +123,40 @@ int text(lua_State* L) {
   return 0;
 }
 
+// look(entity, colour [, form]): how the engine draws the entity from now on. Form "shape" (its
+// polygon, the default), "ball" (once, as a ball) or "none" (the script draws it). Set headless
+// too: the look is the scene's, not the frame's, and never the simulation's.
+int look(lua_State* L) {
+  const physics::EntityId id = checkEntity(L, 1);
+  const auto rgb = static_cast<uint32_t>(lua::checkInteger(L, 2, 0, 0xffffff));
+  core::Look style;
+  style.color = {static_cast<uint8_t>(rgb >> 16), static_cast<uint8_t>(rgb >> 8), static_cast<uint8_t>(rgb), 255};
+  if (!lua_isnoneornil(L, 3)) {
+    const std::string_view form = lua::checkString(L, 3);
+    if (form == "ball")
+      style.form = core::Look::Form::Ball;
+    else if (form == "none")
+      style.form = core::Look::Form::None;
+    else if (form != "shape")
+      lua::argError(L, 3, "\"shape\", \"ball\" or \"none\"");
+  }
+  contextOf(L).scene->looks().set(id, style);
+  return 0;
+}
+
 int enabled(lua_State* L) {
   lua_pushboolean(L, contextOf(L).draw != nullptr);
   return 1;
 }
 
 constexpr luaL_Reg kDraw[] = {
-    {"circle", lua::bound<circle>}, {"line", lua::bound<drawLine>},   {"polygon", lua::bound<polygon>},
-    {"text", lua::bound<text>},     {"enabled", lua::bound<enabled>}, {nullptr, nullptr},
+    {"circle", lua::bound<circle>},
+    {"line", lua::bound<drawLine>},
+    {"polygon", lua::bound<polygon>},
+    {"text", lua::bound<text>},
+    {"enabled", lua::bound<enabled>},
+    {"look", lua::bound<look>},
+    {nullptr, nullptr},
 };
 
 }  // namespace

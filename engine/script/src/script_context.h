@@ -39,6 +39,9 @@ inline ScriptContext& contextOf(lua_State* L) {
   return *static_cast<ScriptContext*>(lua_touserdata(L, lua_upvalueindex(1)));
 }
 
+// Argument `index` as a live entity's handle, or a Lua error naming it (world_api.cpp).
+physics::EntityId checkEntity(lua_State* L, int index);
+
 // Registers platon.world.* (world_api.cpp) and platon.draw.* (draw_api.cpp) in the API table
 // sandboxes see, with `context` as their upvalue.
 void registerWorldApi(LuaHost& host, ScriptContext& context);

@@ -30,14 +30,6 @@ constexpr size_t kMaxPlatforms = 1'000;
 constexpr size_t kMaxPlatformLines = 1'000;
 constexpr size_t kMaxPartLines = 100'000;
 
-EntityId checkEntity(lua_State* L, int index) {
-  const lua::HandleBits bits = lua::checkHandle(L, index, "an entity");
-  const EntityId id{bits.index, bits.generation};
-  if (!worldOf(L).valid(id))
-    throw lua::ArgError("argument " + std::to_string(index) + ": stale entity handle (destroyed, or never created)");
-  return id;
-}
-
 physics::PlatformId checkPlatform(lua_State* L, int index) {
   const std::optional<lua::HandleBits> bits = lua::toPlatformHandle(L, index);
   if (!bits) lua::argError(L, index, "a platform handle (from createPlatform)");
@@ -553,6 +545,14 @@ void addApiTable(LuaHost& host, ScriptContext& context, const char* name, const 
     lua_setfield(L, -2, functions->name);
   }
   lua_setfield(L, -2, name);
+}
+
+EntityId checkEntity(lua_State* L, int index) {
+  const lua::HandleBits bits = lua::checkHandle(L, index, "an entity");
+  const EntityId id{bits.index, bits.generation};
+  if (!worldOf(L).valid(id))
+    throw lua::ArgError("argument " + std::to_string(index) + ": stale entity handle (destroyed, or never created)");
+  return id;
 }
 
 void registerWorldApi(LuaHost& host, ScriptContext& context) { addApiTable(host, context, "world", kWorld); }

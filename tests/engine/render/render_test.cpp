@@ -11,6 +11,7 @@
 
 #include "platon/core/display.h"
 #include "platon/core/scene.h"
+#include "platon/testing/pixels.h"
 #include "platon/testing/temp_folder.h"
 
 namespace platon {
@@ -108,6 +109,56 @@ TEST_F(Renderer, DrawsTheFaceItsLinesAndTheScriptsShapes) {
       const Rgba p = at(pixels, w, x, y);
       ASSERT_FALSE(p.r > 120 && p.b > 120 && p.g < 60) << "the far side's shape or text shows at " << x << ", " << y;
     }
+}
+
+// What the world draws (drawWorld's shapes): a body is drawn once however many faces it spans, a
+// platform's line shows as a plank, and a polygon body is cut at its face's edge. Two faces of a
+// cube meet at x = 1000 (face 0 on top, face 1 the side, facing +x), seen from between their normals.
+TEST_F(Renderer, DrawsEachBodyOnceAndThePlatformsOfTheWorld) {
+  core::View view = squareFace();
+  auto stage = std::make_shared<core::StageView>(*view.stage);
+  core::ViewFace side;
+  side.part = 1;
+  side.corners = {{0, 0}, {1000, 0}, {1000, 1000}, {0, 1000}};
+  side.origin = {1000, 0, 0}, side.xAxis = {0, 0, -1}, side.yAxis = {0, 1, 0}, side.normal = {1, 0, 0};
+  stage->faces.push_back(side);
+  view.stage = stage;
+  view.camera.centre = {1000, 500, 0};
+  view.camera.distance = 1400;
+  view.camera.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 4, Eigen::Vector3d::UnitY()));
+  // The ball 20 units inside face 0's edge: an instance on each face, one body (drawn per instance,
+  // a ball on each face's plane, two showed side by side).
+  core::DrawList draw(true);
+  const core::Color gold{242, 193, 78, 255};
+  draw.circle(core::Place::onFace(0), {980, 500}, 100, gold, 7);
+  draw.circle(core::Place::onFace(1), {-20, 500}, 100, gold, 7);
+  display->present(view, draw);
+  int w = 0, h = 0;
+  std::vector<uint8_t> pixels = display->capture(w, h);
+  EXPECT_EQ(testing::roundBlobs(pixels, w, h, testing::playerGold), 1) << "one ball";
+  // The same two circles as two bodies (a script's own drawing): two balls, side by side.
+  core::DrawList two(true);
+  two.circle(core::Place::onFace(0), {980, 500}, 100, gold);
+  two.circle(core::Place::onFace(1), {-20, 500}, 100, gold);
+  display->present(view, two);
+  pixels = display->capture(w, h);
+  EXPECT_NE(testing::roundBlobs(pixels, w, h, testing::playerGold), 1) << "two balls are not one";
+  // A platform's line, and a crate across the edge: its part beyond face 0 is drawn on face 1 only.
+  core::DrawList world(true);
+  world.wall(core::Place::onFace(0), {200, 300}, {600, 300}, 0, 0);
+  const std::vector<core::Point2> crate{{900, 600}, {1100, 600}, {1100, 800}, {900, 800}};
+  world.polygon(core::Place::onFace(0), crate, {176, 138, 90, 255}, 9);
+  display->present(view, world);
+  pixels = display->capture(w, h);
+  auto teal = [](int r, int g, int b) { return g > 120 && b > 110 && r < g - 60; };
+  auto wood = [](int r, int g, int b) { return r > 80 && r > b + 30 && g > b + 10 && r - g < 60 && r - g > 15; };
+  int tealPixels = 0, woodPixels = 0;
+  for (size_t i = 0; i < pixels.size(); i += 4) {
+    tealPixels += teal(pixels[i], pixels[i + 1], pixels[i + 2]);
+    woodPixels += wood(pixels[i], pixels[i + 1], pixels[i + 2]);
+  }
+  EXPECT_GT(tealPixels, 200) << "the platform";
+  EXPECT_GT(woodPixels, 200) << "the crate";
 }
 
 TEST_F(Renderer, ShowsTheHeadsUpLinesAndTheErrorOverlay) {

@@ -6,6 +6,7 @@
 // levels apart. PLATON_UPDATE_RENDER_REFERENCES=1 writes the stored pictures anew.
 #include <SDL2/SDL.h>
 #include <SDL2/SDL_image.h>
+#include <algorithm>
 #include <cstdlib>
 #include <memory>
 #include <string>
@@ -13,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include "platon/testing/pixels.h"
 #include "platon/testing/temp_folder.h"
 
 namespace {
@@ -77,16 +79,18 @@ const Case kCases[] = {
     {"icosa_drop", "icosa_drop_solve", 640},
     {"prism", "prism_walk", 500},
     {"soccer_ball", "soccer_ball_walk", 500},
+    {"cube_lift", "cube_lift_ride", 300},       // the lift, a platform a script made, with the player on it
+    {"tetra_around", "tetra_around_run", 366},  // the player over a sharp edge
 };
 
 class Shots : public ::testing::Test {
  protected:
   static void SetUpTestSuite() { IMG_Init(IMG_INIT_PNG); }
-  std::string shoot(const Case& c) {
-    std::string out = folder.path(std::string(c.level) + ".png");
+  std::string shoot(const Case& c, const char* size = "320x180") {
+    std::string out = folder.path(std::string(c.level) + std::to_string(c.frame) + ".png");
     const std::string command = std::string("SDL_VIDEODRIVER=offscreen ") + PLATON_EXE + " shot " + c.level +
                                 " --input tests/replays/" + c.replay + ".replay --frame " + std::to_string(c.frame) +
-                                " --size 320x180 --out " + out + " > /dev/null";
+                                " --size " + size + " --out " + out + " > /dev/null";
     EXPECT_EQ(std::system(command.c_str()), 0) << command;
     return out;
   }
@@ -134,6 +138,30 @@ TEST_F(Shots, TheToleranceTellsStagesAndMomentsApart) {
   ASSERT_EQ(moved.height, stored[0].height);
   const Difference d = compare(moved, stored[0]);
   EXPECT_TRUE(d.differentShare > 0.015 || d.meanPerChannel > 3.0) << "a second later passes as the stored moment";
+}
+
+// The player is one body and is drawn once: on every stage, at frames around its first crossing of
+// an edge (where it has an instance on each face: two balls side by side showed on the
+// tetrahedron), exactly one ball shows, never none (no wall or face hides it) and never two.
+TEST_F(Shots, ThePlayerIsDrawnOnceAcrossEdges) {
+  const Case crossings[] = {
+      {"tetra_around", "tetra_around_run", 366},
+      {"soccer_ball", "soccer_ball_walk", 248},
+      {"icosa_drop", "icosa_drop_solve", 161},
+      {"octa_ring", "octa_ring_run", 366},
+      {"dodeca_belt", "dodeca_belt_run", 407},
+      {"cube_intro", "cube_intro_walk", 414},
+      {"prism", "prism_walk", 120},
+  };
+  for (const Case& crossing : crossings)
+    for (const int offset : {-16, -8, 0, 8, 16}) {
+      Case c = crossing;
+      c.frame += offset;
+      const Picture p = load(shoot(c, "640x360"));
+      ASSERT_FALSE(p.rgba.empty());
+      EXPECT_EQ(platon::testing::roundBlobs(p.rgba, p.width, p.height, platon::testing::playerGold), 1)
+          << c.level << " at frame " << c.frame;
+    }
 }
 
 }  // namespace

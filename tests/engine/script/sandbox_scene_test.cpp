@@ -1069,7 +1069,7 @@ TEST(ReAuditN7, PairsNextAndIpairsWalkAViewsEntriesAndItStaysReadOnly) {
   const core::SystemRegistry registry = scripting();
   core::LiveScene live(level.scene, registry, false);
   EXPECT_EQ(scriptsOf(live).status().message,
-            "checkpoint:function world:table 0 0 draw circle,enabled,line,polygon,text");
+            "checkpoint:function world:table 0 0 draw circle,enabled,line,look,polygon,text");
 }
 
 // --- The physics of what a sandbox makes is charged to it ---

@@ -2,6 +2,7 @@
 // worlds may live side by side (parallel headless runs), and nothing is shared between them.
 #pragma once
 #include <memory>
+#include <vector>
 
 #include "platon/physics/entity_view.h"
 #include "platon/physics/map_part.h"
@@ -124,6 +125,8 @@ class World {
   void destroyPlatform(PlatformId id);
   void setPlatformMotion(PlatformId id, Vec2 perFrame);
   PlatformView platform(PlatformId id) const;
+  // The live platforms, oldest slot first (what a renderer draws each frame).
+  std::vector<PlatformId> platforms() const;
 
   // nullptr restores the default rules. The rules object must outlive its use by solve().
   void setRules(Rules* rules);

@@ -31,7 +31,7 @@ struct Place {
   static Place onScreen() { return {true, 0}; }
 };
 
-enum class ShapeKind : uint8_t { Circle, Polygon, Line, Text };
+enum class ShapeKind : uint8_t { Circle, Polygon, Line, Text, Wall };
 
 struct DrawShape {
   ShapeKind kind = ShapeKind::Circle;
@@ -39,8 +39,14 @@ struct DrawShape {
   Color color;
   float size = 0;      // circle radius, line width, text height
   Point2 at;           // circle centre, text anchor (its top left)
-  uint32_t first = 0;  // polygon and line: points()[first, first + count); text: its characters
+  uint32_t first = 0;  // polygon, line and wall: points()[first, first + count); text: its characters
   uint32_t count = 0;
+  // Circles and polygons: the entity they are an instance of (its handle's index + 1), or 0. The
+  // renderer draws one entity once: a ball on the face that holds its centre, a polygon cut at
+  // each face's edges.
+  uint32_t body = 0;
+  uint32_t tag = 0;      // a wall's line tag (its colour and style)
+  uint8_t lineKind = 0;  // a wall's physics::LineKind (1 solid... see ViewLine::kind)
 };
 
 // A frame's list holds at most kMaxShapes shapes, kMaxPoints polygon and line points and
@@ -57,9 +63,12 @@ class DrawList {
 
   // Each returns false when the shape was dropped: over a limit (a disabled list drops nothing:
   // it records nothing and returns true).
-  bool circle(Place place, Point2 centre, float radius, Color color);
+  bool circle(Place place, Point2 centre, float radius, Color color, uint32_t body = 0);
   // A convex polygon, counter-clockwise.
-  bool polygon(Place place, std::span<const Point2> points, Color color);
+  bool polygon(Place place, std::span<const Point2> points, Color color, uint32_t body = 0);
+  // A line of the world drawn as the stage's own lines are (a moving platform's), by its tag and
+  // kind (ViewLine's).
+  bool wall(Place place, Point2 a, Point2 b, uint32_t tag, uint8_t lineKind);
   bool line(Place place, Point2 a, Point2 b, float width, Color color);
   bool text(Place place, Point2 at, std::string_view text, float height, Color color);
   void clear();

@@ -5,6 +5,7 @@
 #include <optional>
 #include <vector>
 
+#include "platon/core/look.h"
 #include "platon/core/manifest.h"
 #include "platon/core/mesh_source.h"
 #include "platon/core/system.h"
@@ -43,14 +44,18 @@ class Scene {
   // systems run, and the first error is rethrown at the end, so a frame always happens once.
   physics::SolveReport step(const InputFrame& input);
   uint64_t frame() const { return world_.frame(); }
-  // Asks every system what to draw; does nothing when the list is disabled (no renderer).
+  // Draws the world (its entities by their looks, its platforms), then asks every system what to
+  // draw; does nothing when the list is disabled (no renderer).
   void draw(DrawList& out) const;
+  // How entities are drawn (platon.draw.look): the picture's, not the simulation's.
+  Looks& looks() { return looks_; }
 
  private:
   SceneManifest manifest_;
   physics::World world_;
   std::optional<stage::Stage> stage_;
   std::optional<stage::Level> level_;
+  Looks looks_;
   std::vector<std::unique_ptr<System>> systems_;
   std::vector<std::string> names_;
 };
