@@ -623,9 +623,13 @@ TEST(DrawApi, BadArgumentsAreErrorsHeadlessToo) {
               "  function(d) d.line(0, 0, 0, 1e300, 0, 2, 0xffffff) end,\n"
               "  function(d) d.text('screen', 0, 0, 'hi', 0, 0xffffff) end,\n"
               "  function(d) d.polygon(0, { 0, 0, 100, 100, 100, 0 }, 0xffffff) end,\n"
-              "  function(d) d.polygon(0, { 0, 0, 100, 0, 100, 100 }, 0xffffff) end }\n"
+              "  function(d) d.polygon(0, { 0, 0, 100, 0, 100, 100 }, 0xffffff) end,\n"
+              "  function(d) d.look('x', 0xffffff) end,\n"
+              "  function(d, game) d.look(game.player(), 0x1000000) end,\n"
+              "  function(d, game) d.look(game.player(), 0xffffff, 'sphere') end,\n"
+              "  function(d, game) d.look(game.player(), 0x55aaee, 'ball') end }\n"
               "return { tick = function(game, frame)\n"
-              "  local ok, e = pcall(calls[frame], platon.draw)\n"
+              "  local ok, e = pcall(calls[frame], platon.draw, game)\n"
               "  game.message(ok and 'ok' or e)\n"
               "end }\n");
   const core::SystemRegistry registry = scripting();
@@ -637,6 +641,10 @@ TEST(DrawApi, BadArgumentsAreErrorsHeadlessToo) {
       "level.lua:5: argument 4: expected a number within +-2^30, got 1e+300",
       "level.lua:6: argument 5: expected a size above 0 (and at most 2^30), got 0",
       "level.lua:7: polygon: argument 2: the points must go counter-clockwise round a convex shape",
+      "ok",
+      "level.lua:9: argument 1: expected an entity handle, got \"x\"",
+      "level.lua:10: argument 2: expected an integer",
+      "level.lua:11: argument 3: expected \"shape\", \"ball\" or \"none\", got \"sphere\"",
       "ok"};
   for (const std::string& e : expected) {
     const Played p = play(live, 1);
