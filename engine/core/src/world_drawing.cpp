@@ -18,11 +18,12 @@ float radiusOf(std::span<const physics::Vec2> shape) {
 void drawEntity(const physics::EntityView& e, const Look& look, DrawList& out, std::vector<Point2>& scratch) {
   if (look.form == Look::Form::None) return;
   const uint32_t body = e.id().index + 1;
+  const float radius = radiusOf(e.shape().vertices());  // turning does not change it
   for (const physics::InstanceView i : e.instances()) {
     const Place place = Place::onFace(i.part);
     const Point2 at{static_cast<float>(i.position.x), static_cast<float>(i.position.y)};
     if (look.form == Look::Form::Ball) {
-      out.circle(place, at, radiusOf(i.shape), look.color, body);
+      out.circle(place, at, radius, look.color, body);
       continue;
     }
     scratch.clear();

@@ -99,21 +99,15 @@ end
 -- Up to SHORT bytes or values, a call's work is less than the wrapper's own instructions, which
 -- the hook counts: only longer ones are charged (byte and sub run in parsers' inner loops).
 local SHORT = 64
-methods.upper = function(...)
-  local s = ...
-  if type(s) == "string" and #s > SHORT then chargeWork(#s, 0) end
-  return upper(...)
+-- f, charged the length of its first argument when that is a long string (it reads it all).
+local function chargingLength(f)
+  return function(...)
+    local s = ...
+    if type(s) == "string" and #s > SHORT then chargeWork(#s, 0) end
+    return f(...)
+  end
 end
-methods.lower = function(...)
-  local s = ...
-  if type(s) == "string" and #s > SHORT then chargeWork(#s, 0) end
-  return lower(...)
-end
-methods.reverse = function(...)
-  local s = ...
-  if type(s) == "string" and #s > SHORT then chargeWork(#s, 0) end
-  return reverse(...)
-end
+methods.upper, methods.lower, methods.reverse = chargingLength(upper), chargingLength(lower), chargingLength(reverse)
 methods.sub = function(...)
   local s, i, j = ...
   if type(s) == "string" and #s > SHORT then chargeWork(span(#s, i, j == nil and -1 or j), 0) end
@@ -321,12 +315,7 @@ local function safeSelect(...)
   return rawSelect(...)
 end
 -- tonumber reads the whole string.
-local rawTonumber = tonumber
-local function safeTonumber(...)
-  local v = ...
-  if type(v) == "string" and #v > SHORT then chargeWork(#v, 0) end
-  return rawTonumber(...)
-end
+local safeTonumber = chargingLength(tonumber)
 local function safeForeach(t, f)
   if type(t) ~= "table" then error("bad argument #1 to 'foreach' (table expected, got " .. type(t) .. ")", 2) end
   if type(f) ~= "function" then error("bad argument #2 to 'foreach' (function expected, got " .. type(f) .. ")", 2) end
