@@ -14,11 +14,14 @@
 set(PLATON_ARROWS_platon_physics "")
 set(PLATON_ARROWS_platon_files "")
 set(PLATON_ARROWS_platon_stage platon_physics platon_files)
-set(PLATON_ARROWS_platon_core platon_stage platon_physics platon_camera platon_files)
+set(PLATON_ARROWS_platon_core platon_stage platon_physics platon_camera platon_files platon_synth)
 set(PLATON_ARROWS_platon_script platon_core platon_stage platon_physics platon_camera platon_files)
 # The renderer is a plugin: core's headers only (plain data and interfaces), no engine library.
 set(PLATON_ARROWS_platon_render platon_camera)
 set(PLATON_ARROWS_platon_camera "")
+set(PLATON_ARROWS_platon_synth "")
+# The audio system is a plugin too: the synthesizer and core's headers, no engine library.
+set(PLATON_ARROWS_platon_audio platon_synth)
 set(PLATON_ARROWS_platon_mesh platon_files)
 
 set(PLATON_MODULES "" CACHE INTERNAL "")

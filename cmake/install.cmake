@@ -6,7 +6,7 @@
 # The tree works wherever it is put (data_root.h). The renderer's shaders are compiled into its
 # plugin. `cpack` (in build/) makes a Debian package of the same tree under /usr.
 install(TARGETS platon RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-install(TARGETS platon_render_plugin platon_mesh_plugin LIBRARY DESTINATION ${PLATON_INSTALL_PLUGINDIR})
+install(TARGETS platon_render_plugin platon_mesh_plugin platon_audio_plugin LIBRARY DESTINATION ${PLATON_INSTALL_PLUGINDIR})
 foreach(pair IN LISTS PLATON_DATA_FOLDERS)
   string(REPLACE "=" ";" pair ${pair})
   list(GET pair 0 installed)

@@ -14,7 +14,7 @@ get_filename_component(PLATON_PLUGIN_DIR ${CMAKE_BINARY_DIR}/apps/${PLATON_PLUGI
 get_filename_component(PLATON_DATA_MIRROR ${CMAKE_BINARY_DIR}/apps/${PLATON_DATA_FROM_BIN} ABSOLUTE)
 file(MAKE_DIRECTORY ${PLATON_DATA_MIRROR} ${PLATON_PLUGIN_DIR})
 # What share/platon holds: folder in share/platon -> folder in the sources.
-set(PLATON_DATA_FOLDERS scripts=scripts levels=levels scenarios=tests/scenarios replays=tests/replays)
+set(PLATON_DATA_FOLDERS scripts=scripts levels=levels sounds=sounds scenarios=tests/scenarios replays=tests/replays)
 foreach(pair IN LISTS PLATON_DATA_FOLDERS)
   string(REPLACE "=" ";" pair ${pair})
   list(GET pair 0 installed)

@@ -8,6 +8,7 @@ local createEntity, insert, destroyEntity = world.createEntity, world.insert, wo
 local position, gravity, contactCount, contact = world.position, world.gravity, world.contactCount, world.contact
 local velocity, setVelocity = world.velocity, world.setVelocity
 local look = draw.look
+local play = platon.sound.play
 local sqrt, min, max, pcall, error, setmetatable = math.sqrt, math.min, math.max, pcall, error, setmetatable
 
 local Player = {}
@@ -24,6 +25,7 @@ Player.JUMP_CUT = 4         -- releasing jump while rising caps the upward speed
 Player.COYOTE_FRAMES = 6    -- a jump still works this long after leaving a ledge
 Player.BUFFER_FRAMES = 6    -- a jump pressed this long before landing happens on landing
 Player.GROUND_COS = 0.64    -- a contact whose normal is within ~50 degrees of up is ground
+Player.LAND_SPEED = 2.5     -- units per frame: a landing from a fall this fast or faster is heard
 
 -- Errors (leaving nothing behind) when the place is taken by a wall or the face does not exist.
 function Player.spawn(_, face, x, y)
@@ -34,7 +36,7 @@ function Player.spawn(_, face, x, y)
     error(err, 2)
   end
   look(e, Player.COLOUR, "ball")  -- the engine draws it, once, however many faces it spans
-  return setmetatable({ entity = e, coyote = 0, buffer = 0, grounded = false }, Player)
+  return setmetatable({ entity = e, coyote = 0, buffer = 0, grounded = false, face = face, fall = 0 }, Player)
 end
 
 local function approach(value, target, step)
@@ -51,10 +53,21 @@ function Player.tick(self, input)
   if g > 0 then dx, dy = gx / g, gy / g end
   local rx, ry = -dy, dx  -- right
 
+  -- Over an edge: the world turned, and the player hears it.
+  if part ~= self.face then
+    if self.face ~= nil then play("cross") end
+    self.face = part
+  end
+
+  local wasGrounded = self.grounded
   self.grounded = false
   for i = 1, contactCount(e) do
     local nx, ny = contact(e, i)
     if -(nx * dx + ny * dy) > Player.GROUND_COS then self.grounded = true end
+  end
+  -- The fall speed the frame before this one's contact stopped it: louder the harder it lands.
+  if self.grounded and not wasGrounded and (self.fall or 0) > Player.LAND_SPEED then
+    play("land", min(1, self.fall / 12))
   end
   if self.grounded then self.coyote = Player.COYOTE_FRAMES elseif self.coyote > 0 then self.coyote = self.coyote - 1 end
   if input.pressed.jump then self.buffer = Player.BUFFER_FRAMES elseif self.buffer > 0 then self.buffer = self.buffer - 1 end
@@ -74,11 +87,13 @@ function Player.tick(self, input)
   if self.buffer > 0 and self.coyote > 0 then
     fall = -Player.JUMP_SPEED
     self.buffer, self.coyote = 0, 0
+    play("jump")
   elseif not input.jump and fall < -Player.JUMP_CUT then
     fall = -Player.JUMP_CUT
   end
 
   setVelocity(e, rx * along + dx * fall, ry * along + dy * fall)
+  self.fall = fall
 end
 
 -- The engine draws the player's body by its look (set in spawn): a player that wants more (a

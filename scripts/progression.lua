@@ -4,6 +4,7 @@
 local game = ...
 -- Private copies: nothing a script does to a table can swap what this file calls.
 local world = platon.world
+local play = platon.sound.play
 local position, destroyEntity, valid, refreshPierce = world.position, world.destroyEntity, world.valid, world.refreshPierce
 local pcall, tostring, error, rawget, rawset, type = pcall, tostring, error, rawget, rawset, type
 local DOOR = 1000
@@ -86,17 +87,21 @@ function progression.afterStep()
       i = i + 1
     end
     listOpen()
+    play("door")  -- a door moves (the switch's own click is the rules', on contact)
   end
   if game.touchedCheckpoint then
     game.touchedCheckpoint = false
     local face, x, y = position(entityOf(rawget(game, "player")))
     game.checkpoint = { face = face, x = x, y = y }
+    play("checkpoint")
   end
   if game.reachedGoal and not game.won then
     game.won, game.wonFrame = true, game.time  -- frames played: a hot reload starts a new world at frame 0
     game.message = "goal reached"
+    play("goal")
   end
   if game.killed or (game.input.pressed.restart and not game.won) then
+    play(game.killed and "death" or "respawn")
     game.killed = false
     game.deaths = game.deaths + 1
     progression.respawn()

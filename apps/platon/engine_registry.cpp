@@ -13,7 +13,8 @@ core::SystemRegistry engineRegistry(Presentation presentation) {
   core::SystemRegistry registry;
   registry.add("scripting", script::makeScriptSystem);
   registry.addPlugin("meshes", "platon_meshes", pluginFolders());  // headless too: a mesh stage is physics
-  if (presentation == Presentation::Window) registry.addPlugin("rendering", "platon_render", pluginFolders());
+  if (presentation != Presentation::Headless) registry.addPlugin("rendering", "platon_render", pluginFolders());
+  if (presentation == Presentation::Window) registry.addPlugin("audio", "platon_audio", pluginFolders());
   return registry;
 }
 

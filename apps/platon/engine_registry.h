@@ -1,6 +1,6 @@
 // The systems the platon program offers scenes: scripting (linked in), meshes (a plugin, loaded
-// only for a level drawn on a mesh) and, when the program shows a window, rendering (a plugin,
-// loaded only when a scene names it).
+// only for a level drawn on a mesh), rendering when the program draws (a plugin, loaded only when a
+// scene names it) and audio when a person plays (a plugin, likewise).
 #pragma once
 #include <string>
 #include <vector>
@@ -9,7 +9,9 @@
 
 namespace platon::app {
 
-enum class Presentation { Headless, Window };
+// Headless: no picture, no sound (runs, scenarios, checks). Picture: drawn, silent (platon shot).
+// Window: drawn and heard (the game, platon play).
+enum class Presentation { Headless, Picture, Window };
 
 core::SystemRegistry engineRegistry(Presentation presentation);
 

@@ -16,6 +16,7 @@
 #include "campaign.h"
 #include "engine_registry.h"
 #include "game_view.h"
+#include "platon/core/audio.h"
 #include "platon/core/data_root.h"
 #include "platon/core/display.h"
 #include "platon/core/fixed_step.h"
@@ -115,6 +116,19 @@ class Game {
  private:
   bool load(size_t level);
   core::Display* display() { return live_ ? displayOf(live_->scene()) : nullptr; }
+  // The scene's audio controls, when it names "audio" (else the game is silent and nothing asks).
+  core::AudioControls* audio() {
+    core::System* system = live_ ? live_->scene().findSystem("audio") : nullptr;
+    return system ? system->audio() : nullptr;
+  }
+  void sound(const char* name) {
+    if (core::AudioControls* a = audio()) a->playNow(name);
+  }
+  // Effects and music hold while a menu covers the game (title, pause) and go on in play and on the
+  // level-complete screen (whose goal sound is still ringing).
+  void holdSound() {
+    if (core::AudioControls* a = audio()) a->setPaused(screen_ == Screen::Title || screen_ == Screen::Paused);
+  }
   script::GameStatus status() { return statusOf(live_->scene()); }
   void handle(const core::WindowInput& input);
   void play() {
@@ -217,8 +231,9 @@ void Game::handle(const core::WindowInput& input) {
           selected_ = key == core::Key::Up ? (selected_ + levels_.size() - 1) % levels_.size()
                                            : (selected_ + 1) % levels_.size();
           load(selected_);
+          sound("menu_move");
         }
-        if (key == core::Key::Enter && load(selected_)) play();
+        if (key == core::Key::Enter && load(selected_)) sound("menu_select"), play();
         break;
       case Screen::Playing:
         if (key == core::Key::Escape) screen_ = Screen::Paused, menuItem_ = 0;
@@ -226,9 +241,10 @@ void Game::handle(const core::WindowInput& input) {
         break;
       case Screen::Paused:
         if (key == core::Key::Escape) screen_ = Screen::Playing;
-        if (key == core::Key::Up) menuItem_ = (menuItem_ + 3) % 4;
-        if (key == core::Key::Down) menuItem_ = (menuItem_ + 1) % 4;
+        if (key == core::Key::Up) menuItem_ = (menuItem_ + 3) % 4, sound("menu_move");
+        if (key == core::Key::Down) menuItem_ = (menuItem_ + 1) % 4, sound("menu_move");
         if (key == core::Key::Enter) {
+          sound("menu_select");
           if (menuItem_ == 0) screen_ = Screen::Playing;
           if (menuItem_ == 1 && load(level_)) play();
           if (menuItem_ == 2) finishRecording(), screen_ = Screen::Title, selected_ = level_;
@@ -247,6 +263,7 @@ void Game::handle(const core::WindowInput& input) {
         break;
     }
   }
+  holdSound();
 }
 
 void Game::stepSimulation(int due, uint8_t held) {

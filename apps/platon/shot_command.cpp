@@ -80,7 +80,7 @@ int shotCommand(int argc, char** argv) {
   try {
     core::Replay input;
     if (!inputPath.empty()) input = core::readReplay(inputPath);
-    const core::SystemRegistry registry = engineRegistry(Presentation::Window);
+    const core::SystemRegistry registry = engineRegistry(Presentation::Picture);
     core::LiveScene live(scenePathOf(level), registry, false);
     if (!displayOf(live.scene()))
       throw std::runtime_error(scenePathOf(level) + ": the scene does not name \"rendering\"");

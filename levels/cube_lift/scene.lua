@@ -2,7 +2,8 @@
 -- edge onto the next face to the goal.
 return {
   name = "Cube: lift",
-  systems = { "scripting", "rendering" },
+  systems = { "scripting", "rendering", "audio" },
+  music = "first_steps",
   stage = { level = "cube_lift.level" },
   gravity = 0.35,
   scripts = {

@@ -2,7 +2,8 @@
 -- a checkpoint, then run across an edge onto the next face and through the door to the goal.
 return {
   name = "Cube: switches",
-  systems = { "scripting", "rendering" },
+  systems = { "scripting", "rendering", "audio" },
+  music = "first_steps",
   stage = { level = "cube_switches.level" },
   gravity = 0.35,
   scripts = {

@@ -1,7 +1,8 @@
 -- Dodecahedron, belt: walk right round the pentagons.
 return {
   name = "Dodecahedron: belt",
-  systems = { "scripting", "rendering" },
+  systems = { "scripting", "rendering", "audio" },
+  music = "orbit",
   stage = { level = "dodeca_belt.level" },
   gravity = 0.35,
   scripts = {

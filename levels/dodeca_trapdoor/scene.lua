@@ -1,7 +1,8 @@
 -- Dodecahedron, trapdoor: open the trapdoor with the switch and fall onto the bottom face.
 return {
   name = "Dodecahedron: trapdoor",
-  systems = { "scripting", "rendering" },
+  systems = { "scripting", "rendering", "audio" },
+  music = "orbit",
   stage = { level = "dodeca_trapdoor.level" },
   gravity = 0.35,
   scripts = {

@@ -1,7 +1,8 @@
 -- Icosahedron, strip: three triangles in a row, each leaning its own way.
 return {
   name = "Icosahedron: strip",
-  systems = { "scripting", "rendering" },
+  systems = { "scripting", "rendering", "audio" },
+  music = "crystal",
   stage = { level = "icosa_strip.level" },
   gravity = 0.35,
   scripts = {

@@ -1,7 +1,8 @@
 -- Octahedron, ring: walk right round the four upper faces.
 return {
   name = "Octahedron: ring",
-  systems = { "scripting", "rendering" },
+  systems = { "scripting", "rendering", "audio" },
+  music = "orbit",
   stage = { level = "octa_ring.level" },
   gravity = 0.35,
   scripts = {

@@ -1,7 +1,8 @@
 -- Tetrahedron, around: walk right round three faces; the goal waits on the third.
 return {
   name = "Tetrahedron: around",
-  systems = { "scripting", "rendering" },
+  systems = { "scripting", "rendering", "audio" },
+  music = "first_steps",
   stage = { level = "tetra_around.level" },
   gravity = 0.35,
   scripts = {

@@ -1,7 +1,8 @@
 -- Tetrahedron, underside: drop through a gap onto the bottom face, where gravity is turned round.
 return {
   name = "Tetrahedron: underside",
-  systems = { "scripting", "rendering" },
+  systems = { "scripting", "rendering", "audio" },
+  music = "first_steps",
   stage = { level = "tetra_underside.level" },
   gravity = 0.35,
   scripts = {

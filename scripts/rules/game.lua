@@ -9,6 +9,7 @@
 local game = ...
 local HAZARD, GOAL, CHECKPOINT = 1, 2, 3
 local DOOR, SWITCH = 1000, 2000
+local play = platon.sound.play
 
 local function isPlayer(entity) return game.player ~= nil and entity == game.player.entity end
 
@@ -30,6 +31,7 @@ function rules.beginContact(entity, tag, kind, part)
     game.touchedCheckpoint = true
   elseif tag >= SWITCH and tag < SWITCH + 1000 then
     game.pendingToggles[#game.pendingToggles + 1] = tag - SWITCH
+    play("switch")
   end
 end
 

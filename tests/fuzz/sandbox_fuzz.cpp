@@ -124,9 +124,16 @@ const char* const kLevelApi[] = {"game.message",
                                  "D.line",
                                  "D.polygon",
                                  "D.text",
-                                 "D.enabled"};
+                                 "D.enabled",
+                                 "D.look",
+                                 "platon.sound.play",
+                                 "platon.sound.music",
+                                 "platon.sound.has",
+                                 "platon.sound.playing"};
 
-const char* const kValues[] = {"0",
+const char* const kValues[] = {"'jump'",
+                               "'orbit'",
+                               "0",
                                "1",
                                "-1",
                                "0.5",

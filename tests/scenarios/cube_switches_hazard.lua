@@ -7,6 +7,7 @@ return {
   input = { { hold = "right", from = 1, to = 200 } },
   expect = {
     deaths = 1,
+    sounds = { [79] = "checkpoint", [212] = "death" },  -- the checkpoint passed, the pit's hazard
     inside = {
       { frame = 205, face = 0, box = { 1900, 900, 2200, 1200 } },   -- falling into the pit
       { frame = 213, face = 0, box = { 1050, 1250, 1200, 1350 } },  -- just respawned at the checkpoint

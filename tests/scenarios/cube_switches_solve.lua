@@ -11,6 +11,8 @@ return {
   },
   expect = {
     goal_by = 720, deaths = 0,
+    -- What a player hears: the jumps, the switch's click with the door moving, the edge, the goal.
+    sounds = { [158] = "jump", [258] = "jump", [279] = { "switch", "door" }, [423] = "cross", [673] = "goal" },
     face = { [150] = 0, [410] = 0, [440] = 1, [680] = 1 },
     inside = {
       { frame = 190, face = 0, box = { 1950, 1400, 2250, 1550 } },  -- in the air over the pit

@@ -32,6 +32,13 @@ std::string dataRoot() {
   return root;
 }
 
+std::string engineFile(const std::string& relative) {
+  std::error_code error;
+  const std::string chosen = dataRoot() + "/" + relative;
+  if (std::filesystem::exists(chosen, error)) return chosen;
+  return programFolder() + "/" PLATON_DATA_FROM_BIN "/" + relative;
+}
+
 std::string pluginFolder() { return programFolder() + "/" PLATON_PLUGINS_FROM_BIN; }
 
 namespace {

@@ -9,66 +9,12 @@
 #include <stdexcept>
 #include <stdlib.h>
 
+#include "data_fields.h"
 #include "platon/files/read_file.h"
 
 namespace platon::core {
 
 namespace {
-
-std::string placeText(const std::string& file, const DataValue& v) {
-  return file + ":" + std::to_string(v.line) + ":" + std::to_string(v.column);
-}
-
-[[noreturn]] void fieldError(const std::string& file, const DataValue& v, const std::string& reason) {
-  throw std::runtime_error(file + ":" + std::to_string(v.line) + ":" + std::to_string(v.column) + ": " + reason);
-}
-
-std::string stringField(const std::string& file, const DataValue& table, const char* key, std::string fallback) {
-  const DataValue* v = table.field(key);
-  if (!v) return fallback;
-  if (!v->isString()) fieldError(file, *v, std::string("'") + key + "' must be a string");
-  return v->text;
-}
-
-std::string shown(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.15g", v);
-  return text;
-}
-
-double numberField(const std::string& file, const DataValue& table, const char* key, double fallback, double low,
-                   double high) {
-  const DataValue* v = table.field(key);
-  if (!v) return fallback;
-  if (!v->isNumber()) fieldError(file, *v, std::string("'") + key + "' must be a number");
-  if (v->number < low || v->number > high)
-    fieldError(
-        file, *v,
-        std::string("'") + key + "' must be within [" + shown(low) + ", " + shown(high) + "], not " + shown(v->number));
-  return v->number;
-}
-
-// A whole number within [low, high] (an edge, a seed, a limit: 4096.7 is a mistake, not 4096).
-double wholeField(const std::string& file, const DataValue& table, const char* key, double fallback, double low,
-                  double high) {
-  const double v = numberField(file, table, key, fallback, low, high);
-  if (v != std::floor(v))
-    fieldError(file, *table.field(key), std::string("'") + key + "' must be a whole number, not " + shown(v));
-  return v;
-}
-
-void checkKeys(const std::string& file, const DataValue& table, std::initializer_list<const char*> known) {
-  for (const DataEntry& e : table.entries) {
-    bool ok = false;
-    for (const char* k : known) ok = ok || (e.key.isString() && e.key.text == k);
-    if (!ok) {
-      std::string list;
-      for (const char* k : known) list += std::string(list.empty() ? "" : ", ") + k;
-      const std::string name = e.key.isString() ? dataKeyText(e.key) : "[" + dataKeyText(e.key) + "]";
-      fieldError(file, e.key.line ? e.key : e.value, "unknown field " + name + " (known: " + list + ")");
-    }
-  }
-}
 
 std::string realPath(const std::string& path) {
   char resolved[PATH_MAX];
@@ -106,7 +52,7 @@ SceneManifest loadManifest(const std::string& path) {
   }
   const DataValue root = readLuaData(text, path);
   if (!root.isTable()) fieldError(path, root, "a manifest is a table: return { ... }");
-  checkKeys(path, root, {"name", "systems", "stage", "gravity", "scripts", "limits", "seed"});
+  checkKeys(path, root, {"name", "systems", "stage", "gravity", "scripts", "limits", "seed", "music", "sounds"});
 
   SceneManifest m;
   m.path = path;
@@ -145,6 +91,18 @@ SceneManifest loadManifest(const std::string& path) {
   }
   m.gravity = numberField(path, root, "gravity", m.gravity, 0, 1000);
   m.seed = static_cast<uint32_t>(wholeField(path, root, "seed", m.seed, 0, 4294967295.0));
+  if (const DataValue* music = root.field("music")) {
+    m.music = stringField(path, root, "music", "");
+    m.musicPlace = placeText(path, *music);
+  }
+  if (const DataValue* sounds = root.field("sounds")) {
+    const std::string p = stringField(path, root, "sounds", "");
+    if (p.empty() || p.find("..") != std::string::npos || p[0] == '/')
+      fieldError(path, *sounds,
+                 "'" + p + "': a sound bank is a path inside the scene's folder (no '..', not absolute)");
+    m.soundBank = insideFolder(path, m.directory, *sounds, p);
+    m.placeOf[m.soundBank] = placeText(path, *sounds);
+  }
   if (const DataValue* scripts = root.field("scripts")) {
     if (!scripts->isTable()) fieldError(path, *scripts, "'scripts' must be a table");
     checkKeys(path, *scripts, {"preset", "rules", "player", "progression", "level", "mods"});

@@ -36,10 +36,13 @@ physics::SolveReport Scene::step(const InputFrame& input) {
       if (!first) first = std::current_exception();
     }
   };
+  sounds_.clearFrame();
   for (const auto& s : systems_) guarded([&] { s->beforeStep(*this, input); });
   physics::SolveReport report{};
   guarded([&] { report = world_.solve(); });  // the world finishes its frame before rethrowing
   for (const auto& s : systems_) guarded([&] { s->afterStep(*this); });
+  const SoundFrame heard{world_.frame(), sounds_.thisFrame(), sounds_.music(), sounds_.bank()};
+  for (const auto& s : systems_) guarded([&] { s->hear(heard); });
   if (first) std::rethrow_exception(first);
   return report;
 }
@@ -79,6 +82,32 @@ std::string systemEntry(const SceneManifest& manifest, const std::string& system
   return manifest.path;
 }
 
+// The sounds a scene may play: the engine's bank and the level's own, read only by a scene that
+// can make a sound (one with scripts or audio); the manifest's tune must be in them.
+void loadSounds(const SceneManifest& manifest, Scene& scene) {
+  if (!manifest.needs("scripting") && !manifest.needs("audio")) return;
+  SoundBank bank = engineSoundBank();
+  if (!manifest.soundBank.empty()) {
+    try {
+      readSoundBank(manifest.soundBank, bank);
+    } catch (const std::runtime_error& e) {
+      const std::string what = e.what();
+      // A file that cannot be read is the naming field's error; a bad field is the bank's own.
+      if (what.rfind(manifest.soundBank + ": the sound bank:", 0) == 0)
+        throw std::runtime_error(manifest.placeOf.at(manifest.soundBank) + ": " + what);
+      throw;
+    }
+  }
+  if (!manifest.music.empty() && !bank.hasMusic(manifest.music)) {
+    std::string known;
+    for (const auto& [name, tune] : bank.music) known += (known.empty() ? "" : ", ") + name;
+    throw std::runtime_error(manifest.musicPlace + ": music '" + manifest.music + "': no such tune (known: " + known +
+                             ")");
+  }
+  scene.sounds().setBank(std::move(bank));
+  scene.sounds().setMusic(manifest.music);
+}
+
 bool hasScripts(const SceneManifest& m) {
   return !m.rules.empty() || !m.player.empty() || !m.progression.empty() || !m.level.empty() || !m.mods.empty();
 }
@@ -86,14 +115,13 @@ bool hasScripts(const SceneManifest& m) {
 // Whether loadScene creates the named system now. "meshes" is created only for a level drawn on
 // a mesh (meshStage), so other scenes never load its plugin and assimp; "scripting" only when
 // the manifest names a script, so a scene without scripts never creates a Lua state; "rendering"
-// is left out where the program has no renderer (headless runs). Any other system the program
+// and "audio" are left out where the program has no window (headless runs). Any other system the program
 // does not provide is an error at the manifest's entry: the scene would silently go without it.
 bool shouldCreate(const std::string& name, const SceneManifest& manifest, const SystemRegistry& registry) {
   if (name == "meshes") return false;
   if (name == "scripting" && !hasScripts(manifest)) return false;
   if (registry.has(name)) return true;
-  if (name == "rendering") return false;
-  if (name == "audio") throw std::runtime_error(systemEntry(manifest, name) + ": audio: no audio system in this build");
+  if (name == "rendering" || name == "audio") return false;  // headless: the scene's own record is the null device
   std::string known;
   for (const std::string& n : registry.names()) known += (known.empty() ? "" : ", ") + n;
   throw std::runtime_error(systemEntry(manifest, name) + ": " + name +
@@ -186,6 +214,7 @@ std::unique_ptr<Scene> loadScene(const std::string& manifestPath, const SystemRe
     for (size_t i = 0; i < scene->stage()->faceCount(); ++i)
       scene->world().mapPart(scene->stage()->part(i)).setGravity({0, -gravity});
   }
+  loadSounds(manifest, *scene);
   const std::vector<std::string> systems = manifest.systems;
   scene->setManifest(std::move(manifest));
   for (const std::string& name : systems)

@@ -169,6 +169,9 @@ struct Plan {
   std::map<uint64_t, std::string> faceWhere;  // file:line:column: expect.face[f], for the face id check
   std::vector<Box> inside;
   std::map<uint64_t, std::string> hashAt;
+  // expect.sounds: the effects each frame must play (among others it may play), and where each is named.
+  std::map<uint64_t, std::vector<std::string>> soundsAt;
+  std::map<uint64_t, std::vector<std::string>> soundsWhere;
   std::optional<uint64_t> sceneFilesHash;  // a replay's record of the scene's files
   std::string passNote;                    // added to a passing run's summary
 
@@ -176,6 +179,7 @@ struct Plan {
     uint64_t last = 0;
     if (!faceAt.empty()) last = std::max(last, faceAt.rbegin()->first);
     if (!hashAt.empty()) last = std::max(last, hashAt.rbegin()->first);
+    if (!soundsAt.empty()) last = std::max(last, soundsAt.rbegin()->first);
     for (const Box& b : inside) last = std::max(last, b.frame);
     return last;
   }
@@ -264,8 +268,9 @@ class PlanReader {
   int32_t coordinate(const DataValue& d, const std::string& where) const {
     return static_cast<int32_t>(integer(d, where, -kMaxCoordinate, kMaxCoordinate));
   }
-  // A list: keys 1, 2, ... n with no holes, each a table.
-  std::vector<const DataValue*> list(const DataValue& d, const std::string& where, const char* ofWhat) const {
+  // A list: keys 1, 2, ... n with no holes, each of `itemKind` (a table unless said).
+  std::vector<const DataValue*> list(const DataValue& d, const std::string& where, const char* ofWhat,
+                                     DataValue::Kind itemKind = DataValue::Kind::Table) const {
     if (d.kind != DataValue::Kind::Table)
       fail(d, where, std::string("expected a list of ") + ofWhat + ", got " + core::describeData(d));
     std::vector<const DataValue*> items;
@@ -275,7 +280,7 @@ class PlanReader {
         fail(key.line ? key : value, item,
              std::string("not item ") + std::to_string(items.size() + 1) + " of a list (" + where + " is a list of " +
                  ofWhat + ", items 1, 2, 3... with no holes)");
-      if (value.kind != DataValue::Kind::Table)
+      if (value.kind != itemKind)
         fail(value, item, std::string("expected ") + ofWhat + ", got " + core::describeData(value));
       items.push_back(&value);
     }
@@ -340,7 +345,7 @@ class PlanReader {
   void readExpect(const DataValue& expect, Plan& plan) const {
     if (expect.kind != DataValue::Kind::Table)
       fail(expect, "expect", "expected a table of checks, got " + core::describeData(expect));
-    knownKeys(expect, "expect", {"goal_by", "deaths", "face", "inside", "hash"});
+    knownKeys(expect, "expect", {"goal_by", "deaths", "face", "inside", "hash", "sounds"});
     const auto last = static_cast<double>(plan.frames);
     if (const DataValue* goal = field(expect, "goal_by")) plan.goalBy = wholeNumber(*goal, "expect.goal_by", 1, last);
     if (const DataValue* deaths = field(expect, "deaths"))
@@ -367,6 +372,26 @@ class PlanReader {
                "frame " + std::to_string(f) + ": state hash " + core::describeData(value) +
                    " is not 16 lower-case hex digits");
         plan.hashAt[f] = value.text;
+      }
+    }
+    if (const DataValue* sounds = field(expect, "sounds")) {
+      if (sounds->kind != DataValue::Kind::Table)
+        fail(*sounds, "expect.sounds",
+             "expected { [frame] = \"name\" or { \"name\", ... }, ... }, got " + core::describeData(*sounds));
+      for (const auto& [key, value] : sounds->entries) {
+        const std::string where = "expect.sounds[" + core::dataKeyText(key) + "]";
+        const uint64_t f = frameKey(key, value, where, plan);
+        std::vector<const DataValue*> names;
+        if (value.kind == DataValue::Kind::String)
+          names.push_back(&value);
+        else
+          names = list(value, where, "sounds' names", DataValue::Kind::String);
+        for (size_t i = 0; i < names.size(); ++i) {
+          const std::string named =
+              value.kind == DataValue::Kind::String ? where : where + "[" + std::to_string(i + 1) + "]";
+          plan.soundsAt[f].push_back(names[i]->text);
+          plan.soundsWhere[f].push_back(at(*names[i], named));
+        }
       }
     }
     if (const DataValue* inside = field(expect, "inside")) {
@@ -414,6 +439,19 @@ void checkFaces(const Plan& plan, const core::Scene& scene) {
   };
   for (const auto& [frame, face] : plan.faceAt) check(face, plan.faceWhere.at(frame));
   for (const Box& b : plan.inside) check(b.face, b.where);
+  // Likewise a sound the scene's bank does not have.
+  for (const auto& [frame, names] : plan.soundsAt)
+    for (size_t i = 0; i < names.size(); ++i)
+      if (!scene.sounds().bank().hasEffect(names[i]))
+        throw ScriptError(plan.soundsWhere.at(frame)[i] + "the scene's sound bank has no effect '" + names[i] + "'",
+                          "");
+}
+
+// The effects the frame played, "jump, land", or "nothing".
+std::string heardText(const core::Scene& scene) {
+  std::string text;
+  for (const core::SoundEvent& e : scene.sounds().thisFrame()) text += (text.empty() ? "" : ", ") + e.name;
+  return text.empty() ? "nothing" : text;
 }
 
 std::string hex(uint64_t value) {
@@ -432,6 +470,16 @@ std::string checkFrame(const Plan& plan, uint64_t f, core::Scene& scene, ScriptS
     std::fprintf(stderr, "%s: frame %llu: face %u at (%d, %d)%s\n", path.c_str(), static_cast<unsigned long long>(f),
                  s.face, s.x, s.y, s.won ? ", won" : "");
   }
+  // Sounds are traced on the frame they play, whatever the trace's period: a scenario expects them there.
+  if (traceEvery > 0 && !scene.sounds().thisFrame().empty())
+    std::fprintf(stderr, "%s: frame %llu: sounds %s\n", path.c_str(), static_cast<unsigned long long>(f),
+                 heardText(scene).c_str());
+  if (auto expected = plan.soundsAt.find(f); expected != plan.soundsAt.end())
+    for (const std::string& name : expected->second) {
+      const auto& heard = scene.sounds().thisFrame();
+      if (std::none_of(heard.begin(), heard.end(), [&](const core::SoundEvent& e) { return e.name == name; }))
+        return at + "expected the sound '" + name + "', heard " + heardText(scene);
+    }
   if (const size_t overlaps = scene.world().countOverlaps(); overlaps != 0)
     return at + std::to_string(overlaps) + " instance(s) overlap a solid line";
   if (auto h = plan.hashAt.find(f); h != plan.hashAt.end() && hex(scene.world().stateHash()) != h->second)

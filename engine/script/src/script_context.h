@@ -46,6 +46,7 @@ physics::EntityId checkEntity(lua_State* L, int index);
 // sandboxes see, with `context` as their upvalue.
 void registerWorldApi(LuaHost& host, ScriptContext& context);
 void registerDrawApi(LuaHost& host, ScriptContext& context);
+void registerSoundApi(LuaHost& host, ScriptContext& context);  // platon.sound.* (sound_api.cpp)
 // Replaces the per-frame world functions with FFI calls (world_ffi.cpp). Trusted states only: it
 // needs the ffi library, which sandboxes never get.
 void registerWorldFfi(LuaHost& host, ScriptContext& context);

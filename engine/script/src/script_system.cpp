@@ -383,6 +383,7 @@ ScriptSystem::ScriptSystem(core::Scene& scene, std::string root) {
   registerWorldApi(state_->host, state_->context);
   if (state_->ffi) registerWorldFfi(state_->host, state_->context);
   registerDrawApi(state_->host, state_->context);
+  registerSoundApi(state_->host, state_->context);
 }
 
 ScriptSystem::~ScriptSystem() {

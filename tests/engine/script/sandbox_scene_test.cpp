@@ -652,6 +652,98 @@ TEST(DrawApi, BadArgumentsAreErrorsHeadlessToo) {
   }
 }
 
+// platon.sound checks its arguments against the scene's bank headless too: a misspelt sound fails
+// in a scenario as it would in the game.
+TEST(SoundApi, BadCallsAreErrorsAtTheScriptsLine) {
+  Level level("sound_args",
+              "local calls = {\n"
+              "  function(s) s.play('jmup') end,\n"
+              "  function(s) s.play('jump', 2) end,\n"
+              "  function(s) s.play('jump', 1, -3) end,\n"
+              "  function(s) s.play(5) end,\n"
+              "  function(s) s.music('humm') end,\n"
+              "  function(s) s.has('jump', 'effects') end,\n"
+              "  function(s) assert(s.play('jump', 0.5, -1) == true) end,\n"
+              "  function(s) s.music('orbit') assert(s.playing() == 'orbit') end,\n"
+              "  function(s) s.music(nil) assert(s.playing() == nil) end,\n"
+              "  function(s) assert(s.has('land') and s.has('orbit', 'music') and not s.has('orbit')) end }\n"
+              "return { tick = function(game, frame)\n"
+              "  local ok, e = pcall(calls[frame], platon.sound)\n"
+              "  game.message(ok and 'ok' or e)\n"
+              "end }\n");
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene live(level.scene, registry, false);
+  const std::vector<std::string> expected = {
+      "level.lua:2: sound: no effect named 'jmup' (the scene's bank has: checkpoint, cross, death, door, goal, jump, "
+      "land, menu_move, menu_select, respawn, switch)",
+      "level.lua:3: argument 2: expected a volume 0..1, got 2",
+      "level.lua:4: argument 3: expected a pan -1..1, got -3",
+      "level.lua:5: argument 1: expected a string, got 5",
+      "level.lua:6: sound: no tune named 'humm' (the scene's bank has: crystal, first_steps, lattice, orbit)",
+      "level.lua:7: argument 2: expected nil or \"music\", got \"effects\"",
+      "ok",
+      "ok",
+      "ok",
+      "ok"};
+  for (const std::string& e : expected) {
+    const Played p = play(live, 1);
+    EXPECT_NE(p.status.message.find(e), std::string::npos) << "expected: " << e << "\ngot: " << p.status.message;
+  }
+}
+
+// A frame plays at most core::Sounds::kMaxPerFrame effects; past that play() says false.
+TEST(SoundApi, AFrameHoldsAtMostItsCapOfEffects) {
+  Level level("sound_cap",
+              "return { tick = function(game)\n"
+              "  local played = 0\n"
+              "  for i = 1, 40 do if platon.sound.play('land') then played = played + 1 end end\n"
+              "  game.message(tostring(played))\n"
+              "end }\n");
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene live(level.scene, registry, false);
+  const Played p = play(live, 2);
+  EXPECT_EQ(p.status.message, std::to_string(core::Sounds::kMaxPerFrame));
+  EXPECT_EQ(live.scene().sounds().thisFrame().size(), core::Sounds::kMaxPerFrame);
+}
+
+// draw() runs once per displayed frame: a sound from it would depend on the display's rate.
+TEST(SoundApi, DrawMayNotPlay) {
+  Level level("sound_draw", "return { draw = function(game, draw) platon.sound.play('jump') end }\n");
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene live(level.scene, registry, false);
+  core::DrawList list(true);
+  live.scene().draw(list);
+  const Played p = play(live, 1);
+  ASSERT_EQ(p.errors.size(), 1u);
+  EXPECT_NE(p.errors[0].find("level.lua:1: sound: play from a frame's logic, not from draw"), std::string::npos)
+      << p.errors[0];
+  EXPECT_TRUE(live.scene().sounds().thisFrame().empty() || live.scene().sounds().thisFrame().front().name != "jump");
+}
+
+// Sounds are the listener's: a level that plays sounds and changes its tune every frame has the
+// same state hash, frame by frame, as the same level silent.
+TEST(SoundApi, SoundsNeverEnterTheStateHash) {
+  const char* loud =
+      "return { tick = function(game, frame)\n"
+      "  platon.sound.play(frame % 2 == 0 and 'jump' or 'land', 0.5)\n"
+      "  platon.sound.music(frame % 3 == 0 and 'orbit' or 'crystal')\n"
+      "end }\n";
+  const char* silent = "return { tick = function(game, frame) end }\n";
+  Level a("sound_hash_loud", loud), b("sound_hash_silent", silent);
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene withSound(a.scene, registry, false), without(b.scene, registry, false);
+  core::InputEdges edgesA, edgesB;
+  size_t heard = 0;
+  for (int f = 1; f <= 400; ++f) {
+    const uint8_t held = InputFrame::bit(Button::Right) | (f % 50 < 10 ? InputFrame::bit(Button::Jump) : 0);
+    ASSERT_FALSE(withSound.step(edgesA.next(held)));
+    ASSERT_FALSE(without.step(edgesB.next(held)));
+    heard += withSound.scene().sounds().thisFrame().size();
+    ASSERT_EQ(withSound.scene().world().stateHash(), without.scene().world().stateHash()) << "frame " << f;
+  }
+  EXPECT_GE(heard, 400u);
+}
+
 // A level's own player script runs sandboxed but is handed the game state (it is the game's logic).
 // What it writes there never becomes something the engine calls outside its limits: the engine
 // dispatches on its own copies, game.Player and game.progression are sealed, and the engine's

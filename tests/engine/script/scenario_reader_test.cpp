@@ -49,7 +49,7 @@ TEST(ScenarioReader, EveryMalformedValueIsRefusedAtItsLineAndColumn) {
        "expect.inside[1]: expected { frame =, face =, box = { x0, y0, x1, y1 } }, got 5"},
       // C2: unknown keys, with the known ones.
       {"  expect = { goal_bye = 10 },", "goal_bye",
-       "expect: unknown key 'goal_bye' (known: goal_by, deaths, face, inside, hash)"},
+       "expect: unknown key 'goal_bye' (known: goal_by, deaths, face, inside, hash, sounds)"},
       {"  expcet = { goal_by = 10 },", "expcet",
        "scenario: unknown key 'expcet' (known: scene, frames, input, expect)"},
       {"  framez = 3,", "framez", "scenario: unknown key 'framez'"},
@@ -115,6 +115,14 @@ TEST(ScenarioReader, EveryMalformedValueIsRefusedAtItsLineAndColumn) {
       {"  expect = { inside = { { frame = 5, face = 9, box = { 0, 0, 1, 1 } } } },", "9",
        "expect.inside[1].face: face 9 does not exist"},
       {"  frames = 50,", "frames", "the key 'frames' is given twice in one table"},
+      {"  expect = { sounds = 'jump' },", "'jump'", "expect.sounds: expected { [frame] = \"name\""},
+      {"  expect = { sounds = { [200] = 'jump' } },", "200", "expect.sounds[200] (a frame): 200 is outside 1..100"},
+      {"  expect = { sounds = { [5] = 7 } },", "7", "expect.sounds[5]: expected a list of sounds' names, got 7"},
+      {"  expect = { sounds = { [5] = { 'jump', 3 } } },", "3 }", "expect.sounds[5][2]: expected sounds' names, got 3"},
+      {"  expect = { sounds = { [5] = 'jmup' } },", "'jmup'",
+       "expect.sounds[5]: the scene's sound bank has no effect 'jmup'"},
+      {"  expect = { sounds = { [5] = { 'land', 'jmup' } } },", "'jmup'",
+       "expect.sounds[5][2]: the scene's sound bank has no effect 'jmup'"},
       {"  expect = { face = { ['a\\0b'] = 1 } },", "'a", "expect.face['a\\x00b'] (a frame): expected a whole number"},
   };
   for (const Case& c : cases) {
@@ -144,7 +152,7 @@ TEST(ScenarioReader, TopLevelFieldsAreChecked) {
       // Not a literal: the file runs as Lua, and its line of `return` is the position.
       {"return { " + scene + ", frames = 0/0 }", "sc.lua:1: frames: expected a whole number in 1..100000000, got nan"},
       {"local n = 100\nreturn { " + scene + ", frames = n, expect = { goal_bye = 1 } }",
-       "sc.lua:2: expect: unknown key 'goal_bye' (known: goal_by, deaths, face, inside, hash)"},
+       "sc.lua:2: expect: unknown key 'goal_bye' (known: goal_by, deaths, face, inside, hash, sounds)"},
       {"local t = {}\nt[1] = t\nreturn { " + scene + ", frames = 10, input = t }",
        "sc.lua:3: tables nested more than 32 deep"},
       {"return { " + scene + ", frames = 10, input = { print } }", "sc.lua:1: input[1]: expected { hold"},

@@ -20,6 +20,10 @@ std::string programFolder();
 // where it looked when that folder has no scripts/scene.lua.
 std::string dataRoot();
 
+// One of the engine's own files (sounds/bank.lua): under dataRoot() when it is there, else in the
+// program's own data folder, so a modder's PLATON_ROOT needs to copy only what it changes.
+std::string engineFile(const std::string& relative);
+
 // Where plugins are looked for after $PLATON_PLUGIN_PATH: <programFolder()>/../lib/platon.
 // (That folder does not depend on $PLATON_ROOT: the plugins belong to the program.)
 std::string pluginFolder();

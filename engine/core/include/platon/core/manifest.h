@@ -42,6 +42,11 @@ struct SceneManifest {
   int64_t frameSteps = 10'000'000;
   double deadlineMilliseconds = 2000;
   uint32_t seed = 1;
+  // music = "name": the tune of the level's bank (or the engine's) played from its start, and where
+  // the manifest names it. sounds = "file": the level's own sound bank (core/sound.h), inside its
+  // folder like its scripts.
+  std::string music, musicPlace;
+  std::string soundBank;
 
   bool needs(std::string_view system) const;
 };

@@ -8,6 +8,7 @@
 #include "platon/core/look.h"
 #include "platon/core/manifest.h"
 #include "platon/core/mesh_source.h"
+#include "platon/core/sound.h"
 #include "platon/core/system.h"
 #include "platon/physics/world.h"
 #include "platon/stage/level.h"
@@ -49,6 +50,10 @@ class Scene {
   void draw(DrawList& out) const;
   // How entities are drawn (platon.draw.look): the picture's, not the simulation's.
   Looks& looks() { return looks_; }
+  // What the scene makes heard (platon.sound): its bank, this frame's effects, its tune. Cleared at
+  // each step's start and handed to every system's hear() at its end.
+  Sounds& sounds() { return sounds_; }
+  const Sounds& sounds() const { return sounds_; }
 
  private:
   SceneManifest manifest_;
@@ -56,6 +61,7 @@ class Scene {
   std::optional<stage::Stage> stage_;
   std::optional<stage::Level> level_;
   Looks looks_;
+  Sounds sounds_;
   std::vector<std::unique_ptr<System>> systems_;
   std::vector<std::string> names_;
 };

@@ -20,6 +20,8 @@ class MeshSource;
 
 class Scene;
 class Display;
+class AudioControls;
+struct SoundFrame;
 
 class System {
  public:
@@ -32,6 +34,9 @@ class System {
   virtual void beforeStep(Scene& scene, const InputFrame& input) { (void)scene, (void)input; }
   // After the physics step: react to where things ended up.
   virtual void afterStep(Scene& scene) { (void)scene; }
+  // At the end of every step, once every system's afterStep has run: what the frame made heard
+  // (core/sound.h), for the audio system to play.
+  virtual void hear(const SoundFrame& frame) { (void)frame; }
   // Say what to draw; called only when the scene has a renderer.
   virtual void draw(const Scene& scene, DrawList& out) const { (void)scene, (void)out; }
 
@@ -45,6 +50,8 @@ class System {
 
   // The window this system shows the scene in, for the rendering system (core/display.h).
   virtual Display* display() { return nullptr; }
+  // The audio system's controls (core/audio.h), for the audio system.
+  virtual AudioControls* audio() { return nullptr; }
   // The mesh reader this system offers, for the meshes system (core/mesh_source.h).
   virtual MeshSource* meshSource() { return nullptr; }
 };

@@ -1,0 +1,172 @@
+#include "audio_system.h"
+
+#include <SDL.h>
+#include <SDL_mixer.h>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <mutex>
+#include <vector>
+
+namespace platon::audio {
+
+// The opened device and what plays on it, shared by every audio system of the process.
+struct Device {
+  bool open = false;
+  std::string silentBecause;  // why not open
+  int rate = 44100;
+  Uint16 format = AUDIO_S16SYS;
+  int channels = 2;
+  float musicVolume = 0.6f, effectsVolume = 0.9f;
+  bool paused = false;
+  // The tune: its name and player. The mixer's thread reads the player and the volumes under `lock`,
+  // held by the game's thread only to swap a pointer or set a number.
+  std::mutex lock;
+  std::string tune;
+  std::unique_ptr<synth::MusicPlayer> player;
+  std::vector<float> scratch;
+};
+
+namespace {
+
+std::weak_ptr<Device> sharedDevice;
+
+// The mixer thread's music: the tune stepped into the device's buffer.
+void playMusic(void* user, Uint8* stream, int bytes) {
+  auto* device = static_cast<Device*>(user);
+  const std::lock_guard<std::mutex> held(device->lock);
+  const size_t frames = static_cast<size_t>(bytes) / (sizeof(int16_t) * 2);
+  device->scratch.assign(frames * 2, 0.0f);
+  if (device->player && !device->paused) device->player->mix(device->scratch.data(), frames, device->musicVolume);
+  auto* out = reinterpret_cast<int16_t*>(stream);
+  for (size_t i = 0; i < frames * 2; ++i) out[i] = static_cast<int16_t>(std::lround(device->scratch[i] * 32767.0f));
+}
+
+std::shared_ptr<Device> openDevice() {
+  if (auto device = sharedDevice.lock()) return device;
+  auto device = std::make_shared<Device>();
+  // A game without a sound card still plays: silent, and it says why (the pause menu shows it).
+  if (SDL_InitSubSystem(SDL_INIT_AUDIO) != 0) {
+    device->silentBecause = std::string("no audio: ") + SDL_GetError();
+  } else if (Mix_OpenAudio(44100, AUDIO_S16SYS, 2, 1024) != 0) {
+    device->silentBecause = std::string("no audio device: ") + Mix_GetError();
+    SDL_QuitSubSystem(SDL_INIT_AUDIO);
+  } else {
+    int frequency = 0, channels = 0;
+    Mix_QuerySpec(&frequency, &device->format, &channels);
+    device->rate = frequency;
+    device->channels = channels;
+    device->open = device->format == AUDIO_S16SYS && channels == 2;
+    if (!device->open) {
+      device->silentBecause = "no audio: the device wants another sample format than 16-bit stereo";
+      Mix_CloseAudio();
+      SDL_QuitSubSystem(SDL_INIT_AUDIO);
+    } else {
+      Mix_AllocateChannels(24);
+      Mix_MasterVolume(static_cast<int>(std::lround(device->effectsVolume * 128)));
+      Mix_HookMusic(playMusic, device.get());
+    }
+  }
+  if (!device->open) std::fprintf(stderr, "platon: %s; the game plays silent\n", device->silentBecause.c_str());
+  sharedDevice = device;
+  return device;
+}
+
+}  // namespace
+
+AudioSystem::AudioSystem(const core::SoundBank& bank) : device_(openDevice()), bank_(bank) {}
+
+AudioSystem::~AudioSystem() {
+  for (auto& [name, chunk] : chunks_) Mix_FreeChunk(chunk);  // halts the channels playing it
+  if (device_.use_count() == 1 && device_->open) {
+    Mix_HookMusic(nullptr, nullptr);
+    Mix_CloseAudio();
+    SDL_QuitSubSystem(SDL_INIT_AUDIO);
+  }
+}
+
+Mix_Chunk* AudioSystem::chunkOf(const std::string& name) {
+  const auto cached = chunks_.find(name);
+  if (cached != chunks_.end()) return cached->second;
+  const auto effect = bank_.effects.find(name);
+  if (effect == bank_.effects.end()) return nullptr;
+  // Rendered at the device's rate, as 16-bit stereo (the same on both sides: panning is the channel's).
+  const std::vector<float> mono = synth::render(effect->second, device_->rate);
+  std::vector<int16_t> stereo(mono.size() * 2);
+  for (size_t i = 0; i < mono.size(); ++i)
+    stereo[2 * i] = stereo[2 * i + 1] = static_cast<int16_t>(std::lround(mono[i] * 32767.0f));
+  auto* bytes = static_cast<Uint8*>(SDL_malloc(stereo.size() * sizeof(int16_t)));
+  if (!bytes) return nullptr;
+  std::copy_n(reinterpret_cast<const Uint8*>(stereo.data()), stereo.size() * sizeof(int16_t), bytes);
+  Mix_Chunk* chunk = Mix_QuickLoad_RAW(bytes, static_cast<Uint32>(stereo.size() * sizeof(int16_t)));
+  if (!chunk) {
+    SDL_free(bytes);
+    return nullptr;
+  }
+  chunk->allocated = 1;  // Mix_FreeChunk frees the samples too
+  chunks_[name] = chunk;
+  return chunk;
+}
+
+void AudioSystem::playEffect(const std::string& name, float volume, float pan) {
+  if (!device_->open || device_->paused) return;
+  Mix_Chunk* chunk = chunkOf(name);
+  if (!chunk) return;
+  // A free channel, set up before it starts, so no sample plays at another sound's volume.
+  const int channel = Mix_GroupAvailable(-1);
+  if (channel < 0) return;  // every channel busy: the newest sound is the one dropped
+  Mix_Volume(channel, static_cast<int>(
+                          std::lround(std::clamp(volume, 0.0f, 1.0f) * 128)));  // the effects volume is the master's
+  const float p = std::clamp(pan, -1.0f, 1.0f);
+  Mix_SetPanning(channel, static_cast<Uint8>(std::lround(255 * std::min(1.0f, 1 - p))),
+                 static_cast<Uint8>(std::lround(255 * std::min(1.0f, 1 + p))));
+  Mix_PlayChannel(channel, chunk, 0);
+}
+
+void AudioSystem::hear(const core::SoundFrame& frame) {
+  if (!device_->open) return;
+  for (const core::SoundEvent& e : frame.effects) playEffect(e.name, e.volume, e.pan);
+  if (frame.music == device_->tune) return;
+  std::unique_ptr<synth::MusicPlayer> next;
+  const auto tune = frame.bank.music.find(frame.music);
+  if (tune != frame.bank.music.end()) next = std::make_unique<synth::MusicPlayer>(tune->second, device_->rate);
+  {
+    const std::lock_guard<std::mutex> held(device_->lock);
+    device_->player.swap(next);
+  }
+  device_->tune = frame.music;
+}
+
+void AudioSystem::setVolumes(float music, float effects) {
+  {
+    const std::lock_guard<std::mutex> held(device_->lock);
+    device_->musicVolume = std::clamp(music, 0.0f, 1.0f);
+    device_->effectsVolume = std::clamp(effects, 0.0f, 1.0f);
+  }
+  // Every channel's, those playing now too (the tune's is read by the mixer thread above).
+  if (device_->open) Mix_MasterVolume(static_cast<int>(std::lround(device_->effectsVolume * 128)));
+}
+
+void AudioSystem::setPaused(bool paused) {
+  if (!device_->open || paused == device_->paused) return;
+  {
+    const std::lock_guard<std::mutex> held(device_->lock);
+    device_->paused = paused;
+  }
+  if (paused)
+    Mix_Pause(-1);
+  else
+    Mix_Resume(-1);
+}
+
+void AudioSystem::playNow(const std::string& name) {
+  if (!device_->open) return;
+  const bool paused = device_->paused;
+  device_->paused = false;  // a menu's click sounds while the game is paused
+  playEffect(name, 1, 0);
+  device_->paused = paused;
+}
+
+std::string AudioSystem::silentBecause() const { return device_->silentBecause; }
+
+}  // namespace platon::audio
