@@ -32,6 +32,15 @@ return {
                     arpeggio_at = 0.04, arpeggio_ratio = 1.5, lowpass = 5000, volume = 0.24 },
   },
   music = {
+    -- The title screen: C, A minor, F, G, slow.
+    title = { tempo = 84, voices = {
+      { wave = "triangle", volume = 0.3, attack = 0.05, release = 0.3,
+        notes = "C2 - - - - - - - A1 - - - - - - -   F1 - - - - - - - G1 - - - - - - -" },
+      { wave = "sine", volume = 0.16, decay = 0.25, pan = 0.25,
+        notes = "C4 E4 G4 C5 G4 E4 C4 E4 A3 C4 E4 A4 E4 C4 A3 C4   F3 A3 C4 F4 C4 A3 F3 A3 G3 B3 D4 G4 D4 B3 G3 B3" },
+      { wave = "triangle", volume = 0.16, attack = 0.04, release = 0.25, pan = -0.2,
+        notes = "E5 - - - D5 - C5 - E5 - - - - - - -   F5 - - - E5 - D5 - D5 - - - - - - -" },
+    } },
     -- The cube and the tetrahedron: C major, unhurried.
     first_steps = { tempo = 100, voices = {
       { wave = "triangle", volume = 0.32, release = 0.05,

@@ -124,10 +124,13 @@ class Game {
   void sound(const char* name) {
     if (core::AudioControls* a = audio()) a->playNow(name);
   }
-  // Effects and music hold while a menu covers the game (title, pause) and go on in play and on the
-  // level-complete screen (whose goal sound is still ringing).
+  // The title has its own tune; the pause menu holds effects and music; play and the level-complete
+  // screen (whose goal sound is still ringing) go on.
   void holdSound() {
-    if (core::AudioControls* a = audio()) a->setPaused(screen_ == Screen::Title || screen_ == Screen::Paused);
+    core::AudioControls* a = audio();
+    if (!a) return;
+    a->setPaused(screen_ == Screen::Paused);
+    if (screen_ == Screen::Title) a->playTune("title");
   }
   script::GameStatus status() { return statusOf(live_->scene()); }
   void handle(const core::WindowInput& input);

@@ -2,14 +2,16 @@
 # The game as a person plays it: a real window under Xvfb, keys typed with xdotool. Enter on the
 # title screen starts the first level, holding Right walks it to the goal, Enter goes on to the next
 # level, Esc and the pause menu quit. The level must be recorded as done in the progress file (a
-# fresh XDG data folder), and the game must say where the player stood when it quit. Run by ctest as
+# fresh XDG data folder), and the game must say where the player stood when it quit. Its sound goes
+# to SDL's disk driver (what a sound card would play, as a file), which must not be silent. Run by
+# ctest as
 #   with_xvfb.sh real_window_game.sh PLATON
 set -eu
 platon=$1
 unset SDL_VIDEODRIVER  # the X server xvfb-run started, not offscreen
 data=$(mktemp -d)
 log="$data/log"
-XDG_DATA_HOME="$data" "$platon" game > "$log" 2>&1 &
+SDL_AUDIODRIVER=disk SDL_DISKAUDIOFILE="$data/audio.raw" XDG_DATA_HOME="$data" "$platon" game > "$log" 2>&1 &
 pid=$!
 fail() { echo "$1"; cat "$log"; kill "$pid" 2>/dev/null; xdotool keyup Right 2>/dev/null; rm -rf "$data"; exit 1; }
 . "$(dirname "$0")/window_test.sh"
@@ -27,4 +29,7 @@ wait "$pid" || fail "the game failed"
 cat "$log"
 grep -q "^cube_intro " "$data/platon/progress.txt" || fail "the progress file does not record cube_intro"
 grep -q "^quit on tetra_around" "$log" || fail "the game did not say where it quit"
+# The title's tune, the level's tune and its effects: samples far from silence, in most seconds.
+loud=$(od -An -v -td2 -w4 "$data/audio.raw" | awk '{ n++; if ($1 > 2000 || $1 < -2000) l++ } END { printf "%d", 1000 * l / (n ? n : 1) }')
+[ "$loud" -ge 20 ] || fail "the game was silent: $loud per mille of its samples are loud"
 rm -rf "$data"

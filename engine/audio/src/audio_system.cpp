@@ -25,11 +25,10 @@ struct Device {
   std::string tune;
   std::unique_ptr<synth::MusicPlayer> player;
   std::vector<float> scratch;
+  int systems = 0;  // the audio systems alive (the game's thread only)
 };
 
 namespace {
-
-std::weak_ptr<Device> sharedDevice;
 
 // The mixer thread's music: the tune stepped into the device's buffer.
 void playMusic(void* user, Uint8* stream, int bytes) {
@@ -42,46 +41,48 @@ void playMusic(void* user, Uint8* stream, int bytes) {
   for (size_t i = 0; i < frames * 2; ++i) out[i] = static_cast<int16_t>(std::lround(device->scratch[i] * 32767.0f));
 }
 
-std::shared_ptr<Device> openDevice() {
-  if (auto device = sharedDevice.lock()) return device;
-  auto device = std::make_shared<Device>();
-  // A game without a sound card still plays: silent, and it says why (the pause menu shows it).
-  if (SDL_InitSubSystem(SDL_INIT_AUDIO) != 0) {
-    device->silentBecause = std::string("no audio: ") + SDL_GetError();
-  } else if (Mix_OpenAudio(44100, AUDIO_S16SYS, 2, 1024) != 0) {
-    device->silentBecause = std::string("no audio device: ") + Mix_GetError();
-    SDL_QuitSubSystem(SDL_INIT_AUDIO);
-  } else {
-    int frequency = 0, channels = 0;
-    Mix_QuerySpec(&frequency, &device->format, &channels);
-    device->rate = frequency;
-    device->channels = channels;
-    device->open = device->format == AUDIO_S16SYS && channels == 2;
-    if (!device->open) {
-      device->silentBecause = "no audio: the device wants another sample format than 16-bit stereo";
-      Mix_CloseAudio();
-      SDL_QuitSubSystem(SDL_INIT_AUDIO);
+// Opened by the first audio system and kept for the rest of the process, like the plugin itself:
+// closing costs a join of SDL's audio thread (about 50 ms) and quitting its subsystem another join
+// (about 100 ms with ALSA), which a level change or the game's exit would pay for nothing.
+Device& theDevice() {
+  static Device* const device = [] {
+    auto* d = new Device();  // never destroyed: the process's exit closes the device
+    // A game without a sound card still plays: silent, and it says why.
+    if (SDL_InitSubSystem(SDL_INIT_AUDIO) != 0) {
+      d->silentBecause = std::string("no audio: ") + SDL_GetError();
+    } else if (Mix_OpenAudio(44100, AUDIO_S16SYS, 2, 1024) != 0) {
+      d->silentBecause = std::string("no audio device: ") + Mix_GetError();
     } else {
-      Mix_AllocateChannels(24);
-      Mix_MasterVolume(static_cast<int>(std::lround(device->effectsVolume * 128)));
-      Mix_HookMusic(playMusic, device.get());
+      int frequency = 0, channels = 0;
+      Mix_QuerySpec(&frequency, &d->format, &channels);
+      d->rate = frequency;
+      d->channels = channels;
+      d->open = d->format == AUDIO_S16SYS && channels == 2;
+      if (!d->open) {
+        d->silentBecause = "no audio: the device wants another sample format than 16-bit stereo";
+      } else {
+        Mix_AllocateChannels(24);
+        Mix_MasterVolume(static_cast<int>(std::lround(d->effectsVolume * 128)));
+        Mix_HookMusic(playMusic, d);
+      }
     }
-  }
-  if (!device->open) std::fprintf(stderr, "platon: %s; the game plays silent\n", device->silentBecause.c_str());
-  sharedDevice = device;
-  return device;
+    if (!d->open) std::fprintf(stderr, "platon: %s; the game plays silent\n", d->silentBecause.c_str());
+    return d;
+  }();
+  return *device;
 }
 
 }  // namespace
 
-AudioSystem::AudioSystem(const core::SoundBank& bank) : device_(openDevice()), bank_(bank) {}
+AudioSystem::AudioSystem(const core::SoundBank& bank) : device_(&theDevice()), bank_(bank) { ++device_->systems; }
 
 AudioSystem::~AudioSystem() {
   for (auto& [name, chunk] : chunks_) Mix_FreeChunk(chunk);  // halts the channels playing it
-  if (device_.use_count() == 1 && device_->open) {
-    Mix_HookMusic(nullptr, nullptr);
-    Mix_CloseAudio();
-    SDL_QuitSubSystem(SDL_INIT_AUDIO);
+  // The last scene that names audio is gone (the title with a level that does not): silence.
+  if (--device_->systems == 0 && device_->open) {
+    const std::lock_guard<std::mutex> held(device_->lock);
+    device_->player.reset();
+    device_->tune.clear();
   }
 }
 
@@ -126,16 +127,22 @@ void AudioSystem::playEffect(const std::string& name, float volume, float pan) {
 void AudioSystem::hear(const core::SoundFrame& frame) {
   if (!device_->open) return;
   for (const core::SoundEvent& e : frame.effects) playEffect(e.name, e.volume, e.pan);
-  if (frame.music == device_->tune) return;
+  setTune(frame.music, frame.bank);
+}
+
+void AudioSystem::setTune(const std::string& name, const core::SoundBank& bank) {
+  if (!device_->open || name == device_->tune) return;
   std::unique_ptr<synth::MusicPlayer> next;
-  const auto tune = frame.bank.music.find(frame.music);
-  if (tune != frame.bank.music.end()) next = std::make_unique<synth::MusicPlayer>(tune->second, device_->rate);
+  const auto tune = bank.music.find(name);
+  if (tune != bank.music.end()) next = std::make_unique<synth::MusicPlayer>(tune->second, device_->rate);
   {
     const std::lock_guard<std::mutex> held(device_->lock);
     device_->player.swap(next);
   }
-  device_->tune = frame.music;
+  device_->tune = name;
 }
+
+void AudioSystem::playTune(const std::string& name) { setTune(name, bank_); }
 
 void AudioSystem::setVolumes(float music, float effects) {
   {

@@ -2,7 +2,8 @@
 // by engine/synth the first time each is played and kept; the scene's tune is stepped by the
 // synthesizer in the mixer's thread as it plays (no start-up cost, no file). The device is the
 // process's: opened by the first audio system, shared by the scenes after it (a hot reload or the
-// next level), so a tune that both scenes name plays on without a break.
+// next level) and kept open until the process ends, so a tune that both scenes name plays on
+// without a break.
 #pragma once
 #include <map>
 #include <memory>
@@ -29,13 +30,15 @@ class AudioSystem final : public core::System, public core::AudioControls {
   void setVolumes(float music, float effects) override;
   void setPaused(bool paused) override;
   void playNow(const std::string& name) override;
+  void playTune(const std::string& name) override;
   std::string silentBecause() const override;
 
  private:
   void playEffect(const std::string& name, float volume, float pan);
+  void setTune(const std::string& name, const core::SoundBank& bank);
   Mix_Chunk* chunkOf(const std::string& name);
 
-  std::shared_ptr<Device> device_;
+  Device* device_;  // the process's (audio_system.cpp)
   core::SoundBank bank_;
   std::map<std::string, Mix_Chunk*, std::less<>> chunks_;
 };

@@ -120,7 +120,7 @@ TEST(Audio, WhatASceneMakesHeardReachesTheDeviceOnItsFrame) {
         audio->setVolumes(1, 1);
         audio->setPaused(true);
         playFor(*scene, 60);  // 1 s paused
-        scene.reset();        // closes the device: the file is complete
+        scene.reset();        // the device stays open until the exit, which writes out what it played
         std::exit(0);
       },
       ::testing::ExitedWithCode(0), "");

@@ -148,6 +148,22 @@ TEST(SoundBank, ALevelsBankAddsAndReplacesNamesAndItsTuneIsChecked) {
   EXPECT_EQ(errorOf([&] { loadScene(broken, headless); }).rfind(bad + ":2:33: 'volume' must be within", 0), 0u);
 }
 
+// docs/sound.md's example bank is a bank, read as the reader reads any.
+TEST(SoundBank, TheDocsExampleIsABank) {
+  std::ifstream in(std::string(PLATON_SOURCE_ROOT) + "/docs/sound.md");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string doc = text.str();
+  const size_t start = doc.find("```lua\n"), end = doc.find("```\n", start + 7);
+  ASSERT_NE(start, std::string::npos);
+  ASSERT_NE(end, std::string::npos);
+  Folder folder("sound_bank_docs");
+  SoundBank bank;
+  readSoundBank(folder.write("bank.lua", doc.substr(start + 7, end - start - 7)), bank);
+  EXPECT_TRUE(bank.hasEffect("boing"));
+  EXPECT_TRUE(bank.hasMusic("hum"));
+}
+
 // A scene that cannot make a sound (no scripts, no audio) reads no bank.
 TEST(SoundBank, ASceneThatCannotMakeASoundReadsNone) {
   Folder folder("sound_bank_none");

@@ -679,7 +679,7 @@ TEST(SoundApi, BadCallsAreErrorsAtTheScriptsLine) {
       "level.lua:3: argument 2: expected a volume 0..1, got 2",
       "level.lua:4: argument 3: expected a pan -1..1, got -3",
       "level.lua:5: argument 1: expected a string, got 5",
-      "level.lua:6: sound: no tune named 'humm' (the scene's bank has: crystal, first_steps, lattice, orbit)",
+      "level.lua:6: sound: no tune named 'humm' (the scene's bank has: crystal, first_steps, lattice, orbit, title)",
       "level.lua:7: argument 2: expected nil or \"music\", got \"effects\"",
       "ok",
       "ok",
