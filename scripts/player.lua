@@ -26,6 +26,9 @@ Player.COYOTE_FRAMES = 6    -- a jump still works this long after leaving a ledg
 Player.BUFFER_FRAMES = 6    -- a jump pressed this long before landing happens on landing
 Player.GROUND_COS = 0.64    -- a contact whose normal is within ~50 degrees of up is ground
 Player.LAND_SPEED = 2.5     -- units per frame: a landing from a fall this fast or faster is heard
+Player.LAND_SQUASH = 0.7    -- the ball's height over its width on a hard landing (drawn only)
+Player.JUMP_STRETCH = 1.3   -- and at a jump's start
+Player.SQUASH_EASE = 0.7    -- each frame the squash keeps this much of its way back to 1
 
 -- Errors (leaving nothing behind) when the place is taken by a wall or the face does not exist.
 function Player.spawn(_, face, x, y)
@@ -36,7 +39,8 @@ function Player.spawn(_, face, x, y)
     error(err, 2)
   end
   look(e, Player.COLOUR, "ball")  -- the engine draws it, once, however many faces it spans
-  return setmetatable({ entity = e, coyote = 0, buffer = 0, grounded = false, face = face, fall = 0 }, Player)
+  return setmetatable({ entity = e, coyote = 0, buffer = 0, grounded = false, face = face, fall = 0, squash = 1 },
+                      Player)
 end
 
 local function approach(value, target, step)
@@ -68,6 +72,7 @@ function Player.tick(self, input)
   -- The fall speed the frame before this one's contact stopped it: louder the harder it lands.
   if self.grounded and not wasGrounded and (self.fall or 0) > Player.LAND_SPEED then
     play("land", min(1, self.fall / 12))
+    self.squash = Player.LAND_SQUASH
   end
   if self.grounded then self.coyote = Player.COYOTE_FRAMES elseif self.coyote > 0 then self.coyote = self.coyote - 1 end
   if input.pressed.jump then self.buffer = Player.BUFFER_FRAMES elseif self.buffer > 0 then self.buffer = self.buffer - 1 end
@@ -88,12 +93,21 @@ function Player.tick(self, input)
     fall = -Player.JUMP_SPEED
     self.buffer, self.coyote = 0, 0
     play("jump")
+    self.squash = Player.JUMP_STRETCH
   elseif not input.jump and fall < -Player.JUMP_CUT then
     fall = -Player.JUMP_CUT
   end
 
   setVelocity(e, rx * along + dx * fall, ry * along + dy * fall)
   self.fall = fall
+  -- Squash and stretch: the picture's, eased back to round (a look is never the simulation's).
+  local squash = self.squash or 1
+  if squash ~= 1 then
+    squash = 1 + (squash - 1) * Player.SQUASH_EASE
+    if squash > 0.99 and squash < 1.01 then squash = 1 end
+    self.squash = squash
+    look(e, Player.COLOUR, "ball", squash)
+  end
 end
 
 -- The engine draws the player's body by its look (set in spawn): a player that wants more (a

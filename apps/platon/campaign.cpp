@@ -14,12 +14,6 @@
 namespace platon::app {
 namespace {
 
-std::string trim(const std::string& s) {
-  const size_t a = s.find_first_not_of(" \t\r");
-  if (a == std::string::npos) return "";
-  return s.substr(a, s.find_last_not_of(" \t\r") + 1 - a);
-}
-
 bool isFile(const std::string& path) {
   struct stat st {};
   return stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode);
@@ -40,15 +34,35 @@ std::vector<CampaignLevel> readCampaign(const std::string& path) {
   std::vector<CampaignLevel> levels;
   std::string line;
   for (int number = 1; std::getline(in, line); ++number) {
-    const std::string folder = trim(line.substr(0, line.find('#')));
+    const std::string text = line.substr(0, line.find('#'));
+    std::istringstream words(text);
+    std::string folder, par, more;
+    words >> folder >> par >> more;
     if (folder.empty()) continue;
-    if (folder.find_first_of(" \t") != std::string::npos)
-      throw std::runtime_error(path + ":" + std::to_string(number) + ":1: '" + folder +
-                               "': one folder a line, no spaces in its name");
-    const std::string scene = base + folder + "/scene.lua";
-    if (!isFile(scene))
-      throw std::runtime_error(path + ":" + std::to_string(number) + ":1: level '" + folder + "' has no " + scene);
-    levels.push_back({folder, scene});
+    // Each word's column, found after the word before it ("ab 0:20 b": b's is 9, not 2).
+    const size_t folderAt = text.find(folder), parAt = text.find(par, folderAt + folder.size()),
+                 moreAt = text.find(more, parAt + par.size());
+    const auto at = [&](const std::string& word) {
+      const size_t column = &word == &folder ? folderAt : &word == &par ? parAt : moreAt;
+      return path + ":" + std::to_string(number) + ":" + std::to_string(column + 1) + ": ";
+    };
+    if (!more.empty())
+      throw std::runtime_error(at(more) + "'" + more + "': a line is a level's folder and its par time (M:SS)");
+    CampaignLevel level{folder, base + folder + "/scene.lua", 0};
+    if (!par.empty()) {
+      const size_t colon = par.find(':');
+      const std::string minutes = par.substr(0, colon),
+                        seconds = colon == std::string::npos ? "" : par.substr(colon + 1);
+      const auto digits = [](const std::string& w, size_t most) {
+        return !w.empty() && w.size() <= most && w.find_first_not_of("0123456789") == std::string::npos;
+      };
+      if (!digits(minutes, 3) || seconds.size() != 2 || !digits(seconds, 2) || std::stoi(seconds) > 59 ||
+          std::stoi(minutes) * 60 + std::stoi(seconds) == 0)
+        throw std::runtime_error(at(par) + "'" + par + "': a par time is minutes and seconds, M:SS (0:20), above 0");
+      level.parFrames = static_cast<uint64_t>(std::stoi(minutes) * 60 + std::stoi(seconds)) * 60;
+    }
+    if (!isFile(level.scene)) throw std::runtime_error(at(folder) + "level '" + folder + "' has no " + level.scene);
+    levels.push_back(level);
   }
   if (levels.empty()) throw std::runtime_error(path + ": the campaign names no level");
   return levels;

@@ -9,12 +9,15 @@
 namespace platon::app {
 
 struct CampaignLevel {
-  std::string folder;  // as written in the campaign file: "cube_intro"
-  std::string scene;   // its manifest: <levels>/<folder>/scene.lua
+  std::string folder;      // as written in the campaign file: "cube_intro"
+  std::string scene;       // its manifest: <levels>/<folder>/scene.lua
+  uint64_t parFrames = 0;  // the par time, in frames (0: none)
 };
 
-// One level folder per line, relative to the file's own folder; '#' starts a comment. Throws
-// std::runtime_error naming file:line for a folder with no scene.lua, and for an empty campaign.
+// One level a line: its folder, relative to the file's own folder, then optionally its par time
+// (M:SS, minutes and seconds); '#' starts a comment. Throws std::runtime_error naming
+// file:line:column for a folder with no scene.lua, a par time that is none or anything more on
+// the line, and for an empty campaign.
 std::vector<CampaignLevel> readCampaign(const std::string& path);
 
 struct LevelRecord {
@@ -27,6 +30,11 @@ struct LevelRecord {
 // whole to a new file and renamed over the old, so a crash mid-save never leaves half a file.
 class Progress {
  public:
+  // Whether `levels[i]` may be played: the first level, a level done, and the level after one done
+  // (levels unlock in order).
+  bool open(const std::vector<CampaignLevel>& levels, size_t i) const {
+    return i == 0 || done(levels[i].folder) || done(levels[i - 1].folder);
+  }
   // $XDG_DATA_HOME/platon/progress.txt, or ~/.local/share/platon/progress.txt.
   static std::string defaultPath();
 

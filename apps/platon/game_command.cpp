@@ -41,6 +41,15 @@ std::string clockText(uint64_t frames) {
   return text;
 }
 
+// A par time as the campaign writes it: 0:20.
+std::string parText(uint64_t frames) {
+  char text[32];
+  const uint64_t seconds = frames / 60;
+  std::snprintf(text, sizeof text, "%llu:%02llu", static_cast<unsigned long long>(seconds / 60),
+                static_cast<unsigned long long>(seconds % 60));
+  return text;
+}
+
 // With --record DIR: one replay per level played, DIR/<folder>.replay (then <folder>-2.replay,
 // ... : an existing file is never overwritten). A recording starts with the level's first frame
 // and is written when the level is complete, left (another level, a restart, the title), the
@@ -175,6 +184,7 @@ class Game {
   std::string notice_;          // a line under the heads-up text (a failed save, a refused reload)
   std::string lastFrameError_;  // printed once, not on every frame it repeats
   LevelRecorder recording_;
+  std::chrono::steady_clock::time_point freezeUntil_{};
 };
 
 bool Game::load(size_t level) {
@@ -210,14 +220,21 @@ std::vector<std::string> Game::titleLines() const {
   for (size_t i = 0; i < levels_.size(); ++i) {
     const LevelRecord* r = progress_.record(levels_[i].folder);
     std::string line = (i == selected_ ? "> " : "  ") + std::to_string(i + 1) + ". " + names_[i];
-    if (r)
+    if (r) {
       line += "   done " + clockText(r->bestFrames) + ", " + std::to_string(r->fewestDeaths) +
               (r->fewestDeaths == 1 ? " death" : " deaths");
+      if (levels_[i].parFrames) line += r->bestFrames <= levels_[i].parFrames ? "  * par" : "";
+    } else if (!progress_.open(levels_, i)) {
+      line += "   (locked)";
+    } else if (levels_[i].parFrames) {
+      line += "   par " + parText(levels_[i].parFrames);
+    }
     if (i == selected_) line += " <";
     lines.push_back(line);
   }
   lines.push_back("");
-  lines.push_back("Up/Down choose, Enter play, Esc quit");
+  lines.push_back(progress_.open(levels_, selected_) ? "Up/Down choose, Enter play, Esc quit"
+                                                     : "Finish the level before it to open this one");
   return lines;
 }
 
@@ -236,7 +253,9 @@ void Game::handle(const core::WindowInput& input) {
           load(selected_);
           sound("menu_move");
         }
-        if (key == core::Key::Enter && load(selected_)) sound("menu_select"), play();
+        if (key == core::Key::Enter && !progress_.open(levels_, selected_)) sound("menu_move");  // locked
+        if (key == core::Key::Enter && progress_.open(levels_, selected_) && load(selected_))
+          sound("menu_select"), play();
         break;
       case Screen::Playing:
         if (key == core::Key::Escape) screen_ = Screen::Paused, menuItem_ = 0;
@@ -258,9 +277,10 @@ void Game::handle(const core::WindowInput& input) {
         if (key == core::Key::Enter || key == core::Key::Escape) {
           if (level_ + 1 < levels_.size() && key == core::Key::Enter) {
             if (load(level_ + 1)) play();
-          } else {
+          } else {  // the level select, its cursor on the next level (now open)
             screen_ = Screen::Title;
-            selected_ = level_;
+            selected_ = level_ + 1 < levels_.size() ? level_ + 1 : level_;
+            load(selected_);
           }
         }
         break;
@@ -270,6 +290,9 @@ void Game::handle(const core::WindowInput& input) {
 }
 
 void Game::stepSimulation(int due, uint8_t held) {
+  // The level-complete screen: the picture goes on (the goal's confetti falls), the game does not.
+  if (screen_ == Screen::Complete)
+    for (int s = 0; s < due; ++s) view_.idle(live_->scene());
   for (int s = 0; s < due && screen_ == Screen::Playing; ++s) {
     if (std::optional<std::string> error = live_->step(edges_.next(held)); error && *error != lastFrameError_) {
       std::fprintf(stderr, "frame error (the game goes on):\n%s\n", core::visibleText(*error, true).c_str());
@@ -278,6 +301,11 @@ void Game::stepSimulation(int due, uint8_t held) {
     recording_.frame(held, live_->scene().world().stateHash());
     const script::GameStatus st = status();
     view_.step(live_->scene(), st, 1.0 / clock_.hz());
+    // A hard event holds the picture a moment (the simulation waits with it: no frame is lost).
+    if (const int frames = view_.feedback().takeFreeze(); frames > 0) {
+      freezeUntil_ = std::chrono::steady_clock::now() + std::chrono::milliseconds(1000 * frames / 60);
+      break;
+    }
     if (st.won) {
       std::printf("level complete: %s in %s with %d deaths\n", levels_[level_].folder.c_str(),
                   clockText(st.wonFrame).c_str(), st.deaths);
@@ -313,7 +341,12 @@ void Game::draw(double alpha) {
                                   (i == menuItem_ ? " <" : ""));
       break;
     case Screen::Complete:
-      view.centreText = {"Level complete!", clockText(st.wonFrame) + "    " + std::to_string(st.deaths) + " deaths",
+      view.centreText = {"Level complete!",
+                         clockText(st.wonFrame) + "    " + std::to_string(st.deaths) + " deaths" +
+                             (levels_[level_].parFrames == 0 ? ""
+                              : st.wonFrame <= levels_[level_].parFrames
+                                  ? "    under par (" + parText(levels_[level_].parFrames) + ")!"
+                                  : "    par " + parText(levels_[level_].parFrames)),
                          level_ + 1 < levels_.size() ? "Enter: next level    Esc: level select"
                                                      : "The campaign is done. Enter: level select"};
       break;
@@ -352,6 +385,7 @@ int Game::run(bool quitAfterFirstFrame, const std::string& firstFrameShot) {
     if (!d) return 1;
     if (loaded_) previous = std::chrono::steady_clock::now();  // loading is not play time
     const auto now = std::chrono::steady_clock::now();
+    if (now < freezeUntil_) previous = now;  // frozen: the time passes unplayed
     const int due = clock_.advance(std::chrono::duration_cast<std::chrono::nanoseconds>(now - previous).count());
     previous = now;
     stepSimulation(due, input.held);

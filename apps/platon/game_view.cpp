@@ -1,5 +1,6 @@
 #include "game_view.h"
 
+#include <cmath>
 #include <utility>
 
 namespace platon::app {
@@ -34,8 +35,21 @@ void GameView::step(core::Scene& scene, const script::GameStatus& status, double
   std::swap(previousDrawing_, drawing_);
   drawing_.clear();
   scene.draw(drawing_);
+  if (placed_) feedback_.step(scene, status);  // not the placing call: no frame was played
+  feedback_.draw(drawing_);
+  ++steps_;
   if (!placed_) previousDrawing_ = drawing_;
   placed_ = true;
+}
+
+void GameView::idle(core::Scene& scene) {
+  previous_ = camera_.pose();
+  std::swap(previousDrawing_, drawing_);
+  drawing_.clear();
+  scene.draw(drawing_);
+  feedback_.advance();
+  feedback_.draw(drawing_);
+  ++steps_;
 }
 
 core::DrawList GameView::drawing(double alpha) const {
@@ -49,6 +63,11 @@ core::View GameView::view(const core::Scene& scene, double alpha) const {
   v.face = face_;
   v.openTags = openTags_;
   v.camera = camera::CameraPose::between(previous_, camera_.pose(), alpha);
+  if (const double shake = feedback_.shake(); shake > 0) {  // across the view, a fixed wobble
+    const double t = static_cast<double>(steps_) + alpha;
+    v.camera.centre +=
+        v.camera.orientation * Eigen::Vector3d(std::sin(t * 2.3), std::cos(t * 1.7), 0) * (shake * v.camera.distance);
+  }
   v.verticalFov = camera_.settings().verticalFov;
   return v;
 }

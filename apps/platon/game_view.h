@@ -4,6 +4,7 @@
 #pragma once
 #include <memory>
 
+#include "feedback.h"
 #include "platon/camera/camera.h"
 #include "platon/core/display.h"
 #include "platon/core/scene.h"
@@ -20,11 +21,16 @@ class GameView {
  public:
   // After each simulation step (and once before the first: it places the camera at once).
   void step(core::Scene& scene, const script::GameStatus& status, double stepSeconds);
+  // A step of the picture alone (the level-complete screen): the scene as it stands, the feedback's
+  // particles moving on.
+  void idle(core::Scene& scene);
   // The frame's view, `alpha` of the way from the previous step's camera to this one's.
   core::View view(const core::Scene& scene, double alpha) const;
   // What the scripts drew, `alpha` of the way from the previous step's picture to this one's.
   core::DrawList drawing(double alpha) const;
   const camera::Camera& camera() const { return camera_; }
+  // The events' particles, flashes, shake and freezes (feedback.h).
+  Feedback& feedback() { return feedback_; }
 
  private:
   std::shared_ptr<const core::StageView> stage_;
@@ -36,6 +42,8 @@ class GameView {
   physics::MapPartId face_ = 0;
   std::vector<uint32_t> openTags_;
   bool placed_ = false;
+  Feedback feedback_;
+  uint64_t steps_ = 0;  // the shake's phase
 };
 
 }  // namespace platon::app

@@ -51,10 +51,60 @@ TEST(Campaign, AMissingLevelIsNamedWithItsLine) {
     readCampaign(folder.write("spaces.txt", "a\nmy level\n"));
     FAIL() << "a folder with a space accepted (the progress file could not hold it)";
   } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("spaces.txt:2:1: 'my level': one folder a line, no spaces"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("spaces.txt:2:4: 'level': a par time is minutes and seconds"),
+              std::string::npos)
         << e.what();
   }
   EXPECT_THROW(readCampaign(folder.path("no_such_file.txt")), std::runtime_error);
+}
+
+// A level's par time follows its folder, as M:SS; anything else there is an error at its column.
+TEST(Campaign, ParTimesAreMinutesAndSeconds) {
+  platon::testing::TempFolder folder("campaign_par");
+  folder.write("a/scene.lua", "return {}");
+  folder.write("b/scene.lua", "return {}");
+  const auto levels = readCampaign(folder.write("c.txt", "a 0:20  # twenty seconds\nb\n"));
+  ASSERT_EQ(levels.size(), 2u);
+  EXPECT_EQ(levels[0].parFrames, 1200u);
+  EXPECT_EQ(levels[1].parFrames, 0u);
+  EXPECT_EQ(readCampaign(folder.write("d.txt", "a\t12:05\n"))[0].parFrames, 725u * 60);
+  const std::pair<const char*, const char*> bad[] = {
+      {"a 20\n", ":1:3: '20': a par time is minutes and seconds, M:SS (0:20), above 0"},
+      {"a 0:5\n", ":1:3: '0:5': a par time"},
+      {"a 0:60\n", ":1:3: '0:60': a par time"},
+      {"a 0:00\n", ":1:3: '0:00': a par time"},
+      {"a x:10\n", ":1:3: 'x:10': a par time"},
+      {"a -1:10\n", ":1:3: '-1:10': a par time"},
+      {"a 1:1x\n", ":1:3: '1:1x': a par time"},
+      {"a 0:20 b\n", ":1:8: 'b': a line is a level's folder and its par time (M:SS)"},
+      {"a  0:20 a\n", ":1:9: 'a': a line is a level's folder and its par time (M:SS)"},
+  };
+  for (const auto& [text, error] : bad) {
+    const std::string path = folder.write("bad.txt", text);
+    try {
+      readCampaign(path);
+      ADD_FAILURE() << text << ": accepted";
+    } catch (const std::runtime_error& e) {
+      EXPECT_EQ(std::string(e.what()).rfind(path + error, 0), 0u) << e.what();
+    }
+  }
+}
+
+// Levels unlock in order: the first, every level done, and the one after a level done.
+TEST(Progress, LevelsOpenInOrder) {
+  platon::testing::TempFolder folder("campaign_open");
+  for (const char* l : {"a", "b", "c", "d"}) folder.write(std::string(l) + "/scene.lua", "return {}");
+  const auto levels = readCampaign(folder.write("c.txt", "a\nb\nc\nd\n"));
+  Progress progress(folder.path("progress.txt"));
+  EXPECT_TRUE(progress.open(levels, 0));
+  EXPECT_FALSE(progress.open(levels, 1));
+  EXPECT_FALSE(progress.open(levels, 3));
+  ASSERT_TRUE(progress.finish("a", 600, 0));
+  EXPECT_TRUE(progress.open(levels, 1));
+  EXPECT_FALSE(progress.open(levels, 2));
+  ASSERT_TRUE(progress.finish("c", 600, 0));  // a level done stays open (and opens the next)
+  EXPECT_TRUE(progress.open(levels, 2));
+  EXPECT_TRUE(progress.open(levels, 3));
 }
 
 TEST(Progress, KeepsTheBestAndSurvivesADamagedFile) {

@@ -4,10 +4,10 @@
 
 namespace platon::core {
 
-bool DrawList::circle(Place place, Point2 centre, float radius, Color color, uint32_t body) {
+bool DrawList::circle(Place place, Point2 centre, float radius, Color color, uint32_t body, float squash) {
   if (!enabled_) return true;
   if (shapes_.size() >= kMaxShapes) return false;
-  shapes_.push_back({ShapeKind::Circle, place, color, radius, centre, 0, 0, body});
+  shapes_.push_back({ShapeKind::Circle, place, color, radius, centre, 0, 0, body, 0, 0, squash});
   return true;
 }
 
@@ -59,6 +59,7 @@ DrawList DrawList::between(const DrawList& from, const DrawList& to, float t) {
     if (b.kind != ShapeKind::Text && a.count != b.count) continue;
     b.at = mix(a.at, b.at);
     b.size = a.size + (b.size - a.size) * t;
+    b.squash = a.squash + (b.squash - a.squash) * t;
     if (b.kind == ShapeKind::Polygon || b.kind == ShapeKind::Line || b.kind == ShapeKind::Wall)
       for (uint32_t k = 0; k < b.count; ++k)
         out.points_[b.first + k] = mix(from.points_[a.first + k], out.points_[b.first + k]);

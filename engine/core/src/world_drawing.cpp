@@ -23,7 +23,7 @@ void drawEntity(const physics::EntityView& e, const Look& look, DrawList& out, s
     const Place place = Place::onFace(i.part);
     const Point2 at{static_cast<float>(i.position.x), static_cast<float>(i.position.y)};
     if (look.form == Look::Form::Ball) {
-      out.circle(place, at, radius, look.color, body);
+      out.circle(place, at, radius, look.color, body, look.squash);
       continue;
     }
     scratch.clear();

@@ -238,11 +238,17 @@ void StageMesh::addBall(std::span<const core::DrawShape> instances, std::vector<
   if (!home) return;
   const Vector3f n = lift.norm() > 1e-9f ? Vector3f(lift.normalized()) : homeFrame->normal;
   const float r = home->size * scale_;
-  const Vector3f centre = homeFrame->origin + home->at.x * homeFrame->xAxis + home->at.y * homeFrame->yAxis + r * n;
+  // Squashed or stretched along the way it stands, its volume kept and its foot on the face.
+  const float along = std::clamp(home->squash, 0.25f, 4.0f), across = 1 / std::sqrt(along);
+  const Vector3f centre =
+      homeFrame->origin + home->at.x * homeFrame->xAxis + home->at.y * homeFrame->yAxis + r * along * n;
   const core::Color c = home->color;
   for (const Vector3f& v : unitSphere()) {
-    const Vector3f p = centre + r * v;
-    out.push_back({p.x(), p.y(), p.z(), v.x(), v.y(), v.z(), c.r, c.g, c.b, c.a});
+    const float up = v.dot(n);
+    const Vector3f p = centre + r * (across * (v - up * n) + along * up * n);
+    // The ellipsoid's normal: the sphere's, scaled the other way.
+    const Vector3f m = ((v - up * n) / across + up * n / along).normalized();
+    out.push_back({p.x(), p.y(), p.z(), m.x(), m.y(), m.z(), c.r, c.g, c.b, c.a});
   }
 }
 

@@ -123,8 +123,9 @@ int text(lua_State* L) {
   return 0;
 }
 
-// look(entity, colour [, form]): how the engine draws the entity from now on. Form "shape" (its
-// polygon, the default), "ball" (once, as a ball) or "none" (the script draws it). Set headless
+// look(entity, colour [, form [, squash]]): how the engine draws the entity from now on. Form
+// "shape" (its polygon, the default), "ball" (once, as a ball) or "none" (the script draws it);
+// squash (0.25..4, 1 by default) is a ball's height over its width, its volume kept. Set headless
 // too: the look is the scene's, not the frame's, and never the simulation's.
 int look(lua_State* L) {
   const physics::EntityId id = checkEntity(L, 1);
@@ -139,6 +140,11 @@ int look(lua_State* L) {
       style.form = core::Look::Form::None;
     else if (form != "shape")
       lua::argError(L, 3, "\"shape\", \"ball\" or \"none\"");
+  }
+  if (!lua_isnoneornil(L, 4)) {
+    const double squash = lua::checkNumber(L, 4);
+    if (!(squash >= 0.25 && squash <= 4)) lua::argError(L, 4, "a squash 0.25..4");
+    style.squash = static_cast<float>(squash);
   }
   contextOf(L).scene->looks().set(id, style);
   return 0;

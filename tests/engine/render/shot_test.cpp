@@ -164,4 +164,41 @@ TEST_F(Shots, ThePlayerIsDrawnOnceAcrossEdges) {
     }
 }
 
+// Each event reads without the HUD: the frames after it show its particles (and its flash) where the
+// frame before did not. Counted by colour, in the frame before and a few frames after.
+TEST_F(Shots, EventsReadWithoutTheHud) {
+  struct Event {
+    Case at;  // the frame the event's sound plays on
+    const char* what;
+    bool (*colour)(int r, int g, int b);
+  };
+  const Event events[] = {
+      {{"cube_switches", "cube_switches_hazard", 212},
+       "death's sparks",
+       [](int r, int g, int b) { return r > 150 && g * 10 < r * 6 && g * 10 > r * 2 && b * 10 < r * 4; }},
+      {{"cube_switches", "cube_switches_hazard", 79},
+       "checkpoint's sparks",
+       [](int r, int g, int b) { return g > 120 && g > r + 50 && g > b + 40; }},
+      {{"cube_switches", "cube_switches_solve", 279},
+       "switch's sparks",
+       [](int r, int g, int b) { return r > 150 && g > 120 && b * 10 < g * 5; }},
+      {{"cube_switches", "cube_switches_solve", 673},
+       "goal's confetti",
+       [](int r, int g, int b) { return r > 150 && g > 100 && b * 10 < g * 6; }},
+  };
+  auto count = [](const Picture& p, bool (*colour)(int, int, int)) {
+    int n = 0;
+    for (size_t i = 0; i < p.rgba.size(); i += 4) n += colour(p.rgba[i], p.rgba[i + 1], p.rgba[i + 2]);
+    return n;
+  };
+  for (const Event& e : events) {
+    Case before = e.at, after = e.at;
+    before.frame -= 1, after.frame += 4;
+    const Picture a = load(shoot(before, "640x360")), b = load(shoot(after, "640x360"));
+    ASSERT_FALSE(a.rgba.empty());
+    ASSERT_FALSE(b.rgba.empty());
+    EXPECT_GT(count(b, e.colour), count(a, e.colour) + 60) << e.what << " at frame " << after.frame;
+  }
+}
+
 }  // namespace

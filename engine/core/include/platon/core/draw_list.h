@@ -47,6 +47,9 @@ struct DrawShape {
   uint32_t body = 0;
   uint32_t tag = 0;      // a wall's line tag (its colour and style)
   uint8_t lineKind = 0;  // a wall's physics::LineKind (1 solid... see ViewLine::kind)
+  // A body's ball: its height over its width along the way it stands (below 1 squashed, as on a
+  // landing; above 1 stretched, as in a jump's start), its volume kept.
+  float squash = 1;
 };
 
 // A frame's list holds at most kMaxShapes shapes, kMaxPoints polygon and line points and
@@ -63,7 +66,7 @@ class DrawList {
 
   // Each returns false when the shape was dropped: over a limit (a disabled list drops nothing:
   // it records nothing and returns true).
-  bool circle(Place place, Point2 centre, float radius, Color color, uint32_t body = 0);
+  bool circle(Place place, Point2 centre, float radius, Color color, uint32_t body = 0, float squash = 1);
   // A convex polygon, counter-clockwise.
   bool polygon(Place place, std::span<const Point2> points, Color color, uint32_t body = 0);
   // A line of the world drawn as the stage's own lines are (a moving platform's), by its tag and

@@ -19,6 +19,7 @@ struct Look {
   };
   Color color{176, 138, 90, 255};  // a crate's wood
   Form form = Form::Shape;
+  float squash = 1;  // a ball's height over its width (DrawShape::squash): squash and stretch
 };
 
 // The looks scripts set, by entity; an entity with none (or a destroyed one's handle) has the default.
