@@ -26,6 +26,13 @@ function level.tick(game, frame)
   end
 end
 
+-- The campaign's first switch, door and checkpoint say what they are where they stand.
+function level.draw(_, draw)
+  draw.text(0, 900, 2050, "checkpoint: you restart here", 140, 0x80f0a0)
+  draw.text(0, 2500, 2100, "switch 1: touch it to open door 1", 140, 0xffe060)
+  draw.text(1, 1100, 2850, "door 1", 120, 0xffe060)
+end
+
 -- Hot reload: `openedAt` is this module's own state; hand it to the new version of the file.
 function level.save() return { openedAt = openedAt } end
 function level.onReload(_, saved) openedAt = saved and saved.openedAt end
