@@ -163,6 +163,7 @@ class Game {
     }
   }
   void stepSimulation(int due, uint8_t held);
+  core::TapCarry taps_;  // taps between frames, played on the next
   void draw(double alpha);
   std::vector<std::string> titleLines() const;
 
@@ -212,6 +213,7 @@ bool Game::load(size_t level) {
   view_ = GameView{};
   view_.step(live_->scene(), status(), 1.0 / clock_.hz());
   edges_.reset();
+  taps_.reset();
   return true;
 }
 
@@ -240,6 +242,12 @@ std::vector<std::string> Game::titleLines() const {
 
 void Game::handle(const core::WindowInput& input) {
   if (input.closed) quit_ = true;
+  // Another window took the keyboard: the game waits in its pause menu (keys held then never come up).
+  if (input.focusLost && screen_ == Screen::Playing) {
+    screen_ = Screen::Paused, menuItem_ = 0;
+    std::printf("paused: the window lost the focus\n");
+    std::fflush(stdout);
+  }
   for (const core::Key key : input.pressed) {
     if (key == core::Key::ShowFps) showFps_ = !showFps_;
     switch (screen_) {
@@ -294,11 +302,12 @@ void Game::stepSimulation(int due, uint8_t held) {
   if (screen_ == Screen::Complete)
     for (int s = 0; s < due; ++s) view_.idle(live_->scene());
   for (int s = 0; s < due && screen_ == Screen::Playing; ++s) {
-    if (std::optional<std::string> error = live_->step(edges_.next(held)); error && *error != lastFrameError_) {
+    const uint8_t buttons = taps_.next(held);
+    if (std::optional<std::string> error = live_->step(edges_.next(buttons)); error && *error != lastFrameError_) {
       std::fprintf(stderr, "frame error (the game goes on):\n%s\n", core::visibleText(*error, true).c_str());
       lastFrameError_ = *error;
     }
-    recording_.frame(held, live_->scene().world().stateHash());
+    recording_.frame(buttons, live_->scene().world().stateHash());
     const script::GameStatus st = status();
     view_.step(live_->scene(), st, 1.0 / clock_.hz());
     // A hard event holds the picture a moment (the simulation waits with it: no frame is lost).
@@ -388,6 +397,7 @@ int Game::run(bool quitAfterFirstFrame, const std::string& firstFrameShot) {
     if (now < freezeUntil_) previous = now;  // frozen: the time passes unplayed
     const int due = clock_.advance(std::chrono::duration_cast<std::chrono::nanoseconds>(now - previous).count());
     previous = now;
+    if (screen_ == Screen::Playing) taps_.add(input.tapped);  // a menu's keys are not the game's
     stepSimulation(due, input.held);
     draw(screen_ == Screen::Playing ? clock_.alpha() : 1.0);
     if (!titleShown) {  // the window shows the title and reads keys from now on (tests wait for it)

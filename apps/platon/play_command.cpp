@@ -242,6 +242,7 @@ int playCommand(int argc, char** argv) {
   uint64_t frameErrors = 0;  // frames whose scripts raised an error
   core::FixedStep clock(60);
   core::InputEdges edges;
+  core::TapCarry taps;  // taps between frames, played on the next
   GameView gameView;
   bool showFps = false;
   if (display) gameView.step(live->scene(), statusOf(live->scene()), 1.0 / clock.hz());  // headless: no picture to keep
@@ -280,9 +281,10 @@ int playCommand(int argc, char** argv) {
       if (events.closed || pressed(core::Key::Escape)) break;
       if (pressed(core::Key::ShowFps)) showFps = !showFps;
       keys = events.held;
+      taps.add(events.tapped);
     }
     for (int s = 0; s < due && (frames == 0 || frame < frames); ++s) {
-      const uint8_t held = inputPath.empty() ? keys : frame < input.held.size() ? input.held[frame] : 0;
+      const uint8_t held = inputPath.empty() ? taps.next(keys) : frame < input.held.size() ? input.held[frame] : 0;
       ++frame;
       if (std::optional<std::string> error = live->step(edges.next(held))) {
         ++frameErrors;

@@ -1,7 +1,7 @@
 #!/bin/sh
 # The game as a person plays it: a real window under Xvfb, keys typed with xdotool. Enter on the
-# title screen starts the first level, holding Right walks it to the goal, Enter goes on to the next
-# level, Esc and the pause menu quit. The level must be recorded as done in the progress file (a
+# title screen starts the first level, hiding its window pauses it, holding Right walks it to the
+# goal, Enter goes on to the next level, Esc and the pause menu quit. The level must be recorded as done in the progress file (a
 # fresh XDG data folder), and the game must say where the player stood when it quit. Its sound goes
 # to SDL's disk driver (what a sound card would play, as a file), which must not be silent. Run by
 # ctest as
@@ -18,6 +18,14 @@ fail() { echo "$1"; cat "$log"; kill "$pid" 2>/dev/null; xdotool keyup Right 2>/
 await_title
 xdotool key Return
 await "^playing cube_intro"
+# Another window takes the keyboard (here: the game's own is hidden a moment): the game pauses,
+# and Esc in the pause menu goes on.
+focus_window
+xdotool windowunmap --sync "$window"
+await "^paused: the window lost the focus"
+xdotool windowmap --sync "$window"
+focus_window
+xdotool key Escape
 xdotool keydown Right
 await "^level complete: cube_intro"  # about 18 s of play; a slow machine drops steps
 xdotool keyup Right

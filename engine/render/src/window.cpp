@@ -13,21 +13,44 @@
 namespace platon::render {
 namespace {
 
+using core::Button;
+using core::InputFrame;
+
 [[noreturn]] void fail(const std::string& what) { throw std::runtime_error(what + ": " + SDL_GetError()); }
 
-// Arrows or WASD to move, Space (or W/Up) to jump, R restart, F5 reload.
+// The game's button of a key, as a bit of InputFrame (0: none): arrows or WASD to move, Space to
+// jump, R restart, F5 reload.
+uint8_t buttonOf(SDL_Scancode key) {
+  switch (key) {
+    case SDL_SCANCODE_LEFT:
+    case SDL_SCANCODE_A:
+      return InputFrame::bit(Button::Left);
+    case SDL_SCANCODE_RIGHT:
+    case SDL_SCANCODE_D:
+      return InputFrame::bit(Button::Right);
+    case SDL_SCANCODE_UP:
+    case SDL_SCANCODE_W:
+      return InputFrame::bit(Button::Up);
+    case SDL_SCANCODE_DOWN:
+    case SDL_SCANCODE_S:
+      return InputFrame::bit(Button::Down);
+    case SDL_SCANCODE_SPACE:
+      return InputFrame::bit(Button::Jump);
+    case SDL_SCANCODE_R:
+      return InputFrame::bit(Button::Restart);
+    case SDL_SCANCODE_F5:
+      return InputFrame::bit(Button::Reload);
+    default:
+      return 0;
+  }
+}
+
 uint8_t heldButtons() {
-  const Uint8* keys = SDL_GetKeyboardState(nullptr);
-  using core::Button;
-  using core::InputFrame;
+  int count = 0;
+  const Uint8* keys = SDL_GetKeyboardState(&count);
   uint8_t held = 0;
-  if (keys[SDL_SCANCODE_LEFT] || keys[SDL_SCANCODE_A]) held |= InputFrame::bit(Button::Left);
-  if (keys[SDL_SCANCODE_RIGHT] || keys[SDL_SCANCODE_D]) held |= InputFrame::bit(Button::Right);
-  if (keys[SDL_SCANCODE_UP] || keys[SDL_SCANCODE_W]) held |= InputFrame::bit(Button::Up);
-  if (keys[SDL_SCANCODE_DOWN] || keys[SDL_SCANCODE_S]) held |= InputFrame::bit(Button::Down);
-  if (keys[SDL_SCANCODE_SPACE]) held |= InputFrame::bit(Button::Jump);
-  if (keys[SDL_SCANCODE_R]) held |= InputFrame::bit(Button::Restart);
-  if (keys[SDL_SCANCODE_F5]) held |= InputFrame::bit(Button::Reload);
+  for (int k = 0; k < count; ++k)
+    if (keys[k]) held |= buttonOf(static_cast<SDL_Scancode>(k));
   return held;
 }
 
@@ -150,8 +173,6 @@ std::optional<core::Key> keyOf(SDL_GameControllerButton button) {
 
 // A gamepad's buttons and left stick as the engine's buttons: the stick past a third of its travel.
 uint8_t padButtons(SDL_GameController* pad) {
-  using core::Button;
-  using core::InputFrame;
   constexpr Sint16 kDead = 11000;
   const Sint16 x = SDL_GameControllerGetAxis(pad, SDL_CONTROLLER_AXIS_LEFTX);
   const Sint16 y = SDL_GameControllerGetAxis(pad, SDL_CONTROLLER_AXIS_LEFTY);
@@ -166,6 +187,27 @@ uint8_t padButtons(SDL_GameController* pad) {
   return held;
 }
 
+// The game's button of a gamepad button, as padButtons reads them held (0: none).
+uint8_t padButtonOf(SDL_GameControllerButton button) {
+  switch (button) {
+    case SDL_CONTROLLER_BUTTON_DPAD_LEFT:
+      return InputFrame::bit(Button::Left);
+    case SDL_CONTROLLER_BUTTON_DPAD_RIGHT:
+      return InputFrame::bit(Button::Right);
+    case SDL_CONTROLLER_BUTTON_DPAD_UP:
+      return InputFrame::bit(Button::Up);
+    case SDL_CONTROLLER_BUTTON_DPAD_DOWN:
+      return InputFrame::bit(Button::Down);
+    case SDL_CONTROLLER_BUTTON_A:
+    case SDL_CONTROLLER_BUTTON_B:
+      return InputFrame::bit(Button::Jump);
+    case SDL_CONTROLLER_BUTTON_BACK:
+      return InputFrame::bit(Button::Restart);
+    default:
+      return 0;
+  }
+}
+
 }  // namespace
 
 core::WindowInput Window::pollEvents() {
@@ -176,8 +218,12 @@ core::WindowInput Window::pollEvents() {
       case SDL_QUIT:
         input.closed = true;
         break;
+      case SDL_WINDOWEVENT:
+        if (event.window.event == SDL_WINDOWEVENT_FOCUS_LOST) input.focusLost = true;
+        break;
       case SDL_KEYDOWN:
         if (event.key.repeat) break;
+        input.tapped |= buttonOf(event.key.keysym.scancode);
         if (event.key.keysym.sym == SDLK_F11) {
           const bool full = SDL_GetWindowFlags(window_) & SDL_WINDOW_FULLSCREEN_DESKTOP;
           SDL_SetWindowFullscreen(window_, full ? 0 : SDL_WINDOW_FULLSCREEN_DESKTOP);
@@ -197,6 +243,7 @@ core::WindowInput Window::pollEvents() {
           }
         break;
       case SDL_CONTROLLERBUTTONDOWN:
+        input.tapped |= padButtonOf(static_cast<SDL_GameControllerButton>(event.cbutton.button));
         if (const auto key = keyOf(static_cast<SDL_GameControllerButton>(event.cbutton.button)))
           input.pressed.push_back(*key);
         break;

@@ -85,3 +85,46 @@ TEST(Gamepad, PluggedInWhileRunningItDrivesTheMenusAndThePlayer) {
 }
 
 }  // namespace
+
+// A tap shorter than a frame (a key or a pad button pressed and released between two polls) is
+// in the poll's taps though it is not held any more; TapCarry then plays it on the next frame.
+TEST(Taps, APressAndReleaseBetweenTwoPollsIsATap) {
+  setenv("SDL_VIDEODRIVER", "offscreen", 1);
+  platon::testing::TempFolder folder("taps");
+  core::SystemRegistry registry;
+  registry.addPlugin("rendering", "platon_render", {PLATON_PLUGIN_DIR});
+  auto scene =
+      core::loadScene(folder.write("scene.lua", "return { name = 'taps', systems = { 'rendering' } }"), registry);
+  core::Display& display = *scene->findSystem("rendering")->display();
+  display.pollEvents();  // the window is open
+  const std::pair<SDL_Scancode, core::Button> keys[] = {{SDL_SCANCODE_SPACE, core::Button::Jump},
+                                                        {SDL_SCANCODE_A, core::Button::Left},
+                                                        {SDL_SCANCODE_RIGHT, core::Button::Right},
+                                                        {SDL_SCANCODE_R, core::Button::Restart}};
+  for (const auto& [scancode, button] : keys) {
+    for (const Uint32 type : {SDL_KEYDOWN, SDL_KEYUP}) {
+      SDL_Event e{};
+      e.type = type;
+      e.key.state = type == SDL_KEYDOWN ? SDL_PRESSED : SDL_RELEASED;
+      e.key.keysym.scancode = scancode;
+      e.key.keysym.sym = SDL_GetKeyFromScancode(scancode);
+      ASSERT_EQ(SDL_PushEvent(&e), 1) << SDL_GetError();
+    }
+    const core::WindowInput in = display.pollEvents();
+    const uint8_t bit = core::InputFrame::bit(button);
+    EXPECT_FALSE(in.held & bit) << scancode << ": released before the poll";
+    EXPECT_TRUE(in.tapped & bit) << scancode << ": the tap is lost";
+    core::TapCarry carry;
+    carry.add(in.tapped);
+    carry.add(0);  // a poll with no frame played after it: the tap waits
+    EXPECT_TRUE(carry.next(in.held) & bit) << "the next frame plays the tap";
+    EXPECT_FALSE(carry.next(in.held) & bit) << "once";
+  }
+  // The window losing the keyboard says so (the game pauses on it).
+  SDL_Event e{};
+  e.type = SDL_WINDOWEVENT;
+  e.window.event = SDL_WINDOWEVENT_FOCUS_LOST;
+  ASSERT_EQ(SDL_PushEvent(&e), 1) << SDL_GetError();
+  EXPECT_TRUE(display.pollEvents().focusLost);
+  EXPECT_FALSE(display.pollEvents().focusLost);
+}

@@ -82,8 +82,10 @@ enum class Key : uint8_t { Escape, Enter, Up, Down, Left, Right, Restart, Reload
 // What the window's devices (keyboard, gamepads) did since the last poll.
 struct WindowInput {
   uint8_t held = 0;          // InputFrame bits of the buttons held now
+  uint8_t tapped = 0;        // and of those pressed since the last call, held now or not (TapCarry)
   std::vector<Key> pressed;  // in order
   bool closed = false;       // the window was closed
+  bool focusLost = false;    // the window lost the keyboard (the game pauses)
 };
 
 class Display {

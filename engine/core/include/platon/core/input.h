@@ -38,6 +38,25 @@ class InputEdges {
   uint8_t previous_ = 0;
 };
 
+// Buttons tapped between two polls of the window. A press and its release both between two frames
+// played would be lost to "held" alone (the state at the poll); each tap counts as held for the next
+// frame played, however many polls pass before it (a display faster than the game plays none on
+// some), so a tap of any length is seen, and recorded, once.
+class TapCarry {
+ public:
+  void add(uint8_t tapped) { pending_ |= tapped; }
+  // The buttons of the next frame played: those held, and every tap not played yet.
+  uint8_t next(uint8_t held) {
+    const uint8_t buttons = static_cast<uint8_t>(held | pending_);
+    pending_ = 0;
+    return buttons;
+  }
+  void reset() { pending_ = 0; }
+
+ private:
+  uint8_t pending_ = 0;
+};
+
 // Where a run's input comes from: the devices, a scenario script, a replay file.
 class InputSource {
  public:
