@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "platon/files/read_file.h"
+#include "save_file.h"
 
 namespace platon::app {
 namespace {
@@ -17,12 +18,6 @@ namespace {
 bool isFile(const std::string& path) {
   struct stat st {};
   return stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode);
-}
-
-// mkdir -p, for the data folder.
-void makeFolders(const std::string& path) {
-  for (size_t i = 1; i <= path.size(); ++i)
-    if (i == path.size() || path[i] == '/') mkdir(path.substr(0, i).c_str(), 0755);
 }
 
 }  // namespace
@@ -110,36 +105,11 @@ bool Progress::finish(const std::string& folder, uint64_t frames, int deaths) {
     it->second.bestFrames = std::min(it->second.bestFrames, frames);
     it->second.fewestDeaths = std::min(it->second.fewestDeaths, deaths);
   }
-  const size_t slash = path_.find_last_of('/');
-  if (slash != std::string::npos) makeFolders(path_.substr(0, slash));
-  const std::string temporary = path_ + ".new";
   std::string text = "# Platon progress: level, best time in frames (60 a second), fewest deaths\n";
   for (const auto& [name, r] : records_)
     text += name + " " + std::to_string(r.bestFrames) + " " + std::to_string(r.fewestDeaths) + "\n";
-  // Written whole and flushed to the disk before the rename, so that even a power cut leaves the
-  // old file or the new one.
-  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  bool written = fd >= 0;
-  for (size_t done = 0; written && done < text.size();) {
-    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-    if (n <= 0)
-      written = false;
-    else
-      done += static_cast<size_t>(n);
-  }
-  written = written && ::fsync(fd) == 0;
-  if (fd >= 0) ::close(fd);
-  if (!written) {
-    lastError_ = temporary + ": cannot write the progress file";
-    if (fd >= 0) std::remove(temporary.c_str());
-    return false;
-  }
-  if (std::rename(temporary.c_str(), path_.c_str()) != 0) {
-    lastError_ = path_ + ": cannot replace the progress file";
-    return false;
-  }
-  lastError_.clear();
-  return true;
+  lastError_ = saveWhole(path_, text, "the progress file");
+  return lastError_.empty();
 }
 
 }  // namespace platon::app

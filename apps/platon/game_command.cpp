@@ -25,13 +25,15 @@
 #include "platon/core/replay.h"
 #include "platon/core/visible_text.h"
 #include "platon/script/script_system.h"
+#include "settings.h"
 
 namespace platon::app {
 namespace {
 
-enum class Screen { Title, Playing, Paused, Complete };
+enum class Screen { Title, Playing, Paused, Complete, Settings };
 
-const char* const kPauseItems[] = {"Resume", "Restart the level", "Level select", "Quit"};
+const char* const kPauseItems[] = {"Resume", "Restart the level", "Level select", "Settings", "Quit"};
+constexpr int kPauseCount = 5;
 
 std::string clockText(uint64_t frames) {
   char text[32];
@@ -105,11 +107,17 @@ class LevelRecorder {
 
 class Game {
  public:
-  Game(std::vector<CampaignLevel> levels, Progress progress, std::string recordFolder)
+  Game(std::vector<CampaignLevel> levels, Progress progress, std::string recordFolder, std::string settingsPath)
       : levels_(std::move(levels)),
         progress_(std::move(progress)),
         registry_(engineRegistry(Presentation::Window)),
-        recording_(std::move(recordFolder)) {
+        recording_(std::move(recordFolder)),
+        settingsPath_(std::move(settingsPath)) {
+    // A damaged settings file costs its lines, never the game: each says why, once, on the HUD too.
+    std::vector<std::string> problems;
+    settings_ = Settings::load(settingsPath_, problems);
+    for (const std::string& p : problems) std::fprintf(stderr, "%s\n", core::visibleText(p, true).c_str());
+    if (!problems.empty()) notice_ = core::visibleText(problems.front(), false);
     for (const CampaignLevel& l : levels_) {  // the names players see; a broken manifest shows its folder
       try {
         names_.push_back(core::loadManifest(l.scene).name);
@@ -163,6 +171,19 @@ class Game {
     }
   }
   void stepSimulation(int due, uint8_t held);
+  // The settings screen (from the title and the pause menu): volumes and screen shake, applied at
+  // once and saved as the screen is left.
+  void openSettings() {
+    settingsFrom_ = screen_, screen_ = Screen::Settings, settingsItem_ = 0;
+    sound("menu_select");
+  }
+  void settingsKey(core::Key key);
+  std::vector<std::string> settingsLines() const;
+  void applySettings() {
+    if (core::AudioControls* a = audio())
+      a->setVolumes(static_cast<float>(settings_.musicVolume) / 100, static_cast<float>(settings_.effectsVolume) / 100);
+    view_.feedback().setShake(settings_.screenShake);
+  }
   core::TapCarry taps_;  // taps between frames, played on the next
   void draw(double alpha);
   std::vector<std::string> titleLines() const;
@@ -186,6 +207,10 @@ class Game {
   std::string lastFrameError_;  // printed once, not on every frame it repeats
   LevelRecorder recording_;
   std::chrono::steady_clock::time_point freezeUntil_{};
+  Settings settings_;
+  std::string settingsPath_;
+  Screen settingsFrom_ = Screen::Title;
+  int settingsItem_ = 0;
 };
 
 bool Game::load(size_t level) {
@@ -214,6 +239,7 @@ bool Game::load(size_t level) {
   view_.step(live_->scene(), status(), 1.0 / clock_.hz());
   edges_.reset();
   taps_.reset();
+  applySettings();
   return true;
 }
 
@@ -235,7 +261,7 @@ std::vector<std::string> Game::titleLines() const {
     lines.push_back(line);
   }
   lines.push_back("");
-  lines.push_back(progress_.open(levels_, selected_) ? "Up/Down choose, Enter play, Esc quit"
+  lines.push_back(progress_.open(levels_, selected_) ? "Up/Down choose, Enter play, Tab settings, Esc quit"
                                                      : "Finish the level before it to open this one");
   return lines;
 }
@@ -253,6 +279,7 @@ void Game::handle(const core::WindowInput& input) {
     switch (screen_) {
       case Screen::Title:
         if (key == core::Key::Escape) quit_ = true;
+        if (key == core::Key::Settings) openSettings();
         if ((key == core::Key::Up || key == core::Key::Down) && levels_.size() > 1) {
           // The cursor moves whether or not the level loads (a broken one says why on the HUD);
           // behind the title, the chosen level's stage when it does.
@@ -271,15 +298,19 @@ void Game::handle(const core::WindowInput& input) {
         break;
       case Screen::Paused:
         if (key == core::Key::Escape) screen_ = Screen::Playing;
-        if (key == core::Key::Up) menuItem_ = (menuItem_ + 3) % 4, sound("menu_move");
-        if (key == core::Key::Down) menuItem_ = (menuItem_ + 1) % 4, sound("menu_move");
+        if (key == core::Key::Up) menuItem_ = (menuItem_ + kPauseCount - 1) % kPauseCount, sound("menu_move");
+        if (key == core::Key::Down) menuItem_ = (menuItem_ + 1) % kPauseCount, sound("menu_move");
         if (key == core::Key::Enter) {
           sound("menu_select");
           if (menuItem_ == 0) screen_ = Screen::Playing;
           if (menuItem_ == 1 && load(level_)) play();
           if (menuItem_ == 2) finishRecording(), screen_ = Screen::Title, selected_ = level_;
-          if (menuItem_ == 3) quit_ = true;
+          if (menuItem_ == 3) openSettings();
+          if (menuItem_ == 4) quit_ = true;
         }
+        break;
+      case Screen::Settings:
+        settingsKey(key);
         break;
       case Screen::Complete:
         if (key == core::Key::Enter || key == core::Key::Escape) {
@@ -295,6 +326,40 @@ void Game::handle(const core::WindowInput& input) {
     }
   }
   holdSound();
+}
+
+void Game::settingsKey(core::Key key) {
+  constexpr int kItems = 4;  // music, effects, shake, back
+  if (key == core::Key::Up) settingsItem_ = (settingsItem_ + kItems - 1) % kItems, sound("menu_move");
+  if (key == core::Key::Down) settingsItem_ = (settingsItem_ + 1) % kItems, sound("menu_move");
+  const int step = key == core::Key::Right ? 10 : key == core::Key::Left ? -10 : 0;
+  if (step && settingsItem_ == 0) settings_.musicVolume = std::clamp(settings_.musicVolume + step, 0, 100);
+  if (step && settingsItem_ == 1) settings_.effectsVolume = std::clamp(settings_.effectsVolume + step, 0, 100);
+  if ((step || key == core::Key::Enter) && settingsItem_ == 2) settings_.screenShake = !settings_.screenShake;
+  if (step || (key == core::Key::Enter && settingsItem_ == 2)) applySettings(), sound("menu_move");
+  if (key == core::Key::Escape || (key == core::Key::Enter && settingsItem_ == 3)) {
+    screen_ = settingsFrom_;
+    if (const std::string error = settings_.save(settingsPath_); !error.empty()) {
+      notice_ = error;
+      std::fprintf(stderr, "%s\n", error.c_str());
+    }
+    std::printf("settings: music %d%%, effects %d%%, screen shake %s\n", settings_.musicVolume, settings_.effectsVolume,
+                settings_.screenShake ? "on" : "off");
+    std::fflush(stdout);
+    sound("menu_select");
+  }
+}
+
+std::vector<std::string> Game::settingsLines() const {
+  const std::string items[] = {"Music volume   < " + std::to_string(settings_.musicVolume) + "% >",
+                               "Effects volume   < " + std::to_string(settings_.effectsVolume) + "% >",
+                               std::string("Screen shake   ") + (settings_.screenShake ? "on" : "off"), "Back"};
+  std::vector<std::string> lines{"Settings", ""};
+  for (int i = 0; i < 4; ++i)
+    lines.push_back((i == settingsItem_ ? "> " : "  ") + items[i] + (i == settingsItem_ ? " <" : ""));
+  lines.push_back("");
+  lines.push_back("Up/Down choose, Left/Right change, Esc back");
+  return lines;
 }
 
 void Game::stepSimulation(int due, uint8_t held) {
@@ -345,7 +410,7 @@ void Game::draw(double alpha) {
       break;
     case Screen::Paused:
       view.centreText = {"Paused"};
-      for (int i = 0; i < 4; ++i)
+      for (int i = 0; i < kPauseCount; ++i)
         view.centreText.push_back((i == menuItem_ ? "> " : "  ") + std::string(kPauseItems[i]) +
                                   (i == menuItem_ ? " <" : ""));
       break;
@@ -358,6 +423,9 @@ void Game::draw(double alpha) {
                                   : "    par " + parText(levels_[level_].parFrames)),
                          level_ + 1 < levels_.size() ? "Enter: next level    Esc: level select"
                                                      : "The campaign is done. Enter: level select"};
+      break;
+    case Screen::Settings:
+      view.centreText = settingsLines();
       break;
     case Screen::Playing:
       break;
@@ -428,6 +496,7 @@ int Game::run(bool quitAfterFirstFrame, const std::string& firstFrameShot) {
 int gameCommand(int argc, char** argv) {
   std::string campaignPath = "levels/campaign.txt";
   std::string progressPath = Progress::defaultPath();
+  std::string settingsPath = Settings::defaultPath();
   bool quitAfterFirstFrame = false;
   std::string firstFrameShot;  // the title screen as a PNG, then quit (docs, tests)
   std::string recordFolder;
@@ -437,6 +506,8 @@ int gameCommand(int argc, char** argv) {
       campaignPath = argv[++i];
     else if (a == "--progress" && i + 1 < argc)
       progressPath = argv[++i];
+    else if (a == "--settings" && i + 1 < argc)
+      settingsPath = argv[++i];
     else if (a == "--quit-after-first-frame")
       quitAfterFirstFrame = true;  // for start-up benchmarks
     else if (a == "--first-frame-shot" && i + 1 < argc)
@@ -445,15 +516,16 @@ int gameCommand(int argc, char** argv) {
       recordFolder = argv[++i];
     else {
       std::fprintf(stderr,
-                   "usage: platon game [--campaign levels/campaign.txt] [--progress file] [--record dir]\n"
+                   "usage: platon game [--campaign levels/campaign.txt] [--progress file] [--settings file]\n"
+                   "                   [--record dir]\n"
                    "  --record DIR  write a replay of each level played to DIR/<level>.replay\n"
-                   "  keys: arrows or WASD move, Space jumps, R restarts, Esc pauses, F5 reloads,\n"
+                   "  keys: arrows or WASD move, Space jumps, R restarts, Esc pauses, Tab settings, F5 reloads,\n"
                    "        F3 frame rate, F11 fullscreen; a gamepad works too\n");
       return 2;
     }
   }
   try {
-    Game game(readCampaign(core::resolveDataPath(campaignPath)), Progress(progressPath), recordFolder);
+    Game game(readCampaign(core::resolveDataPath(campaignPath)), Progress(progressPath), recordFolder, settingsPath);
     return game.run(quitAfterFirstFrame, firstFrameShot);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s\n", e.what());

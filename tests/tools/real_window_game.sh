@@ -11,7 +11,7 @@ platon=$1
 unset SDL_VIDEODRIVER  # the X server xvfb-run started, not offscreen
 data=$(mktemp -d)
 log="$data/log"
-SDL_AUDIODRIVER=disk SDL_DISKAUDIOFILE="$data/audio.raw" XDG_DATA_HOME="$data" "$platon" game > "$log" 2>&1 &
+SDL_AUDIODRIVER=disk SDL_DISKAUDIOFILE="$data/audio.raw" XDG_DATA_HOME="$data" XDG_CONFIG_HOME="$data/config" "$platon" game > "$log" 2>&1 &
 pid=$!
 fail() { echo "$1"; cat "$log"; kill "$pid" 2>/dev/null; xdotool keyup Right 2>/dev/null; rm -rf "$data"; exit 1; }
 . "$(dirname "$0")/window_test.sh"
@@ -31,7 +31,14 @@ await "^level complete: cube_intro"  # about 18 s of play; a slow machine drops 
 xdotool keyup Right
 xdotool key Return
 await "^playing tetra_around"
-xdotool key Escape Down Down Down Return  # the pause menu: Quit
+# The settings screen from the pause menu: music down to 40%, screen shake off, saved on the way
+# back (a fresh XDG config folder).
+xdotool key Escape Down Down Down Return Left Left Down Down Return Escape
+await "^settings: music 40%, effects 90%, screen shake off"
+grep -q "^music_volume 40" "$data/config/platon/settings.txt" || fail "the settings were not saved"
+grep -q "^screen_shake off" "$data/config/platon/settings.txt" || fail "the settings were not saved"
+xdotool key Escape  # the pause menu: resume
+xdotool key Escape Down Down Down Down Return  # the pause menu: Quit
 await_exit "Quit in the pause menu did not end the game"
 wait "$pid" || fail "the game failed"
 cat "$log"

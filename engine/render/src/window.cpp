@@ -124,6 +124,8 @@ std::optional<core::Key> keyOf(SDL_Keycode key) {
   switch (key) {
     case SDLK_ESCAPE:
       return core::Key::Escape;
+    case SDLK_TAB:
+      return core::Key::Settings;
     case SDLK_RETURN:
     case SDLK_KP_ENTER:
       return core::Key::Enter;

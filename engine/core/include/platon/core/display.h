@@ -77,7 +77,7 @@ camera::CameraTarget cameraTarget(const StageView& stage, const Scene& scene, ph
                                   float y);
 
 // Keys the game's menus and controls act on once per press (held buttons go to the simulation).
-enum class Key : uint8_t { Escape, Enter, Up, Down, Left, Right, Restart, Reload, ShowFps };
+enum class Key : uint8_t { Escape, Enter, Up, Down, Left, Right, Restart, Reload, ShowFps, Settings };
 
 // What the window's devices (keyboard, gamepads) did since the last poll.
 struct WindowInput {

@@ -1,0 +1,25 @@
+// The player's settings, saved in $XDG_CONFIG_HOME/platon/settings.txt (~/.config/platon/ by
+// default) as "name value" lines. A damaged file never stops the game: each line it cannot read
+// keeps that setting's default, and problems() says which and why, at file:line.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace platon::app {
+
+struct Settings {
+  int musicVolume = 60;     // percent
+  int effectsVolume = 90;   // percent
+  bool screenShake = true;  // the view shakes on a death and the goal
+
+  // $XDG_CONFIG_HOME/platon/settings.txt, or ~/.config/platon/settings.txt.
+  static std::string defaultPath();
+  // Reads `path` (no file: the defaults, no problem).
+  static Settings load(const std::string& path, std::vector<std::string>& problems);
+  // The file's text, which load() reads back to the same settings.
+  std::string text() const;
+  // "" when saved, else why not (the game goes on with them unsaved).
+  std::string save(const std::string& path) const;
+};
+
+}  // namespace platon::app

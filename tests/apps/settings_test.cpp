@@ -1,0 +1,70 @@
+// The settings file: saved and read back to the same settings; missing, it is the defaults with no
+// complaint; damaged, each line it cannot read keeps its default and is named at file:line; a file
+// that is none (a folder) is the defaults, said so.
+#include "settings.h"
+
+#include <gtest/gtest.h>
+
+#include "platon/testing/temp_folder.h"
+
+using namespace platon::app;
+
+namespace {
+
+TEST(Settings, ASavedFileReadsBackTheSame) {
+  platon::testing::TempFolder folder("settings");
+  for (const Settings& s : {Settings{}, Settings{0, 100, false}, Settings{37, 5, true}}) {
+    const std::string path = folder.path("config/platon/settings.txt");
+    ASSERT_EQ(s.save(path), "");
+    std::vector<std::string> problems;
+    const Settings back = Settings::load(path, problems);
+    EXPECT_TRUE(problems.empty());
+    EXPECT_EQ(back.musicVolume, s.musicVolume);
+    EXPECT_EQ(back.effectsVolume, s.effectsVolume);
+    EXPECT_EQ(back.screenShake, s.screenShake);
+  }
+}
+
+TEST(Settings, ADamagedFileKeepsTheDefaultsOfWhatItCannotRead) {
+  platon::testing::TempFolder folder("settings_bad");
+  std::vector<std::string> problems;
+  const Settings none = Settings::load(folder.path("absent.txt"), problems);
+  EXPECT_TRUE(problems.empty()) << "no file yet is no problem";
+  EXPECT_EQ(none.musicVolume, Settings{}.musicVolume);
+
+  const std::string path = folder.write("settings.txt",
+                                        "music_volume 150\n"
+                                        "effects_volume 40\n"
+                                        "screen_shake maybe\n"
+                                        "volume 3\n"
+                                        "music_volume -1 # a sign\n"
+                                        "\x01\xff garbage\n");
+  const Settings s = Settings::load(path, problems);
+  EXPECT_EQ(s.musicVolume, Settings{}.musicVolume);
+  EXPECT_EQ(s.effectsVolume, 40);  // the good line is kept
+  EXPECT_EQ(s.screenShake, Settings{}.screenShake);
+  ASSERT_EQ(problems.size(), 5u);
+  EXPECT_EQ(problems[0].rfind(path + ":1: 'music_volume 150': music_volume is a whole number 0..100", 0), 0u)
+      << problems[0];
+  EXPECT_EQ(problems[1].rfind(path + ":3: 'screen_shake maybe': screen_shake is on or off", 0), 0u) << problems[1];
+  EXPECT_EQ(problems[2].rfind(path + ":4: unknown setting 'volume'", 0), 0u) << problems[2];
+  EXPECT_EQ(problems[3].rfind(path + ":5: ", 0), 0u) << problems[3];
+  EXPECT_EQ(problems[4].rfind(path + ":6: unknown setting", 0), 0u) << problems[4];
+
+  problems.clear();
+  const Settings folderInstead = Settings::load(folder.path(), problems);
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_NE(problems[0].find("the default settings are used"), std::string::npos) << problems[0];
+  EXPECT_EQ(folderInstead.screenShake, Settings{}.screenShake);
+}
+
+TEST(Settings, LiveInTheXdgConfigFolder) {
+  setenv("XDG_CONFIG_HOME", "/tmp/xdg_config", 1);
+  EXPECT_EQ(Settings::defaultPath(), "/tmp/xdg_config/platon/settings.txt");
+  setenv("XDG_CONFIG_HOME", "relative", 1);  // not absolute: ignored, as the XDG spec says
+  setenv("HOME", "/home/someone", 1);
+  EXPECT_EQ(Settings::defaultPath(), "/home/someone/.config/platon/settings.txt");
+  unsetenv("XDG_CONFIG_HOME");
+}
+
+}  // namespace
