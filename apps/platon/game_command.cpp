@@ -62,7 +62,7 @@ class LevelRecorder {
  public:
   explicit LevelRecorder(std::string folder) : folder_(std::move(folder)) {}
   bool on() const { return !folder_.empty(); }
-  void start(const CampaignLevel& level, core::Scene& loaded) {
+  void start(const CampaignLevel& level, core::Scene& loaded, int speed) {
     if (!on()) return;
     level_ = level.folder;
     // Named from the game's data folder or the current one (a replay names no absolute path); a
@@ -74,6 +74,7 @@ class LevelRecorder {
       return;
     }
     recorder_.emplace(*scene, 60, core::sceneFilesHash(core::sceneSourceFiles(loaded)));
+    recorder_->setSpeed(speed);
   }
   void frame(uint8_t held, uint64_t stateHash) {
     if (recorder_) recorder_->frame(held, stateHash);
@@ -155,7 +156,7 @@ class Game {
     screen_ = Screen::Playing;
     std::printf("playing %s\n", levels_[level_].folder.c_str());
     std::fflush(stdout);
-    recording_.start(levels_[level_], live_->scene());
+    recording_.start(levels_[level_], live_->scene(), settings_.gameSpeed);
   }
   void finishRecording() {
     if (std::string error = recording_.finish(); !error.empty()) {
@@ -178,11 +179,22 @@ class Game {
     sound("menu_select");
   }
   void settingsKey(core::Key key);
+  bool bindKey(const core::WindowInput& input);
   std::vector<std::string> settingsLines() const;
   void applySettings() {
     if (core::AudioControls* a = audio())
       a->setVolumes(static_cast<float>(settings_.musicVolume) / 100, static_cast<float>(settings_.effectsVolume) / 100);
     view_.feedback().setShake(settings_.screenShake);
+    if (core::Display* d = display()) {
+      try {
+        for (const std::string& name : d->setBindings(settings_.keys))
+          notice_ = "settings: no key is named '" + core::visibleText(name, false) + "'; it binds nothing";
+        d->setFullscreen(settings_.fullscreen);
+        d->setVsync(settings_.vsync);
+      } catch (const std::exception& e) {  // no display: the game says so when it opens
+        notice_ = e.what();
+      }
+    }
   }
   core::TapCarry taps_;  // taps between frames, played on the next
   void draw(double alpha);
@@ -211,6 +223,7 @@ class Game {
   std::string settingsPath_;
   Screen settingsFrom_ = Screen::Title;
   int settingsItem_ = 0;
+  int binding_ = -1;  // the button whose key the settings screen waits for
 };
 
 bool Game::load(size_t level) {
@@ -268,6 +281,7 @@ std::vector<std::string> Game::titleLines() const {
 
 void Game::handle(const core::WindowInput& input) {
   if (input.closed) quit_ = true;
+  if (bindKey(input)) return;
   // Another window took the keyboard: the game waits in its pause menu (keys held then never come up).
   if (input.focusLost && screen_ == Screen::Playing) {
     screen_ = Screen::Paused, menuItem_ = 0;
@@ -328,37 +342,92 @@ void Game::handle(const core::WindowInput& input) {
   holdSound();
 }
 
+namespace {
+const char* const kBoundNames[core::KeyBindings::kBound] = {"Left", "Right", "Up", "Down", "Jump", "Restart"};
+constexpr int kSettingsItems = 13;  // 6 settings, 6 keys, back
+}  // namespace
+
 void Game::settingsKey(core::Key key) {
-  constexpr int kItems = 4;  // music, effects, shake, back
-  if (key == core::Key::Up) settingsItem_ = (settingsItem_ + kItems - 1) % kItems, sound("menu_move");
-  if (key == core::Key::Down) settingsItem_ = (settingsItem_ + 1) % kItems, sound("menu_move");
-  const int step = key == core::Key::Right ? 10 : key == core::Key::Left ? -10 : 0;
-  if (step && settingsItem_ == 0) settings_.musicVolume = std::clamp(settings_.musicVolume + step, 0, 100);
-  if (step && settingsItem_ == 1) settings_.effectsVolume = std::clamp(settings_.effectsVolume + step, 0, 100);
-  if ((step || key == core::Key::Enter) && settingsItem_ == 2) settings_.screenShake = !settings_.screenShake;
-  if (step || (key == core::Key::Enter && settingsItem_ == 2)) applySettings(), sound("menu_move");
-  if (key == core::Key::Escape || (key == core::Key::Enter && settingsItem_ == 3)) {
+  if (key == core::Key::Up) settingsItem_ = (settingsItem_ + kSettingsItems - 1) % kSettingsItems, sound("menu_move");
+  if (key == core::Key::Down) settingsItem_ = (settingsItem_ + 1) % kSettingsItems, sound("menu_move");
+  const int step = key == core::Key::Right ? 1 : key == core::Key::Left ? -1 : 0;
+  const bool enter = key == core::Key::Enter;
+  bool changed = true;
+  switch (settingsItem_) {
+    case 0:
+      settings_.musicVolume = std::clamp(settings_.musicVolume + 10 * step, 0, 100);
+      changed = step;
+      break;
+    case 1:
+      settings_.effectsVolume = std::clamp(settings_.effectsVolume + 10 * step, 0, 100);
+      changed = step;
+      break;
+    case 2:
+      if ((changed = step || enter)) settings_.screenShake = !settings_.screenShake;
+      break;
+    case 3:
+      if ((changed = step || enter)) settings_.fullscreen = !settings_.fullscreen;
+      break;
+    case 4:
+      if ((changed = step || enter)) settings_.vsync = !settings_.vsync;
+      break;
+    case 5:
+      settings_.gameSpeed = std::clamp(settings_.gameSpeed + 10 * step, 50, 100);
+      changed = step;
+      break;
+    default:
+      changed = false;
+      if (enter && settingsItem_ < 12) binding_ = settingsItem_ - 6;  // the next key pressed
+  }
+  if (changed) applySettings(), sound("menu_move");
+  if (key == core::Key::Escape || (enter && settingsItem_ == 12)) {
     screen_ = settingsFrom_;
     if (const std::string error = settings_.save(settingsPath_); !error.empty()) {
       notice_ = error;
       std::fprintf(stderr, "%s\n", error.c_str());
     }
-    std::printf("settings: music %d%%, effects %d%%, screen shake %s\n", settings_.musicVolume, settings_.effectsVolume,
-                settings_.screenShake ? "on" : "off");
+    std::printf("settings: music %d%%, effects %d%%, screen shake %s, game speed %d%%\n", settings_.musicVolume,
+                settings_.effectsVolume, settings_.screenShake ? "on" : "off", settings_.gameSpeed);
     std::fflush(stdout);
     sound("menu_select");
   }
 }
 
+// While a key is being bound, the next key pressed is it (Escape keeps the old keys).
+bool Game::bindKey(const core::WindowInput& input) {
+  if (screen_ != Screen::Settings || binding_ < 0 || input.lastKey.empty()) return false;
+  if (input.lastKey != "Escape") {
+    settings_.keys.keys[binding_] = {input.lastKey};
+    applySettings();
+    std::printf("settings: %s is %s\n", kBoundNames[binding_], input.lastKey.c_str());
+    std::fflush(stdout);
+  }
+  binding_ = -1;
+  sound("menu_select");
+  return true;
+}
+
 std::vector<std::string> Game::settingsLines() const {
-  const std::string items[] = {"Music volume   < " + std::to_string(settings_.musicVolume) + "% >",
-                               "Effects volume   < " + std::to_string(settings_.effectsVolume) + "% >",
-                               std::string("Screen shake   ") + (settings_.screenShake ? "on" : "off"), "Back"};
+  auto keys = [&](int b) {
+    std::string list;
+    for (const std::string& k : settings_.keys.keys[b]) list += (list.empty() ? "" : ", ") + k;
+    return binding_ == b ? std::string("press a key (Esc: keep ") + list + ")" : list;
+  };
+  std::vector<std::string> items = {"Music volume   < " + std::to_string(settings_.musicVolume) + "% >",
+                                    "Effects volume   < " + std::to_string(settings_.effectsVolume) + "% >",
+                                    std::string("Screen shake   ") + (settings_.screenShake ? "on" : "off"),
+                                    std::string("Full screen   ") + (settings_.fullscreen ? "on" : "off"),
+                                    std::string("Vsync   ") + (settings_.vsync ? "on" : "off"),
+                                    "Game speed (assist)   < " + std::to_string(settings_.gameSpeed) + "% >"};
+  for (int b = 0; b < core::KeyBindings::kBound; ++b)
+    items.push_back(std::string(kBoundNames[b]) + " key   " + keys(b));
+  items.push_back("Back");
   std::vector<std::string> lines{"Settings", ""};
-  for (int i = 0; i < 4; ++i)
-    lines.push_back((i == settingsItem_ ? "> " : "  ") + items[i] + (i == settingsItem_ ? " <" : ""));
+  for (int i = 0; i < kSettingsItems; ++i)
+    lines.push_back((i == settingsItem_ ? "> " : "  ") + items[static_cast<size_t>(i)] +
+                    (i == settingsItem_ ? " <" : ""));
   lines.push_back("");
-  lines.push_back("Up/Down choose, Left/Right change, Esc back");
+  lines.push_back("Up/Down choose, Left/Right change, Enter set a key, Esc back");
   return lines;
 }
 
@@ -463,7 +532,9 @@ int Game::run(bool quitAfterFirstFrame, const std::string& firstFrameShot) {
     if (loaded_) previous = std::chrono::steady_clock::now();  // loading is not play time
     const auto now = std::chrono::steady_clock::now();
     if (now < freezeUntil_) previous = now;  // frozen: the time passes unplayed
-    const int due = clock_.advance(std::chrono::duration_cast<std::chrono::nanoseconds>(now - previous).count());
+    // The assist mode slows the game's pace, never its frames: a slowed run replays bit for bit.
+    const int due = clock_.advance(std::chrono::duration_cast<std::chrono::nanoseconds>(now - previous).count() *
+                                   settings_.gameSpeed / 100);
     previous = now;
     if (screen_ == Screen::Playing) taps_.add(input.tapped);  // a menu's keys are not the game's
     stepSimulation(due, input.held);

@@ -1,5 +1,6 @@
 #include "settings.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <sstream>
@@ -15,6 +16,20 @@ bool wholeIn(const std::string& word, int low, int high, int& out) {
   if (word.empty() || word.size() > 4 || word.find_first_not_of("0123456789") != std::string::npos) return false;
   out = std::stoi(word);
   return out >= low && out <= high;
+}
+
+const char* const kKeyNames[core::KeyBindings::kBound] = {"keys_left", "keys_right", "keys_up",
+                                                          "keys_down", "keys_jump",  "keys_restart"};
+
+// "Left, A, Keypad 4" -> its names, trimmed; nothing for an empty one.
+std::vector<std::string> names(const std::string& list) {
+  std::vector<std::string> out;
+  std::istringstream in(list);
+  for (std::string name; std::getline(in, name, ',');) {
+    const size_t a = name.find_first_not_of(" \t\r"), b = name.find_last_not_of(" \t\r");
+    if (a != std::string::npos) out.push_back(name.substr(a, b + 1 - a));
+  }
+  return out;
 }
 
 }  // namespace
@@ -46,27 +61,58 @@ Settings Settings::load(const std::string& path, std::vector<std::string>& probl
     if (name.empty()) continue;
     const std::string at = path + ":" + std::to_string(number) + ": ";
     int volume = 0;
+    const auto key = std::find(std::begin(kKeyNames), std::end(kKeyNames), name);
+    if (key != std::end(kKeyNames)) {
+      const size_t start = line.find(name) + name.size();
+      const std::vector<std::string> bound = names(line.substr(start, line.find('#') - start));
+      if (bound.empty())
+        problems.push_back(at + "'" + line + "': " + name + " names one key or more (Left, A); its default is used");
+      else
+        s.keys.keys[key - std::begin(kKeyNames)] = bound;
+      continue;
+    }
+    if ((name == "fullscreen" || name == "vsync") && more.empty() && (value == "on" || value == "off")) {
+      (name == "fullscreen" ? s.fullscreen : s.vsync) = value == "on";
+      continue;
+    }
+    if (name == "game_speed" && more.empty() && wholeIn(value, 50, 100, volume)) {
+      s.gameSpeed = volume;
+      continue;
+    }
     if ((name == "music_volume" || name == "effects_volume") && more.empty() && wholeIn(value, 0, 100, volume)) {
       (name == "music_volume" ? s.musicVolume : s.effectsVolume) = volume;
     } else if (name == "screen_shake" && more.empty() && (value == "on" || value == "off")) {
       s.screenShake = value == "on";
-    } else if (name == "music_volume" || name == "effects_volume" || name == "screen_shake") {
+    } else if (name == "music_volume" || name == "effects_volume" || name == "screen_shake" || name == "fullscreen" ||
+               name == "vsync" || name == "game_speed") {
       problems.push_back(at + "'" + line + "': " + name +
-                         (name == "screen_shake" ? " is on or off" : " is a whole number 0..100") +
+                         (name == "game_speed"                                 ? " is a whole number 50..100"
+                          : name == "music_volume" || name == "effects_volume" ? " is a whole number 0..100"
+                                                                               : " is on or off") +
                          "; its default is used");
     } else {
       problems.push_back(at + "unknown setting '" + name +
-                         "' (known: music_volume, effects_volume, screen_shake); the line is ignored");
+                         "' (known: music_volume, effects_volume, screen_shake, fullscreen, vsync, game_speed, "
+                         "keys_left, keys_right, keys_up, keys_down, keys_jump, keys_restart); the line is ignored");
     }
   }
   return s;
 }
 
 std::string Settings::text() const {
-  return "# Platon settings (the game writes this file; a line it cannot read keeps its default)\n"
-         "music_volume " +
-         std::to_string(musicVolume) + "\n" + "effects_volume " + std::to_string(effectsVolume) + "\n" +
-         "screen_shake " + (screenShake ? "on" : "off") + "\n";
+  std::string text = "# Platon settings (the game writes this file; a line it cannot read keeps its default)\n";
+  text += "music_volume " + std::to_string(musicVolume) + "\n";
+  text += "effects_volume " + std::to_string(effectsVolume) + "\n";
+  text += std::string("screen_shake ") + (screenShake ? "on" : "off") + "\n";
+  text += std::string("fullscreen ") + (fullscreen ? "on" : "off") + "\n";
+  text += std::string("vsync ") + (vsync ? "on" : "off") + "\n";
+  text += "game_speed " + std::to_string(gameSpeed) + "\n";
+  for (int b = 0; b < core::KeyBindings::kBound; ++b) {
+    text += kKeyNames[b];
+    for (size_t i = 0; i < keys.keys[b].size(); ++i) text += (i ? ", " : " ") + keys.keys[b][i];
+    text += "\n";
+  }
+  return text;
 }
 
 std::string Settings::save(const std::string& path) const { return saveWhole(path, text(), "the settings file"); }

@@ -5,12 +5,18 @@
 #include <string>
 #include <vector>
 
+#include "platon/core/display.h"
+
 namespace platon::app {
 
 struct Settings {
   int musicVolume = 60;     // percent
   int effectsVolume = 90;   // percent
   bool screenShake = true;  // the view shakes on a death and the goal
+  bool fullscreen = false;
+  bool vsync = true;
+  int gameSpeed = 100;     // percent, 50..100: the assist mode (pacing only; recorded in replays)
+  core::KeyBindings keys;  // keys_left Left, A ... (SDL's key names, commas between)
 
   // $XDG_CONFIG_HOME/platon/settings.txt, or ~/.config/platon/settings.txt.
   static std::string defaultPath();

@@ -13,7 +13,12 @@ namespace {
 
 TEST(Settings, ASavedFileReadsBackTheSame) {
   platon::testing::TempFolder folder("settings");
-  for (const Settings& s : {Settings{}, Settings{0, 100, false}, Settings{37, 5, true}}) {
+  Settings changed;
+  changed.musicVolume = 0, changed.effectsVolume = 100, changed.screenShake = false, changed.fullscreen = true;
+  changed.vsync = false, changed.gameSpeed = 50;
+  changed.keys.keys[4] = {"L", "Keypad 0"};  // jump on two keys, one with a space in its name
+  changed.keys.keys[0] = {"J"};
+  for (const Settings& s : {Settings{}, changed}) {
     const std::string path = folder.path("config/platon/settings.txt");
     ASSERT_EQ(s.save(path), "");
     std::vector<std::string> problems;
@@ -22,6 +27,10 @@ TEST(Settings, ASavedFileReadsBackTheSame) {
     EXPECT_EQ(back.musicVolume, s.musicVolume);
     EXPECT_EQ(back.effectsVolume, s.effectsVolume);
     EXPECT_EQ(back.screenShake, s.screenShake);
+    EXPECT_EQ(back.fullscreen, s.fullscreen);
+    EXPECT_EQ(back.vsync, s.vsync);
+    EXPECT_EQ(back.gameSpeed, s.gameSpeed);
+    for (int b = 0; b < platon::core::KeyBindings::kBound; ++b) EXPECT_EQ(back.keys.keys[b], s.keys.keys[b]) << b;
   }
 }
 
@@ -38,18 +47,30 @@ TEST(Settings, ADamagedFileKeepsTheDefaultsOfWhatItCannotRead) {
                                         "screen_shake maybe\n"
                                         "volume 3\n"
                                         "music_volume -1 # a sign\n"
-                                        "\x01\xff garbage\n");
+                                        "\x01\xff garbage\n"
+                                        "game_speed 30\n"
+                                        "vsync sometimes\n"
+                                        "keys_jump   # none\n"
+                                        "keys_left J, K\n");
   const Settings s = Settings::load(path, problems);
   EXPECT_EQ(s.musicVolume, Settings{}.musicVolume);
   EXPECT_EQ(s.effectsVolume, 40);  // the good line is kept
   EXPECT_EQ(s.screenShake, Settings{}.screenShake);
-  ASSERT_EQ(problems.size(), 5u);
+  ASSERT_EQ(problems.size(), 8u);
   EXPECT_EQ(problems[0].rfind(path + ":1: 'music_volume 150': music_volume is a whole number 0..100", 0), 0u)
       << problems[0];
   EXPECT_EQ(problems[1].rfind(path + ":3: 'screen_shake maybe': screen_shake is on or off", 0), 0u) << problems[1];
   EXPECT_EQ(problems[2].rfind(path + ":4: unknown setting 'volume'", 0), 0u) << problems[2];
   EXPECT_EQ(problems[3].rfind(path + ":5: ", 0), 0u) << problems[3];
   EXPECT_EQ(problems[4].rfind(path + ":6: unknown setting", 0), 0u) << problems[4];
+  EXPECT_EQ(problems[5].rfind(path + ":7: 'game_speed 30': game_speed is a whole number 50..100", 0), 0u)
+      << problems[5];
+  EXPECT_EQ(problems[6].rfind(path + ":8: 'vsync sometimes': vsync is on or off", 0), 0u) << problems[6];
+  EXPECT_EQ(problems[7].rfind(path + ":9: 'keys_jump   # none': keys_jump names one key or more", 0), 0u)
+      << problems[7];
+  EXPECT_EQ(s.gameSpeed, Settings{}.gameSpeed);
+  EXPECT_EQ(s.keys.keys[4], Settings{}.keys.keys[4]);
+  EXPECT_EQ(s.keys.keys[0], (std::vector<std::string>{"J", "K"}));
 
   problems.clear();
   const Settings folderInstead = Settings::load(folder.path(), problems);

@@ -201,6 +201,13 @@ Replay parseReplay(const std::string& text, const std::string& fileName) {
     r.sceneFiles = std::stoull(w[1].text, nullptr, 16);
     line("frames N");
   }
+  if (w[0].text == "speed") {  // optional: the assist mode's game speed
+    in.expect(w, "speed", 2, "speed PERCENT");
+    const uint64_t speed = in.number(w[1], 100, "speed");
+    if (speed < 50) in.fail(w[1].column, "speed: the game runs at 50 to 100 percent, not " + w[1].text);
+    r.speed = static_cast<int>(speed);
+    line("frames N");
+  }
   in.expect(w, "frames", 2, "frames N");
   const uint64_t frames = in.number(w[1], kMaxFrames, "frames");
   line("hash_every N");
@@ -234,6 +241,7 @@ std::string hex16(uint64_t value) {
 std::string formatReplay(const Replay& r) {
   std::string out = "platon replay 1\nscene \"" + r.scene + "\"\n";
   if (r.sceneFiles) out += "scene_files " + hex16(*r.sceneFiles) + "\n";
+  if (r.speed != 100) out += "speed " + std::to_string(r.speed) + "\n";
   out += "frames " + std::to_string(r.frames()) + "\nhash_every " + std::to_string(r.hashEvery) + "\ninput\n";
   for (size_t i = 0; i < r.held.size();) {
     size_t j = i;

@@ -59,6 +59,14 @@ void RenderSystem::carryOver(core::Scene&, core::System& previous) {
 
 core::WindowInput RenderSystem::pollEvents() { return gl().window.pollEvents(); }
 
+std::vector<std::string> RenderSystem::setBindings(const core::KeyBindings& bindings) {
+  return gl().window.setBindings(bindings);
+}
+
+void RenderSystem::setFullscreen(bool on) { gl().window.setFullscreen(on); }
+
+void RenderSystem::setVsync(bool on) { gl().window.setVsync(on); }
+
 void RenderSystem::resize(int width, int height) {
   if (!gl_) {  // not open yet: open at that size (an offscreen surface cannot grow later)
     firstWidth_ = width, firstHeight_ = height;

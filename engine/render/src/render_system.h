@@ -25,6 +25,9 @@ class RenderSystem final : public core::System, public core::Display {
   void present(const core::View& view, const core::DrawList& draw) override;
   std::vector<uint8_t> capture(int& width, int& height) override;
   void saveScreenshot(const std::string& path) override;
+  std::vector<std::string> setBindings(const core::KeyBindings& bindings) override;
+  void setFullscreen(bool on) override;
+  void setVsync(bool on) override;
 
  private:
   struct Gl;

@@ -18,42 +18,6 @@ using core::InputFrame;
 
 [[noreturn]] void fail(const std::string& what) { throw std::runtime_error(what + ": " + SDL_GetError()); }
 
-// The game's button of a key, as a bit of InputFrame (0: none): arrows or WASD to move, Space to
-// jump, R restart, F5 reload.
-uint8_t buttonOf(SDL_Scancode key) {
-  switch (key) {
-    case SDL_SCANCODE_LEFT:
-    case SDL_SCANCODE_A:
-      return InputFrame::bit(Button::Left);
-    case SDL_SCANCODE_RIGHT:
-    case SDL_SCANCODE_D:
-      return InputFrame::bit(Button::Right);
-    case SDL_SCANCODE_UP:
-    case SDL_SCANCODE_W:
-      return InputFrame::bit(Button::Up);
-    case SDL_SCANCODE_DOWN:
-    case SDL_SCANCODE_S:
-      return InputFrame::bit(Button::Down);
-    case SDL_SCANCODE_SPACE:
-      return InputFrame::bit(Button::Jump);
-    case SDL_SCANCODE_R:
-      return InputFrame::bit(Button::Restart);
-    case SDL_SCANCODE_F5:
-      return InputFrame::bit(Button::Reload);
-    default:
-      return 0;
-  }
-}
-
-uint8_t heldButtons() {
-  int count = 0;
-  const Uint8* keys = SDL_GetKeyboardState(&count);
-  uint8_t held = 0;
-  for (int k = 0; k < count; ++k)
-    if (keys[k]) held |= buttonOf(static_cast<SDL_Scancode>(k));
-  return held;
-}
-
 }  // namespace
 
 Window::Window(const std::string& title, int width, int height) {
@@ -101,7 +65,8 @@ Window::Window(const std::string& title, int width, int height) {
       throw std::runtime_error("no OpenGL 3.3 core context: " + reason);
     }
   }
-  SDL_GL_SetSwapInterval(1);  // vsync when the driver has it; no error otherwise
+  SDL_GL_SetSwapInterval(1);         // vsync when the driver has it; no error otherwise
+  setBindings(core::KeyBindings{});  // the default keys until the settings say others
   // Gamepads: those present now arrive as "added" events on the first poll, later ones when
   // plugged in. No gamepad support (no such subsystem) is not an error.
   SDL_InitSubSystem(SDL_INIT_GAMECONTROLLER);
@@ -212,6 +177,35 @@ uint8_t padButtonOf(SDL_GameControllerButton button) {
 
 }  // namespace
 
+uint8_t Window::heldButtons() const {
+  int count = 0;
+  const Uint8* keys = SDL_GetKeyboardState(&count);
+  uint8_t held = 0;
+  for (int k = 0; k < count; ++k)
+    if (keys[k]) held |= buttonOf(static_cast<SDL_Scancode>(k));
+  return held;
+}
+
+std::vector<std::string> Window::setBindings(const core::KeyBindings& bindings) {
+  std::vector<std::string> unknown;
+  std::fill(std::begin(buttons_), std::end(buttons_), uint8_t{0});
+  for (int b = 0; b < core::KeyBindings::kBound; ++b)
+    for (const std::string& name : bindings.keys[b]) {
+      const SDL_Scancode key = SDL_GetScancodeFromName(name.c_str());
+      if (key == SDL_SCANCODE_UNKNOWN)
+        unknown.push_back(name);
+      else
+        buttons_[key] |= InputFrame::bit(static_cast<Button>(b));
+    }
+  // F5 reloads whatever the bindings say (a modder's key, not a player's).
+  buttons_[SDL_SCANCODE_F5] |= InputFrame::bit(Button::Reload);
+  return unknown;
+}
+
+void Window::setFullscreen(bool on) { SDL_SetWindowFullscreen(window_, on ? SDL_WINDOW_FULLSCREEN_DESKTOP : 0); }
+
+void Window::setVsync(bool on) { SDL_GL_SetSwapInterval(on ? 1 : 0); }
+
 core::WindowInput Window::pollEvents() {
   core::WindowInput input;
   SDL_Event event;
@@ -226,6 +220,7 @@ core::WindowInput Window::pollEvents() {
       case SDL_KEYDOWN:
         if (event.key.repeat) break;
         input.tapped |= buttonOf(event.key.keysym.scancode);
+        input.lastKey = SDL_GetScancodeName(event.key.keysym.scancode);
         if (event.key.keysym.sym == SDLK_F11) {
           const bool full = SDL_GetWindowFlags(window_) & SDL_WINDOW_FULLSCREEN_DESKTOP;
           SDL_SetWindowFullscreen(window_, full ? 0 : SDL_WINDOW_FULLSCREEN_DESKTOP);

@@ -30,8 +30,16 @@ class Window {
   void swap();
   // The back buffer's pixels, rows from the top, RGBA.
   std::vector<uint8_t> readPixels(int& width, int& height) const;
+  // The player's keys (core::KeyBindings); returns the names SDL does not know.
+  std::vector<std::string> setBindings(const core::KeyBindings& bindings);
+  void setFullscreen(bool on);
+  void setVsync(bool on);
 
  private:
+  uint8_t buttonOf(SDL_Scancode key) const { return key >= 0 && key < SDL_NUM_SCANCODES ? buttons_[key] : 0; }
+  uint8_t heldButtons() const;
+
+  uint8_t buttons_[SDL_NUM_SCANCODES] = {};  // by scancode: the InputFrame bits it holds
   SDL_Window* window_ = nullptr;
   SDL_GLContext context_ = nullptr;
   std::vector<SDL_GameController*> pads_;

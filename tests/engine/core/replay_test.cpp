@@ -50,6 +50,9 @@ TEST(Replay, MalformedInputsNamePositionAndReason) {
        "run.replay:3:8: frames 123456789012345678901234567890 is more"},
       {"platon replay 1\nscene \"a\"\nscene_files 12\n",
        "run.replay:3:13: the scene files' hash is 16 lower-case hex digits"},
+      {"platon replay 1\nscene \"a\"\nspeed 49\n", "run.replay:3:7: speed: the game runs at 50 to 100 percent, not 49"},
+      {"platon replay 1\nscene \"a\"\nspeed 101\n", "run.replay:3:7: speed 101 is more than 100"},
+      {"platon replay 1\nscene \"a\"\nspeed\n", "run.replay:3:1: expected 'speed PERCENT'"},
       {kHeader + "10 left left\nend\n", "run.replay:6:9: 'left' is given twice"},
       {kHeader + "10 -\nend\nhash 0 0123456789abcdef\n", "run.replay:8:6: hash frame 0: frames count from 1"},
       // The hashes hash_every implies are all there or none: a stripped or tampered file is refused.
@@ -116,6 +119,18 @@ TEST(Replay, AllHashesOrNone) {
       3u);
   EXPECT_NE(errorOf(odd + "hash 4 0123456789abcdef\nhash 10 0123456789abcdef\n").find("implies a hash at frame 8"),
             std::string::npos);
+}
+
+// The assist mode's speed: optional (100 when absent, and then not written), kept through a write.
+TEST(Replay, TheSpeedIsOptionalAndSurvivesWriteAndRead) {
+  EXPECT_EQ(parseReplay(kHeader + "10 -\nend\n", "old.replay").speed, 100);
+  ReplayRecorder recorder("levels/a/scene.lua", 5, 0x0123456789abcdefull);
+  for (int f = 0; f < 10; ++f) recorder.frame(0, 7);
+  EXPECT_EQ(formatReplay(recorder.replay()).find("speed"), std::string::npos);
+  recorder.setSpeed(70);
+  const std::string text = formatReplay(recorder.replay());
+  EXPECT_NE(text.find("scene_files 0123456789abcdef\nspeed 70\nframes 10\n"), std::string::npos) << text;
+  EXPECT_EQ(parseReplay(text, "slow.replay").speed, 70);
 }
 
 TEST(Replay, TheSceneFilesHashIsOptionalAndSurvivesWriteAndRead) {

@@ -79,6 +79,14 @@ camera::CameraTarget cameraTarget(const StageView& stage, const Scene& scene, ph
 // Keys the game's menus and controls act on once per press (held buttons go to the simulation).
 enum class Key : uint8_t { Escape, Enter, Up, Down, Left, Right, Restart, Reload, ShowFps, Settings };
 
+// The keys that hold each of the player's buttons (Left, Right, Up, Down, Jump, Restart), by SDL's
+// names for them ("Left", "A", "Space", "Keypad 4"), as the player's settings bind them. The menus'
+// own keys (arrows, WASD, Enter, Esc) stay as they are, so no binding can lock a player out.
+struct KeyBindings {
+  static constexpr int kBound = 6;  // Button::Left .. Button::Restart
+  std::vector<std::string> keys[kBound] = {{"Left", "A"}, {"Right", "D"}, {"Up", "W"}, {"Down", "S"}, {"Space"}, {"R"}};
+};
+
 // What the window's devices (keyboard, gamepads) did since the last poll.
 struct WindowInput {
   uint8_t held = 0;          // InputFrame bits of the buttons held now
@@ -86,6 +94,7 @@ struct WindowInput {
   std::vector<Key> pressed;  // in order
   bool closed = false;       // the window was closed
   bool focusLost = false;    // the window lost the keyboard (the game pauses)
+  std::string lastKey;       // SDL's name of the last key pressed ("Space"), for binding one
 };
 
 class Display {
@@ -103,6 +112,12 @@ class Display {
   virtual std::vector<uint8_t> capture(int& width, int& height) = 0;
   // Writes the frame last presented as a PNG; throws std::runtime_error when it cannot.
   virtual void saveScreenshot(const std::string& path) = 0;
+  // The player's keys from now on; returns the names it does not know (those keys bind nothing).
+  virtual std::vector<std::string> setBindings(const KeyBindings& bindings) = 0;
+  // Full screen (on the desktop's resolution) or a window, and whether frames wait for the
+  // display's refresh (vsync).
+  virtual void setFullscreen(bool on) = 0;
+  virtual void setVsync(bool on) = 0;
 };
 
 }  // namespace platon::core

@@ -6,6 +6,7 @@
 //   platon replay 1
 //   scene "levels/cube_intro/scene.lua"
 //   scene_files 5d41402abc4b2a76   <- optional: a hash of the scene's files when it was recorded
+//   speed 75                   <- optional: the assist mode's game speed it was played at (50-100 %)
 //   frames 336
 //   hash_every 60
 //   input
@@ -41,6 +42,9 @@ struct Replay {
   // sceneSourceFiles): a replay that goes another way can say whether they changed since. Files
   // from before this line existed have none.
   std::optional<uint64_t> sceneFiles;
+  // The game speed (percent) a player ran it at in the assist mode: pacing only, so the frames and
+  // their hashes are the same at any speed; kept so a run can be watched as it was played.
+  int speed = 100;
   std::vector<uint8_t> held;       // held[f - 1]: the buttons held on frame f (InputFrame::held bits)
   uint64_t hashEvery = 60;         // frames between recorded hashes (0: none)
   std::vector<ReplayHash> hashes;  // increasing frames
@@ -71,6 +75,8 @@ class ReplayRecorder {
  public:
   ReplayRecorder(std::string scene, uint64_t hashEvery, std::optional<uint64_t> sceneFiles = std::nullopt);
   void frame(uint8_t held, uint64_t stateHashAfter);
+  // The game speed the run is played at (Replay::speed).
+  void setSpeed(int percent) { replay_.speed = percent; }
   // The replay so far, its last frame's hash included.
   Replay replay() const;
 
