@@ -7,7 +7,7 @@ function level.build(game)  -- said once, as the level starts: no per-frame tick
 end
 
 function level.draw(_, draw)
-  draw.text(1, 1250, 800, "red floor: deadly, jump it", 130, 0xff7060)
+  draw.text(1, 1250, 800, "spiked floor: deadly, jump it", 130, 0xff7060)
 end
 
 return level

@@ -17,7 +17,7 @@ namespace {
 using core::Color;
 using core::Point2;
 
-constexpr Color kBackground{22, 24, 30, 255};
+constexpr Color kBackground{20, 17, 36, 255};  // dusk: a deep indigo behind the solid
 
 std::vector<std::string> splitLines(const std::string& text) {
   std::vector<std::string> out;

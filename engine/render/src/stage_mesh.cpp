@@ -12,20 +12,24 @@ using Eigen::Vector3f;
 
 Vector3f vec(const core::Point3& p) { return {p.x, p.y, p.z}; }
 
-// Faces in two close tones, so that neighbours read apart without a rainbow.
-Color faceColor(size_t index) { return index % 2 ? Color{86, 98, 124, 255} : Color{76, 88, 114, 255}; }
-constexpr Color kRim{34, 38, 50, 255};
+// The look: a faceted stone world at dusk. Faces in two close warm slates (neighbours read apart
+// without a rainbow) under a faint grid that shows the solid turning; walls of pale stone; the
+// tags in Okabe and Ito's palette for colour-blind readers, told apart by lightness as well as hue,
+// and a hazard by its shape too (a row of spikes).
+Color faceColor(size_t index) { return index % 2 ? Color{92, 96, 118, 255} : Color{82, 86, 108, 255}; }
+constexpr Color kRim{30, 30, 44, 255};
+constexpr Color kGrid{70, 74, 96, 255};
 
 // The game's tags (scripts/rules/game.lua): 0 solid, 1 hazard, 2 goal, 3 checkpoint, 1000 + n
 // door, 2000 + n switch. Hazards and the goal glow.
 Color wallColor(const core::ViewLine& line) {
-  if (line.kind == 2) return {190, 130, 240, 255};
-  if (line.tag == 1) return {240, 70, 55, kGlow};
-  if (line.tag == 2) return {90, 235, 120, kGlow};
-  if (line.tag == 3) return {90, 160, 245, 255};
-  if (line.tag >= 1000 && line.tag < 2000) return {245, 160, 60, 255};
-  if (line.tag >= 2000 && line.tag < 3000) return {250, 225, 70, 255};
-  return {226, 228, 234, 255};
+  if (line.kind == 2) return {86, 180, 233, 255};                      // one-way: sky blue
+  if (line.tag == 1) return {213, 94, 0, kGlow};                       // hazard: vermillion, spiked
+  if (line.tag == 2) return {240, 228, 66, kGlow};                     // goal: yellow, glowing
+  if (line.tag == 3) return {0, 158, 115, 255};                        // checkpoint: bluish green
+  if (line.tag >= 1000 && line.tag < 2000) return {0, 114, 178, 255};  // door: blue
+  if (line.tag >= 2000 && line.tag < 3000) return {230, 159, 0, 255};  // switch: orange
+  return {232, 226, 214, 255};                                         // stone
 }
 
 void quad(std::vector<LitVertex>& out, const Vector3f& a, const Vector3f& b, const Vector3f& c, const Vector3f& d,
@@ -172,6 +176,7 @@ void StageMesh::addFace(const core::ViewFace& face, size_t index) {
     addTriangle(fixed_, outer[0], outer[k], outer[k + 1], f.normal, kRim);
     addTriangle(fixed_, inner[0], inner[k], inner[k + 1], f.normal, faceColor(index));
   }
+  if (!flat_) addGrid(f, face, mid, shrink);
   for (const core::ViewLine& line : face.lines) {
     if (line.kind == 1) continue;  // warp lines are the face's own edges: the rim shows them
     if (line.tag >= 1000 && line.tag < 2000)
@@ -179,6 +184,44 @@ void StageMesh::addFace(const core::ViewFace& face, size_t index) {
     else
       addWall(f, line, fixed_);
   }
+}
+
+void StageMesh::addGrid(const Frame& f, const core::ViewFace& face, core::Point2 mid, float shrink) {
+  // Lines every 512 level units (the player's ball is 192 across), cut to the face's inner polygon:
+  // a floor with a scale, whose lines slide by as the camera turns.
+  std::vector<core::Point2> inner;
+  for (const core::Point2 c : face.corners)
+    inner.push_back({mid.x + (c.x - mid.x) * shrink, mid.y + (c.y - mid.y) * shrink});
+  float x0 = 1e30f, y0 = 1e30f, x1 = -1e30f, y1 = -1e30f;
+  for (const core::Point2 c : inner)
+    x0 = std::min(x0, c.x), y0 = std::min(y0, c.y), x1 = std::max(x1, c.x), y1 = std::max(y1, c.y);
+  constexpr float kStep = 512;
+  const float width = std::min(0.0012f * edge_ / scale_, 8.0f);  // level units
+  auto line = [&](core::Point2 a, core::Point2 b) {
+    // Cut [a, b] to the convex inner polygon (counter-clockwise corners).
+    float t0 = 0, t1 = 1;
+    for (size_t k = 0; k < inner.size() && t0 <= t1; ++k) {
+      const core::Point2 p = inner[k], q = inner[(k + 1) % inner.size()];
+      const float nx = -(q.y - p.y), ny = q.x - p.x;  // inward for counter-clockwise corners
+      const float da = (a.x - p.x) * nx + (a.y - p.y) * ny, db = (b.x - p.x) * nx + (b.y - p.y) * ny;
+      if (da < 0 && db < 0) return;
+      if (da < 0) t0 = std::max(t0, da / (da - db));
+      if (db < 0) t1 = std::min(t1, da / (da - db));
+    }
+    if (t0 >= t1) return;
+    const core::Point2 c{a.x + (b.x - a.x) * t0, a.y + (b.y - a.y) * t0},
+        d{a.x + (b.x - a.x) * t1, a.y + (b.y - a.y) * t1};
+    const float len = std::hypot(d.x - c.x, d.y - c.y);
+    if (len <= 0) return;
+    const float hx = -(d.y - c.y) / len * width, hy = (d.x - c.x) / len * width;
+    auto at = [&](core::Point2 p) {
+      return Vector3f(f.origin + p.x * f.xAxis + p.y * f.yAxis + 0.0012f * edge_ * f.normal);
+    };
+    quad(fixed_, at({c.x - hx, c.y - hy}), at({d.x - hx, d.y - hy}), at({d.x + hx, d.y + hy}), at({c.x + hx, c.y + hy}),
+         f.normal, kGrid);
+  };
+  for (float x = std::ceil(x0 / kStep) * kStep; x <= x1; x += kStep) line({x, y0}, {x, y1});
+  for (float y = std::ceil(y0 / kStep) * kStep; y <= y1; y += kStep) line({x0, y}, {x1, y});
 }
 
 void StageMesh::addDoors(std::span<const uint32_t> openTags, std::vector<LitVertex>& out) const {
@@ -218,7 +261,23 @@ void StageMesh::addWall(const Frame& f, const core::ViewLine& line, std::vector<
   quad(out, a1, b1, b1 + up, a1 + up, side.normalized(), color);
   quad(out, a0, a1, a1 + up, a0 + up, -along, color);
   quad(out, b0, b1, b1 + up, b0 + up, along, color);
+  // A hazard says so by its shape as well as its colour: a row of spikes along its top.
+  if (line.tag == 1 && line.kind != 2 && heightScale >= 1) {
+    const float length = (b - a).norm(), spike = 2.5f * halfWidth;
+    const int count = std::max(1, static_cast<int>(length / (2 * spike)));
+    const float pitch = length / static_cast<float>(count);
+    for (int i = 0; i < count; ++i) {
+      const Vector3f base = a + along * (pitch * (static_cast<float>(i) + 0.5f)) + up;
+      const Vector3f tip = base + f.normal * (1.6f * spike), l = base - along * (0.5f * pitch),
+                     r = base + along * (0.5f * pitch);
+      addTriangle(out, l - side, r - side, tip, (-side.normalized() + f.normal).normalized(), color);
+      addTriangle(out, r + side, l + side, tip, (side.normalized() + f.normal).normalized(), color);
+    }
+  }
 }
+
+// How far `p` stands above the face's plane.
+float StageMesh::outsideHeight(const Frame& f, const Vector3f& p) const { return (p - f.origin).dot(f.normal); }
 
 void StageMesh::addBall(std::span<const core::DrawShape> instances, std::vector<LitVertex>& out) const {
   // The ball sits on the face that holds its centre; near an edge it leans over it: the direction
@@ -243,6 +302,24 @@ void StageMesh::addBall(std::span<const core::DrawShape> instances, std::vector<
   const Vector3f centre =
       homeFrame->origin + home->at.x * homeFrame->xAxis + home->at.y * homeFrame->yAxis + r * along * n;
   const core::Color c = home->color;
+  // Its shadow: a soft dark disc on the face beneath it (light from above the face), drawn first so
+  // the ball covers it; smaller as the ball leaves the face. Shadows stay on the home face.
+  const float height = outsideHeight(*homeFrame, centre) - r * along;
+  const float shade = std::clamp(1 - height / (6 * r), 0.0f, 1.0f);
+  if (shade > 0) {
+    const Vector3f ground = homeFrame->origin + home->at.x * homeFrame->xAxis + home->at.y * homeFrame->yAxis +
+                            0.0016f * edge_ * homeFrame->normal;
+    const Vector3f u = homeFrame->xAxis.normalized() * (r * across * (0.6f + 0.4f * shade)),
+                   w = homeFrame->yAxis.normalized() * (r * across * (0.6f + 0.4f * shade));
+    const core::Color dark{12, 10, 24, static_cast<uint8_t>(120 * shade)};
+    constexpr int kSides = 20;
+    for (int k = 0; k < kSides; ++k) {
+      const float t0 = 6.2831853f * static_cast<float>(k) / kSides,
+                  t1 = 6.2831853f * static_cast<float>(k + 1) / kSides;
+      addTriangle(out, ground, ground + std::cos(t0) * u + std::sin(t0) * w,
+                  ground + std::cos(t1) * u + std::sin(t1) * w, homeFrame->normal, dark);
+    }
+  }
   for (const Vector3f& v : unitSphere()) {
     const float up = v.dot(n);
     const Vector3f p = centre + r * (across * (v - up * n) + along * up * n);

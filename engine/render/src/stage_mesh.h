@@ -56,7 +56,9 @@ class StageMesh {
   void addBodyPolygon(const Frame& f, const core::DrawShape& s, std::span<const core::Point2> points,
                       std::vector<LitVertex>& out) const;
   const Frame* frameOf(physics::MapPartId part) const;
+  float outsideHeight(const Frame& f, const Eigen::Vector3f& p) const;
   void addFace(const core::ViewFace& face, size_t index);
+  void addGrid(const Frame& f, const core::ViewFace& face, core::Point2 mid, float shrink);
   void addWall(const Frame& f, const core::ViewLine& line, std::vector<LitVertex>& out, float heightScale = 1,
                bool moving = false) const;
   struct Door {
