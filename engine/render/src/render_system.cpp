@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "batch.h"
+#include "hud_layout.h"
 #include "stage_renderer.h"
 #include "text.h"
 #include "window.h"
@@ -121,7 +122,9 @@ void RenderSystem::paint(const core::View& view, const core::DrawList& draw) {
     if (!s.place.screen) {
       Point2 at;
       float pixels = 0;  // the text's height on the screen, as far away as its face is
-      if (s.kind == core::ShapeKind::Text && g.stage.project(s.place.face, s.at, s.size, at, pixels))
+      // Text on a face is drawn flat over the picture: hidden while a menu covers the world.
+      if (s.kind == core::ShapeKind::Text && view.centreText.empty() &&
+          g.stage.project(s.place.face, s.at, s.size, at, pixels))
         g.text.draw(std::string(draw.text(s)), at, std::max(6.0f, pixels), s.color);
       continue;
     }
@@ -150,44 +153,34 @@ void RenderSystem::paint(const core::View& view, const core::DrawList& draw) {
   g.batch.flush(width, height);
   g.text.flush(width, height);
 
-  // Titles and menus: big lines in the middle, on a dark band.
-  if (!view.centreText.empty()) {
-    // As big as fits: a long level list shrinks to stay on the screen.
-    const float lines = static_cast<float>(view.centreText.size()) + 1.5f;
-    const float size = std::min(30 * dpi, height * 0.9f / (lines * 1.4f)), step = size * 1.4f;
-    const float top = height / 2 - step * static_cast<float>(view.centreText.size()) / 2;
-    g.batch.rectangle({0, top - size}, {width, step * static_cast<float>(view.centreText.size()) + 2 * size},
-                      {0, 0, 0, 170});
+  // Titles and menus in the middle on a dark band, the heads-up lines top left, the frame rate top
+  // right: laid out together (hud_layout.h) so that none overlaps another at any window size.
+  char fps[48] = "";
+  if (view.showFps && frameSeconds_ > 0)
+    std::snprintf(fps, sizeof fps, "%.0f fps  %.2f ms", 1 / frameSeconds_, frameSeconds_ * 1000);
+  const ScreenLayout layout = layOut(width, height, dpi, view.hud, view.centreText, fps,
+                                     [&](const std::string& text, float size) { return g.text.width(text, size); });
+  if (!layout.centre.empty()) {
+    const TextBox& band = layout.centreBand;
+    g.batch.rectangle({band.x, band.y}, {band.width, band.height}, {0, 0, 0, 170});
     g.batch.flush(width, height);
-    for (size_t i = 0; i < view.centreText.size(); ++i) {
-      const float lineSize = i == 0 ? size * 1.3f : size;
-      const float w = g.text.width(view.centreText[i], lineSize);
-      g.text.draw(view.centreText[i], {(width - w) / 2, top + static_cast<float>(i) * step}, lineSize,
+    for (size_t i = 0; i < layout.centre.size(); ++i)
+      g.text.draw(layout.centre[i].text, {layout.centre[i].x, layout.centre[i].y}, layout.centre[i].size,
                   i == 0 ? Color{255, 220, 120, 255} : Color{235, 235, 240, 255});
-    }
     g.text.flush(width, height);
   }
-
-  // The heads-up lines, top left.
-  const float hudHeight = 18 * dpi, pad = 8 * dpi;
-  for (size_t i = 0; i < view.hud.size(); ++i) {
-    const Point2 at{pad, pad + static_cast<float>(i) * (hudHeight + 4 * dpi)};
-    const float w = g.text.width(view.hud[i], hudHeight);
-    g.batch.rectangle({at.x - 4 * dpi, at.y - 2 * dpi}, {w + 8 * dpi, hudHeight + 8 * dpi}, {0, 0, 0, 150});
-    g.text.draw(view.hud[i], at, hudHeight, {240, 240, 240, 255});
+  const float pad = 8 * dpi;
+  for (const TextBox& line : layout.hud) {
+    g.batch.rectangle({line.x - 4 * dpi, line.y - 2 * dpi}, {line.width, line.height}, {0, 0, 0, 150});
+    g.text.draw(line.text, {line.x, line.y}, line.size, {240, 240, 240, 255});
+  }
+  if (layout.fps.width > 0) {
+    g.batch.rectangle({layout.fps.x - 4 * dpi, layout.fps.y - 2 * dpi}, {layout.fps.width, layout.fps.height},
+                      {0, 0, 0, 150});
+    g.text.draw(layout.fps.text, {layout.fps.x, layout.fps.y}, layout.fps.size, {180, 240, 180, 255});
   }
   g.batch.flush(width, height);
   g.text.flush(width, height);
-
-  if (view.showFps && frameSeconds_ > 0) {
-    char text[48];
-    std::snprintf(text, sizeof text, "%.0f fps  %.2f ms", 1 / frameSeconds_, frameSeconds_ * 1000);
-    const float w = g.text.width(text, hudHeight);
-    g.batch.rectangle({width - w - pad - 4 * dpi, pad - 2 * dpi}, {w + 8 * dpi, hudHeight + 8 * dpi}, {0, 0, 0, 150});
-    g.batch.flush(width, height);
-    g.text.draw(text, {width - w - pad, pad}, hudHeight, {180, 240, 180, 255});
-    g.text.flush(width, height);
-  }
 
   // The error overlay: over everything, at the bottom, long lines cut to fit.
   if (!view.error.empty()) {
