@@ -119,6 +119,8 @@ class Game {
     settings_ = Settings::load(settingsPath_, problems);
     for (const std::string& p : problems) std::fprintf(stderr, "%s\n", core::visibleText(p, true).c_str());
     if (!problems.empty()) notice_ = core::visibleText(problems.front(), false);
+    // Multisampling is the window's from its start: the renderer reads it as it opens the window.
+    if (settings_.multisamples >= 0) setenv("PLATON_MULTISAMPLE", std::to_string(settings_.multisamples).c_str(), 1);
     for (const CampaignLevel& l : levels_) {  // the names players see; a broken manifest shows its folder
       try {
         names_.push_back(core::loadManifest(l.scene).name);
@@ -344,7 +346,8 @@ void Game::handle(const core::WindowInput& input) {
 
 namespace {
 const char* const kBoundNames[core::KeyBindings::kBound] = {"Left", "Right", "Up", "Down", "Jump", "Restart"};
-constexpr int kSettingsItems = 13;  // 6 settings, 6 keys, back
+constexpr int kSettingsItems = 14;  // 7 settings, 6 keys, back
+constexpr int kSamples[] = {-1, 0, 2, 4, 8};
 }  // namespace
 
 void Game::settingsKey(core::Key key) {
@@ -380,7 +383,7 @@ void Game::settingsKey(core::Key key) {
       if (enter && settingsItem_ < 12) binding_ = settingsItem_ - 6;  // the next key pressed
   }
   if (changed) applySettings(), sound("menu_move");
-  if (key == core::Key::Escape || (enter && settingsItem_ == 12)) {
+  if (key == core::Key::Escape || (enter && settingsItem_ == 13)) {
     screen_ = settingsFrom_;
     if (const std::string error = settings_.save(settingsPath_); !error.empty()) {
       notice_ = error;
@@ -418,7 +421,12 @@ std::vector<std::string> Game::settingsLines() const {
                                     std::string("Screen shake   ") + (settings_.screenShake ? "on" : "off"),
                                     std::string("Full screen   ") + (settings_.fullscreen ? "on" : "off"),
                                     std::string("Vsync   ") + (settings_.vsync ? "on" : "off"),
-                                    "Game speed (assist)   < " + std::to_string(settings_.gameSpeed) + "% >"};
+                                    "Game speed (assist)   < " + std::to_string(settings_.gameSpeed) + "% >",
+                                    "Multisampling   < " +
+                                        (settings_.multisamples < 0    ? std::string("auto")
+                                         : settings_.multisamples == 0 ? std::string("off")
+                                                                       : std::to_string(settings_.multisamples) + "x") +
+                                        " >  (from the next start)"};
   for (int b = 0; b < core::KeyBindings::kBound; ++b)
     items.push_back(std::string(kBoundNames[b]) + " key   " + keys(b));
   items.push_back("Back");

@@ -20,6 +20,8 @@ bool wholeIn(const std::string& word, int low, int high, int& out) {
 
 const char* const kKeyNames[core::KeyBindings::kBound] = {"keys_left", "keys_right", "keys_up",
                                                           "keys_down", "keys_jump",  "keys_restart"};
+const char* const kPadNames[core::KeyBindings::kBound] = {"pad_left", "pad_right", "pad_up",
+                                                          "pad_down", "pad_jump",  "pad_restart"};
 
 // "Left, A, Keypad 4" -> its names, trimmed; nothing for an empty one.
 std::vector<std::string> names(const std::string& list) {
@@ -62,17 +64,28 @@ Settings Settings::load(const std::string& path, std::vector<std::string>& probl
     const std::string at = path + ":" + std::to_string(number) + ": ";
     int volume = 0;
     const auto key = std::find(std::begin(kKeyNames), std::end(kKeyNames), name);
-    if (key != std::end(kKeyNames)) {
+    const auto pad = std::find(std::begin(kPadNames), std::end(kPadNames), name);
+    if (key != std::end(kKeyNames) || pad != std::end(kPadNames)) {
       const size_t start = line.find(name) + name.size();
       const std::vector<std::string> bound = names(line.substr(start, line.find('#') - start));
       if (bound.empty())
-        problems.push_back(at + "'" + line + "': " + name + " names one key or more (Left, A); its default is used");
-      else
+        problems.push_back(at + "'" + line + "': " + name +
+                           (pad != std::end(kPadNames) ? " names one button or more (a, dpleft)"
+                                                       : " names one key or more (Left, A)") +
+                           "; its default is used");
+      else if (key != std::end(kKeyNames))
         s.keys.keys[key - std::begin(kKeyNames)] = bound;
+      else
+        s.keys.pad[pad - std::begin(kPadNames)] = bound;
       continue;
     }
     if ((name == "fullscreen" || name == "vsync") && more.empty() && (value == "on" || value == "off")) {
       (name == "fullscreen" ? s.fullscreen : s.vsync) = value == "on";
+      continue;
+    }
+    if (name == "multisampling" && more.empty() &&
+        (value == "auto" || value == "0" || value == "2" || value == "4" || value == "8")) {
+      s.multisamples = value == "auto" ? -1 : std::stoi(value);
       continue;
     }
     if (name == "game_speed" && more.empty() && wholeIn(value, 50, 100, volume)) {
@@ -84,7 +97,7 @@ Settings Settings::load(const std::string& path, std::vector<std::string>& probl
     } else if (name == "screen_shake" && more.empty() && (value == "on" || value == "off")) {
       s.screenShake = value == "on";
     } else if (name == "music_volume" || name == "effects_volume" || name == "screen_shake" || name == "fullscreen" ||
-               name == "vsync" || name == "game_speed") {
+               name == "vsync" || name == "game_speed" || name == "multisampling") {
       problems.push_back(at + "'" + line + "': " + name +
                          (name == "game_speed"                                 ? " is a whole number 50..100"
                           : name == "music_volume" || name == "effects_volume" ? " is a whole number 0..100"
@@ -93,7 +106,7 @@ Settings Settings::load(const std::string& path, std::vector<std::string>& probl
     } else {
       problems.push_back(at + "unknown setting '" + name +
                          "' (known: music_volume, effects_volume, screen_shake, fullscreen, vsync, game_speed, "
-                         "keys_left, keys_right, keys_up, keys_down, keys_jump, keys_restart); the line is ignored");
+                         "keys_left ... keys_restart, pad_left ... pad_restart); the line is ignored");
     }
   }
   return s;
@@ -107,9 +120,15 @@ std::string Settings::text() const {
   text += std::string("fullscreen ") + (fullscreen ? "on" : "off") + "\n";
   text += std::string("vsync ") + (vsync ? "on" : "off") + "\n";
   text += "game_speed " + std::to_string(gameSpeed) + "\n";
+  text += "multisampling " + (multisamples < 0 ? std::string("auto") : std::to_string(multisamples)) + "\n";
   for (int b = 0; b < core::KeyBindings::kBound; ++b) {
     text += kKeyNames[b];
     for (size_t i = 0; i < keys.keys[b].size(); ++i) text += (i ? ", " : " ") + keys.keys[b][i];
+    text += "\n";
+  }
+  for (int b = 0; b < core::KeyBindings::kBound; ++b) {
+    text += kPadNames[b];
+    for (size_t i = 0; i < keys.pad[b].size(); ++i) text += (i ? ", " : " ") + keys.pad[b][i];
     text += "\n";
   }
   return text;

@@ -15,7 +15,9 @@ struct Settings {
   bool screenShake = true;  // the view shakes on a death and the goal
   bool fullscreen = false;
   bool vsync = true;
-  int gameSpeed = 100;     // percent, 50..100: the assist mode (pacing only; recorded in replays)
+  int gameSpeed = 100;  // percent, 50..100: the assist mode (pacing only; recorded in replays)
+  int multisamples =
+      -1;  // samples a pixel: -1 auto (4; none on a software rasterizer), 0, 2, 4, 8 (from the next start)
   core::KeyBindings keys;  // keys_left Left, A ... (SDL's key names, commas between)
 
   // $XDG_CONFIG_HOME/platon/settings.txt, or ~/.config/platon/settings.txt.

@@ -15,9 +15,10 @@ TEST(Settings, ASavedFileReadsBackTheSame) {
   platon::testing::TempFolder folder("settings");
   Settings changed;
   changed.musicVolume = 0, changed.effectsVolume = 100, changed.screenShake = false, changed.fullscreen = true;
-  changed.vsync = false, changed.gameSpeed = 50;
+  changed.vsync = false, changed.gameSpeed = 50, changed.multisamples = 0;
   changed.keys.keys[4] = {"L", "Keypad 0"};  // jump on two keys, one with a space in its name
   changed.keys.keys[0] = {"J"};
+  changed.keys.pad[4] = {"x", "rightshoulder"};
   for (const Settings& s : {Settings{}, changed}) {
     const std::string path = folder.path("config/platon/settings.txt");
     ASSERT_EQ(s.save(path), "");
@@ -30,7 +31,11 @@ TEST(Settings, ASavedFileReadsBackTheSame) {
     EXPECT_EQ(back.fullscreen, s.fullscreen);
     EXPECT_EQ(back.vsync, s.vsync);
     EXPECT_EQ(back.gameSpeed, s.gameSpeed);
-    for (int b = 0; b < platon::core::KeyBindings::kBound; ++b) EXPECT_EQ(back.keys.keys[b], s.keys.keys[b]) << b;
+    EXPECT_EQ(back.multisamples, s.multisamples);
+    for (int b = 0; b < platon::core::KeyBindings::kBound; ++b) {
+      EXPECT_EQ(back.keys.keys[b], s.keys.keys[b]) << b;
+      EXPECT_EQ(back.keys.pad[b], s.keys.pad[b]) << b;
+    }
   }
 }
 

@@ -138,43 +138,6 @@ std::optional<core::Key> keyOf(SDL_GameControllerButton button) {
   }
 }
 
-// A gamepad's buttons and left stick as the engine's buttons: the stick past a third of its travel.
-uint8_t padButtons(SDL_GameController* pad) {
-  constexpr Sint16 kDead = 11000;
-  const Sint16 x = SDL_GameControllerGetAxis(pad, SDL_CONTROLLER_AXIS_LEFTX);
-  const Sint16 y = SDL_GameControllerGetAxis(pad, SDL_CONTROLLER_AXIS_LEFTY);
-  auto down = [&](SDL_GameControllerButton b) { return SDL_GameControllerGetButton(pad, b) != 0; };
-  uint8_t held = 0;
-  if (x < -kDead || down(SDL_CONTROLLER_BUTTON_DPAD_LEFT)) held |= InputFrame::bit(Button::Left);
-  if (x > kDead || down(SDL_CONTROLLER_BUTTON_DPAD_RIGHT)) held |= InputFrame::bit(Button::Right);
-  if (y < -kDead || down(SDL_CONTROLLER_BUTTON_DPAD_UP)) held |= InputFrame::bit(Button::Up);
-  if (y > kDead || down(SDL_CONTROLLER_BUTTON_DPAD_DOWN)) held |= InputFrame::bit(Button::Down);
-  if (down(SDL_CONTROLLER_BUTTON_A) || down(SDL_CONTROLLER_BUTTON_B)) held |= InputFrame::bit(Button::Jump);
-  if (down(SDL_CONTROLLER_BUTTON_BACK)) held |= InputFrame::bit(Button::Restart);
-  return held;
-}
-
-// The game's button of a gamepad button, as padButtons reads them held (0: none).
-uint8_t padButtonOf(SDL_GameControllerButton button) {
-  switch (button) {
-    case SDL_CONTROLLER_BUTTON_DPAD_LEFT:
-      return InputFrame::bit(Button::Left);
-    case SDL_CONTROLLER_BUTTON_DPAD_RIGHT:
-      return InputFrame::bit(Button::Right);
-    case SDL_CONTROLLER_BUTTON_DPAD_UP:
-      return InputFrame::bit(Button::Up);
-    case SDL_CONTROLLER_BUTTON_DPAD_DOWN:
-      return InputFrame::bit(Button::Down);
-    case SDL_CONTROLLER_BUTTON_A:
-    case SDL_CONTROLLER_BUTTON_B:
-      return InputFrame::bit(Button::Jump);
-    case SDL_CONTROLLER_BUTTON_BACK:
-      return InputFrame::bit(Button::Restart);
-    default:
-      return 0;
-  }
-}
-
 }  // namespace
 
 uint8_t Window::heldButtons() const {
@@ -199,12 +162,36 @@ std::vector<std::string> Window::setBindings(const core::KeyBindings& bindings) 
     }
   // F5 reloads whatever the bindings say (a modder's key, not a player's).
   buttons_[SDL_SCANCODE_F5] |= InputFrame::bit(Button::Reload);
+  std::fill(std::begin(padButtons_), std::end(padButtons_), uint8_t{0});
+  for (int b = 0; b < core::KeyBindings::kBound; ++b)
+    for (const std::string& name : bindings.pad[b]) {
+      const SDL_GameControllerButton button = SDL_GameControllerGetButtonFromString(name.c_str());
+      if (button == SDL_CONTROLLER_BUTTON_INVALID)
+        unknown.push_back(name);
+      else
+        padButtons_[button] |= InputFrame::bit(static_cast<Button>(b));
+    }
   return unknown;
 }
 
 void Window::setFullscreen(bool on) { SDL_SetWindowFullscreen(window_, on ? SDL_WINDOW_FULLSCREEN_DESKTOP : 0); }
 
 void Window::setVsync(bool on) { SDL_GL_SetSwapInterval(on ? 1 : 0); }
+
+// A gamepad's buttons (as bound) and its left stick past a third of its travel, as the engine's.
+uint8_t Window::padButtons(SDL_GameController* pad) const {
+  constexpr Sint16 kDead = 11000;
+  const Sint16 x = SDL_GameControllerGetAxis(pad, SDL_CONTROLLER_AXIS_LEFTX);
+  const Sint16 y = SDL_GameControllerGetAxis(pad, SDL_CONTROLLER_AXIS_LEFTY);
+  uint8_t held = 0;
+  if (x < -kDead) held |= InputFrame::bit(Button::Left);
+  if (x > kDead) held |= InputFrame::bit(Button::Right);
+  if (y < -kDead) held |= InputFrame::bit(Button::Up);
+  if (y > kDead) held |= InputFrame::bit(Button::Down);
+  for (int b = 0; b < SDL_CONTROLLER_BUTTON_MAX; ++b)
+    if (SDL_GameControllerGetButton(pad, static_cast<SDL_GameControllerButton>(b))) held |= padButtons_[b];
+  return held;
+}
 
 core::WindowInput Window::pollEvents() {
   core::WindowInput input;
@@ -240,7 +227,7 @@ core::WindowInput Window::pollEvents() {
           }
         break;
       case SDL_CONTROLLERBUTTONDOWN:
-        input.tapped |= padButtonOf(static_cast<SDL_GameControllerButton>(event.cbutton.button));
+        if (event.cbutton.button < SDL_CONTROLLER_BUTTON_MAX) input.tapped |= padButtons_[event.cbutton.button];
         if (const auto key = keyOf(static_cast<SDL_GameControllerButton>(event.cbutton.button)))
           input.pressed.push_back(*key);
         break;

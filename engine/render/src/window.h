@@ -38,8 +38,10 @@ class Window {
  private:
   uint8_t buttonOf(SDL_Scancode key) const { return key >= 0 && key < SDL_NUM_SCANCODES ? buttons_[key] : 0; }
   uint8_t heldButtons() const;
+  uint8_t padButtons(SDL_GameController* pad) const;
 
-  uint8_t buttons_[SDL_NUM_SCANCODES] = {};  // by scancode: the InputFrame bits it holds
+  uint8_t buttons_[SDL_NUM_SCANCODES] = {};             // by scancode: the InputFrame bits it holds
+  uint8_t padButtons_[SDL_CONTROLLER_BUTTON_MAX] = {};  // by gamepad button: likewise
   SDL_Window* window_ = nullptr;
   SDL_GLContext context_ = nullptr;
   std::vector<SDL_GameController*> pads_;

@@ -76,6 +76,26 @@ TEST(Gamepad, PluggedInWhileRunningItDrivesTheMenusAndThePlayer) {
   SDL_JoystickUpdate();
   in = display.pollEvents();
   EXPECT_TRUE(in.held & core::InputFrame::bit(core::Button::Left)) << "the d-pad left is Left";
+
+  // Rebound (the player's settings): X jumps and A no longer does (it still is Enter for the menus);
+  // a name SDL does not know binds nothing and is returned.
+  SDL_JoystickSetVirtualButton(pad, SDL_CONTROLLER_BUTTON_DPAD_LEFT, 0);
+  core::KeyBindings bindings;
+  bindings.pad[4] = {"x", "nosuchbutton"};
+  EXPECT_EQ(display.setBindings(bindings), std::vector<std::string>{"nosuchbutton"});
+  SDL_JoystickSetVirtualButton(pad, SDL_CONTROLLER_BUTTON_X, 1);
+  SDL_JoystickUpdate();
+  in = display.pollEvents();
+  EXPECT_TRUE(in.held & core::InputFrame::bit(core::Button::Jump)) << "X bound to Jump";
+  SDL_JoystickSetVirtualButton(pad, SDL_CONTROLLER_BUTTON_X, 0);
+  SDL_JoystickSetVirtualButton(pad, SDL_CONTROLLER_BUTTON_A, 1);
+  SDL_JoystickUpdate();
+  in = display.pollEvents();
+  EXPECT_FALSE(in.held & core::InputFrame::bit(core::Button::Jump)) << "A is no longer Jump";
+  EXPECT_TRUE(has(in, core::Key::Enter)) << "A is still Enter in the menus";
+  SDL_JoystickSetVirtualButton(pad, SDL_CONTROLLER_BUTTON_A, 0);
+  SDL_JoystickUpdate();
+  display.setBindings(core::KeyBindings{});
   const SDL_JoystickID id = SDL_JoystickInstanceID(pad);
   SDL_JoystickClose(pad);
   ASSERT_EQ(SDL_JoystickDetachVirtual(device), 0) << SDL_GetError();

@@ -79,12 +79,15 @@ camera::CameraTarget cameraTarget(const StageView& stage, const Scene& scene, ph
 // Keys the game's menus and controls act on once per press (held buttons go to the simulation).
 enum class Key : uint8_t { Escape, Enter, Up, Down, Left, Right, Restart, Reload, ShowFps, Settings };
 
-// The keys that hold each of the player's buttons (Left, Right, Up, Down, Jump, Restart), by SDL's
-// names for them ("Left", "A", "Space", "Keypad 4"), as the player's settings bind them. The menus'
-// own keys (arrows, WASD, Enter, Esc) stay as they are, so no binding can lock a player out.
+// The keys and gamepad buttons that hold each of the player's buttons (Left, Right, Up, Down, Jump,
+// Restart), by SDL's names for them (keys: "Left", "A", "Space", "Keypad 4"; pad buttons: "a",
+// "dpleft", "back", "leftshoulder"), as the player's settings bind them. The pad's left stick always
+// moves; the menus' own keys and buttons (arrows, WASD, Enter, Esc; A, B, Start) stay as they are,
+// so no binding can lock a player out.
 struct KeyBindings {
   static constexpr int kBound = 6;  // Button::Left .. Button::Restart
   std::vector<std::string> keys[kBound] = {{"Left", "A"}, {"Right", "D"}, {"Up", "W"}, {"Down", "S"}, {"Space"}, {"R"}};
+  std::vector<std::string> pad[kBound] = {{"dpleft"}, {"dpright"}, {"dpup"}, {"dpdown"}, {"a", "b"}, {"back"}};
 };
 
 // What the window's devices (keyboard, gamepads) did since the last poll.
