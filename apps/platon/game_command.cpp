@@ -191,8 +191,14 @@ class Game {
       try {
         for (const std::string& name : d->setBindings(settings_.keys))
           notice_ = "settings: no key is named '" + core::visibleText(name, false) + "'; it binds nothing";
-        d->setFullscreen(settings_.fullscreen);
-        d->setVsync(settings_.vsync);
+        // Only what changed: a window made full screen again, or its swap interval set again,
+        // costs a reconfiguration (and start-up time) for nothing.
+        if (applied_.fullscreen != settings_.fullscreen || !appliedOnce_) {
+          if (settings_.fullscreen || appliedOnce_) d->setFullscreen(settings_.fullscreen);
+        }
+        if (appliedOnce_ && applied_.vsync != settings_.vsync) d->setVsync(settings_.vsync);
+        if (!appliedOnce_ && !settings_.vsync) d->setVsync(false);  // the window opens with vsync on
+        applied_ = settings_, appliedOnce_ = true;
       } catch (const std::exception& e) {  // no display: the game says so when it opens
         notice_ = e.what();
       }
@@ -222,6 +228,8 @@ class Game {
   LevelRecorder recording_;
   std::chrono::steady_clock::time_point freezeUntil_{};
   Settings settings_;
+  Settings applied_;  // what the window was last told (full screen, vsync)
+  bool appliedOnce_ = false;
   std::string settingsPath_;
   Screen settingsFrom_ = Screen::Title;
   int settingsItem_ = 0;

@@ -155,8 +155,8 @@ void StageMesh::addFace(const core::ViewFace& face, size_t index) {
   };
   const size_t n = face.corners.size();
   if (n < 3) return;
-  // The face, with a rim: the outer polygon dark, the inner one (pulled toward the centre) in the
-  // face's colour, a hair above it.
+  // The face, with a rim: a dark ring between the outer polygon and the inner one (pulled toward the
+  // centre), which is in the face's colour, a hair above it.
   core::Point2 mid{0, 0};
   for (const core::Point2 c : face.corners) mid.x += c.x / static_cast<float>(n), mid.y += c.y / static_cast<float>(n);
   float inradius = 1e30f;
@@ -172,10 +172,11 @@ void StageMesh::addFace(const core::ViewFace& face, size_t index) {
     outer.push_back(at(c, 0));
     inner.push_back(at({mid.x + (c.x - mid.x) * shrink, mid.y + (c.y - mid.y) * shrink}, 0.0008f));
   }
-  for (size_t k = 1; k + 1 < n; ++k) {
-    addTriangle(fixed_, outer[0], outer[k], outer[k + 1], f.normal, kRim);
-    addTriangle(fixed_, inner[0], inner[k], inner[k + 1], f.normal, faceColor(index));
-  }
+  // The rim as a ring around the inner polygon, not a whole polygon under it: each pixel of a face
+  // is drawn once (on a software rasterizer the fill is most of the frame).
+  for (size_t k = 0; k < n; ++k)
+    quad(fixed_, outer[k], outer[(k + 1) % n], inner[(k + 1) % n], inner[k], f.normal, kRim);
+  for (size_t k = 1; k + 1 < n; ++k) addTriangle(fixed_, inner[0], inner[k], inner[k + 1], f.normal, faceColor(index));
   if (!flat_) addGrid(f, face, mid, shrink);
   for (const core::ViewLine& line : face.lines) {
     if (line.kind == 1) continue;  // warp lines are the face's own edges: the rim shows them
