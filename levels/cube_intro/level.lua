@@ -10,9 +10,10 @@ end
 local WHITE, GOLD = 0xffffff, 0xffe080
 
 function level.draw(_, draw)
-  draw.text(0, 300, 1700, "Left/Right or A/D: walk", 190, WHITE)
-  draw.text(0, 300, 1500, "Space: jump (hold it to jump higher)", 190, WHITE)
-  draw.text(0, 300, 1350, "R: back to the last checkpoint   Esc: pause", 150, WHITE)
+  -- Text heights and gaps in face units: each line's top is a line and a half below the last.
+  draw.text(0, 300, 1750, "Left/Right or A/D: walk", 150, WHITE)
+  draw.text(0, 300, 1520, "Space: jump (hold it to jump higher)", 150, WHITE)
+  draw.text(0, 300, 1290, "R: back to the last checkpoint   Esc: pause", 120, WHITE)
   draw.text(2, 1650, 1350, "GOAL: touch it", 140, GOLD)
 end
 

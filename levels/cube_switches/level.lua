@@ -28,8 +28,8 @@ end
 
 -- The campaign's first switch, door and checkpoint say what they are where they stand.
 function level.draw(_, draw)
-  draw.text(0, 900, 2050, "checkpoint: you restart here", 140, 0x80f0a0)
-  draw.text(0, 2500, 2100, "switch 1: touch it to open door 1", 140, 0xffe060)
+  draw.text(0, 650, 2050, "checkpoint", 140, 0x80f0a0)
+  draw.text(0, 2550, 2150, "switch: opens door 1", 140, 0xffe060)
   draw.text(1, 1100, 2850, "door 1", 120, 0xffe060)
 end
 

@@ -2,7 +2,7 @@
 local level = {}
 
 function level.build(game)  -- said once, as the level starts: no per-frame tick to pay for
-  game.message("small faces, quick turns: mind the red floors")
+  game.message("small faces, quick turns: mind the spiked floors")
 end
 
 return level
