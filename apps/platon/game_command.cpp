@@ -35,21 +35,18 @@ enum class Screen { Title, Playing, Paused, Complete, Settings };
 const char* const kPauseItems[] = {"Resume", "Restart the level", "Level select", "Settings", "Quit"};
 constexpr int kPauseCount = 5;
 
-std::string clockText(uint64_t frames) {
-  char text[32];
-  const uint64_t seconds = frames / 60;
-  std::snprintf(text, sizeof text, "%llu:%02llu.%02llu", static_cast<unsigned long long>(seconds / 60),
-                static_cast<unsigned long long>(seconds % 60), static_cast<unsigned long long>(frames % 60 * 100 / 60));
-  return text;
-}
-
-// A par time as the campaign writes it: 0:20.
-std::string parText(uint64_t frames) {
+// A time in frames as a clock: 1:05.25, or 1:05 as par times are written.
+std::string clockText(uint64_t frames, bool hundredths = true) {
   char text[32];
   const uint64_t seconds = frames / 60;
   std::snprintf(text, sizeof text, "%llu:%02llu", static_cast<unsigned long long>(seconds / 60),
                 static_cast<unsigned long long>(seconds % 60));
-  return text;
+  std::string clock = text;
+  if (hundredths) {
+    std::snprintf(text, sizeof text, ".%02llu", static_cast<unsigned long long>(frames % 60 * 100 / 60));
+    clock += text;
+  }
+  return clock;
 }
 
 // With --record DIR: one replay per level played, DIR/<folder>.replay (then <folder>-2.replay,
@@ -193,12 +190,9 @@ class Game {
           notice_ = "settings: no key is named '" + core::visibleText(name, false) + "'; it binds nothing";
         // Only what changed: a window made full screen again, or its swap interval set again,
         // costs a reconfiguration (and start-up time) for nothing.
-        if (applied_.fullscreen != settings_.fullscreen || !appliedOnce_) {
-          if (settings_.fullscreen || appliedOnce_) d->setFullscreen(settings_.fullscreen);
-        }
-        if (appliedOnce_ && applied_.vsync != settings_.vsync) d->setVsync(settings_.vsync);
-        if (!appliedOnce_ && !settings_.vsync) d->setVsync(false);  // the window opens with vsync on
-        applied_ = settings_, appliedOnce_ = true;
+        if (applied_.fullscreen != settings_.fullscreen) d->setFullscreen(settings_.fullscreen);
+        if (applied_.vsync != settings_.vsync) d->setVsync(settings_.vsync);
+        applied_ = settings_;
       } catch (const std::exception& e) {  // no display: the game says so when it opens
         notice_ = e.what();
       }
@@ -228,8 +222,7 @@ class Game {
   LevelRecorder recording_;
   std::chrono::steady_clock::time_point freezeUntil_{};
   Settings settings_;
-  Settings applied_;  // what the window was last told (full screen, vsync)
-  bool appliedOnce_ = false;
+  Settings applied_;  // what the window was last told (full screen, vsync): at first, how it opens
   std::string settingsPath_;
   Screen settingsFrom_ = Screen::Title;
   int settingsItem_ = 0;
@@ -278,7 +271,7 @@ std::vector<std::string> Game::titleLines() const {
     } else if (!progress_.open(levels_, i)) {
       line += "   (locked)";
     } else if (levels_[i].parFrames) {
-      line += "   par " + parText(levels_[i].parFrames);
+      line += "   par " + clockText(levels_[i].parFrames, false);
     }
     if (i == selected_) line += " <";
     lines.push_back(line);
@@ -504,8 +497,8 @@ void Game::draw(double alpha) {
                          clockText(st.wonFrame) + "    " + std::to_string(st.deaths) + " deaths" +
                              (levels_[level_].parFrames == 0 ? ""
                               : st.wonFrame <= levels_[level_].parFrames
-                                  ? "    under par (" + parText(levels_[level_].parFrames) + ")!"
-                                  : "    par " + parText(levels_[level_].parFrames)),
+                                  ? "    under par (" + clockText(levels_[level_].parFrames, false) + ")!"
+                                  : "    par " + clockText(levels_[level_].parFrames, false)),
                          level_ + 1 < levels_.size() ? "Enter: next level    Esc: level select"
                                                      : "The campaign is done. Enter: level select"};
       break;

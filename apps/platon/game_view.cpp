@@ -32,22 +32,22 @@ void GameView::step(core::Scene& scene, const script::GameStatus& status, double
   } else {
     camera_.lerp(target, stepSeconds);
   }
-  std::swap(previousDrawing_, drawing_);
-  drawing_.clear();
-  scene.draw(drawing_);
   if (placed_) feedback_.step(scene, status);  // not the placing call: no frame was played
-  feedback_.draw(drawing_);
-  ++steps_;
+  redraw(scene);
   if (!placed_) previousDrawing_ = drawing_;
   placed_ = true;
 }
 
 void GameView::idle(core::Scene& scene) {
   previous_ = camera_.pose();
+  feedback_.advance();
+  redraw(scene);
+}
+
+void GameView::redraw(core::Scene& scene) {
   std::swap(previousDrawing_, drawing_);
   drawing_.clear();
   scene.draw(drawing_);
-  feedback_.advance();
   feedback_.draw(drawing_);
   ++steps_;
 }

@@ -33,6 +33,9 @@ class GameView {
   Feedback& feedback() { return feedback_; }
 
  private:
+  // The step's picture: the scene's shapes and the feedback's, the last one kept to draw between.
+  void redraw(core::Scene& scene);
+
   std::shared_ptr<const core::StageView> stage_;
   const core::Scene* scene_ = nullptr;  // the scene stage_ was built for (a reload makes another)
   physics::MapPartId flatPart_ = 0;

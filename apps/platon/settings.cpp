@@ -1,6 +1,5 @@
 #include "settings.h"
 
-#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <sstream>
@@ -11,6 +10,28 @@
 namespace platon::app {
 namespace {
 
+// The kinds of value a setting holds: how the file writes it and what it may be.
+enum class Kind { Percent, Speed, Samples, Flag };
+
+// One table of the settings the file holds, for reading, writing and the "known" list alike.
+struct Field {
+  const char* name;
+  Kind kind;
+  int Settings::*number = nullptr;  // Percent, Speed, Samples
+  bool Settings::*flag = nullptr;   // Flag
+};
+const Field kFields[] = {
+    {"music_volume", Kind::Percent, &Settings::musicVolume},
+    {"effects_volume", Kind::Percent, &Settings::effectsVolume},
+    {"screen_shake", Kind::Flag, nullptr, &Settings::screenShake},
+    {"fullscreen", Kind::Flag, nullptr, &Settings::fullscreen},
+    {"vsync", Kind::Flag, nullptr, &Settings::vsync},
+    {"game_speed", Kind::Speed, &Settings::gameSpeed},
+    {"multisampling", Kind::Samples, &Settings::multisamples},
+};
+// The binding lines: keys_<button> and pad_<button>, SDL's names, commas between.
+const char* const kButtons[core::KeyBindings::kBound] = {"left", "right", "up", "down", "jump", "restart"};
+
 // A whole number within [low, high], or nothing.
 bool wholeIn(const std::string& word, int low, int high, int& out) {
   if (word.empty() || word.size() > 4 || word.find_first_not_of("0123456789") != std::string::npos) return false;
@@ -18,10 +39,48 @@ bool wholeIn(const std::string& word, int low, int high, int& out) {
   return out >= low && out <= high;
 }
 
-const char* const kKeyNames[core::KeyBindings::kBound] = {"keys_left", "keys_right", "keys_up",
-                                                          "keys_down", "keys_jump",  "keys_restart"};
-const char* const kPadNames[core::KeyBindings::kBound] = {"pad_left", "pad_right", "pad_up",
-                                                          "pad_down", "pad_jump",  "pad_restart"};
+// Reads `value` as `field` holds it into `s`; false when it is none of the field's values.
+bool readField(const Field& field, const std::string& value, Settings& s) {
+  int n = 0;
+  switch (field.kind) {
+    case Kind::Percent:
+      if (!wholeIn(value, 0, 100, n)) return false;
+      break;
+    case Kind::Speed:
+      if (!wholeIn(value, 50, 100, n)) return false;
+      break;
+    case Kind::Samples:
+      if (value != "auto" && value != "0" && value != "2" && value != "4" && value != "8") return false;
+      n = value == "auto" ? -1 : std::stoi(value);
+      break;
+    case Kind::Flag:
+      if (value != "on" && value != "off") return false;
+      s.*field.flag = value == "on";
+      return true;
+  }
+  s.*field.number = n;
+  return true;
+}
+
+const char* expected(Kind kind) {
+  switch (kind) {
+    case Kind::Percent:
+      return "a whole number 0..100";
+    case Kind::Speed:
+      return "a whole number 50..100";
+    case Kind::Samples:
+      return "auto, 0, 2, 4 or 8";
+    case Kind::Flag:
+      return "on or off";
+  }
+  return "";
+}
+
+std::string written(const Field& field, const Settings& s) {
+  if (field.kind == Kind::Flag) return s.*field.flag ? "on" : "off";
+  const int n = s.*field.number;
+  return field.kind == Kind::Samples && n < 0 ? "auto" : std::to_string(n);
+}
 
 // "Left, A, Keypad 4" -> its names, trimmed; nothing for an empty one.
 std::vector<std::string> names(const std::string& list) {
@@ -32,6 +91,15 @@ std::vector<std::string> names(const std::string& list) {
     if (a != std::string::npos) out.push_back(name.substr(a, b + 1 - a));
   }
   return out;
+}
+
+// The binding a line's name is (keys_jump: the keys of Jump), or nullptr.
+std::vector<std::string>* bindingOf(const std::string& name, Settings& s) {
+  for (int b = 0; b < core::KeyBindings::kBound; ++b) {
+    if (name == std::string("keys_") + kButtons[b]) return &s.keys.keys[b];
+    if (name == std::string("pad_") + kButtons[b]) return &s.keys.pad[b];
+  }
+  return nullptr;
 }
 
 }  // namespace
@@ -57,56 +125,33 @@ Settings Settings::load(const std::string& path, std::vector<std::string>& probl
   std::istringstream in(text);
   std::string line;
   for (int number = 1; std::getline(in, line); ++number) {
-    std::istringstream words(line.substr(0, line.find('#')));
+    const std::string content = line.substr(0, line.find('#'));
+    std::istringstream words(content);
     std::string name, value, more;
     words >> name >> value >> more;
     if (name.empty()) continue;
     const std::string at = path + ":" + std::to_string(number) + ": ";
-    int volume = 0;
-    const auto key = std::find(std::begin(kKeyNames), std::end(kKeyNames), name);
-    const auto pad = std::find(std::begin(kPadNames), std::end(kPadNames), name);
-    if (key != std::end(kKeyNames) || pad != std::end(kPadNames)) {
-      const size_t start = line.find(name) + name.size();
-      const std::vector<std::string> bound = names(line.substr(start, line.find('#') - start));
+    if (std::vector<std::string>* binding = bindingOf(name, s)) {
+      const std::vector<std::string> bound = names(content.substr(content.find(name) + name.size()));
       if (bound.empty())
         problems.push_back(at + "'" + line + "': " + name +
-                           (pad != std::end(kPadNames) ? " names one button or more (a, dpleft)"
+                           (name.rfind("pad_", 0) == 0 ? " names one button or more (a, dpleft)"
                                                        : " names one key or more (Left, A)") +
                            "; its default is used");
-      else if (key != std::end(kKeyNames))
-        s.keys.keys[key - std::begin(kKeyNames)] = bound;
       else
-        s.keys.pad[pad - std::begin(kPadNames)] = bound;
+        *binding = bound;
       continue;
     }
-    if ((name == "fullscreen" || name == "vsync") && more.empty() && (value == "on" || value == "off")) {
-      (name == "fullscreen" ? s.fullscreen : s.vsync) = value == "on";
-      continue;
-    }
-    if (name == "multisampling" && more.empty() &&
-        (value == "auto" || value == "0" || value == "2" || value == "4" || value == "8")) {
-      s.multisamples = value == "auto" ? -1 : std::stoi(value);
-      continue;
-    }
-    if (name == "game_speed" && more.empty() && wholeIn(value, 50, 100, volume)) {
-      s.gameSpeed = volume;
-      continue;
-    }
-    if ((name == "music_volume" || name == "effects_volume") && more.empty() && wholeIn(value, 0, 100, volume)) {
-      (name == "music_volume" ? s.musicVolume : s.effectsVolume) = volume;
-    } else if (name == "screen_shake" && more.empty() && (value == "on" || value == "off")) {
-      s.screenShake = value == "on";
-    } else if (name == "music_volume" || name == "effects_volume" || name == "screen_shake" || name == "fullscreen" ||
-               name == "vsync" || name == "game_speed" || name == "multisampling") {
-      problems.push_back(at + "'" + line + "': " + name +
-                         (name == "game_speed"                                 ? " is a whole number 50..100"
-                          : name == "music_volume" || name == "effects_volume" ? " is a whole number 0..100"
-                                                                               : " is on or off") +
-                         "; its default is used");
-    } else {
-      problems.push_back(at + "unknown setting '" + name +
-                         "' (known: music_volume, effects_volume, screen_shake, fullscreen, vsync, game_speed, "
+    const Field* field = nullptr;
+    for (const Field& f : kFields)
+      if (name == f.name) field = &f;
+    if (!field) {
+      std::string known;
+      for (const Field& f : kFields) known += std::string(f.name) + ", ";
+      problems.push_back(at + "unknown setting '" + name + "' (known: " + known +
                          "keys_left ... keys_restart, pad_left ... pad_restart); the line is ignored");
+    } else if (!more.empty() || !readField(*field, value, s)) {
+      problems.push_back(at + "'" + line + "': " + name + " is " + expected(field->kind) + "; its default is used");
     }
   }
   return s;
@@ -114,23 +159,14 @@ Settings Settings::load(const std::string& path, std::vector<std::string>& probl
 
 std::string Settings::text() const {
   std::string text = "# Platon settings (the game writes this file; a line it cannot read keeps its default)\n";
-  text += "music_volume " + std::to_string(musicVolume) + "\n";
-  text += "effects_volume " + std::to_string(effectsVolume) + "\n";
-  text += std::string("screen_shake ") + (screenShake ? "on" : "off") + "\n";
-  text += std::string("fullscreen ") + (fullscreen ? "on" : "off") + "\n";
-  text += std::string("vsync ") + (vsync ? "on" : "off") + "\n";
-  text += "game_speed " + std::to_string(gameSpeed) + "\n";
-  text += "multisampling " + (multisamples < 0 ? std::string("auto") : std::to_string(multisamples)) + "\n";
-  for (int b = 0; b < core::KeyBindings::kBound; ++b) {
-    text += kKeyNames[b];
-    for (size_t i = 0; i < keys.keys[b].size(); ++i) text += (i ? ", " : " ") + keys.keys[b][i];
-    text += "\n";
-  }
-  for (int b = 0; b < core::KeyBindings::kBound; ++b) {
-    text += kPadNames[b];
-    for (size_t i = 0; i < keys.pad[b].size(); ++i) text += (i ? ", " : " ") + keys.pad[b][i];
-    text += "\n";
-  }
+  for (const Field& f : kFields) text += std::string(f.name) + " " + written(f, *this) + "\n";
+  for (const char* prefix : {"keys_", "pad_"})
+    for (int b = 0; b < core::KeyBindings::kBound; ++b) {
+      const std::vector<std::string>& bound = prefix[0] == 'k' ? keys.keys[b] : keys.pad[b];
+      text += prefix + std::string(kButtons[b]);
+      for (size_t i = 0; i < bound.size(); ++i) text += (i ? ", " : " ") + bound[i];
+      text += "\n";
+    }
   return text;
 }
 

@@ -56,12 +56,13 @@ TEST(Settings, ADamagedFileKeepsTheDefaultsOfWhatItCannotRead) {
                                         "game_speed 30\n"
                                         "vsync sometimes\n"
                                         "keys_jump   # none\n"
-                                        "keys_left J, K\n");
+                                        "keys_left J, K\n"
+                                        "multisampling 3\n");
   const Settings s = Settings::load(path, problems);
   EXPECT_EQ(s.musicVolume, Settings{}.musicVolume);
   EXPECT_EQ(s.effectsVolume, 40);  // the good line is kept
   EXPECT_EQ(s.screenShake, Settings{}.screenShake);
-  ASSERT_EQ(problems.size(), 8u);
+  ASSERT_EQ(problems.size(), 9u);
   EXPECT_EQ(problems[0].rfind(path + ":1: 'music_volume 150': music_volume is a whole number 0..100", 0), 0u)
       << problems[0];
   EXPECT_EQ(problems[1].rfind(path + ":3: 'screen_shake maybe': screen_shake is on or off", 0), 0u) << problems[1];
@@ -73,6 +74,8 @@ TEST(Settings, ADamagedFileKeepsTheDefaultsOfWhatItCannotRead) {
   EXPECT_EQ(problems[6].rfind(path + ":8: 'vsync sometimes': vsync is on or off", 0), 0u) << problems[6];
   EXPECT_EQ(problems[7].rfind(path + ":9: 'keys_jump   # none': keys_jump names one key or more", 0), 0u)
       << problems[7];
+  EXPECT_EQ(problems[8].rfind(path + ":11: 'multisampling 3': multisampling is auto, 0, 2, 4 or 8", 0), 0u)
+      << problems[8];
   EXPECT_EQ(s.gameSpeed, Settings{}.gameSpeed);
   EXPECT_EQ(s.keys.keys[4], Settings{}.keys.keys[4]);
   EXPECT_EQ(s.keys.keys[0], (std::vector<std::string>{"J", "K"}));

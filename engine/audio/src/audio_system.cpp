@@ -15,8 +15,6 @@ struct Device {
   bool open = false;
   std::string silentBecause;  // why not open
   int rate = 44100;
-  Uint16 format = AUDIO_S16SYS;
-  int channels = 2;
   float musicVolume = 0.6f, effectsVolume = 0.9f;
   bool paused = false;
   // The tune: its name and player. The mixer's thread reads the player and the volumes under `lock`,
@@ -54,10 +52,10 @@ Device& theDevice() {
       d->silentBecause = std::string("no audio device: ") + Mix_GetError();
     } else {
       int frequency = 0, channels = 0;
-      Mix_QuerySpec(&frequency, &d->format, &channels);
+      Uint16 format = 0;
+      Mix_QuerySpec(&frequency, &format, &channels);
       d->rate = frequency;
-      d->channels = channels;
-      d->open = d->format == AUDIO_S16SYS && channels == 2;
+      d->open = format == AUDIO_S16SYS && channels == 2;  // what the chunks and the music are made as
       if (!d->open) {
         d->silentBecause = "no audio: the device wants another sample format than 16-bit stereo";
       } else {

@@ -88,21 +88,19 @@ void loadSounds(const SceneManifest& manifest, Scene& scene) {
   if (!manifest.needs("scripting") && !manifest.needs("audio")) return;
   SoundBank bank = engineSoundBank();
   if (!manifest.soundBank.empty()) {
+    // A file that is none (missing, a folder, too big) is the naming field's error; a bad field in
+    // it is the bank's own, at its place.
     try {
-      readSoundBank(manifest.soundBank, bank);
-    } catch (const std::runtime_error& e) {
-      const std::string what = e.what();
-      // A file that cannot be read is the naming field's error; a bad field is the bank's own.
-      if (what.rfind(manifest.soundBank + ": the sound bank:", 0) == 0)
-        throw std::runtime_error(manifest.placeOf.at(manifest.soundBank) + ": " + what);
-      throw;
+      files::checkBoundedFile(manifest.soundBank, kMaxSoundBankBytes);
+    } catch (const files::FileError& e) {
+      throw std::runtime_error(manifest.placeOf.at(manifest.soundBank) + ": " + manifest.soundBank +
+                               ": the sound bank: " + e.reason());
     }
+    readSoundBank(manifest.soundBank, bank);
   }
   if (!manifest.music.empty() && !bank.hasMusic(manifest.music)) {
-    std::string known;
-    for (const auto& [name, tune] : bank.music) known += (known.empty() ? "" : ", ") + name;
-    throw std::runtime_error(manifest.musicPlace + ": music '" + manifest.music + "': no such tune (known: " + known +
-                             ")");
+    throw std::runtime_error(manifest.musicPlace + ": music '" + manifest.music +
+                             "': no such tune (known: " + bank.musicNames() + ")");
   }
   scene.sounds().setBank(std::move(bank));
   scene.sounds().setMusic(manifest.music);

@@ -149,28 +149,31 @@ uint8_t Window::heldButtons() const {
   return held;
 }
 
+namespace {
+
+// Fills `table` (indexed by SDL's code for a key or a pad button) with the bit of each button the
+// names bind; `code` turns a name into that code, or returns `none`. Unknown names go to `unknown`.
+template <size_t N, class Code>
+void bindNames(uint8_t (&table)[N], const std::vector<std::string> (&names)[core::KeyBindings::kBound], Code code,
+               int none, std::vector<std::string>& unknown) {
+  std::fill(std::begin(table), std::end(table), uint8_t{0});
+  for (int b = 0; b < core::KeyBindings::kBound; ++b)
+    for (const std::string& name : names[b]) {
+      const int c = static_cast<int>(code(name.c_str()));
+      if (c == none || c < 0 || c >= static_cast<int>(N))
+        unknown.push_back(name);
+      else
+        table[c] |= InputFrame::bit(static_cast<Button>(b));
+    }
+}
+
+}  // namespace
+
 std::vector<std::string> Window::setBindings(const core::KeyBindings& bindings) {
   std::vector<std::string> unknown;
-  std::fill(std::begin(buttons_), std::end(buttons_), uint8_t{0});
-  for (int b = 0; b < core::KeyBindings::kBound; ++b)
-    for (const std::string& name : bindings.keys[b]) {
-      const SDL_Scancode key = SDL_GetScancodeFromName(name.c_str());
-      if (key == SDL_SCANCODE_UNKNOWN)
-        unknown.push_back(name);
-      else
-        buttons_[key] |= InputFrame::bit(static_cast<Button>(b));
-    }
-  // F5 reloads whatever the bindings say (a modder's key, not a player's).
-  buttons_[SDL_SCANCODE_F5] |= InputFrame::bit(Button::Reload);
-  std::fill(std::begin(padButtons_), std::end(padButtons_), uint8_t{0});
-  for (int b = 0; b < core::KeyBindings::kBound; ++b)
-    for (const std::string& name : bindings.pad[b]) {
-      const SDL_GameControllerButton button = SDL_GameControllerGetButtonFromString(name.c_str());
-      if (button == SDL_CONTROLLER_BUTTON_INVALID)
-        unknown.push_back(name);
-      else
-        padButtons_[button] |= InputFrame::bit(static_cast<Button>(b));
-    }
+  bindNames(buttons_, bindings.keys, SDL_GetScancodeFromName, SDL_SCANCODE_UNKNOWN, unknown);
+  buttons_[SDL_SCANCODE_F5] |= InputFrame::bit(Button::Reload);  // F5 reloads whatever the bindings say
+  bindNames(padButtons_, bindings.pad, SDL_GameControllerGetButtonFromString, SDL_CONTROLLER_BUTTON_INVALID, unknown);
   return unknown;
 }
 

@@ -9,12 +9,6 @@
 namespace platon::script {
 namespace {
 
-std::string knownNames(const auto& names) {
-  std::string list;
-  for (const auto& [name, spec] : names) list += (list.empty() ? "" : ", ") + name;
-  return list.empty() ? "none" : list;
-}
-
 // A number within [low, high] at `index`, or `fallback` when it is absent or nil.
 float optionalIn(lua_State* L, int index, double fallback, double low, double high, const char* what) {
   if (lua_isnoneornil(L, index)) return static_cast<float>(fallback);
@@ -32,7 +26,7 @@ int play(lua_State* L) {
   core::Sounds& sounds = context.scene->sounds();
   if (!sounds.bank().hasEffect(name))
     throw lua::ArgError("sound: no effect named '" + std::string(name).substr(0, 64) +
-                        "' (the scene's bank has: " + knownNames(sounds.bank().effects) + ")");
+                        "' (the scene's bank has: " + sounds.bank().effectNames() + ")");
   const float volume = optionalIn(L, 2, 1, 0, 1, "a volume 0..1");
   const float pan = optionalIn(L, 3, 0, -1, 1, "a pan -1..1");
   // draw() runs once per displayed frame, not per simulated one: a sound from it would depend on
@@ -53,7 +47,7 @@ int music(lua_State* L) {
   const std::string_view name = lua::checkString(L, 1);
   if (!name.empty() && !sounds.bank().hasMusic(name))
     throw lua::ArgError("sound: no tune named '" + std::string(name).substr(0, 64) +
-                        "' (the scene's bank has: " + knownNames(sounds.bank().music) + ")");
+                        "' (the scene's bank has: " + sounds.bank().musicNames() + ")");
   sounds.setMusic(std::string(name));
   return 0;
 }

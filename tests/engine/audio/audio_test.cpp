@@ -16,17 +16,13 @@
 #include <gtest/gtest.h>
 
 #include "platon/core/scene.h"
+#include "platon/testing/mapped.h"
 #include "platon/testing/temp_folder.h"
 
 namespace platon {
 namespace {
 
-bool mapped(const char* library) {
-  std::ifstream maps("/proc/self/maps");
-  std::stringstream text;
-  text << maps.rdbuf();
-  return text.str().find(library) != std::string::npos;
-}
+using testing::mapped;
 
 // Plays an effect on frame `at` of the scene it is added to and names a tune on frame `tuneAt`
 // (what a script's platon.sound calls do).

@@ -11,6 +11,7 @@
 
 #include "platon/core/display.h"
 #include "platon/core/scene.h"
+#include "platon/testing/mapped.h"
 #include "platon/testing/pixels.h"
 #include "platon/testing/temp_folder.h"
 
@@ -200,12 +201,7 @@ TEST_F(Renderer, SavesAScreenshotAsPng) {
 
 // The plugin is loaded only when a scene names it, and only then are SDL2 and GL in the process.
 TEST(Plugins, LoadedOnlyWhenASceneNamesThem) {
-  auto mapped = [](const char* library) {
-    std::ifstream maps("/proc/self/maps");
-    std::stringstream text;
-    text << maps.rdbuf();
-    return text.str().find(library) != std::string::npos;
-  };
+  using platon::testing::mapped;
   // "threadsafe": the child is this program started afresh, running this test alone, so nothing an
   // earlier test loaded is mapped in it.
   GTEST_FLAG_SET(death_test_style, "threadsafe");

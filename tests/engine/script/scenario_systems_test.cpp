@@ -7,17 +7,13 @@
 #include <gtest/gtest.h>
 
 #include "platon/script/scenario.h"
+#include "platon/testing/mapped.h"
 #include "platon/testing/temp_folder.h"
 
 namespace platon::script {
 namespace {
 
-bool mapped(const char* library) {
-  std::ifstream maps("/proc/self/maps");
-  std::stringstream text;
-  text << maps.rdbuf();
-  return text.str().find(library) != std::string::npos;
-}
+using testing::mapped;
 
 TEST(ScenarioSystems, MeshesListedForAPlatonicLevelLoadNoAssimp) {
   GTEST_FLAG_SET(death_test_style, "threadsafe");

@@ -11,6 +11,7 @@
 
 #include "platon/script/scenario.h"
 #include "platon/script/script_system.h"
+#include "platon/testing/mapped.h"
 #include "platon/testing/temp_folder.h"
 
 namespace platon::script {
@@ -127,11 +128,8 @@ TEST(Systems, ASceneWithoutScriptsCreatesNoLuaState) {
 TEST(Systems, AHeadlessScenarioMapsNoGraphicsOrMeshLibraries) {
   const ScenarioResult r = runScenario(std::string(PLATON_SOURCE_ROOT) + "/tests/scenarios/cube_intro_walk.lua");
   ASSERT_TRUE(r.passed) << r.message;
-  std::ifstream maps("/proc/self/maps");
-  std::stringstream text;
-  text << maps.rdbuf();
   for (const char* library : {"libGL", "libEGL", "libSDL2", "libassimp", "libGLX"})
-    EXPECT_EQ(text.str().find(library), std::string::npos) << library << " is mapped in a headless run";
+    EXPECT_FALSE(testing::mapped(library)) << library << " is mapped in a headless run";
 }
 
 // A process that plays a mesh level maps assimp (through the plugin); one that plays a Platonic
@@ -144,10 +142,7 @@ bool mapsAssimpAfter(const std::string& scenario) {
     std::fprintf(stderr, "%s\n", r.message.c_str());
     std::exit(2);
   }
-  std::ifstream maps("/proc/self/maps");
-  std::stringstream text;
-  text << maps.rdbuf();
-  return text.str().find("libassimp") != std::string::npos;
+  return testing::mapped("libassimp");
 }
 
 TEST(MeshPlugin, LoadedOnlyForAMeshLevel) {

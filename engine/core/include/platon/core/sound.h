@@ -21,6 +21,16 @@ struct SoundBank {
   std::map<std::string, synth::Music, std::less<>> music;
   bool hasEffect(std::string_view name) const { return effects.find(name) != effects.end(); }
   bool hasMusic(std::string_view name) const { return music.find(name) != music.end(); }
+  // The names, in order, as messages list them: "crystal, first_steps, ..." ("none" for none).
+  std::string effectNames() const { return namesOf(effects); }
+  std::string musicNames() const { return namesOf(music); }
+
+ private:
+  static std::string namesOf(const auto& byName) {
+    std::string list;
+    for (const auto& [name, spec] : byName) list += (list.empty() ? "" : ", ") + name;
+    return list.empty() ? "none" : list;
+  }
 };
 
 // A bank file is a regular file of at most this (data/sounds: a few KB each).
