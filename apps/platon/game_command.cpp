@@ -348,7 +348,6 @@ void Game::handle(const core::WindowInput& input) {
 namespace {
 const char* const kBoundNames[core::KeyBindings::kBound] = {"Left", "Right", "Up", "Down", "Jump", "Restart"};
 constexpr int kSettingsItems = 14;  // 7 settings, 6 keys, back
-constexpr int kSamples[] = {-1, 0, 2, 4, 8};
 }  // namespace
 
 void Game::settingsKey(core::Key key) {

@@ -34,7 +34,7 @@ std::string dataRoot() {
 
 std::string engineFile(const std::string& relative) {
   std::error_code error;
-  const std::string chosen = dataRoot() + "/" + relative;
+  std::string chosen = dataRoot() + "/" + relative;
   if (std::filesystem::exists(chosen, error)) return chosen;
   return programFolder() + "/" PLATON_DATA_FROM_BIN "/" + relative;
 }

@@ -154,8 +154,8 @@ namespace {
 // Fills `table` (indexed by SDL's code for a key or a pad button) with the bit of each button the
 // names bind; `code` turns a name into that code, or returns `none`. Unknown names go to `unknown`.
 template <size_t N, class Code>
-void bindNames(uint8_t (&table)[N], const std::vector<std::string> (&names)[core::KeyBindings::kBound], Code code,
-               int none, std::vector<std::string>& unknown) {
+void bindNames(uint8_t (&table)[N], const std::array<std::vector<std::string>, core::KeyBindings::kBound>& names,
+               Code code, int none, std::vector<std::string>& unknown) {
   std::fill(std::begin(table), std::end(table), uint8_t{0});
   for (int b = 0; b < core::KeyBindings::kBound; ++b)
     for (const std::string& name : names[b]) {

@@ -3,6 +3,7 @@
 // (engine/render). Plain data in, so the plugin needs no engine code but this header (and the
 // camera's math).
 #pragma once
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -86,8 +87,10 @@ enum class Key : uint8_t { Escape, Enter, Up, Down, Left, Right, Restart, Reload
 // so no binding can lock a player out.
 struct KeyBindings {
   static constexpr int kBound = 6;  // Button::Left .. Button::Restart
-  std::vector<std::string> keys[kBound] = {{"Left", "A"}, {"Right", "D"}, {"Up", "W"}, {"Down", "S"}, {"Space"}, {"R"}};
-  std::vector<std::string> pad[kBound] = {{"dpleft"}, {"dpright"}, {"dpup"}, {"dpdown"}, {"a", "b"}, {"back"}};
+  std::array<std::vector<std::string>, kBound> keys = {
+      {{"Left", "A"}, {"Right", "D"}, {"Up", "W"}, {"Down", "S"}, {"Space"}, {"R"}}};
+  std::array<std::vector<std::string>, kBound> pad = {
+      {{"dpleft"}, {"dpright"}, {"dpup"}, {"dpdown"}, {"a", "b"}, {"back"}}};
 };
 
 // What the window's devices (keyboard, gamepads) did since the last poll.
