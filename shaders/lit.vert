@@ -10,12 +10,15 @@
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 layout(location = 2) in vec4 color;
+layout(location = 3) in vec2 tile;  // a face's place in tiles (lit.frag)
 uniform mat4 viewProjection;
 uniform vec3 lightDirection;  // toward the light, unit length
 uniform vec3 eye;
 out vec4 litColor;
+out vec2 tileCoord;
 void main() {
   gl_Position = viewProjection * vec4(position, 1.0);
+  tileCoord = tile;
   if (abs(color.a - 254.0 / 255.0) < 0.001) {
     litColor = vec4(color.rgb, 1.0);
     return;

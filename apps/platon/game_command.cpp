@@ -116,8 +116,6 @@ class Game {
     settings_ = Settings::load(settingsPath_, problems);
     for (const std::string& p : problems) std::fprintf(stderr, "%s\n", core::visibleText(p, true).c_str());
     if (!problems.empty()) notice_ = core::visibleText(problems.front(), false);
-    // Multisampling is the window's from its start: the renderer reads it as it opens the window.
-    if (settings_.multisamples >= 0) setenv("PLATON_MULTISAMPLE", std::to_string(settings_.multisamples).c_str(), 1);
     for (const CampaignLevel& l : levels_) {  // the names players see; a broken manifest shows its folder
       try {
         names_.push_back(core::loadManifest(l.scene).name);
@@ -192,6 +190,7 @@ class Game {
         // costs a reconfiguration (and start-up time) for nothing.
         if (applied_.fullscreen != settings_.fullscreen) d->setFullscreen(settings_.fullscreen);
         if (applied_.vsync != settings_.vsync) d->setVsync(settings_.vsync);
+        if (applied_.multisamples != settings_.multisamples) d->setMultisamples(settings_.multisamples);
         applied_ = settings_;
       } catch (const std::exception& e) {  // no display: the game says so when it opens
         notice_ = e.what();
@@ -222,7 +221,7 @@ class Game {
   LevelRecorder recording_;
   std::chrono::steady_clock::time_point freezeUntil_{};
   Settings settings_;
-  Settings applied_;  // what the window was last told (full screen, vsync): at first, how it opens
+  Settings applied_;  // what the window was last told (full screen, vsync, samples): at first, how it opens
   std::string settingsPath_;
   Screen settingsFrom_ = Screen::Title;
   int settingsItem_ = 0;
@@ -426,7 +425,7 @@ std::vector<std::string> Game::settingsLines() const {
                                         (settings_.multisamples < 0    ? std::string("auto")
                                          : settings_.multisamples == 0 ? std::string("off")
                                                                        : std::to_string(settings_.multisamples) + "x") +
-                                        " >  (from the next start)"};
+                                        " >"};
   for (int b = 0; b < core::KeyBindings::kBound; ++b)
     items.push_back(std::string(kBoundNames[b]) + " key   " + keys(b));
   items.push_back("Back");

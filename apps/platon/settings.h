@@ -17,7 +17,7 @@ struct Settings {
   bool vsync = true;
   int gameSpeed = 100;  // percent, 50..100: the assist mode (pacing only; recorded in replays)
   int multisamples =
-      -1;  // samples a pixel: -1 auto (4; none on a software rasterizer), 0, 2, 4, 8 (from the next start)
+      -1;  // samples a pixel: -1 auto (4; none on a software rasterizer), 0, 2, 4, 8 (from the next frame)
   core::KeyBindings keys;  // keys_left Left, A ... (SDL's key names, commas between)
 
   // $XDG_CONFIG_HOME/platon/settings.txt, or ~/.config/platon/settings.txt.

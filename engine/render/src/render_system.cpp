@@ -68,6 +68,8 @@ void RenderSystem::setFullscreen(bool on) { gl().window.setFullscreen(on); }
 
 void RenderSystem::setVsync(bool on) { gl().window.setVsync(on); }
 
+void RenderSystem::setMultisamples(int samples) { gl().window.setMultisamples(samples); }
+
 void RenderSystem::resize(int width, int height) {
   if (!gl_) {  // not open yet: open at that size (an offscreen surface cannot grow later)
     firstWidth_ = width, firstHeight_ = height;
@@ -111,6 +113,7 @@ void RenderSystem::paint(const core::View& view, const core::DrawList& draw) {
   g.window.setTitle(view.title.empty() ? "Platon" : "Platon: " + view.title);
   const float width = static_cast<float>(g.window.pixelWidth()), height = static_cast<float>(g.window.pixelHeight());
   const float dpi = g.window.pixelsPerPoint();
+  g.window.beginFrame();
   glViewport(0, 0, g.window.pixelWidth(), g.window.pixelHeight());
   glClearColor(kBackground.r / 255.0f, kBackground.g / 255.0f, kBackground.b / 255.0f, 1);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -205,6 +208,7 @@ void RenderSystem::paint(const core::View& view, const core::DrawList& draw) {
                   i == 0 ? Color{255, 210, 120, 255} : Color{255, 255, 255, 255});
     g.text.flush(width, height);
   }
+  g.window.endFrame();
 }
 
 }  // namespace platon::render

@@ -28,6 +28,7 @@ class RenderSystem final : public core::System, public core::Display {
   std::vector<std::string> setBindings(const core::KeyBindings& bindings) override;
   void setFullscreen(bool on) override;
   void setVsync(bool on) override;
+  void setMultisamples(int samples) override;
 
  private:
   struct Gl;

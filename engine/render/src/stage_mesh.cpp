@@ -13,12 +13,12 @@ using Eigen::Vector3f;
 Vector3f vec(const core::Point3& p) { return {p.x, p.y, p.z}; }
 
 // The look: a faceted stone world at dusk. Faces in two close warm slates (neighbours read apart
-// without a rainbow) under a faint grid that shows the solid turning; walls of pale stone; the
+// without a rainbow) in faint tiles that show the solid turning; walls of pale stone; the
 // tags in Okabe and Ito's palette for colour-blind readers, told apart by lightness as well as hue,
 // and a hazard by its shape too (a row of spikes).
 Color faceColor(size_t index) { return index % 2 ? Color{92, 96, 118, 255} : Color{82, 86, 108, 255}; }
 constexpr Color kRim{30, 30, 44, 255};
-constexpr Color kGrid{70, 74, 96, 255};
+constexpr float kTile = 512;  // level units
 
 // The game's tags (scripts/rules/game.lua): 0 solid, 1 hazard, 2 goal, 3 checkpoint, 1000 + n
 // door, 2000 + n switch. Hazards and the goal glow.
@@ -176,8 +176,19 @@ void StageMesh::addFace(const core::ViewFace& face, size_t index) {
   // is drawn once (on a software rasterizer the fill is most of the frame).
   for (size_t k = 0; k < n; ++k)
     quad(fixed_, outer[k], outer[(k + 1) % n], inner[(k + 1) % n], inner[k], f.normal, kRim);
-  for (size_t k = 1; k + 1 < n; ++k) addTriangle(fixed_, inner[0], inner[k], inner[k + 1], f.normal, faceColor(index));
-  if (!flat_) addGrid(f, face, mid, shrink);
+  // The face's tiles, 512 level units square (the player's ball is 192 across): a floor with a
+  // scale, which slides by as the camera turns. Drawn by the fragment shader from each vertex's
+  // place in tiles (lit.frag): grid lines as triangles over the face cost a software rasterizer a
+  // fifth of the frame, for their length across its tiles, not their pixels (render_frames).
+  Color color = faceColor(index);
+  if (!flat_) color.a = kTiled;
+  const size_t first = fixed_.size();
+  for (size_t k = 1; k + 1 < n; ++k) addTriangle(fixed_, inner[0], inner[k], inner[k + 1], f.normal, color);
+  for (size_t i = first; i < fixed_.size(); ++i) {  // the vertex's place on the face, in tiles
+    const Vector3f from = Vector3f(fixed_[i].x, fixed_[i].y, fixed_[i].z) - f.origin;
+    fixed_[i].u = from.dot(f.xAxis) / f.xAxis.squaredNorm() / kTile;
+    fixed_[i].v = from.dot(f.yAxis) / f.yAxis.squaredNorm() / kTile;
+  }
   for (const core::ViewLine& line : face.lines) {
     if (line.kind == 1) continue;  // warp lines are the face's own edges: the rim shows them
     if (line.tag >= 1000 && line.tag < 2000)
@@ -185,44 +196,6 @@ void StageMesh::addFace(const core::ViewFace& face, size_t index) {
     else
       addWall(f, line, fixed_);
   }
-}
-
-void StageMesh::addGrid(const Frame& f, const core::ViewFace& face, core::Point2 mid, float shrink) {
-  // Lines every 512 level units (the player's ball is 192 across), cut to the face's inner polygon:
-  // a floor with a scale, whose lines slide by as the camera turns.
-  std::vector<core::Point2> inner;
-  for (const core::Point2 c : face.corners)
-    inner.push_back({mid.x + (c.x - mid.x) * shrink, mid.y + (c.y - mid.y) * shrink});
-  float x0 = 1e30f, y0 = 1e30f, x1 = -1e30f, y1 = -1e30f;
-  for (const core::Point2 c : inner)
-    x0 = std::min(x0, c.x), y0 = std::min(y0, c.y), x1 = std::max(x1, c.x), y1 = std::max(y1, c.y);
-  constexpr float kStep = 512;
-  const float width = std::min(0.0012f * edge_ / scale_, 8.0f);  // level units
-  auto line = [&](core::Point2 a, core::Point2 b) {
-    // Cut [a, b] to the convex inner polygon (counter-clockwise corners).
-    float t0 = 0, t1 = 1;
-    for (size_t k = 0; k < inner.size() && t0 <= t1; ++k) {
-      const core::Point2 p = inner[k], q = inner[(k + 1) % inner.size()];
-      const float nx = -(q.y - p.y), ny = q.x - p.x;  // inward for counter-clockwise corners
-      const float da = (a.x - p.x) * nx + (a.y - p.y) * ny, db = (b.x - p.x) * nx + (b.y - p.y) * ny;
-      if (da < 0 && db < 0) return;
-      if (da < 0) t0 = std::max(t0, da / (da - db));
-      if (db < 0) t1 = std::min(t1, da / (da - db));
-    }
-    if (t0 >= t1) return;
-    const core::Point2 c{a.x + (b.x - a.x) * t0, a.y + (b.y - a.y) * t0},
-        d{a.x + (b.x - a.x) * t1, a.y + (b.y - a.y) * t1};
-    const float len = std::hypot(d.x - c.x, d.y - c.y);
-    if (len <= 0) return;
-    const float hx = -(d.y - c.y) / len * width, hy = (d.x - c.x) / len * width;
-    auto at = [&](core::Point2 p) {
-      return Vector3f(f.origin + p.x * f.xAxis + p.y * f.yAxis + 0.0012f * edge_ * f.normal);
-    };
-    quad(fixed_, at({c.x - hx, c.y - hy}), at({d.x - hx, d.y - hy}), at({d.x + hx, d.y + hy}), at({c.x + hx, c.y + hy}),
-         f.normal, kGrid);
-  };
-  for (float x = std::ceil(x0 / kStep) * kStep; x <= x1; x += kStep) line({x, y0}, {x, y1});
-  for (float y = std::ceil(y0 / kStep) * kStep; y <= y1; y += kStep) line({x0, y}, {x1, y});
 }
 
 void StageMesh::addDoors(std::span<const uint32_t> openTags, std::vector<LitVertex>& out) const {
@@ -366,7 +339,7 @@ void StageMesh::addShapes(const core::DrawList& draw, physics::MapPartId onlyFac
   for (size_t index = 0; index < shapes.size(); ++index) {
     core::DrawShape s = shapes[index];
     if (s.place.screen || s.kind == core::ShapeKind::Text) continue;
-    if (s.color.a == kGlow) s.color.a = 255;  // the glow marker is the stage's own, not the scripts'
+    if (s.color.a == kGlow || s.color.a == kTiled) s.color.a = 255;  // the stage's own markers, not the scripts'
     if (s.kind == core::ShapeKind::Circle && s.body != 0 && !flat_) {
       size_t end = index + 1;  // the entity's instances come one after another
       while (end < shapes.size() && shapes[end].kind == core::ShapeKind::Circle && shapes[end].body == s.body) ++end;

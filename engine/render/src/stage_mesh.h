@@ -16,10 +16,13 @@ struct LitVertex {
   float x, y, z;
   float nx, ny, nz;
   uint8_t r, g, b, a;
+  float u = 0, v = 0;  // a face's own coordinates in tiles (kTiled only)
 };
 
-// Alpha 254 marks a colour drawn unlit (lit.frag): it glows.
+// Alpha 254 marks a colour drawn unlit (lit.vert): it glows. Alpha 253 marks a face's surface,
+// drawn in tiles from (u, v) (lit.frag).
 inline constexpr uint8_t kGlow = 254;
+inline constexpr uint8_t kTiled = 253;
 
 class StageMesh {
  public:
@@ -58,7 +61,6 @@ class StageMesh {
   const Frame* frameOf(physics::MapPartId part) const;
   float outsideHeight(const Frame& f, const Eigen::Vector3f& p) const;
   void addFace(const core::ViewFace& face, size_t index);
-  void addGrid(const Frame& f, const core::ViewFace& face, core::Point2 mid, float shrink);
   void addWall(const Frame& f, const core::ViewLine& line, std::vector<LitVertex>& out, float heightScale = 1,
                bool moving = false) const;
   struct Door {

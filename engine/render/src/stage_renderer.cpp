@@ -15,6 +15,8 @@ void describeLitVertices() {
   glEnableVertexAttribArray(2);
   glVertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(LitVertex),
                         reinterpret_cast<void*>(offsetof(LitVertex, r)));
+  glEnableVertexAttribArray(3);
+  glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, sizeof(LitVertex), reinterpret_cast<void*>(offsetof(LitVertex, u)));
 }
 
 StageRenderer::StageRenderer() : program_(shaders::lit_vert, shaders::lit_frag, "lit") {

@@ -12,6 +12,21 @@
 namespace platon::render {
 namespace {
 
+// The size a text is rendered at: whole pixels up to 25, above that a ladder of steps 4 % apart,
+// and the quad scaled to the size asked for. A label on a face follows the camera's distance, and
+// rendered at its exact size it made a texture (and opened the font at a new size) nearly every
+// frame while the view moved.
+int rung(float height) {
+  const float h = std::clamp(height, 6.0f, 256.0f);
+  if (h <= 25) return static_cast<int>(std::lround(h));
+  return std::min(256,
+                  static_cast<int>(std::lround(25 * std::pow(1.04f, std::round(std::log(h / 25) / std::log(1.04f))))));
+}
+
+}  // namespace
+
+namespace {
+
 constexpr const char* kFontFiles[] = {"/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf",
                                       "/usr/share/fonts/TTF/DejaVuSans.ttf"};
 constexpr uint64_t kKeepFrames = 60;
@@ -95,16 +110,19 @@ const Text::Texture* Text::texture(const std::string& text, int pixels, core::Co
 
 float Text::width(const std::string& text, float height) {
   int w = 0, h = 0;
-  if (text.empty() || TTF_SizeUTF8(font(static_cast<int>(std::lround(height))), text.c_str(), &w, &h) != 0) return 0;
-  return static_cast<float>(w);
+  const int pixels = rung(height);
+  if (text.empty() || TTF_SizeUTF8(font(pixels), text.c_str(), &w, &h) != 0) return 0;
+  return static_cast<float>(w) * std::clamp(height, 6.0f, 256.0f) / static_cast<float>(pixels);
 }
 
 float Text::draw(const std::string& text, core::Point2 at, float height, core::Color color) {
   if (text.empty()) return 0;
-  const Texture* t = texture(text, std::clamp(static_cast<int>(std::lround(height)), 6, 256), color);
+  const int pixels = rung(height);
+  const Texture* t = texture(text, pixels, color);
   if (!t) return 0;
-  queued_.push_back({t->id, at.x, at.y, static_cast<float>(t->width), static_cast<float>(t->height)});
-  return static_cast<float>(t->width);
+  const float scale = std::clamp(height, 6.0f, 256.0f) / static_cast<float>(pixels);
+  queued_.push_back({t->id, at.x, at.y, static_cast<float>(t->width) * scale, static_cast<float>(t->height) * scale});
+  return static_cast<float>(t->width) * scale;
 }
 
 void Text::flush(float screenWidth, float screenHeight) {

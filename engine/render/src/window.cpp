@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <epoxy/gl.h>
@@ -27,44 +28,26 @@ Window::Window(const std::string& title, int width, int height) {
   SDL_GL_SetAttribute(SDL_GL_CONTEXT_PROFILE_MASK, SDL_GL_CONTEXT_PROFILE_CORE);
   SDL_GL_SetAttribute(SDL_GL_DOUBLEBUFFER, 1);
   SDL_GL_SetAttribute(SDL_GL_DEPTH_SIZE, 24);
+  SDL_GL_SetAttribute(SDL_GL_MULTISAMPLEBUFFERS, 0);
+  SDL_GL_SetAttribute(SDL_GL_MULTISAMPLESAMPLES, 0);
+  // One context, made once: multisampling is an offscreen framebuffer (setMultisamples), not the
+  // window's, so no context is made again to learn what the driver is (on llvmpipe a second
+  // context cost a second start of the rasterizer, about 100 ms of start-up).
   const Uint32 flags = SDL_WINDOW_OPENGL | SDL_WINDOW_RESIZABLE | SDL_WINDOW_ALLOW_HIGHDPI;
-  // Multisampling where the driver has it: 4 samples unless PLATON_MULTISAMPLE says how many (0:
-  // none, e.g. on a software rasterizer, where it costs several times the frame).
-  const char* wanted = std::getenv("PLATON_MULTISAMPLE");
-  const int first = wanted ? std::clamp(std::atoi(wanted), 0, 16) : 4;
-  for (const int samples : {first, 0}) {
-    SDL_GL_SetAttribute(SDL_GL_MULTISAMPLEBUFFERS, samples > 0);
-    SDL_GL_SetAttribute(SDL_GL_MULTISAMPLESAMPLES, samples);
-    window_ = SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, width, height, flags);
-    if (window_) context_ = SDL_GL_CreateContext(window_);
-    if (context_) break;
-    if (window_) SDL_DestroyWindow(window_);
-    window_ = nullptr;
-  }
+  window_ = SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, width, height, flags);
+  if (window_) context_ = SDL_GL_CreateContext(window_);
   if (!context_) {
     const std::string reason = SDL_GetError();
+    if (window_) SDL_DestroyWindow(window_);
     SDL_QuitSubSystem(SDL_INIT_VIDEO);
     throw std::runtime_error("no OpenGL 3.3 core context: " + reason);
   }
-  // A software rasterizer (Mesa's llvmpipe) has multisampling but pays for it on every pixel, about
-  // twice the frame: without a say from PLATON_MULTISAMPLE, such a context is made again without it.
   const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  const bool software = renderer && (std::strstr(renderer, "llvmpipe") || std::strstr(renderer, "softpipe") ||
-                                     std::strstr(renderer, "swrast"));
-  if (software && !wanted && first > 0) {
-    SDL_GL_DeleteContext(context_);
-    SDL_DestroyWindow(window_);
-    SDL_GL_SetAttribute(SDL_GL_MULTISAMPLEBUFFERS, 0);
-    SDL_GL_SetAttribute(SDL_GL_MULTISAMPLESAMPLES, 0);
-    window_ = SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, width, height, flags);
-    context_ = window_ ? SDL_GL_CreateContext(window_) : nullptr;
-    if (!context_) {
-      const std::string reason = SDL_GetError();
-      if (window_) SDL_DestroyWindow(window_);
-      SDL_QuitSubSystem(SDL_INIT_VIDEO);
-      throw std::runtime_error("no OpenGL 3.3 core context: " + reason);
-    }
-  }
+  software_ = renderer && (std::strstr(renderer, "llvmpipe") || std::strstr(renderer, "softpipe") ||
+                           std::strstr(renderer, "swrast"));
+  glGetIntegerv(GL_MAX_SAMPLES, &maxSamples_);
+  const char* wanted = std::getenv("PLATON_MULTISAMPLE");  // tools and tests; the game's settings say later
+  setMultisamples(wanted && *wanted ? std::atoi(wanted) : -1);
   SDL_GL_SetSwapInterval(1);         // vsync when the driver has it; no error otherwise
   setBindings(core::KeyBindings{});  // the default keys until the settings say others
   // Gamepads: those present now arrive as "added" events on the first poll, later ones when
@@ -76,6 +59,7 @@ Window::Window(const std::string& title, int width, int height) {
 }
 
 Window::~Window() {
+  freeSamples();
   for (SDL_GameController* pad : pads_) SDL_GameControllerClose(pad);
   SDL_QuitSubSystem(SDL_INIT_GAMECONTROLLER);
   SDL_GL_DeleteContext(context_);
@@ -273,6 +257,58 @@ float Window::pixelsPerPoint() const {
 }
 
 void Window::swap() { SDL_GL_SwapWindow(window_); }
+
+void Window::setMultisamples(int samples) {
+  // Auto: 4 samples on a GPU; none on a software rasterizer, which pays for each sample on every
+  // pixel (about twice the frame).
+  wantedSamples_ = samples < 0 ? (software_ ? 0 : 4) : std::min(samples, 16);
+}
+
+void Window::freeSamples() {
+  if (frame_.framebuffer) glDeleteFramebuffers(1, &frame_.framebuffer);
+  if (frame_.color) glDeleteRenderbuffers(1, &frame_.color);
+  if (frame_.depth) glDeleteRenderbuffers(1, &frame_.depth);
+  frame_ = {};
+}
+
+// The frame is drawn into a multisampled framebuffer of the drawable's size when samples are
+// wanted (made again when the size or the count changes), else straight into the window's.
+void Window::beginFrame() {
+  const int samples = std::min(wantedSamples_, static_cast<int>(maxSamples_));
+  const int w = pixelWidth(), h = pixelHeight();
+  if (samples != frame_.samples || w != frame_.width || h != frame_.height) {
+    freeSamples();
+    if (samples > 1) {
+      glGenFramebuffers(1, &frame_.framebuffer);
+      glBindFramebuffer(GL_FRAMEBUFFER, frame_.framebuffer);
+      glGenRenderbuffers(1, &frame_.color);
+      glBindRenderbuffer(GL_RENDERBUFFER, frame_.color);
+      glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_RGBA8, w, h);
+      glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, frame_.color);
+      glGenRenderbuffers(1, &frame_.depth);
+      glBindRenderbuffer(GL_RENDERBUFFER, frame_.depth);
+      glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, w, h);
+      glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, frame_.depth);
+      glBindRenderbuffer(GL_RENDERBUFFER, 0);
+      if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+        std::fprintf(stderr, "platon: no %d-sample framebuffer here; drawing without multisampling\n", samples);
+        freeSamples();
+        wantedSamples_ = 0;
+      }
+    }
+    frame_.samples = samples, frame_.width = w, frame_.height = h;
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, frame_.framebuffer);
+}
+
+void Window::endFrame() {
+  if (!frame_.framebuffer) return;
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, frame_.framebuffer);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+  glBlitFramebuffer(0, 0, frame_.width, frame_.height, 0, 0, frame_.width, frame_.height, GL_COLOR_BUFFER_BIT,
+                    GL_NEAREST);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
 
 std::vector<uint8_t> Window::readPixels(int& width, int& height) const {
   width = pixelWidth(), height = pixelHeight();

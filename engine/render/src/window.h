@@ -1,8 +1,10 @@
-// An SDL2 window with an OpenGL 3.3 core context: resizable, high-DPI aware, vsync and 4x
-// multisampling when the driver has them. Keyboard and gamepad state become the engine's buttons.
+// An SDL2 window with an OpenGL 3.3 core context: resizable, high-DPI aware, vsync when the driver
+// has it, multisampled through an offscreen framebuffer (4 samples on a GPU unless set otherwise). Keyboard and gamepad
+// state become the engine's buttons.
 #pragma once
 #include <SDL2/SDL.h>
 #include <cstdint>
+#include <epoxy/gl.h>
 #include <string>
 #include <vector>
 
@@ -27,7 +29,14 @@ class Window {
   int pixelWidth() const;
   int pixelHeight() const;
   float pixelsPerPoint() const;
+  // Every frame is drawn between these two: the first binds where it is drawn (the multisampled
+  // framebuffer, or the window's own), the second resolves it into the window's back buffer.
+  void beginFrame();
+  void endFrame();
   void swap();
+  // Samples a pixel from the next frame on: 0 or 1 none, -1 auto (4 on a GPU, none on a software
+  // rasterizer); no more than the driver has.
+  void setMultisamples(int samples);
   // The back buffer's pixels, rows from the top, RGBA.
   std::vector<uint8_t> readPixels(int& width, int& height) const;
   // The player's keys (core::KeyBindings); returns the names SDL does not know.
@@ -42,6 +51,16 @@ class Window {
 
   uint8_t buttons_[SDL_NUM_SCANCODES] = {};             // by scancode: the InputFrame bits it holds
   uint8_t padButtons_[SDL_CONTROLLER_BUTTON_MAX] = {};  // by gamepad button: likewise
+  void freeSamples();
+
+  struct SampledFrame {
+    GLuint framebuffer = 0, color = 0, depth = 0;
+    int samples = 0, width = 0, height = 0;
+  };
+  SampledFrame frame_;
+  int wantedSamples_ = 0;
+  GLint maxSamples_ = 0;
+  bool software_ = false;
   SDL_Window* window_ = nullptr;
   SDL_GLContext context_ = nullptr;
   std::vector<SDL_GameController*> pads_;

@@ -188,6 +188,32 @@ TEST_F(Renderer, ShowsTheHeadsUpLinesAndTheErrorOverlay) {
   EXPECT_GT(white, 100);
 }
 
+// Multisampling is set on the open window and takes effect on the next frame: the edges of a ball
+// and of a tilted face turn to blends (a few pixels differ, nothing else), and back again.
+TEST_F(Renderer, MultisamplingSmoothsEdgesFromTheNextFrameAndGoesBack) {
+  core::View view = squareFace();
+  view.camera.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()));
+  core::DrawList draw(true);
+  draw.circle(core::Place::onFace(0), {500, 500}, 120, {240, 200, 40, 255});
+  auto frame = [&](int samples) {
+    display->setMultisamples(samples);
+    display->present(view, draw);
+    int w = 0, h = 0;
+    std::vector<uint8_t> pixels = display->capture(w, h);
+    EXPECT_EQ(w, 1280);
+    EXPECT_EQ(h, 720);
+    return pixels;
+  };
+  const std::vector<uint8_t> plain = frame(0), smooth = frame(4), again = frame(0), chosen = frame(-1);
+  size_t differ = 0;
+  for (size_t i = 0; i < plain.size(); i += 4)
+    differ += plain[i] != smooth[i] || plain[i + 1] != smooth[i + 1] || plain[i + 2] != smooth[i + 2];
+  EXPECT_GT(differ, 500u) << "4 samples changed no edge";
+  EXPECT_LT(differ, plain.size() / 4 / 50) << "4 samples changed more than the edges";
+  EXPECT_EQ(again, plain) << "multisampling turned off is the picture without it";
+  EXPECT_EQ(chosen, plain) << "auto on a software rasterizer samples once";
+}
+
 TEST_F(Renderer, SavesAScreenshotAsPng) {
   display->present(squareFace(), core::DrawList(true));
   const std::string path = folder.path("shot.png");

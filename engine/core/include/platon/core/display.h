@@ -124,6 +124,9 @@ class Display {
   // display's refresh (vsync).
   virtual void setFullscreen(bool on) = 0;
   virtual void setVsync(bool on) = 0;
+  // Samples a pixel (anti-aliasing) from the next frame on: 0 none, 2, 4 or 8; -1 chooses (4 on a
+  // GPU, none on a software rasterizer, where every sample costs the whole frame again).
+  virtual void setMultisamples(int samples) = 0;
 };
 
 }  // namespace platon::core
