@@ -63,12 +63,7 @@ std::vector<CampaignLevel> readCampaign(const std::string& path) {
   return levels;
 }
 
-std::string Progress::defaultPath() {
-  const char* data = std::getenv("XDG_DATA_HOME");
-  if (data && data[0] == '/') return std::string(data) + "/platon/progress.txt";
-  const char* home = std::getenv("HOME");
-  return std::string(home && home[0] ? home : ".") + "/.local/share/platon/progress.txt";
-}
+std::string Progress::defaultPath() { return userFolder("data") + "/progress.txt"; }
 
 Progress::Progress(std::string path) : path_(std::move(path)) {
   std::istringstream in;

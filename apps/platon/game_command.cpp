@@ -25,6 +25,7 @@
 #include "platon/core/replay.h"
 #include "platon/core/visible_text.h"
 #include "platon/script/script_system.h"
+#include "save_file.h"
 #include "settings.h"
 
 namespace platon::app {
@@ -292,6 +293,12 @@ void Game::handle(const core::WindowInput& input) {
   }
   for (const core::Key key : input.pressed) {
     if (key == core::Key::ShowFps) showFps_ = !showFps_;
+    if (key == core::Key::Screenshot)
+      if (core::Display* d = display()) {
+        notice_ = saveScreenshot(*d);
+        std::printf("%s\n", notice_.c_str());
+        std::fflush(stdout);
+      }
     switch (screen_) {
       case Screen::Title:
         if (key == core::Key::Escape) quit_ = true;
@@ -598,7 +605,7 @@ int gameCommand(int argc, char** argv) {
                    "                   [--record dir]\n"
                    "  --record DIR  write a replay of each level played to DIR/<level>.replay\n"
                    "  keys: arrows or WASD move, Space jumps, R restarts, Esc pauses, Tab settings, F5 reloads,\n"
-                   "        F3 frame rate, F11 fullscreen; a gamepad works too\n");
+                   "        F3 frame rate, F11 fullscreen, F12 screenshot; a gamepad works too\n");
       return 2;
     }
   }

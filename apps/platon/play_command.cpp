@@ -28,6 +28,7 @@
 #include "platon/core/replay.h"
 #include "platon/core/visible_text.h"
 #include "platon/script/script_system.h"
+#include "save_file.h"
 
 namespace platon::app {
 namespace {
@@ -136,7 +137,8 @@ int playUsage() {
       "  --headless   no window, even when the scene names \"rendering\"; exits 1 if a frame had a\n"
       "               script error\n"
       "  --shot F     save the last frame shown to F (PNG) at the end\n"
-      "keys in the window: arrows or WASD move, Space jumps, R restarts, F3 frame rate, F11 fullscreen, Esc quits\n"
+      "keys in the window: arrows or WASD move, Space jumps, R restarts, F3 frame rate, F11 fullscreen, F12 "
+      "screenshot, Esc quits\n"
       "SIGINT or SIGTERM ends the play after the frame; if the frame does not end, a second signal, or\n"
       "3 s after the first ($PLATON_STOP_GRACE seconds if set), ends it at once, without writing the recording\n");
   return 2;
@@ -280,6 +282,7 @@ int playCommand(int argc, char** argv) {
       };
       if (events.closed || pressed(core::Key::Escape)) break;
       if (pressed(core::Key::ShowFps)) showFps = !showFps;
+      if (pressed(core::Key::Screenshot)) std::printf("%s\n", saveScreenshot(*display).c_str());
       keys = events.held;
       taps.add(events.tapped);
     }

@@ -4,9 +4,20 @@
 #pragma once
 #include <string>
 
+#include "platon/core/display.h"
+
 namespace platon::app {
 
 // "" when saved, else why not: "<path>: cannot write <what>" (what: "the progress file").
 std::string saveWhole(const std::string& path, const std::string& text, const std::string& what);
+
+// The player's own folder for the game, by the XDG base directories: $XDG_DATA_HOME/platon
+// (kind "data", else ~/.local/share/platon) or $XDG_CONFIG_HOME/platon ("config", else
+// ~/.config/platon). A relative XDG variable is ignored, as the specification says.
+std::string userFolder(const std::string& kind);
+
+// F12 in the game and in `platon play`: the frame on screen as a PNG in the data folder's
+// screenshots/ (made when missing), named by the local time. Returns what to tell the player.
+std::string saveScreenshot(core::Display& display);
 
 }  // namespace platon::app

@@ -104,12 +104,7 @@ std::vector<std::string>* bindingOf(const std::string& name, Settings& s) {
 
 }  // namespace
 
-std::string Settings::defaultPath() {
-  const char* config = std::getenv("XDG_CONFIG_HOME");
-  if (config && config[0] == '/') return std::string(config) + "/platon/settings.txt";
-  const char* home = std::getenv("HOME");
-  return std::string(home && home[0] ? home : ".") + "/.config/platon/settings.txt";
-}
+std::string Settings::defaultPath() { return userFolder("config") + "/settings.txt"; }
 
 Settings Settings::load(const std::string& path, std::vector<std::string>& problems) {
   Settings s;

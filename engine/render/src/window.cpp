@@ -96,6 +96,8 @@ std::optional<core::Key> keyOf(SDL_Keycode key) {
       return core::Key::Reload;
     case SDLK_F3:
       return core::Key::ShowFps;
+    case SDLK_F12:
+      return core::Key::Screenshot;
     default:
       return std::nullopt;
   }
