@@ -148,7 +148,9 @@ std::string meshFileOf(const stage::Level& level) {
   const fs::path folder =
       fs::path(level.file).parent_path().empty() ? fs::path(".") : fs::path(level.file).parent_path();
   const std::string shown = level.file.substr(0, level.file.find_last_of('/') + 1) + level.mesh;
-  auto refuse = [&](const std::string& why) { throw stage::StageError({level.file, 1, 6}, shown + ": " + why); };
+  auto refuse = [&](const std::string& why) {
+    throw stage::StageError({level.file, level.meshLine, level.meshColumn}, shown + ": " + why);
+  };
   std::error_code error;
   const fs::path root = fs::canonical(folder, error);
   if (error) refuse("cannot find the level's folder");
@@ -177,12 +179,12 @@ stage::Stage meshStageOf(const stage::Level& level, MeshSource& source) {
   } catch (const std::runtime_error& e) {  // "path: reason", named as the level names it
     std::string why = e.what();
     if (why.rfind(path + ": ", 0) == 0) why = folder + level.mesh + why.substr(path.size());
-    throw stage::StageError({level.file, 1, 6}, why);
+    throw stage::StageError({level.file, level.meshLine, level.meshColumn}, why);
   }
   try {
     return stage::stageFromPolyhedron(stage::polyhedronFromMesh(meshDataOf(file), level.size));
   } catch (const stage::StageError& e) {
-    throw stage::StageError({level.file, 1, 6}, folder + level.mesh + ": " + e.reason());
+    throw stage::StageError({level.file, level.meshLine, level.meshColumn}, folder + level.mesh + ": " + e.reason());
   }
 }
 

@@ -154,7 +154,7 @@ void checkLevelOnStage(const Level& level, const Stage& stage) {
         if (!face.inside(p)) {
           std::string shape;
           for (const physics::Vec2 c : corners) shape += " " + pointText(c);
-          throw StageError({level.file, l.sourceLine, l.sourceColumn},
+          throw StageError({level.file, l.sourceLine, p == l.a ? l.sourceColumn : l.endColumn},
                            "the segment leaves face " + std::to_string(f) + ": " + pointText(p) +
                                " is outside it (its corners:" + shape + ")");
         }

@@ -127,7 +127,7 @@ class LineReader {
   // The usual segment line, four whole numbers within +-2^29 and nothing else, read straight from
   // the bytes (a level of 10^5 segments is mostly these): true with the numbers and the line
   // consumed; false leaves the line, whatever it holds, to next().
-  bool plainSegment(std::array<int32_t, 4>& values, int& lineNumber, int& column) {
+  bool plainSegment(std::array<int32_t, 4>& values, int& lineNumber, int& column, int& endColumn) {
     const char* const lineStart = text_.data() + at_;
     const char* const end = text_.data() + text_.size();
     const char* p = lineStart;
@@ -136,11 +136,13 @@ class LineReader {
     };
     blanks();
     const char* const first = p;
+    const char* third = p;  // where b's x is written
     for (int32_t& v : values) {
       if (&v != &values[0]) {
         if (p == end || (*p != ' ' && *p != '\t')) return false;
         blanks();
       }
+      if (&v == &values[2]) third = p;
       const bool negative = p < end && *p == '-';
       if (p < end && (*p == '-' || *p == '+')) ++p;
       const char* const digits = p;
@@ -156,6 +158,7 @@ class LineReader {
     at_ = static_cast<size_t>(p - text_.data()) + 1;
     lineNumber = ++number_;
     column = static_cast<int>(first - lineStart) + 1;
+    endColumn = static_cast<int>(third - lineStart) + 1;
     return true;
   }
 
@@ -348,6 +351,7 @@ class Parser {
       for (const char c : path)
         if (static_cast<unsigned char>(c) < 0x20) fail(line, name, "the mesh file name has a control character");
       level.mesh = path;
+      level.meshLine = line.number, level.meshColumn = name.column;
       return;
     }
     expectCount(line, 1, 1, "solid");
@@ -392,7 +396,7 @@ class Parser {
     for (;;) {
       std::array<int32_t, 4> v;
       LevelLine plain;
-      if (!level.faces.empty() && reader_.plainSegment(v, plain.sourceLine, plain.sourceColumn)) {
+      if (!level.faces.empty() && reader_.plainSegment(v, plain.sourceLine, plain.sourceColumn, plain.endColumn)) {
         plain.a = {v[0], v[1]};
         plain.b = {v[2], v[3]};
         if (plain.a == plain.b)
@@ -423,6 +427,9 @@ class Parser {
     face.sourceLine = line.number;
     for (size_t i = 1; i < line.tokens.size();) {
       const Token& t = line.tokens[i];
+      const bool numeric = !t.text.empty() && std::strchr("0123456789+-.", t.text[0]) != nullptr;
+      if (numeric && i > 1)
+        fail(line, t, "one value too many: gravity takes two numbers, gx gy (units per frame per frame)");
       if (t.text != "gravity") fail(line, t, "unknown face option " + quoted(t.text) + " (known: gravity gx gy)");
       if (face.gravityQ16) fail(line, t, "gravity given twice");
       if (i + 2 >= line.tokens.size()) fail(line, t, "gravity needs two numbers: gx gy (units per frame per frame)");
@@ -444,6 +451,7 @@ class Parser {
     LevelLine out;
     out.sourceLine = line.number;
     out.sourceColumn = line.tokens[0].column;
+    out.endColumn = line.tokens[2].column;
     out.a = {unit(line, line.tokens[0], "x0"), unit(line, line.tokens[1], "y0")};
     out.b = {unit(line, line.tokens[2], "x1"), unit(line, line.tokens[3], "y1")};
     if (out.a == out.b) fail(line, line.tokens[0], "the segment has no length (both ends at one point)");

@@ -4,6 +4,7 @@
 // program links assimp itself.)
 #include "platon/stage/mesh.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -315,6 +316,24 @@ TEST(MeshFiles, TheMeshMustStayInTheLevelsFolder) {
   EXPECT_EQ(load("nowhere.obj"), file + ":1:6: " + folder + "nowhere.obj: cannot find the mesh file");
   fs::create_symlink("/dev/zero", root / "level" / "meshes" / "zero.obj");  // a link in a subfolder
   EXPECT_NE(load("meshes/zero.obj").find("leads out of the level's folder (to /dev/zero)"), std::string::npos);
+  // The MESH line where it is: after comments and blank lines, indented, the name's own column.
+  for (const std::string before : {"# a level\n# on a box\n", "\n\n   ", "# one\n\n  # two\n\t"}) {
+    std::string text = before + "MESH   nowhere.obj\n0 1000 1000\n0 2000 2000\n4096\n";
+    for (int f = 0; f < 6; ++f) text += "%\n";
+    const stage::Level level = stage::parseLevel(text, file);
+    const int line = 1 + static_cast<int>(std::count(before.begin(), before.end(), '\n'));
+    const size_t lastLine = before.find_last_of('\n');
+    const int column = static_cast<int>(before.size() - (lastLine == std::string::npos ? 0 : lastLine + 1)) + 8;
+    mesh::MeshSystem reader;
+    try {
+      (void)core::meshStageOf(level, reader);
+      ADD_FAILURE() << "a missing mesh was accepted";
+    } catch (const stage::StageError& e) {
+      EXPECT_EQ(std::string(e.what()), file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " +
+                                           folder + "nowhere.obj: cannot find the mesh file")
+          << before;
+    }
+  }
 }
 
 }  // namespace

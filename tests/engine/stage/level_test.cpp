@@ -94,6 +94,8 @@ TEST(LevelFormat, EveryMistakeNamesFileLineColumnAndWhy) {
       {header + empty6 + "%\n", "t.level:11:1: HEXAHEDRON has 6 faces; this '%' starts one more"},
       {header + "% spin 1\n", "t.level:5:3: unknown face option 'spin' (known: gravity gx gy)"},
       {header + "% gravity 1\n", "t.level:5:3: gravity needs two numbers: gx gy (units per frame per frame)"},
+      {header + "% gravity 0 -0.5 0.1\n",
+       "t.level:5:18: one value too many: gravity takes two numbers, gx gy (units per frame per frame)"},
       {header + "%\n1 2 3\n", "t.level:6:6: a segment is x0 y0 x1 y1 [oneway] [tag]: too few values"},
       {header + "%\n1 2 1 2\n", "t.level:6:1: the segment has no length (both ends at one point)"},
       {header + "%\n1 2 3 4 lava\n",
@@ -103,7 +105,10 @@ TEST(LevelFormat, EveryMistakeNamesFileLineColumnAndWhy) {
       {header + "%\n1 2 3 4 door\n", "t.level:6:9: door needs a number"},
       {header + "%\n1 2 3 4 door 1000\n", "t.level:6:14: door: 1000 is out of range (1 to 999)"},
       {header + "%\n100 100 5000 100\n%\n%\n%\n%\n%\n",
-       "t.level:6:1: the segment leaves face 0: (5000, 100) is outside it (its corners: (0, 0) (4096, 0) (4096, 4096) "
+       "t.level:6:9: the segment leaves face 0: (5000, 100) is outside it (its corners: (0, 0) (4096, 0) (4096, 4096) "
+       "(0, 4096))"},
+      {header + "%\n  -5 100 500 100\n%\n%\n%\n%\n%\n",
+       "t.level:6:3: the segment leaves face 0: (-5, 100) is outside it (its corners: (0, 0) (4096, 0) (4096, 4096) "
        "(0, 4096))"},
       {header + "%\n100 650 1000 650\n%\n%\n%\n%\n%\n",
        "t.level:2:1: start (600, 700) is inside a wall: 50 units from the segment on line 6 (the player needs 100)"},

@@ -31,7 +31,8 @@ struct LevelLine {
   physics::Vec2 a, b;
   bool oneWay = false;  // solid from its left side only (seen from a to b)
   uint32_t tag = 0;
-  int sourceLine = 0, sourceColumn = 0;
+  int sourceLine = 0, sourceColumn = 0;  // where a is written
+  int endColumn = 0;                     // where b is written (its x)
 
   friend bool operator==(const LevelLine&, const LevelLine&);  // the data, not where it was read
 };
@@ -53,9 +54,10 @@ struct LevelPoint {
 };
 
 struct Level {
-  std::string file;            // as given to parseLevel, for messages
-  std::optional<Solid> solid;  // a Platonic solid, or
-  std::string mesh;            // a mesh file, relative to the level file's folder
+  std::string file;                  // as given to parseLevel, for messages
+  std::optional<Solid> solid;        // a Platonic solid, or
+  std::string mesh;                  // a mesh file, relative to the level file's folder
+  int meshLine = 0, meshColumn = 0;  // where the level names it: the mesh's errors point there
   LevelPoint start;
   int64_t startMillidegrees = 0;  // the player's rotation
   LevelPoint goal;
