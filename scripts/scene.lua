@@ -320,7 +320,10 @@ end
 
 local scene = {}
 
-function scene.build()
+-- `frames`: the level's frames played so far, carried over a hot reload (0 on a fresh load), so
+-- that the new version's build sees game.frame() where the old one was.
+function scene.build(frames)
+  game.time = frames or 0
   local level, levelId = load(setup.level, setup.trusted.level, levelView)
   if setup.trusted.level then Level = sandboxedModule(level, setup.level, nil) -- an engine script as the level
   else Level = sandboxedModule(level, setup.level, levelId) end
@@ -486,5 +489,6 @@ function scene.status()
 end
 
 function scene.game() return game end
+function scene.frame() return game.time end
 
 return scene

@@ -128,7 +128,7 @@ ReloadReport LiveScene::reload(std::vector<std::string> because) {
   ReloadReport report;
   report.files = std::move(because);
   try {
-    std::unique_ptr<Scene> next = loadScene(path_, registry_);
+    std::unique_ptr<Scene> next = loadScene(path_, registry_, scene_.get());
     for (size_t i = 0; i < next->systemCount(); ++i)
       if (System* old = scene_->findSystem(next->systemName(i)); old && !next->systemName(i).empty())
         next->system(i).carryOver(*next, *old);

@@ -188,7 +188,7 @@ stage::Stage meshStageOf(const stage::Level& level, MeshSource& source) {
   }
 }
 
-std::unique_ptr<Scene> loadScene(const std::string& manifestPath, const SystemRegistry& registry) {
+std::unique_ptr<Scene> loadScene(const std::string& manifestPath, const SystemRegistry& registry, Scene* replacing) {
   auto scene = std::make_unique<Scene>();
   SceneManifest manifest = loadManifest(manifestPath);
   const auto gravity = static_cast<int64_t>(std::llround(manifest.gravity * 65536.0));
@@ -220,6 +220,9 @@ std::unique_ptr<Scene> loadScene(const std::string& manifestPath, const SystemRe
   for (const std::string& name : systems)
     if (shouldCreate(name, scene->manifest(), registry) && !scene->findSystem(name))
       scene->addSystem(registry.create(name, *scene), name);
+  for (size_t i = 0; replacing && i < scene->systemCount(); ++i)
+    if (System* old = replacing->findSystem(scene->systemName(i)); old && !scene->systemName(i).empty())
+      scene->system(i).carryBeforeBuild(*old);
   for (size_t i = 0; i < scene->systemCount(); ++i) scene->system(i).build(*scene);
   for (size_t i = 0; i < scene->stage()->faceCount(); ++i) scene->world().mapPart(scene->stage()->part(i)).initialize();
   for (size_t i = 0; i < scene->systemCount(); ++i) scene->system(i).start(*scene);

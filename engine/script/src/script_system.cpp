@@ -446,8 +446,19 @@ void ScriptSystem::build(core::Scene& scene) {
   state_->afterStep = lua::Ref(L, -1);
   lua_pop(L, 3);
   state_->host.beginFrame();
-  state_->callDriver("build", 0, 0);
+  lua_pushnumber(L, carriedFrames_);
+  state_->callDriver("build", 1, 0);
   state_->throwKeptErrors();
+}
+
+void ScriptSystem::carryBeforeBuild(core::System& previous) {
+  auto* old = dynamic_cast<ScriptSystem*>(&previous);
+  if (!old) return;
+  lua_State* L = old->state_->host.state();
+  lua::StackGuard guard(L);
+  old->state_->host.beginFrame();
+  old->state_->callDriver("frame", 0, 1);
+  carriedFrames_ = lua_isnumber(L, -1) ? lua_tonumber(L, -1) : 0;
 }
 
 void ScriptSystem::start(core::Scene&) {

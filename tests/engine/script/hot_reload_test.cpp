@@ -238,6 +238,36 @@ TEST(HotReload, LevelStateCrossesOverThroughSaveAndOnReload) {
   EXPECT_EQ(scriptsOf(live).status().message, "two took over 25 three nil");
 }
 
+// The new version's build already sees the frames played (a platform's cycle computed from
+// game.frame() in build goes on where it was, instead of restarting on every save), and sees the
+// same count as its onReload; a fresh load starts at 0.
+TEST(HotReload, TheNewBuildSeesTheFramesPlayed) {
+  Folder folder("reload_frame");
+  const std::string scene = folder.write("scene.lua", kManifest);
+  const std::string hooks =
+      "function level.onReload(game, saved) game.message(VERSION .. ' built at ' .. BUILT .. ', reloaded at ' .. "
+      "game.frame()) end\n";
+  auto version = [&](const std::string& name) {
+    folder.write("level.lua", "VERSION = '" + name + "'\n" +
+                                  level("BUILT = game.frame() game.message('built at ' .. BUILT)", hooks));
+  };
+  version("one");
+  const core::SystemRegistry registry = scriptingOnly();
+  core::LiveScene live(scene, registry, false);
+  EXPECT_EQ(scriptsOf(live).status().message, "built at 0");
+  int played = 0;
+  for (const int frames : {1, 40, 333}) {
+    run(live, frames, 0);
+    played += frames;
+    version("v" + std::to_string(frames));
+    ASSERT_TRUE(live.reload().ok) << live.lastError();
+    EXPECT_EQ(scriptsOf(live).status().message, "v" + std::to_string(frames) + " built at " + std::to_string(played) +
+                                                    ", reloaded at " + std::to_string(played));
+  }
+  core::LiveScene fresh(scene, registry, false);
+  EXPECT_EQ(scriptsOf(fresh).status().message, "built at 0");
+}
+
 TEST(HotReload, SwitchesDeathsAndCheckpointsSurvive) {
   Folder folder("reload_switch");
   const std::string scene = folder.write("scene.lua", kManifest);

@@ -69,8 +69,10 @@ class Scene {
 // Loads a scene from its manifest: builds the stage, creates the systems the manifest names that
 // `registry` knows (the others are left out: a headless run registers no renderer), lets them
 // build the level, initializes the faces and starts the systems. Throws std::runtime_error with
-// file:line:column for a bad manifest and the systems' own errors for the rest.
-std::unique_ptr<Scene> loadScene(const std::string& manifestPath, const SystemRegistry& registry);
+// file:line:column for a bad manifest and the systems' own errors for the rest. A hot reload names
+// the scene it replaces: each new system is given its predecessor before build (carryBeforeBuild).
+std::unique_ptr<Scene> loadScene(const std::string& manifestPath, const SystemRegistry& registry,
+                                 Scene* replacing = nullptr);
 
 // A mesh level's stage: its MESH file (relative to the level file) read by `source`, made a convex
 // solid with the level's size. Throws StageError naming the level file and what is wrong.

@@ -47,6 +47,9 @@ class System {
   // scene it replaces: take over what the new version still allows (the player's place and
   // state, counters). Throwing refuses the new version; the old one stays live.
   virtual void carryOver(Scene& scene, System& previous) { (void)scene, (void)previous; }
+  // Called on the new version before build, with the system it replaces: what build must already
+  // see (the frames the level has played, so that a platform's cycle goes on where it was).
+  virtual void carryBeforeBuild(System& previous) { (void)previous; }
 
   // The window this system shows the scene in, for the rendering system (core/display.h).
   virtual Display* display() { return nullptr; }

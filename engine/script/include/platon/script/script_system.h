@@ -39,6 +39,7 @@ class ScriptSystem final : public core::System {
   // Hands the old version's save() (plain data: counters, the player, what level scripts and mods
   // save) to the new version's restore(); docs/scripting.md, "Hot reload".
   void carryOver(core::Scene& scene, core::System& previous) override;
+  void carryBeforeBuild(core::System& previous) override;
 
   // The game's state. Never throws: a script error here (or in draw()) is kept, reported with
   // the next frame's errors (or by takeError()), and the last status that worked is returned.
@@ -56,6 +57,7 @@ class ScriptSystem final : public core::System {
  private:
   GameStatus readStatus() const;
   std::unique_ptr<State> state_;
+  double carriedFrames_ = 0;  // the level's frames played, from the version this one replaces
 };
 
 // The registry's factory for "scripting": finds the engine's scripts in core::dataRoot() (the
