@@ -478,6 +478,15 @@ function scene.status()
   local e = playerEntity()
   if e and valid(e) then
     status.face, status.x, status.y = position(e)
+    status.vx, status.vy = velocity(e)
+  end
+  local p = rawget(game, "player")
+  status.grounded = type(p) == "table" and rawget(p, "grounded") == true
+  local c = rawget(game, "checkpoint")
+  if type(c) == "table" then
+    status.checkpointFace, status.checkpointX, status.checkpointY = c.face, c.x, c.y
+  else
+    status.checkpointFace = nil
   end
   -- The doors the switches hold open (tag 1000 + n), for the renderer, in increasing order.
   local open = status.openTags or {}

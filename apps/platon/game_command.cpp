@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "campaign.h"
+#include "commands.h"
 #include "engine_registry.h"
 #include "game_view.h"
 #include "platon/core/audio.h"
@@ -600,13 +601,7 @@ int gameCommand(int argc, char** argv) {
     else if (a == "--record" && i + 1 < argc)
       recordFolder = argv[++i];
     else {
-      std::fprintf(stderr,
-                   "usage: platon game [--campaign levels/campaign.txt] [--progress file] [--settings file]\n"
-                   "                   [--record dir]\n"
-                   "  --record DIR  write a replay of each level played to DIR/<level>.replay\n"
-                   "  keys: arrows or WASD move, Space jumps, R restarts, Esc pauses, Tab settings, F5 reloads,\n"
-                   "        F3 frame rate, F11 fullscreen, F12 screenshot; a gamepad works too\n");
-      return 2;
+      return usageError("game");
     }
   }
   try {

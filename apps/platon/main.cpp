@@ -3,14 +3,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <string_view>
 
-#include "game_command.h"
-#include "merge_command.h"
+#include "commands.h"
 #include "platon/core/scene.h"
-#include "play_command.h"
-#include "run_command.h"
-#include "shot_command.h"
-#include "stage_commands.h"
 
 using namespace platon;
 using physics::Vec2;
@@ -57,35 +53,25 @@ class Roller : public core::System {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc > 1 && (std::strcmp(argv[1], "run") == 0 || std::strcmp(argv[1], "replay") == 0))
-    return platon::app::runCommand(argc - 1, argv + 1);
-  if (argc > 1 && std::strcmp(argv[1], "shot") == 0) return platon::app::shotCommand(argc - 1, argv + 1);
-  if (argc > 1 && std::strcmp(argv[1], "game") == 0) return platon::app::gameCommand(argc - 1, argv + 1);
-  if (argc > 1 && std::strcmp(argv[1], "play") == 0) return platon::app::playCommand(argc - 1, argv + 1);
-  if (argc > 1 && std::strcmp(argv[1], "scenario") == 0) return platon::app::scenarioCommand(argc - 1, argv + 1);
-  if (argc > 1 && std::strcmp(argv[1], "merge") == 0) return platon::app::mergeCommand(argc - 1, argv + 1);
-  if (argc > 1 && std::strcmp(argv[1], "check") == 0) return platon::app::checkCommand(argc - 1, argv + 1);
-  if (argc > 1 && std::strcmp(argv[1], "net") == 0) return platon::app::netCommand(argc - 1, argv + 1);
+  if (argc > 1) {
+    const std::string_view first = argv[1];
+    if (first == "--help" || first == "-h" || first == "help") return platon::app::printCommands(true), 0;
+    if (const platon::app::Command* command = platon::app::findCommand(first)) {
+      for (int i = 2; i < argc; ++i)
+        if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0) {
+          std::fputs(command->usage, stdout);
+          return 0;
+        }
+      return command->run(argc - 1, argv + 1);
+    }
+  }
   int frames = 3000;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--frames") == 0 && i + 1 < argc) {
       frames = std::atoi(argv[++i]);
     } else {
-      std::fprintf(
-          stderr,
-          "usage: %s [--frames N]      the headless demo\n"
-          "       %s game [--campaign levels/campaign.txt] [--progress file] [--record dir]   the game in a window\n"
-          "       %s shot LEVEL [--frame N] [--size WxH] [--input run.replay] --out file.png\n"
-          "       %s run [-j N] [--junit report.xml] [--timeout s] [--record dir] [--shard I/N] [--list] "
-          "scenario.lua|run.replay...\n"
-          "       %s merge -o all.xml shard.xml...   the shards' JUnit reports, each scenario checked to have run "
-          "once\n"
-          "       %s play scene.lua [--frames N] [--input run.replay] [--record out.replay] [--watch] [--fast] "
-          "[--headless]\n"
-          "       %s scenario run.replay [-o scenario.lua]\n"
-          "       %s check level.level...           errors and warnings a level designer wants\n"
-          "       %s net SOLID|level.level -o net.svg   the faces unfolded, numbered, with their axes\n",
-          argv[0], argv[0], argv[0], argv[0], argv[0], argv[0], argv[0], argv[0], argv[0]);
+      std::fprintf(stderr, "platon: no command '%s'\n", argv[i]);
+      platon::app::printCommands(false);
       return 2;
     }
   }

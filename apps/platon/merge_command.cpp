@@ -8,20 +8,14 @@
 #include <string>
 #include <vector>
 
+#include "commands.h"
 #include "junit.h"
 #include "shard.h"
 
 namespace platon::app {
 namespace {
 
-int mergeUsage() {
-  std::fprintf(stderr,
-               "usage: platon merge -o all.xml shard.xml...\n"
-               "  joins the JUnit reports of `platon run --shard I/N ... --junit shard.xml` (or another\n"
-               "  runner's sharding); fails, naming it, when a shard is missing or given twice, when the\n"
-               "  reports are of different suites, or when a scenario ran twice or not at all\n");
-  return 2;
-}
+int mergeUsage() { return usageError("merge"); }
 
 // "I/N" -> {I, N}, 1 <= I <= N.
 std::pair<unsigned long, unsigned long> shardNumbers(const std::string& text, const std::string& file) {

@@ -19,8 +19,10 @@
 #include <thread>
 #include <unistd.h>
 
+#include "commands.h"
 #include "engine_registry.h"
 #include "game_view.h"
+#include "level_argument.h"
 #include "platon/core/data_root.h"
 #include "platon/core/display.h"
 #include "platon/core/fixed_step.h"
@@ -123,26 +125,7 @@ bool frameCount(const char* text, uint64_t& out) {
   return error == std::errc() && stop == end && end != text && out >= 1;
 }
 
-int playUsage() {
-  std::fprintf(
-      stderr,
-      "usage: platon play scene.lua [--frames N] [--input run.replay] [--record out.replay]\n"
-      "                             [--watch] [--fast] [--headless] [--shot out.png]\n"
-      "  --frames N   stop after N frames, N >= 1 (default: at the goal, or never with --watch)\n"
-      "  --input F    the buttons of a recorded run (nothing held without it)\n"
-      "  --record F   write this run's input and hashes to F as a replay (also when stopped by\n"
-      "               SIGINT or SIGTERM; F is checked before playing)\n"
-      "  --watch      reload the scene when its files are saved\n"
-      "  --fast       do not wait for real time\n"
-      "  --headless   no window, even when the scene names \"rendering\"; exits 1 if a frame had a\n"
-      "               script error\n"
-      "  --shot F     save the last frame shown to F (PNG) at the end\n"
-      "keys in the window: arrows or WASD move, Space jumps, R restarts, F3 frame rate, F11 fullscreen, F12 "
-      "screenshot, Esc quits\n"
-      "SIGINT or SIGTERM ends the play after the frame; if the frame does not end, a second signal, or\n"
-      "3 s after the first ($PLATON_STOP_GRACE seconds if set), ends it at once, without writing the recording\n");
-  return 2;
-}
+int playUsage() { return usageError("play"); }
 
 script::ScriptSystem* scriptsOf(core::Scene& scene) {
   return dynamic_cast<script::ScriptSystem*>(scene.findSystem("scripting"));
@@ -190,7 +173,7 @@ int playCommand(int argc, char** argv) {
     else if (a == "--shot" && i + 1 < argc)
       shotPath = argv[++i];
     else if (scenePath.empty() && !a.empty() && a[0] != '-')
-      scenePath = a;
+      scenePath = a;  // a level, in any of its forms (level_argument.h): made its scene.lua below
     else
       return playUsage();
   }
@@ -204,6 +187,13 @@ int playCommand(int argc, char** argv) {
   if (scenePath.empty()) {
     if (inputPath.empty()) return playUsage();
     scenePath = input.scene;
+  } else if (scenePath.size() < 4 || scenePath.compare(scenePath.size() - 4, 4, ".lua") != 0) {
+    try {  // a level's folder or .level file: its scene.lua (kept relative, as a recording names it)
+      scenePath = levelArgument(scenePath).scene;
+    } catch (const std::exception& e) {
+      return std::fprintf(stderr, "platon play: %s\n", e.what()), 2;
+    }
+    if (scenePath.empty()) return std::fprintf(stderr, "platon play: no scene.lua beside the level file\n"), 2;
   }
   if (!recordPath.empty()) {
     if (const std::string why = whyUnrecordable(scenePath, recordPath); !why.empty())

@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <optional>
@@ -24,6 +25,7 @@
 #include <unistd.h>
 #include <vector>
 
+#include "commands.h"
 #include "engine_registry.h"
 #include "junit.h"
 #include "platon/core/visible_text.h"
@@ -99,21 +101,9 @@ std::string workerDied(int status, const std::string& file) {
          " while running " + file + " and gave no result";
 }
 
-int runUsage() {
-  std::fprintf(stderr,
-               "usage: platon run [-j N] [--junit report.xml] [--timeout seconds] [--trace frames]\n"
-               "                  [--record dir] [--hash-every frames]\n"
-               "                  [--shard I/N | --shards N] [--durations last.xml] [--list]\n"
-               "                  scenario.lua|run.replay...\n"
-               "  -j N          run N scenarios at a time (1..256; default 1)\n"
-               "  --timeout S   each scenario's wall-clock limit in seconds (default 600)\n"
-               "  --shard I/N   run only the I-th of N shards (1 <= I <= N); without it, Bazel's, GoogleTest's\n"
-               "                and GitLab's sharding variables are read (docs/shipping.md)\n"
-               "  --shards N    N shards, this one JOB_COMPLETION_INDEX's (a Kubernetes indexed job)\n"
-               "  --durations F balance the shards by the times in JUnit report F (an earlier run's)\n"
-               "  --list        print this shard's scenarios, one a line, and run nothing\n");
-  return 2;
-}
+// run's or replay's usage, as the command was called.
+const char* calledAs = "run";
+int runUsage() { return usageError(calledAs); }
 
 bool endsWith(const std::string& s, const std::string& tail) {
   return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
@@ -300,13 +290,14 @@ bool seconds(const char* text, double& out) {
 }
 
 int badValue(const char* option, const char* value, const char* expected) {
-  std::fprintf(stderr, "platon run: %s %s: expected %s\n", option, value, expected);
+  std::fprintf(stderr, "platon %s: %s %s: expected %s\n", calledAs, option, value, expected);
   return runUsage();
 }
 
 }  // namespace
 
 int runCommand(int argc, char** argv) {
+  calledAs = std::strcmp(argv[0], "replay") == 0 ? "replay" : "run";
   uint64_t jobs = 1;
   double timeout = 600;
   std::string junit, shardFlag, shardsFlag, durationsPath;
@@ -330,6 +321,17 @@ int runCommand(int argc, char** argv) {
         return badValue("--trace", argv[i], "a whole number of frames from 1");
     } else if (a == "--record" && hasValue) {
       recordDir = argv[++i], options.record = true;
+      // `--record a.lua b.lua` would take the first scenario for the folder and fail every run.
+      std::error_code error;
+      if (endsWith(recordDir, ".lua") || endsWith(recordDir, ".replay") ||
+          (std::filesystem::exists(recordDir, error) && !std::filesystem::is_directory(recordDir, error)))
+        return badValue("--record", recordDir.c_str(), "a folder for the replays (platon run --record DIR file...)");
+      std::filesystem::create_directories(recordDir, error);
+      if (error) {
+        std::fprintf(stderr, "platon %s: --record %s: cannot make the folder: %s\n", calledAs, recordDir.c_str(),
+                     error.message().c_str());
+        return 2;
+      }
     } else if (a == "--shard" && hasValue) {
       shardFlag = argv[++i];
     } else if (a == "--shards" && hasValue) {
@@ -409,9 +411,9 @@ int scenarioCommand(int argc, char** argv) {
     else if (replayPath.empty() && !a.empty() && a[0] != '-')
       replayPath = a;
     else
-      return std::fprintf(stderr, "usage: platon scenario run.replay [-o scenario.lua]\n"), 2;
+      return usageError("scenario");
   }
-  if (replayPath.empty()) return std::fprintf(stderr, "usage: platon scenario run.replay [-o scenario.lua]\n"), 2;
+  if (replayPath.empty()) return usageError("scenario");
   try {
     const core::Replay replay = core::readReplay(replayPath);
     script::RunOptions options;

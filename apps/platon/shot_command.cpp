@@ -9,8 +9,10 @@
 #include <string>
 #include <sys/stat.h>
 
+#include "commands.h"
 #include "engine_registry.h"
 #include "game_view.h"
+#include "level_argument.h"
 #include "platon/core/data_root.h"
 #include "platon/core/display.h"
 #include "platon/core/error.h"
@@ -21,29 +23,7 @@
 namespace platon::app {
 namespace {
 
-int shotUsage() {
-  std::fprintf(stderr,
-               "usage: platon shot LEVEL [--frame N] [--size WxH] [--input run.replay] --out file.png\n"
-               "  LEVEL   a scene.lua, a level folder, or a folder name under levels/ (cube_intro)\n"
-               "  --frame N      the picture after N frames (default 0: the start)\n"
-               "  --size WxH     pixels (default 1280x720)\n"
-               "  --input F      the buttons of a recorded run\n");
-  return 2;
-}
-
-bool exists(const std::string& path) {
-  struct stat st {};
-  return stat(path.c_str(), &st) == 0;
-}
-
-// A scene.lua as given, a folder holding one, or a folder name under levels/ (here, or the
-// program's own levels).
-std::string scenePathOf(const std::string& level) {
-  if (level.size() > 4 && level.substr(level.size() - 4) == ".lua") return core::resolveDataPath(level);
-  for (const std::string& candidate : {level + "/scene.lua", "levels/" + level + "/scene.lua"})
-    if (std::string found = core::resolveDataPath(candidate); exists(found)) return found;
-  return level;
-}
+int shotUsage() { return usageError("shot"); }
 
 }  // namespace
 
@@ -81,9 +61,10 @@ int shotCommand(int argc, char** argv) {
     core::Replay input;
     if (!inputPath.empty()) input = core::readReplay(inputPath);
     const core::SystemRegistry registry = engineRegistry(Presentation::Picture);
-    core::LiveScene live(scenePathOf(level), registry, false);
-    if (!displayOf(live.scene()))
-      throw std::runtime_error(scenePathOf(level) + ": the scene does not name \"rendering\"");
+    const std::string scene = levelArgument(level).scene;
+    if (scene.empty()) throw std::runtime_error(level + ": no scene.lua beside it to play it with");
+    core::LiveScene live(scene, registry, false);
+    if (!displayOf(live.scene())) throw std::runtime_error(scene + ": the scene does not name \"rendering\"");
     core::Display& display = *displayOf(live.scene());
     display.resize(width, height);
     auto status = [&] { return statusOf(live.scene()); };
@@ -108,7 +89,7 @@ int shotCommand(int argc, char** argv) {
                                std::to_string(width) + "x" + std::to_string(height));
     display.saveScreenshot(out);
     std::printf("%s: %dx%d, frame %llu of %s\n", out.c_str(), w, h, static_cast<unsigned long long>(frames),
-                scenePathOf(level).c_str());
+                scene.c_str());
     return 0;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s\n", core::errorReport(e).c_str());

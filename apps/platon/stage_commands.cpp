@@ -5,7 +5,9 @@
 #include <fstream>
 #include <string>
 
+#include "commands.h"
 #include "engine_registry.h"
+#include "level_argument.h"
 #include "platon/core/mesh_source.h"
 #include "platon/core/scene.h"
 #include "platon/stage/level_check.h"
@@ -28,17 +30,31 @@ stage::Stage stageFor(const stage::Level& level) {
   return core::meshStageOf(level, *meshes->meshSource());
 }
 
+// The level file of a level given in any of its forms (level_argument.h).
+std::string levelFileArgument(const std::string& argument) {
+  LevelArgument level;
+  try {
+    level = levelArgument(argument);
+  } catch (const std::runtime_error& e) {
+    std::string why = e.what();
+    if (why.rfind(argument + ": ", 0) == 0) why.erase(0, argument.size() + 2);  // the place says it
+    throw stage::StageError({argument, 0, 0}, why);
+  }
+  if (level.levelFile.empty()) throw stage::StageError({level.scene, 0, 0}, "the scene names no level file");
+  return level.levelFile;
+}
+
 }  // namespace
 
 int checkCommand(int argc, char** argv) {
   if (argc < 2) {
-    std::fprintf(stderr, "usage: platon check level.level...\n");
-    return 2;
+    return usageError("check");
   }
   int errors = 0, warnings = 0;
   for (int i = 1; i < argc; ++i) {
-    const std::string file = argv[i];
+    std::string file = argv[i];
     try {
+      file = levelFileArgument(file);
       const stage::Level level = stage::parseLevel(stage::readLevelFile(file), file);
       const stage::CheckReport report = checkLevel(level, stageFor(level));
       for (const auto& f : report.errors) std::printf("%s: error: %s\n", where(f.where).c_str(), f.message.c_str());
@@ -64,8 +80,7 @@ int netCommand(int argc, char** argv) {
       what = argv[i];
   }
   if (what.empty() || out.empty()) {
-    std::fprintf(stderr, "usage: platon net TETRAHEDRON|HEXAHEDRON|...|level.level -o net.svg\n");
-    return 2;
+    return usageError("net");
   }
   try {
     stage::Stage s;
@@ -74,9 +89,10 @@ int netCommand(int argc, char** argv) {
       s = stage::platonicStage(*solid, 1000);
       title = std::string(stage::solidName(*solid)) + ": " + std::to_string(s.faceCount()) + " faces";
     } else {
-      const stage::Level level = stage::parseLevel(stage::readLevelFile(what), what);
+      const std::string file = levelFileArgument(what);
+      const stage::Level level = stage::parseLevel(stage::readLevelFile(file), file);
       s = stageFor(level);
-      title = what;
+      title = file;
     }
     std::ofstream file(out);
     file << stage::netSvg(s, stage::unfold(s), title);

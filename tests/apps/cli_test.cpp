@@ -299,9 +299,14 @@ TEST(Run, RecordWritesOneReplayPerScenarioEvenForTheSameFileName) {
   const std::string scene = sceneWith(folder, "s");
   scenario(folder, "a/x.lua", scene, 30);
   scenario(folder, "b/x.lua", scene, 90);
-  const Ran r = platon({"run", "-j", "2", "--record", "rec", "a/x.lua", "b/x.lua"}, folder.path());
-  ASSERT_EQ(r.status, 1) << "the record folder does not exist yet: " << r.out;  // refused, not silently lost
-  std::filesystem::create_directories(folder.path("rec"));
+  // The folder is made when missing; a scenario given where the folder goes is refused before
+  // anything runs (it used to become the folder, and every run failed to write its replay).
+  const Ran wrong = platon({"run", "--record", "a/x.lua", "b/x.lua"}, folder.path());
+  EXPECT_EQ(wrong.status, 2) << wrong.out;
+  EXPECT_TRUE(contains(wrong.err, "--record a/x.lua: expected a folder for the replays")) << wrong.err;
+  EXPECT_FALSE(contains(wrong.out, "PASS") || contains(wrong.out, "FAIL")) << wrong.out;
+  std::ofstream(folder.path("file")) << "x";
+  EXPECT_EQ(platon({"run", "--record", "file", "b/x.lua"}, folder.path()).status, 2);
   const Ran ok = platon({"run", "-j", "2", "--record", "rec", "a/x.lua", "b/x.lua"}, folder.path());
   ASSERT_EQ(ok.status, 0) << ok.out << ok.err;
   EXPECT_TRUE(contains(ok.out, "(recorded to rec/x.replay)")) << ok.out;
@@ -337,6 +342,66 @@ TEST(Run, BadOptionValuesAreRefused) {
     EXPECT_TRUE(contains(r.err, "usage: platon run")) << shown << r.err;
     EXPECT_FALSE(contains(r.out, "PASS")) << shown << r.out;
   }
+}
+
+// Every command answers --help (and -h) on stdout with its usage, and `platon --help` lists every
+// command from the same table; an unknown command is refused with the list.
+TEST(Help, EveryCommandAnswersHelpWithItsUsage) {
+  Folder folder("cli_help");
+  const Ran list = platon({"--help"}, folder.path());
+  ASSERT_EQ(list.status, 0) << list.err;
+  std::vector<std::string> names;
+  for (const std::string& line : lines(list.out))
+    if (line.size() > 2 && line.rfind("  ", 0) == 0 && line[2] != '(')
+      names.push_back(line.substr(2, line.find(' ', 2) - 2));
+  for (const char* expected : {"game", "play", "shot", "run", "replay", "scenario", "merge", "check", "net"})
+    EXPECT_NE(std::find(names.begin(), names.end(), expected), names.end()) << expected << " is not listed:\n"
+                                                                            << list.out;
+  for (const std::string& name : names)
+    for (const char* flag : {"--help", "-h"}) {
+      const Ran r = platon({name, flag}, folder.path());
+      EXPECT_EQ(r.status, 0) << name << " " << flag << r.err;
+      EXPECT_EQ(r.out.rfind("usage: platon " + name + " ", 0), 0u) << name << " " << flag << ":\n" << r.out;
+      EXPECT_TRUE(r.err.empty()) << name << r.err;
+    }
+  // check's --help is no file named --help, wherever it stands.
+  EXPECT_EQ(platon({"check", "x.level", "--help"}, folder.path()).status, 0);
+  for (const char* explained : {"--trace N", "--hash-every N", "--record DIR"})
+    EXPECT_TRUE(contains(platon({"replay", "--help"}, folder.path()).out, explained)) << explained;
+  const Ran unknown = platon({"bogus"}, folder.path());
+  EXPECT_EQ(unknown.status, 2);
+  EXPECT_TRUE(contains(unknown.err, "no command 'bogus'") && contains(unknown.err, "  replay ")) << unknown.err;
+}
+
+// A level is its folder, its scene.lua, its .level file or its name under levels/, for every
+// command that takes one (shot's pictures are checked in the render tests' environment).
+TEST(Levels, EveryCommandTakesALevelInEachForm) {
+  Folder folder("cli_levels");
+  const std::string svg = folder.path("net.svg");
+  for (const std::string form : {"levels/tetra_around", "levels/tetra_around/", "levels/tetra_around/scene.lua",
+                                 "levels/tetra_around/tetra_around.level", "tetra_around"}) {
+    const Ran check = platon({"check", form}, kRoot);
+    EXPECT_EQ(check.status, 0) << form << check.out << check.err;
+    EXPECT_TRUE(contains(check.out, "tetra_around.level: ok (4 faces)")) << form << check.out;
+    EXPECT_EQ(platon({"net", form, "-o", svg}, kRoot).status, 0) << form;
+    const Ran play = platon({"play", form, "--headless", "--frames", "5"}, kRoot);
+    EXPECT_EQ(play.status, 0) << form << play.err;
+    EXPECT_TRUE(contains(play.out, "after 5 frames")) << form << play.out;
+  }
+  const Ran none = platon({"check", "no_such_level"}, kRoot);
+  EXPECT_EQ(none.status, 1);
+  EXPECT_TRUE(contains(none.out, "no_such_level: error: no level here")) << none.out;
+}
+
+// --trace tells what finding a level's inputs needs: velocity, on the ground or not, deaths, the
+// switches on and the checkpoint, every N frames.
+TEST(Run, TraceShowsVelocityGroundSwitchesAndCheckpoint) {
+  const Ran r = platon({"run", "--trace", "50", "tests/scenarios/cube_switches_solve.lua"}, kRoot);
+  ASSERT_EQ(r.status, 0) << r.out << r.err;
+  EXPECT_TRUE(contains(r.err, "frame 50: face 0 at (")) << r.err;
+  for (const char* part : {"velocity (9.00, 0.00), grounded", "in the air", "deaths 0", "switches on: none",
+                           "switches on: 1", "no checkpoint", "checkpoint face 0 ("})
+    EXPECT_TRUE(contains(r.err, part)) << part << " is not in:\n" << r.err;
 }
 
 TEST(Play, HeadlessExitsOneAfterAScriptError) {

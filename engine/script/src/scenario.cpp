@@ -460,15 +460,34 @@ std::string hex(uint64_t value) {
   return text;
 }
 
+// One line of --trace: where the player is and how it moves, and what the level holds.
+std::string traceText(const GameStatus& s) {
+  char line[256];
+  std::snprintf(line, sizeof line, "face %u at (%d, %d), velocity (%.2f, %.2f), %s, deaths %d", s.face, s.x, s.y, s.vx,
+                s.vy, s.grounded ? "grounded" : "in the air", s.deaths);
+  std::string out = line;
+  out += ", switches on:";
+  bool any = false;
+  for (const uint32_t tag : s.openTags)
+    if (tag > 1000 && tag < 2000) out += " " + std::to_string(tag - 1000), any = true;
+  if (!any) out += " none";
+  if (s.hasCheckpoint)
+    out += ", checkpoint face " + std::to_string(s.checkpointFace) + " (" + std::to_string(s.checkpointX) + ", " +
+           std::to_string(s.checkpointY) + ")";
+  else
+    out += ", no checkpoint";
+  if (s.won) out += ", won";
+  return out;
+}
+
 // The checks of frame f; "" when they pass.
 // `filesNote`: said before a hash mismatch ("" or why the recorded hashes may no longer hold).
 std::string checkFrame(const Plan& plan, uint64_t f, core::Scene& scene, ScriptSystem* scripts, uint64_t traceEvery,
                        const std::string& path, const std::string& filesNote) {
   const std::string at = "frame " + std::to_string(f) + ": ";
   if (traceEvery > 0 && scripts && f % traceEvery == 0) {
-    const GameStatus s = scripts->status();
-    std::fprintf(stderr, "%s: frame %llu: face %u at (%d, %d)%s\n", path.c_str(), static_cast<unsigned long long>(f),
-                 s.face, s.x, s.y, s.won ? ", won" : "");
+    std::fprintf(stderr, "%s: frame %llu: %s\n", path.c_str(), static_cast<unsigned long long>(f),
+                 traceText(scripts->status()).c_str());
   }
   // Sounds are traced on the frame they play, whatever the trace's period: a scenario expects them there.
   if (traceEvery > 0 && !scene.sounds().thisFrame().empty())

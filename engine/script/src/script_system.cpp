@@ -566,6 +566,18 @@ GameStatus ScriptSystem::readStatus() const {
   s.face = static_cast<physics::MapPartId>(number("face"));
   s.x = static_cast<int32_t>(number("x"));
   s.y = static_cast<int32_t>(number("y"));
+  s.vx = number("vx"), s.vy = number("vy");
+  lua_getfield(L, -1, "grounded");
+  s.grounded = lua_toboolean(L, -1) != 0;
+  lua_pop(L, 1);
+  lua_getfield(L, -1, "checkpointFace");
+  s.hasCheckpoint = lua_isnumber(L, -1) != 0;
+  lua_pop(L, 1);
+  if (s.hasCheckpoint) {
+    s.checkpointFace = static_cast<physics::MapPartId>(number("checkpointFace"));
+    s.checkpointX = static_cast<int32_t>(number("checkpointX"));
+    s.checkpointY = static_cast<int32_t>(number("checkpointY"));
+  }
   lua_getfield(L, -1, "message");
   if (lua_isstring(L, -1)) s.message = lua_tostring(L, -1);
   lua_pop(L, 1);

@@ -17,9 +17,14 @@ struct GameStatus {
   bool won = false;
   uint64_t wonFrame = 0;  // the frame the goal was reached (0: not yet)
   int deaths = 0;
-  uint64_t time = 0;               // frames played on the level (kept across hot reloads)
-  physics::MapPartId face = 0;     // the player's face (its anchor's part)
-  int32_t x = 0, y = 0;            // the player's position on it
+  uint64_t time = 0;            // frames played on the level (kept across hot reloads)
+  physics::MapPartId face = 0;  // the player's face (its anchor's part)
+  int32_t x = 0, y = 0;         // the player's position on it
+  double vx = 0, vy = 0;        // its velocity, units per frame
+  bool grounded = false;        // the player script's own word (its `grounded` field)
+  bool hasCheckpoint = false;   // the last checkpoint touched, where the player comes back
+  physics::MapPartId checkpointFace = 0;
+  int32_t checkpointX = 0, checkpointY = 0;
   std::string message;             // the latest level message
   std::vector<uint32_t> openTags;  // line tags the game lets the player through now (open doors)
 };

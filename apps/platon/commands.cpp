@@ -1,0 +1,121 @@
+#include "commands.h"
+
+#include <cstdio>
+
+#include "game_command.h"
+#include "merge_command.h"
+#include "play_command.h"
+#include "run_command.h"
+#include "shot_command.h"
+#include "stage_commands.h"
+
+namespace platon::app {
+namespace {
+
+// Options shared by run and replay (one parser: runCommand).
+#define PLATON_RUN_OPTIONS                                                                                          \
+  "  -j N             run N files at a time (1..256; default 1)\n"                                                  \
+  "  --timeout S      each file's wall-clock limit in seconds (default 600)\n"                                      \
+  "  --trace N        print the player's state every N frames to stderr while it runs: the frame, face,\n"          \
+  "                   position and velocity (units, units per frame), grounded, deaths, the switches on\n"          \
+  "                   and the last checkpoint (for finding the inputs that finish a level)\n"                       \
+  "  --record DIR     write each file's run as a replay into the folder DIR (made if missing): DIR/<name>.replay\n" \
+  "  --hash-every N   with --record: a state hash every N frames in the replay (default 60; 0: only the last\n"     \
+  "                   frame's), so a replay that stops matching says at which frame\n"                              \
+  "  --junit F        a JUnit XML report in F\n"                                                                    \
+  "  --shard I/N      run only the I-th of N shards (1 <= I <= N); without it, Bazel's, GoogleTest's\n"             \
+  "                   and GitLab's sharding variables are read (docs/shipping.md)\n"                                \
+  "  --shards N       N shards, this one JOB_COMPLETION_INDEX's (a Kubernetes indexed job)\n"                       \
+  "  --durations F    balance the shards by the times in JUnit report F (an earlier run's)\n"                       \
+  "  --list           print this shard's files, one a line, and run nothing\n"
+
+constexpr const char* kLevelArgument =
+    "  LEVEL            a level's folder (levels/cube_intro), its scene.lua, its .level file, or a folder\n"
+    "                   name under levels/ (cube_intro)\n";
+
+const Command kCommands[] = {
+    {"game", "the game in a window: title screen, campaign, settings",
+     "usage: platon game [--campaign levels/campaign.txt] [--progress file] [--settings file] [--record DIR]\n"
+     "  --campaign F     the campaign's level list (default levels/campaign.txt)\n"
+     "  --progress F     the finished levels and best times (default $XDG_DATA_HOME/platon/progress.txt)\n"
+     "  --settings F     volumes, keys, display (default $XDG_CONFIG_HOME/platon/settings.txt)\n"
+     "  --record DIR     write a replay of each level played to DIR/<level>.replay\n"
+     "keys: arrows or WASD move, Space jumps, R restarts, Esc pauses, Tab settings, F5 reloads,\n"
+     "      F3 frame rate, F11 fullscreen, F12 screenshot; a gamepad works too\n",
+     gameCommand},
+    {"play", "one level in a window (or headless), with hot reload",
+     "usage: platon play LEVEL [--frames N] [--input run.replay] [--record out.replay]\n"
+     "                         [--watch] [--fast] [--headless] [--shot out.png]\n"
+     "  --frames N       stop after N frames, N >= 1 (default: at the goal, or never with --watch)\n"
+     "  --input F        the buttons of a recorded run (nothing held without it)\n"
+     "  --record F       write this run's input and hashes to F as a replay (also when stopped by\n"
+     "                   SIGINT or SIGTERM; F is checked before playing)\n"
+     "  --watch          reload the scene when its files are saved\n"
+     "  --fast           do not wait for real time\n"
+     "  --headless       no window, even when the scene names \"rendering\"; exits 1 if a frame had a\n"
+     "                   script error\n"
+     "  --shot F         save the last frame shown to F (PNG) at the end\n"
+     "keys in the window: arrows or WASD move, Space jumps, R restarts, F3 frame rate, F11 fullscreen,\n"
+     "F12 screenshot, Esc quits\n"
+     "SIGINT or SIGTERM ends the play after the frame; if the frame does not end, a second signal, or\n"
+     "3 s after the first ($PLATON_STOP_GRACE seconds if set), ends it at once, without writing the recording\n",
+     playCommand},
+    {"shot", "a level's picture after N frames, as a PNG (offscreen)",
+     "usage: platon shot LEVEL [--frame N] [--size WxH] [--input run.replay] --out file.png\n"
+     "  --frame N        the picture after N frames (default 0: the start)\n"
+     "  --size WxH       pixels (default 1280x720)\n"
+     "  --input F        the buttons of a recorded run\n"
+     "  --out F          the PNG to write\n",
+     shotCommand},
+    {"run", "scenarios and replays, headless: pass or fail each",
+     "usage: platon run [options] scenario.lua|run.replay...\n" PLATON_RUN_OPTIONS, runCommand},
+    {"replay", "replays, headless: each must reproduce its recorded hashes bit for bit",
+     "usage: platon replay [options] run.replay...   (the same as platon run, for replays)\n" PLATON_RUN_OPTIONS,
+     runCommand},
+    {"scenario", "a scenario made from a replay that finishes its level",
+     "usage: platon scenario run.replay [-o scenario.lua]\n"
+     "  -o F             write the scenario to F (default: stdout)\n",
+     scenarioCommand},
+    {"merge", "the JUnit reports of sharded runs joined, each scenario checked to have run once",
+     "usage: platon merge -o all.xml shard.xml...\n"
+     "  joins the JUnit reports of `platon run --shard I/N ... --junit shard.xml` (or another\n"
+     "  runner's sharding); fails, naming it, when a shard is missing or given twice, when the\n"
+     "  reports are of different suites, or when a scenario ran twice or not at all\n",
+     mergeCommand},
+    {"check", "a level's errors and warnings, at file:line:column",
+     "usage: platon check LEVEL...\n"
+     "  prints each error and warning a level designer wants (a start or goal inside a wall, a sealed\n"
+     "  goal, a segment leaving its face, ...); exits 1 when a level has an error\n",
+     checkCommand},
+    {"net", "a solid's or a level's faces unfolded, as an SVG",
+     "usage: platon net SOLID|LEVEL -o net.svg\n"
+     "  SOLID            TETRAHEDRON, HEXAHEDRON, OCTAHEDRON, DODECAHEDRON or ICOSAHEDRON\n",
+     netCommand},
+};
+
+}  // namespace
+
+std::span<const Command> commands() { return kCommands; }
+
+const Command* findCommand(std::string_view name) {
+  for (const Command& c : kCommands)
+    if (name == c.name) return &c;
+  return nullptr;
+}
+
+int usageError(std::string_view name) {
+  if (const Command* c = findCommand(name)) {
+    std::fputs(c->usage, stderr);
+    if (std::string_view(c->usage).find("LEVEL") != std::string_view::npos) std::fputs(kLevelArgument, stderr);
+  }
+  return 2;
+}
+
+void printCommands(bool toStdout) {
+  FILE* out = toStdout ? stdout : stderr;
+  std::fprintf(out, "usage: platon COMMAND [options]   (platon COMMAND --help: its options)\n");
+  for (const Command& c : kCommands) std::fprintf(out, "  %-10s %s\n", c.name, c.summary);
+  std::fprintf(out, "  (none)     the headless demo: a ball rolling on a cube [--frames N]\n");
+}
+
+}  // namespace platon::app

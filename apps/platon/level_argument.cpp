@@ -1,0 +1,64 @@
+#include "level_argument.h"
+
+#include <filesystem>
+#include <stdexcept>
+
+#include "platon/core/data_root.h"
+#include "platon/core/manifest.h"
+
+namespace platon::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+bool endsWith(const std::string& s, const std::string& tail) {
+  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+bool isFile(const std::string& path) {
+  std::error_code error;
+  return fs::is_regular_file(path, error);
+}
+
+// The level file a scene names (a broken manifest says why when the scene is loaded).
+std::string levelFileOf(const std::string& scene) {
+  try {
+    return core::loadManifest(scene).levelFile;
+  } catch (const std::exception&) {
+    return "";
+  }
+}
+
+}  // namespace
+
+LevelArgument levelArgument(const std::string& argument) {
+  LevelArgument out;
+  if (endsWith(argument, ".level")) {
+    out.levelFile = core::resolveDataPath(argument);
+    const std::string beside = fs::path(out.levelFile).parent_path().empty()
+                                   ? std::string("scene.lua")
+                                   : (fs::path(out.levelFile).parent_path() / "scene.lua").string();
+    if (isFile(beside)) out.scene = beside;
+    return out;
+  }
+  if (endsWith(argument, ".lua")) {
+    out.scene = core::resolveDataPath(argument);
+  } else {
+    std::string trimmed = argument;
+    while (trimmed.size() > 1 && trimmed.back() == '/') trimmed.pop_back();
+    for (const std::string& candidate : {trimmed + "/scene.lua", "levels/" + trimmed + "/scene.lua"})
+      if (const std::string found = core::resolveDataPath(candidate); isFile(found)) {
+        out.scene = found;
+        break;
+      }
+    if (out.scene.empty())
+      throw std::runtime_error(argument +
+                               ": no level here (a level is its folder, its scene.lua, its .level file, or a folder "
+                               "name under levels/; looked for " +
+                               trimmed + "/scene.lua and levels/" + trimmed + "/scene.lua)");
+  }
+  out.levelFile = levelFileOf(out.scene);
+  return out;
+}
+
+}  // namespace platon::app
