@@ -21,7 +21,7 @@ Player.GROUND_ACCEL = 0.6   -- per frame, towards the walk speed
 Player.GROUND_BRAKE = 0.9   -- per frame, towards standing still with no input
 Player.AIR_ACCEL = 0.35
 Player.JUMP_SPEED = 11      -- units per frame, straight up from the face's down
-Player.JUMP_CUT = 4         -- releasing jump while rising caps the upward speed here
+Player.JUMP_CUT = 4         -- releasing jump while rising from a jump caps the upward speed here
 Player.COYOTE_FRAMES = 6    -- a jump still works this long after leaving a ledge
 Player.BUFFER_FRAMES = 6    -- a jump pressed this long before landing happens on landing
 Player.GROUND_COS = 0.64    -- a contact whose normal is within ~50 degrees of up is ground
@@ -31,15 +31,16 @@ Player.JUMP_STRETCH = 1.3   -- and at a jump's start
 Player.SQUASH_EASE = 0.7    -- each frame the squash keeps this much of its way back to 1
 
 -- Errors (leaving nothing behind) when the place is taken by a wall or the face does not exist.
-function Player.spawn(_, face, x, y)
+-- `degrees`: the ball's turn (a hot reload puts it back as it was: the ball is a 16-gon).
+function Player.spawn(_, face, x, y, degrees)
   local e = createEntity { circle = Player.RADIUS, sides = 16 }
-  local ok, err = pcall(insert, e, face, x, y, 0)
+  local ok, err = pcall(insert, e, face, x, y, degrees or 0)
   if not ok then
     destroyEntity(e)
     error(err, 2)
   end
   look(e, Player.COLOUR, "ball")  -- the engine draws it, once, however many faces it spans
-  return setmetatable({ entity = e, coyote = 0, buffer = 0, grounded = false, face = face, fall = 0, squash = 1 },
+  return setmetatable({ entity = e, coyote = 0, buffer = 0, grounded = false, jumping = false, face = face, fall = 0, squash = 1 },
                       Player)
 end
 
@@ -69,6 +70,9 @@ function Player.tick(self, input)
     local nx, ny = contact(e, i)
     if -(nx * dx + ny * dy) > Player.GROUND_COS then self.grounded = true end
   end
+  -- Just put back by a hot reload, the entity has no contacts before its first step: it stands
+  -- where it stood, so a reload costs no frame of ground.
+  if self.reloaded then self.grounded, self.reloaded = wasGrounded, nil end
   -- The fall speed the frame before this one's contact stopped it: louder the harder it lands.
   if self.grounded and not wasGrounded and (self.fall or 0) > Player.LAND_SPEED then
     play("land", min(1, self.fall / 12))
@@ -89,12 +93,15 @@ function Player.tick(self, input)
     along = approach(along, 0, Player.GROUND_BRAKE)
   end
 
+  -- The jump cut shortens the player's own jump only: a rise a springboard, a rule or a script
+  -- gave it is its to keep.
+  if self.grounded or fall >= 0 then self.jumping = false end
   if self.buffer > 0 and self.coyote > 0 then
     fall = -Player.JUMP_SPEED
-    self.buffer, self.coyote = 0, 0
+    self.buffer, self.coyote, self.jumping = 0, 0, true
     play("jump")
     self.squash = Player.JUMP_STRETCH
-  elseif not input.jump and fall < -Player.JUMP_CUT then
+  elseif self.jumping and not input.jump and fall < -Player.JUMP_CUT then
     fall = -Player.JUMP_CUT
   end
 

@@ -11,6 +11,7 @@ local engine, setup = ...
 -- Private copies: nothing a script does to a table can swap what this file calls.
 local world, drawApi = platon.world, platon.draw
 local valid, position, velocity, angle, setVelocity = world.valid, world.position, world.velocity, world.angle, world.setVelocity
+local subunit, setSubunit = world.subunit, world.setSubunit
 local destroyEntity, levelStart, faceCount, faceOf = world.destroyEntity, world.levelStart, world.faceCount, world.face
 local band, floor, type, tostring, error, pairs, ipairs, rawget, pcall, setmetatable, getmetatable =
       bit.band, math.floor, type, tostring, error, pairs, ipairs, rawget, pcall, setmetatable, getmetatable
@@ -242,8 +243,8 @@ local function shown(v)
 end
 
 local function checkSwitch(what, id)
-  if type(id) ~= "number" or id ~= floor(id) or id < 0 or id > 999 then
-    error(what .. ": expected a switch id, an integer 0..999, got " .. shown(id), 3)
+  if type(id) ~= "number" or id ~= floor(id) or id < 1 or id > 999 then
+    error(what .. ": expected a switch id, an integer 1..999, got " .. shown(id), 3)
   end
 end
 
@@ -422,7 +423,8 @@ function scene.save()
   if e and valid(e) then
     local face, x, y = position(e)
     local vx, vy = velocity(e)
-    saved.player = { face = face, x = x, y = y, vx = vx, vy = vy, angle = angle(e),
+    local sx, sy = subunit(e)
+    saved.player = { face = face, x = x, y = y, vx = vx, vy = vy, sx = sx, sy = sy, angle = angle(e),
                      state = PlayerModule.save and PlayerModule.save(p) or plainFields(p) }
   end
   saved.level = moduleHook(Level, "save", levelView)
@@ -435,17 +437,19 @@ end
 local function restorePlayer(saved)
   if not saved or not rawget(game, "player") then return false end
   local old = playerEntity()
-  local ok, player = pcall(PlayerModule.spawn, game, saved.face, saved.x, saved.y)
+  local ok, player = pcall(PlayerModule.spawn, game, saved.face, saved.x, saved.y, saved.angle)
   if not ok or type(player) ~= "table" then return false end
   if old and valid(old) then destroyEntity(old) end  -- only now: the new one is in the world
   game.player = player
   setVelocity(rawget(player, "entity"), saved.vx, saved.vy)
+  setSubunit(rawget(player, "entity"), saved.sx or 0, saved.sy or 0)  -- where within its unit: exact
   if PlayerModule.onReload then PlayerModule.onReload(player, saved.state)
   else
     -- Raw: the player object may be a sandboxed script's, with metamethods of its own.
     for k, v in pairs(saved.state or {}) do
       if k ~= "entity" and type(rawget(player, k)) == type(v) then rawset(player, k, v) end
     end
+    rawset(player, "reloaded", true)  -- its entity has no contacts until its first step
   end
   return true
 end

@@ -37,20 +37,6 @@ enum class Screen { Title, Playing, Paused, Complete, Settings };
 const char* const kPauseItems[] = {"Resume", "Restart the level", "Level select", "Settings", "Quit"};
 constexpr int kPauseCount = 5;
 
-// A time in frames as a clock: 1:05.25, or 1:05 as par times are written.
-std::string clockText(uint64_t frames, bool hundredths = true) {
-  char text[32];
-  const uint64_t seconds = frames / 60;
-  std::snprintf(text, sizeof text, "%llu:%02llu", static_cast<unsigned long long>(seconds / 60),
-                static_cast<unsigned long long>(seconds % 60));
-  std::string clock = text;
-  if (hundredths) {
-    std::snprintf(text, sizeof text, ".%02llu", static_cast<unsigned long long>(frames % 60 * 100 / 60));
-    clock += text;
-  }
-  return clock;
-}
-
 // With --record DIR: one replay per level played, DIR/<folder>.replay (then <folder>-2.replay,
 // ... : an existing file is never overwritten). A recording starts with the level's first frame
 // and is written when the level is complete, left (another level, a restart, the title), the
@@ -484,8 +470,7 @@ void Game::draw(double alpha) {
   view.showFps = showFps_;
   view.error = live_->lastError();
   if (screen_ != Screen::Title) {
-    view.hud.push_back(scene.manifest().name + "    " + clockText(st.time) + "    deaths " + std::to_string(st.deaths));
-    if (!st.message.empty()) view.hud.push_back(st.message);
+    view.hud = hudLines(scene, st);
   }
   if (!notice_.empty()) view.hud.push_back(notice_);
   switch (screen_) {

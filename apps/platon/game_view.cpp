@@ -1,6 +1,7 @@
 #include "game_view.h"
 
 #include <cmath>
+#include <cstdio>
 #include <utility>
 
 namespace platon::app {
@@ -8,6 +9,27 @@ namespace platon::app {
 script::GameStatus statusOf(core::Scene& scene) {
   const auto* scripts = dynamic_cast<const script::ScriptSystem*>(scene.findSystem("scripting"));
   return scripts ? scripts->status() : script::GameStatus{};
+}
+
+// A time in frames as a clock: 1:05.25, or 1:05 as par times are written.
+std::string clockText(uint64_t frames, bool hundredths) {
+  char text[32];
+  const uint64_t seconds = frames / 60;
+  std::snprintf(text, sizeof text, "%llu:%02llu", static_cast<unsigned long long>(seconds / 60),
+                static_cast<unsigned long long>(seconds % 60));
+  std::string clock = text;
+  if (hundredths) {
+    std::snprintf(text, sizeof text, ".%02llu", static_cast<unsigned long long>(frames % 60 * 100 / 60));
+    clock += text;
+  }
+  return clock;
+}
+
+std::vector<std::string> hudLines(const core::Scene& scene, const script::GameStatus& status) {
+  std::vector<std::string> lines{scene.manifest().name + "    " + clockText(status.time) + "    deaths " +
+                                 std::to_string(status.deaths) + (status.won ? "    goal reached!" : "")};
+  if (!status.message.empty()) lines.push_back(status.message);
+  return lines;
 }
 
 core::Display* displayOf(core::Scene& scene) {

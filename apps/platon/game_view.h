@@ -3,6 +3,8 @@
 // rate and in any screenshot of frame N; the renderer draws between its last two poses.
 #pragma once
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "feedback.h"
 #include "platon/camera/camera.h"
@@ -16,6 +18,11 @@ namespace platon::app {
 // it is not shown in a window).
 script::GameStatus statusOf(core::Scene& scene);
 core::Display* displayOf(core::Scene& scene);
+// A time in frames as a clock: 1:05.25, or 1:05 as par times are written.
+std::string clockText(uint64_t frames, bool hundredths = true);
+// The heads-up lines of a level being played, the same in the game, `platon play` and
+// `platon shot`: its name, clock and deaths (and "goal reached!"), then its latest message.
+std::vector<std::string> hudLines(const core::Scene& scene, const script::GameStatus& status);
 
 class GameView {
  public:

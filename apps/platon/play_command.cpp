@@ -136,13 +136,7 @@ void show(core::Display& display, core::LiveScene& live, const GameView& gameVie
   core::Scene& scene = live.scene();
   const script::GameStatus status = statusOf(scene);
   core::View view = gameView.view(scene, alpha);
-  const uint64_t seconds = status.time / 60;
-  char line[160];
-  std::snprintf(line, sizeof line, "%s    %llu:%02llu    deaths %d%s", scene.manifest().name.c_str(),
-                static_cast<unsigned long long>(seconds / 60), static_cast<unsigned long long>(seconds % 60),
-                status.deaths, status.won ? "    goal reached!" : "");
-  view.hud.push_back(line);
-  if (!status.message.empty()) view.hud.push_back(status.message);
+  view.hud = hudLines(scene, status);
   view.error = live.lastError();
   view.showFps = showFps;
   display.present(view, gameView.drawing(alpha));

@@ -78,8 +78,7 @@ int shotCommand(int argc, char** argv) {
     }
     core::View v = view.view(live.scene(), 1.0);
     const script::GameStatus st = status();
-    v.hud.push_back(live.scene().manifest().name);
-    if (!st.message.empty()) v.hud.push_back(st.message);
+    v.hud = hudLines(live.scene(), st);
     v.error = live.lastError();
     display.present(v, view.drawing(1.0));
     int w = 0, h = 0;

@@ -9,6 +9,7 @@ EntityId EntityView::id() const { return entity_->id; }
 const Convex& EntityView::shape() const { return entity_->shape; }
 Angle EntityView::angle() const { return entity_->angle; }
 Vec2w EntityView::velocity() const { return entity_->velocityQ16; }
+Vec2w EntityView::subunit() const { return entity_->subunitQ17; }
 int32_t EntityView::angularVelocity() const { return entity_->angularVelocity; }
 bool EntityView::gravityEnabled() const { return entity_->gravity; }
 uint64_t EntityView::userData() const { return entity_->userData; }

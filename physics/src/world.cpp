@@ -129,6 +129,12 @@ void World::setVelocity(EntityId id, Vec2w v) {
                 ") / 65536 exceeds the largest move per frame, 2^30 units");
   impl_->entity(id).velocityQ16 = v;
 }
+void World::setSubunit(EntityId id, Vec2w s) {
+  constexpr int64_t kUnitQ17 = 131072;
+  if (s.x <= -kUnitQ17 || s.x >= kUnitQ17 || s.y <= -kUnitQ17 || s.y >= kUnitQ17)
+    throw Error("subunit (" + std::to_string(s.x) + ", " + std::to_string(s.y) + ") / 131072 is a unit or more");
+  impl_->entity(id).subunitQ17 = s;
+}
 void World::setAngularVelocity(EntityId id, int32_t a) { impl_->entity(id).angularVelocity = a; }
 void World::setGravityEnabled(EntityId id, bool on) { impl_->entity(id).gravity = on; }
 void World::setUserData(EntityId id, uint64_t value) { impl_->entity(id).userData = value; }

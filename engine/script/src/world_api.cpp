@@ -268,6 +268,20 @@ int setVelocity(lua_State* L) {
   return 0;
 }
 
+// The sub-unit motion an entity carries, in 1/131072 units (integers): for copying a body exactly.
+int subunit(lua_State* L) {
+  const physics::Vec2w s = worldOf(L).entity(checkEntity(L, 1)).subunit();
+  lua_pushnumber(L, static_cast<double>(s.x));
+  lua_pushnumber(L, static_cast<double>(s.y));
+  return 2;
+}
+
+int setSubunit(lua_State* L) {
+  const EntityId e = checkEntity(L, 1);
+  worldOf(L).setSubunit(e, {checkInt32(L, 2, -131071, 131071), checkInt32(L, 3, -131071, 131071)});
+  return 0;
+}
+
 int setAngularVelocity(lua_State* L) {
   const EntityId e = checkEntity(L, 1);
   const double perFrame = checkNumber(L, 2);
@@ -506,6 +520,8 @@ constexpr luaL_Reg kWorld[] = {
     {"angle", lua::bound<angle>},
     {"velocity", lua::bound<velocity>},
     {"setVelocity", lua::bound<setVelocity>},
+    {"subunit", lua::bound<subunit>},
+    {"setSubunit", lua::bound<setSubunit>},
     {"setAngularVelocity", lua::bound<setAngularVelocity>},
     {"setGravityEnabled", lua::bound<setGravityEnabled>},
     {"setFilter", lua::bound<setFilter>},

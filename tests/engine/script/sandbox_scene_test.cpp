@@ -182,7 +182,7 @@ TEST(Finding1, ReplaysAndScenariosMayNotNameASceneWithDotDot) {
 
 TEST(Finding2, BadSwitchIdsAreErrorsAtTheCallersLineAndTheGameGoesOn) {
   for (const char* bad :
-       {"{}", "0/0", "setmetatable({}, {__add = function() error('planted') end})", "1.5", "1000", "'3'"}) {
+       {"{}", "0", "0/0", "setmetatable({}, {__add = function() error('planted') end})", "1.5", "1000", "'3'"}) {
     Level level("f2_toggle", std::string("return { tick = function(game, frame)\n  if frame == 5 then game.toggle(") +
                                  bad + ") end\nend }\n");
     const core::SystemRegistry registry = scripting();
@@ -190,7 +190,7 @@ TEST(Finding2, BadSwitchIdsAreErrorsAtTheCallersLineAndTheGameGoesOn) {
     const Played p = play(live, 60);
     ASSERT_EQ(p.errors.size(), 1u) << bad << "\n" << joined(p.errors);
     EXPECT_NE(p.errors[0].find("frame 5: " + level.folder.path("level.lua") +
-                               ":2: toggle: expected a switch id, an integer 0..999"),
+                               ":2: toggle: expected a switch id, an integer 1..999"),
               std::string::npos)
         << p.errors[0];
     EXPECT_GT(p.status.x, 700);  // the player walked on: the game is not broken
@@ -201,7 +201,7 @@ TEST(Finding2, BadSwitchIdsAreErrorsAtTheCallersLineAndTheGameGoesOn) {
   core::LiveScene live(level.scene, registry, false);
   const Played p = play(live, 10);
   ASSERT_EQ(p.errors.size(), 1u) << joined(p.errors);
-  EXPECT_NE(p.errors[0].find("level.lua:1: switchOn: expected a switch id, an integer 0..999, got \"x\""),
+  EXPECT_NE(p.errors[0].find("level.lua:1: switchOn: expected a switch id, an integer 1..999, got \"x\""),
             std::string::npos)
       << p.errors[0];
 }
@@ -1285,6 +1285,47 @@ TEST(OwnPlayer, EveryFieldTheEngineReadsIsCheckedAndSetBack) {
     for (const std::string& e : p.errors) EXPECT_EQ(e.find("stopped"), std::string::npos) << e;
     EXPECT_EQ(p.status.time, 20u) << "the game's clock goes on";
   }
+}
+
+// The jump cut shortens the player's own jump only: a level script that throws the standing player
+// up (a springboard) keeps the whole rise with jump not held, for launch speeds above the cut;
+// a jump tapped for one frame is still cut short.
+TEST(PlayerScript, TheJumpCutShortensOnlyThePlayersOwnJump) {
+  for (const int speed : {6, 10, 15, 22}) {
+    Level level("jump_cut",
+                "local top, y0 = 0\n"
+                "return { tick = function(game, frame)\n"
+                "  local e = game.player()\n"
+                "  local _, _, y = game.world.position(e)\n"
+                "  if frame == 30 then y0 = y game.world.setVelocity(e, 0, " +
+                    std::to_string(speed) +
+                    ") end\n"
+                    "  if frame > 30 then top = math.max(top or y, y) end\n"
+                    "  if frame == 150 then game.message(tostring(top - y0)) end\n"
+                    "end }\n");
+    const core::SystemRegistry registry = scripting();
+    core::LiveScene live(level.scene, registry, false);
+    const Played p = play(live, 150, 0);
+    ASSERT_TRUE(p.errors.empty()) << joined(p.errors);
+    const double rise = std::stod(p.status.message), expected = speed * speed / (2 * 0.35);
+    EXPECT_GT(rise, 0.85 * expected) << "launched at " << speed << " units per frame";
+  }
+  // A jump pressed for one frame and let go: cut to JUMP_CUT, far below a held jump's 11^2 / 0.7.
+  Level level("jump_tap",
+              "local top, y0\n"
+              "return { tick = function(game, frame)\n"
+              "  local _, _, y = game.world.position(game.player())\n"
+              "  if frame == 30 then y0 = y end\n"
+              "  if frame > 30 then top = math.max(top or y, y) end\n"
+              "  if frame == 150 then game.message(tostring(top - y0)) end\n"
+              "end }\n");
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene live(level.scene, registry, false);
+  core::InputEdges edges;
+  for (int f = 1; f <= 150; ++f) ASSERT_FALSE(live.step(edges.next(f == 31 ? InputFrame::bit(Button::Jump) : 0)));
+  const double tapped = std::stod(scriptsOf(live).status().message);
+  EXPECT_GT(tapped, 10);
+  EXPECT_LT(tapped, 0.5 * 11 * 11 / (2 * 0.35));
 }
 
 }  // namespace

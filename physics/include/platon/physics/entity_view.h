@@ -32,6 +32,7 @@ class EntityView {
   const Convex& shape() const;      // as created, unturned
   Angle angle() const;              // the shape's rotation in the entity's (the anchor's) frame
   Vec2w velocity() const;           // 1/65536 units per frame, in the entity's frame
+  Vec2w subunit() const;            // motion below one unit carried to the next frame: 1/131072 units
   int32_t angularVelocity() const;  // binary-angle units per frame
   bool gravityEnabled() const;
   uint64_t userData() const;

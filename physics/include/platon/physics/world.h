@@ -99,6 +99,9 @@ class World {
   size_t entityCount() const;
 
   void setVelocity(EntityId id, Vec2w velocityQ16);
+  // The motion below one unit an entity carries to its next frame (EntityView::subunit), for a copy
+  // of a world that goes on exactly as the original (a hot reload); each part under one unit.
+  void setSubunit(EntityId id, Vec2w subunitQ17);
   void setAngularVelocity(EntityId id, int32_t anglePerFrame);
   void setGravityEnabled(EntityId id, bool enabled);
   void setUserData(EntityId id, uint64_t value);
