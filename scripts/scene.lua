@@ -4,7 +4,7 @@
 --   player       returns the Player module: spawn(game, face, x, y), tick(self, input), draw(self, draw)
 --   progression  returns {start(game), afterStep(game), respawn(game)}: spawning, goal, deaths, checkpoints
 --   level        returns {build(level), start = {face, x, y}, tick(level, frame), ...} (sandboxed)
---   mods         sandboxed scripts that may return {tick(level, frame)}
+--   mods         sandboxed scripts that return what a level script does: {build, tick, draw, save, onReload}
 -- Which of them are trusted the manifest decided (setup.trusted), from what it wrote: only
 -- "scripts/..." names an engine script.
 local engine, setup = ...
@@ -353,6 +353,7 @@ function scene.build(frames)
   end
   if Level.id then run(Level, "build", levelView)
   elseif Level.build then Level.build(levelView) end
+  for i = 1, #Mods do run(Mods[i], "build", levelView) end  -- after the level's, in the manifest's order
 end
 
 function scene.start()
@@ -473,6 +474,7 @@ function scene.draw()
   local p = rawget(game, "player")
   if p and PlayerModule and PlayerModule.draw then PlayerModule.draw(p, setup.trusted.player and drawApi or drawView) end
   if Level.draw then moduleHook(Level, "draw", levelView, drawView) end
+  for i = 1, #Mods do run(Mods[i], "draw", levelView, drawView) end
 end
 
 local status = {}

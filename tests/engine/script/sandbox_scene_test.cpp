@@ -1287,6 +1287,30 @@ TEST(OwnPlayer, EveryFieldTheEngineReadsIsCheckedAndSetBack) {
   }
 }
 
+// A mod has the level script's hooks: its build runs after the level's (and may add lines), its
+// draw after the level's, and the level goes on when the mod fails.
+TEST(Mods, AModBuildsAndDrawsAfterTheLevel) {
+  Level level("mod_hooks", "return { build = function(game) game.message('level built') end }\n",
+              "return {\n"
+              "  build = function(game) game.world.line(game.world.face(1), 100, 2000, 900, 2000)\n"
+              "                         game.message('mod built after the level') end,\n"
+              "  draw = function(game, draw) draw.circle(0, 500, 500, 40, 0xff0000) end,\n"
+              "}\n");
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene live(level.scene, registry, false);
+  EXPECT_EQ(scriptsOf(live).status().message, "mod built after the level");
+  const core::Scene& scene = live.scene();
+  const physics::MapPart& face = scene.world().mapPart(scene.stage()->part(0));
+  bool added = false;
+  for (const physics::Segment& line : face.segments()) added = added || (line.a.x == 100 && line.a.y == 2000);
+  EXPECT_TRUE(added) << "the mod's line is not on face 0";
+  core::DrawList draw(true);
+  scriptsOf(live).draw(scene, draw);
+  bool red = false;
+  for (const core::DrawShape& shape : draw.shapes()) red = red || (shape.color.r == 255 && shape.color.g == 0);
+  EXPECT_TRUE(red) << "the mod's draw drew nothing";
+}
+
 // The jump cut shortens the player's own jump only: a level script that throws the standing player
 // up (a springboard) keeps the whole rise with jump not held, for launch speeds above the cut;
 // a jump tapped for one frame is still cut short.
