@@ -14,6 +14,9 @@ return {
     -- What a player hears: the jumps, the switch's click with the door moving, the edge, the goal.
     sounds = { [158] = "jump", [258] = "jump", [279] = { "switch", "door" }, [423] = "cross", [673] = "goal" },
     face = { [150] = 0, [410] = 0, [440] = 1, [680] = 1 },
+    -- The checkpoint is touched on the way (frame 79), the switch at the jump's top (frame 279).
+    checkpoint = { [60] = false, [100] = { 0, 1113, 1296 }, [680] = { 0, 1113, 1296 } },
+    switches = { [270] = {}, [300] = { 1 } },
     inside = {
       { frame = 190, face = 0, box = { 1950, 1400, 2250, 1550 } },  -- in the air over the pit
       { frame = 290, face = 0, box = { 2900, 1400, 3100, 1550 } },  -- at the jump's top, in the switch

@@ -1,6 +1,7 @@
 #include "platon/script/scenario.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -8,6 +9,7 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string_view>
@@ -172,6 +174,9 @@ struct Plan {
   // expect.sounds: the effects each frame must play (among others it may play), and where each is named.
   std::map<uint64_t, std::vector<std::string>> soundsAt;
   std::map<uint64_t, std::vector<std::string>> soundsWhere;
+  std::map<uint64_t, std::vector<uint32_t>> switchesAt;  // expect.switches: exactly these on (sorted)
+  // expect.checkpoint: the last checkpoint touched, {face, x, y}; false: none yet.
+  std::map<uint64_t, std::optional<std::array<int64_t, 3>>> checkpointAt;
   std::optional<uint64_t> sceneFilesHash;  // a replay's record of the scene's files
   std::string passNote;                    // added to a passing run's summary
 
@@ -180,6 +185,8 @@ struct Plan {
     if (!faceAt.empty()) last = std::max(last, faceAt.rbegin()->first);
     if (!hashAt.empty()) last = std::max(last, hashAt.rbegin()->first);
     if (!soundsAt.empty()) last = std::max(last, soundsAt.rbegin()->first);
+    if (!switchesAt.empty()) last = std::max(last, switchesAt.rbegin()->first);
+    if (!checkpointAt.empty()) last = std::max(last, checkpointAt.rbegin()->first);
     for (const Box& b : inside) last = std::max(last, b.frame);
     return last;
   }
@@ -345,7 +352,7 @@ class PlanReader {
   void readExpect(const DataValue& expect, Plan& plan) const {
     if (expect.kind != DataValue::Kind::Table)
       fail(expect, "expect", "expected a table of checks, got " + core::describeData(expect));
-    knownKeys(expect, "expect", {"goal_by", "deaths", "face", "inside", "hash", "sounds"});
+    knownKeys(expect, "expect", {"goal_by", "deaths", "face", "inside", "hash", "sounds", "switches", "checkpoint"});
     const auto last = static_cast<double>(plan.frames);
     if (const DataValue* goal = field(expect, "goal_by")) plan.goalBy = wholeNumber(*goal, "expect.goal_by", 1, last);
     if (const DataValue* deaths = field(expect, "deaths"))
@@ -392,6 +399,42 @@ class PlanReader {
           plan.soundsAt[f].push_back(names[i]->text);
           plan.soundsWhere[f].push_back(at(*names[i], named));
         }
+      }
+    }
+    if (const DataValue* switches = field(expect, "switches")) {
+      if (switches->kind != DataValue::Kind::Table)
+        fail(*switches, "expect.switches",
+             "expected { [frame] = { id, ... }, ... }, got " + core::describeData(*switches));
+      for (const auto& [key, value] : switches->entries) {
+        const std::string where = "expect.switches[" + core::dataKeyText(key) + "]";
+        const uint64_t f = frameKey(key, value, where, plan);
+        std::vector<uint32_t>& on = plan.switchesAt[f];
+        const std::vector<const DataValue*> ids = list(value, where, "switch ids", DataValue::Kind::Number);
+        for (size_t i = 0; i < ids.size(); ++i)
+          on.push_back(static_cast<uint32_t>(wholeNumber(*ids[i], where + "[" + std::to_string(i + 1) + "]", 1, 999)));
+        std::sort(on.begin(), on.end());
+        if (std::adjacent_find(on.begin(), on.end()) != on.end()) fail(value, where, "a switch id given twice");
+      }
+    }
+    if (const DataValue* checkpoint = field(expect, "checkpoint")) {
+      if (checkpoint->kind != DataValue::Kind::Table)
+        fail(*checkpoint, "expect.checkpoint",
+             "expected { [frame] = { face, x, y } or false, ... }, got " + core::describeData(*checkpoint));
+      for (const auto& [key, value] : checkpoint->entries) {
+        const std::string where = "expect.checkpoint[" + core::dataKeyText(key) + "]";
+        const uint64_t f = frameKey(key, value, where, plan);
+        if (value.kind == DataValue::Kind::Boolean && !value.boolean) {
+          plan.checkpointAt[f] = std::nullopt;
+          continue;
+        }
+        const std::vector<const DataValue*> v =
+            list(value, where, "face, x, y (or false: none)", DataValue::Kind::Number);
+        if (v.size() != 3)
+          fail(value, where, "expected { face, x, y } (or false: none), got " + std::to_string(v.size()) + " values");
+        plan.checkpointAt[f] = std::array<int64_t, 3>{
+            static_cast<int64_t>(wholeNumber(*v[0], where + "[1]", 0, 4095)),
+            static_cast<int64_t>(wholeNumber(*v[1], where + "[2]", -1073741823.0, 1073741823.0)),
+            static_cast<int64_t>(wholeNumber(*v[2], where + "[3]", -1073741823.0, 1073741823.0))};
       }
     }
     if (const DataValue* inside = field(expect, "inside")) {
@@ -493,6 +536,32 @@ std::string checkFrame(const Plan& plan, uint64_t f, core::Scene& scene, ScriptS
   if (traceEvery > 0 && !scene.sounds().thisFrame().empty())
     std::fprintf(stderr, "%s: frame %llu: sounds %s\n", path.c_str(), static_cast<unsigned long long>(f),
                  heardText(scene).c_str());
+  if (auto expected = plan.switchesAt.find(f); expected != plan.switchesAt.end() && scripts) {
+    std::vector<uint32_t> on;
+    for (const uint32_t tag : scripts->status().openTags)
+      if (tag > 1000 && tag < 2000) on.push_back(tag - 1000);
+    std::sort(on.begin(), on.end());
+    auto text = [](const std::vector<uint32_t>& ids) {
+      std::string out = "{";
+      for (size_t i = 0; i < ids.size(); ++i) out += (i ? ", " : " ") + std::to_string(ids[i]);
+      return out + (ids.empty() ? "}" : " }");
+    };
+    if (on != expected->second) return at + "switches on " + text(on) + ", expected " + text(expected->second);
+  }
+  if (auto expected = plan.checkpointAt.find(f); expected != plan.checkpointAt.end() && scripts) {
+    const GameStatus s = scripts->status();
+    auto text = [](bool has, int64_t face, int64_t x, int64_t y) {
+      return has ? "face " + std::to_string(face) + " (" + std::to_string(x) + ", " + std::to_string(y) + ")"
+                 : std::string("none");
+    };
+    const auto& want = expected->second;
+    const bool same = want ? s.hasCheckpoint && s.checkpointFace == (*want)[0] && s.checkpointX == (*want)[1] &&
+                                 s.checkpointY == (*want)[2]
+                           : !s.hasCheckpoint;
+    if (!same)
+      return at + "checkpoint " + text(s.hasCheckpoint, s.checkpointFace, s.checkpointX, s.checkpointY) +
+             ", expected " + (want ? text(true, (*want)[0], (*want)[1], (*want)[2]) : "none");
+  }
   if (auto expected = plan.soundsAt.find(f); expected != plan.soundsAt.end())
     for (const std::string& name : expected->second) {
       const auto& heard = scene.sounds().thisFrame();

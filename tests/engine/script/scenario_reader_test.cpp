@@ -49,7 +49,18 @@ TEST(ScenarioReader, EveryMalformedValueIsRefusedAtItsLineAndColumn) {
        "expect.inside[1]: expected { frame =, face =, box = { x0, y0, x1, y1 } }, got 5"},
       // C2: unknown keys, with the known ones.
       {"  expect = { goal_bye = 10 },", "goal_bye",
-       "expect: unknown key 'goal_bye' (known: goal_by, deaths, face, inside, hash, sounds)"},
+       "expect: unknown key 'goal_bye' (known: goal_by, deaths, face, inside, hash, sounds, switches, checkpoint)"},
+      // Switches and the checkpoint: a list of ids 1..999 once each; { face, x, y } or false.
+      {"  expect = { switches = { [50] = 1 } },", "1", "expect.switches[50]: expected a list of switch ids, got 1"},
+      {"  expect = { switches = { [50] = { 7, 1000 } } },", "1000", "expect.switches[50][2]: 1000 is outside 1..999"},
+      {"  expect = { switches = { [50] = { 2, 2 } } },", "{ 2, 2 }", "expect.switches[50]: a switch id given twice"},
+      {"  expect = { switches = { [500] = { 2 } } },", "500", "expect.switches[500] (a frame): 500 is outside 1..100"},
+      {"  expect = { checkpoint = { [50] = { 0, 1 } } },", "{ 0, 1 }",
+       "expect.checkpoint[50]: expected { face, x, y } (or false: none), got 2 values"},
+      {"  expect = { checkpoint = { [50] = true } },", "true",
+       "expect.checkpoint[50]: expected a list of face, x, y (or false: none), got true"},
+      {"  expect = { checkpoint = { [50] = { 0, 1.5, 2 } } },", "1.5",
+       "expect.checkpoint[50][2]: expected a whole number in -1073741823..1073741823, got 1.5"},
       {"  expcet = { goal_by = 10 },", "expcet",
        "scenario: unknown key 'expcet' (known: scene, frames, input, expect)"},
       {"  framez = 3,", "framez", "scenario: unknown key 'framez'"},
@@ -152,7 +163,8 @@ TEST(ScenarioReader, TopLevelFieldsAreChecked) {
       // Not a literal: the file runs as Lua, and its line of `return` is the position.
       {"return { " + scene + ", frames = 0/0 }", "sc.lua:1: frames: expected a whole number in 1..100000000, got nan"},
       {"local n = 100\nreturn { " + scene + ", frames = n, expect = { goal_bye = 1 } }",
-       "sc.lua:2: expect: unknown key 'goal_bye' (known: goal_by, deaths, face, inside, hash, sounds)"},
+       "sc.lua:2: expect: unknown key 'goal_bye' (known: goal_by, deaths, face, inside, hash, sounds, switches, "
+       "checkpoint)"},
       {"local t = {}\nt[1] = t\nreturn { " + scene + ", frames = 10, input = t }",
        "sc.lua:3: tables nested more than 32 deep"},
       {"return { " + scene + ", frames = 10, input = { print } }", "sc.lua:1: input[1]: expected { hold"},
