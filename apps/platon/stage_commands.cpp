@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <optional>
 #include <string>
 
 #include "commands.h"
@@ -85,17 +86,18 @@ int netCommand(int argc, char** argv) {
   try {
     stage::Stage s;
     std::string title;
+    std::optional<stage::Level> level;
     if (const auto solid = stage::solidFromName(what)) {
       s = stage::platonicStage(*solid, 1000);
       title = std::string(stage::solidName(*solid)) + ": " + std::to_string(s.faceCount()) + " faces";
     } else {
       const std::string file = levelFileArgument(what);
-      const stage::Level level = stage::parseLevel(stage::readLevelFile(file), file);
-      s = stageFor(level);
+      level = stage::parseLevel(stage::readLevelFile(file), file);
+      s = stageFor(*level);
       title = file;
     }
     std::ofstream file(out);
-    file << stage::netSvg(s, stage::unfold(s), title);
+    file << stage::netSvg(s, stage::unfold(s), title, level ? &*level : nullptr);
     if (!file) throw stage::StageError({out, 0, 0}, "cannot write the picture");
   } catch (const stage::StageError& e) {
     std::fprintf(stderr, "%s\n", e.what());

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <tuple>
 
 namespace platon::stage {
 namespace {
@@ -94,7 +95,22 @@ std::string neighbourTable(const Stage& stage) {
   return out.str();
 }
 
-std::string netSvg(const Stage& stage, const std::vector<NetFace>& net, const std::string& title) {
+namespace {
+
+// The game's tag colours (as the renderer's, darker where white paper needs it).
+const char* tagColour(const LevelLine& l) {
+  if (l.tag == kTagHazard) return "#d55e00";
+  if (l.tag == kTagGoal) return "#b8a200";
+  if (l.tag == kTagCheckpoint) return "#009e73";
+  if (l.tag > kTagDoor && l.tag < kTagDoor + 1000) return "#0072b2";
+  if (l.tag > kTagSwitch && l.tag < kTagSwitch + 1000) return "#e69f00";
+  if (l.oneWay) return "#56b4e9";
+  return "#333";
+}
+
+}  // namespace
+
+std::string netSvg(const Stage& stage, const std::vector<NetFace>& net, const std::string& title, const Level* level) {
   Eigen::Vector2d lo = Eigen::Vector2d::Constant(INFINITY), hi = -lo;
   double edge = 0;
   for (size_t f = 0; f < stage.faceCount(); ++f)
@@ -104,7 +120,7 @@ std::string netSvg(const Stage& stage, const std::vector<NetFace>& net, const st
   const double scale = 600.0 / std::max(hi.x() - lo.x(), hi.y() - lo.y());
   const double pad = 30;
   const double width = std::max(720.0, (hi.x() - lo.x()) * scale + 2 * pad),
-               height = (hi.y() - lo.y()) * scale + 2 * pad + 24;
+               height = (hi.y() - lo.y()) * scale + 2 * pad + 24 + (level ? 14 : 0);
   // SVG's y runs down: flip so that the net reads as the faces' own frames do (y up).
   auto px = [&](const Eigen::Vector2d& p) {
     std::ostringstream s;
@@ -156,15 +172,49 @@ std::string netSvg(const Stage& stage, const std::vector<NetFace>& net, const st
     label(xEnd + (xEnd - inset).normalized() * edge * 0.07, "x", 11, "#d22");
     label(yEnd + (yEnd - inset).normalized() * edge * 0.07, "y", 11, "#1a1");
     label(centre + (at.place(0, edge * 0.1) - o), std::to_string(f), 22, "#000");
-    // "down": an arrow from the centre along -y.
-    const Eigen::Vector2d downEnd = centre + (at.place(0, -edge * 0.14) - o);
-    const Eigen::Vector2d downStart = centre + (at.place(0, -edge * 0.02) - o);
-    line(downStart, downEnd, "#36c");
-    head(downStart, downEnd, "#36c");
+    // "down": an arrow from the centre along -y, or along the level's own gravity for this face.
+    Eigen::Vector2d down(0, -1);
+    const LevelFace* levelFace = level && f < level->faces.size() ? &level->faces[f] : nullptr;
+    if (levelFace && levelFace->gravityQ16) {
+      down = Eigen::Vector2d(double(levelFace->gravityQ16->x), double(levelFace->gravityQ16->y));
+      down = down.norm() > 0 ? down.normalized() : Eigen::Vector2d(0, 0);
+    }
+    const Eigen::Vector2d downEnd = centre + (at.place(down.x() * edge * 0.14, down.y() * edge * 0.14) - o);
+    const Eigen::Vector2d downStart = centre + (at.place(down.x() * edge * 0.02, down.y() * edge * 0.02) - o);
+    if (down.norm() > 0) {
+      line(downStart, downEnd, "#36c");
+      head(downStart, downEnd, "#36c");
+    }
+    if (levelFace && levelFace->gravityQ16) {
+      std::ostringstream g;
+      g.precision(3);
+      g << "g " << double(levelFace->gravityQ16->x) / 65536 << " " << double(levelFace->gravityQ16->y) / 65536;
+      label(downEnd + (at.place(down.x() * edge * 0.08, down.y() * edge * 0.08) - o), g.str(), 11, "#36c");
+    }
+    if (!levelFace) continue;
+    for (const LevelLine& l : levelFace->lines) {
+      const std::string pa = px(at.place(l.a.x, l.a.y)), pb = px(at.place(l.b.x, l.b.y));
+      svg << "<line x1=\"" << pa.substr(0, pa.find(',')) << "\" y1=\"" << pa.substr(pa.find(',') + 1) << "\" x2=\""
+          << pb.substr(0, pb.find(',')) << "\" y2=\"" << pb.substr(pb.find(',') + 1) << "\" stroke=\"" << tagColour(l)
+          << "\" stroke-width=\"2\"" << (l.oneWay ? " stroke-dasharray=\"5,3\"" : "") << "/>\n";
+    }
+    for (const auto& [point, name, colour] :
+         {std::tuple{&level->start, "start", "#1a1"}, std::tuple{&level->goal, "goal", "#b8a200"}}) {
+      if (point->face != static_cast<int>(f)) continue;
+      const std::string p = px(at.place(point->position.x, point->position.y));
+      svg << "<circle cx=\"" << p.substr(0, p.find(',')) << "\" cy=\"" << p.substr(p.find(',') + 1)
+          << "\" r=\"5\" fill=\"" << colour << "\"/>\n";
+      label(at.place(point->position.x, point->position.y) + (at.place(0, edge * 0.06) - o), name, 11, colour);
+    }
   }
-  svg << "<text x=\"" << pad << "\" y=\"" << int(height - 8)
+  svg << "<text x=\"" << pad << "\" y=\"" << int(height - 8 - (level ? 14 : 0))
       << "\" font-size=\"11\" fill=\"#555\">face number; x (red) and y (green) from each face's origin, corner 0; "
-         "blue: down (-y)</text>\n</svg>\n";
+      << (level ? "blue: down (g gx gy: the face's own gravity)" : "blue: down (-y)") << "</text>\n";
+  if (level)
+    svg << "<text x=\"" << pad << "\" y=\"" << int(height - 8)
+        << "\" font-size=\"11\" fill=\"#555\">the level's lines by tag (dashed: one-way), its start and its "
+           "goal</text>\n";
+  svg << "</svg>\n";
   return svg.str();
 }
 

@@ -327,6 +327,32 @@ TEST(LevelFormat, TheDocumentedNetsAreTheStages) {
   }
 }
 
+// A level's net draws what the level holds: every line once, coloured by its tag (one-way dashed),
+// the start and the goal on their faces, and a face's own gravity as its "down" with its value.
+TEST(LevelFormat, ALevelsNetShowsItsLinesStartGoalAndGravity) {
+  std::string text = "HEXAHEDRON\n0 600 700\n1 2000 800\n4096\n";
+  text += "%\n0 512 4096 512\n1000 900 1400 900 hazard\n2000 900 2400 900 oneway\n";
+  text += "% gravity 0.5 0\n0 512 4096 512 checkpoint\n%\n%\n%\n%\n";
+  const stage::Level level = stage::parseLevel(text, "t.level");
+  const stage::Stage s = stage::platonicStage(*level.solid, level.size);
+  const std::string svg = stage::netSvg(s, stage::unfold(s), "t", &level);
+  auto count = [&](const std::string& part) {
+    size_t n = 0;
+    for (size_t at = svg.find(part); at != std::string::npos; at = svg.find(part, at + 1)) ++n;
+    return n;
+  };
+  EXPECT_EQ(count("stroke-width=\"2\""), 4u) << "one line element a level line";
+  EXPECT_EQ(count("stroke=\"#d55e00\" stroke-width=\"2\""), 1u) << "the hazard";
+  EXPECT_EQ(count("stroke=\"#009e73\" stroke-width=\"2\""), 1u) << "the checkpoint";
+  EXPECT_EQ(count("stroke-dasharray"), 1u) << "the one-way line";
+  EXPECT_EQ(count("<circle"), 2u) << "start and goal";
+  EXPECT_EQ(count(">start<"), 1u);
+  EXPECT_EQ(count(">goal<"), 1u);
+  EXPECT_EQ(count(">g 0.5 0<"), 1u) << "face 1's gravity";
+  // Without a level the net is the bare solid's, as the docs show it.
+  EXPECT_EQ(stage::netSvg(s, stage::unfold(s), "t").find("<circle"), std::string::npos);
+}
+
 // The tables of docs/level-format.md ("Across each edge") are today's neighbours: what
 // stage::neighbourTable writes, between the doc's markers, for every solid.
 TEST(LevelFormat, TheDocumentedNeighbourTablesAreTheStages) {

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "platon/stage/level.h"
 #include "platon/stage/stage.h"
 
 namespace platon::stage {
@@ -29,7 +30,9 @@ std::vector<NetFace> unfold(const Stage& stage);
 // (docs/level-format.md shows one per Platonic solid; a test checks they are today's).
 std::string neighbourTable(const Stage& stage);
 
-// The net as a self-contained SVG document.
-std::string netSvg(const Stage& stage, const std::vector<NetFace>& net, const std::string& title);
+// The net as a self-contained SVG document. With a level (on this stage), also its lines coloured
+// by tag (one-way lines dashed), its start and goal, and each face's own gravity as its "down".
+std::string netSvg(const Stage& stage, const std::vector<NetFace>& net, const std::string& title,
+                   const Level* level = nullptr);
 
 }  // namespace platon::stage
