@@ -1,7 +1,7 @@
 -- The player (trusted): a small sphere that walks, jumps and falls along its face's "down".
 -- Velocities are in units per frame; the face's gravity gives "down", so when the player crosses
 -- onto another face (and the world turns its velocity into that face's frame), down turns too.
-local game = ...
+local game = ...  -- luacheck: no unused (the game state: this player needs none, a copy of it may)
 -- Private copies: nothing a script does to a table can swap what this file calls.
 local world, draw = platon.world, platon.draw
 local createEntity, insert, destroyEntity = world.createEntity, world.insert, world.destroyEntity
@@ -40,8 +40,8 @@ function Player.spawn(_, face, x, y, degrees)
     error(err, 2)
   end
   look(e, Player.COLOUR, "ball")  -- the engine draws it, once, however many faces it spans
-  return setmetatable({ entity = e, coyote = 0, buffer = 0, grounded = false, jumping = false, face = face, fall = 0, squash = 1 },
-                      Player)
+  return setmetatable({ entity = e, coyote = 0, buffer = 0, grounded = false, jumping = false, face = face, fall = 0,
+                        squash = 1 }, Player)
 end
 
 local function approach(value, target, step)
@@ -79,7 +79,11 @@ function Player.tick(self, input)
     self.squash = Player.LAND_SQUASH
   end
   if self.grounded then self.coyote = Player.COYOTE_FRAMES elseif self.coyote > 0 then self.coyote = self.coyote - 1 end
-  if input.pressed.jump then self.buffer = Player.BUFFER_FRAMES elseif self.buffer > 0 then self.buffer = self.buffer - 1 end
+  if input.pressed.jump then
+    self.buffer = Player.BUFFER_FRAMES
+  elseif self.buffer > 0 then
+    self.buffer = self.buffer - 1
+  end
 
   local vx, vy = velocity(e)
   local along = vx * rx + vy * ry

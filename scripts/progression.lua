@@ -5,7 +5,8 @@ local game = ...
 -- Private copies: nothing a script does to a table can swap what this file calls.
 local world = platon.world
 local play = platon.sound.play
-local position, destroyEntity, valid, refreshPierce = world.position, world.destroyEntity, world.valid, world.refreshPierce
+local position, destroyEntity = world.position, world.destroyEntity
+local valid, refreshPierce = world.valid, world.refreshPierce
 local pcall, tostring, error, rawget, rawset, type = pcall, tostring, error, rawget, rawset, type
 local DOOR = 1000
 -- Taken once, now: a level's own (sandboxed) player script shares `game` and may write to it, so

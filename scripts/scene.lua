@@ -10,12 +10,14 @@
 local engine, setup = ...
 -- Private copies: nothing a script does to a table can swap what this file calls.
 local world, drawApi = platon.world, platon.draw
-local valid, position, velocity, angle, setVelocity = world.valid, world.position, world.velocity, world.angle, world.setVelocity
+local valid, position, velocity, angle = world.valid, world.position, world.velocity, world.angle
+local setVelocity = world.setVelocity
 local subunit, setSubunit = world.subunit, world.setSubunit
 local destroyEntity, levelStart, faceCount, faceOf = world.destroyEntity, world.levelStart, world.faceCount, world.face
 local band, floor, type, tostring, error, pairs, ipairs, rawget, pcall, setmetatable, getmetatable =
       bit.band, math.floor, type, tostring, error, pairs, ipairs, rawget, pcall, setmetatable, getmetatable
-local call, invoke, readonly, disabled, protect = engine.call, engine.invoke, engine.readonly, engine.disabled, engine.protect
+local call, invoke, readonly = engine.call, engine.invoke, engine.readonly
+local disabled, protect = engine.disabled, engine.protect
 
 -- Level scripts and mods are sandboxed: their functions run with the JIT off (so the hooks can
 -- stop any loop), each call through engine.call, a C function with its own error boundary and the
@@ -33,7 +35,8 @@ local function sandboxedModule(t, path, id)
   end
   local start = rawget(t, "start")
   if type(start) == "table" then
-    m.start = { face = tonumber(rawget(start, "face")), x = tonumber(rawget(start, "x")), y = tonumber(rawget(start, "y")) }
+    m.start = { face = tonumber(rawget(start, "face")), x = tonumber(rawget(start, "x")),
+                y = tonumber(rawget(start, "y")) }
   end
   return m
 end
@@ -121,7 +124,8 @@ end
 -- direct slots (a loop over names costs a hash lookup each).
 local function decode(t, bits)
   t.left, t.right, t.up, t.down = band(bits, 1) ~= 0, band(bits, 2) ~= 0, band(bits, 4) ~= 0, band(bits, 8) ~= 0
-  t.jump, t.restart, t.pause, t.reload = band(bits, 16) ~= 0, band(bits, 32) ~= 0, band(bits, 64) ~= 0, band(bits, 128) ~= 0
+  t.jump, t.restart = band(bits, 16) ~= 0, band(bits, 32) ~= 0
+  t.pause, t.reload = band(bits, 64) ~= 0, band(bits, 128) ~= 0
 end
 
 local game = {
@@ -342,7 +346,9 @@ function scene.build(frames)
   Progression = (setup.trusted.progression and progression or sandboxedFunctions(progression, progressionId,
                                                                                   GAME_CHECKS)) or {}
   game.progression = sealed(Progression, "game.progression")
-  for _, key in ipairs { "input", "levelApi", "Player", "progression", "level" } do engineTables[key] = rawget(game, key) end
+  for _, key in ipairs { "input", "levelApi", "Player", "progression", "level" } do
+    engineTables[key] = rawget(game, key)
+  end
   for key, rule in pairs(GAME_FIELDS) do
     if rule[1](rawget(game, key)) then gameGood[key] = rawget(game, key) end
   end
@@ -381,7 +387,8 @@ function scene.beforeStep(held, pressed)
     -- Lost (nothing a sandbox may do destroys it): once, back at the last checkpoint.
     game.player = nil
     Progression.respawn(game)
-    game.message = rawget(game, "player") and "the player was lost: back at the last checkpoint" or "the player was lost"
+    game.message = rawget(game, "player") and "the player was lost: back at the last checkpoint"
+                   or "the player was lost"
     protectPlayer()
   end
   local p = rawget(game, "player")
@@ -464,7 +471,9 @@ function scene.restore(saved)
   if newMessage ~= "" then game.message = newMessage end
   if Progression.onReload then Progression.onReload(game) end
   game.restoredPlayer = restorePlayer(saved.player)
-  if not game.restoredPlayer and saved.player then game.message = "reloaded: the player's place is gone, back to the start" end
+  if not game.restoredPlayer and saved.player then
+    game.message = "reloaded: the player's place is gone, back to the start"
+  end
   protectPlayer()
   moduleHook(Level, "onReload", levelView, saved.level)
   for i = 1, #Mods do run(Mods[i], "onReload", levelView, saved.mods[i]) end
@@ -472,7 +481,9 @@ end
 
 function scene.draw()
   local p = rawget(game, "player")
-  if p and PlayerModule and PlayerModule.draw then PlayerModule.draw(p, setup.trusted.player and drawApi or drawView) end
+  if p and PlayerModule and PlayerModule.draw then
+    PlayerModule.draw(p, setup.trusted.player and drawApi or drawView)
+  end
   if Level.draw then moduleHook(Level, "draw", levelView, drawView) end
   for i = 1, #Mods do run(Mods[i], "draw", levelView, drawView) end
 end
@@ -488,9 +499,12 @@ function scene.status()
   end
   local p = rawget(game, "player")
   status.grounded = type(p) == "table" and rawget(p, "grounded") == true
+  -- Raw reads: the tables may have been left by a script, with metamethods of its own.
   local c = rawget(game, "checkpoint")
-  if type(c) == "table" then
-    status.checkpointFace, status.checkpointX, status.checkpointY = c.face, c.x, c.y
+  local cf, cx, cy
+  if type(c) == "table" then cf, cx, cy = rawget(c, "face"), rawget(c, "x"), rawget(c, "y") end
+  if type(cf) == "number" and type(cx) == "number" and type(cy) == "number" then
+    status.checkpointFace, status.checkpointX, status.checkpointY = cf, cx, cy
   else
     status.checkpointFace = nil
   end

@@ -1311,6 +1311,30 @@ TEST(Mods, AModBuildsAndDrawsAfterTheLevel) {
   EXPECT_TRUE(red) << "the mod's draw drew nothing";
 }
 
+// The globals luacheck lints a level's scripts against (.luacheckrc, stds.sandbox) are exactly
+// those a sandboxed script finds in _G: a global added to or taken from the sandbox fails here
+// until the lint knows it too.
+TEST(Lint, TheSandboxGlobalsAreTheLintsGlobals) {
+  Level level("lint_globals",
+              "local names = {}\n"
+              "for k in pairs(_G) do names[#names + 1] = k end\n"
+              "table.sort(names)\n"
+              "return { build = function(game) game.message(table.concat(names, ',')) end }\n");
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene live(level.scene, registry, false);
+  const std::string found = scriptsOf(live).status().message;
+  const std::string rc = fileText(std::string(PLATON_SOURCE_ROOT) + "/.luacheckrc");
+  const size_t start = rc.find("stds.sandbox"), open = rc.find("read_globals = {", start), close = rc.find('}', open);
+  ASSERT_NE(start, std::string::npos) << ".luacheckrc has no stds.sandbox";
+  std::vector<std::string> listed;
+  for (size_t q = rc.find('"', open); q < close; q = rc.find('"', rc.find('"', q + 1) + 1))
+    listed.push_back(rc.substr(q + 1, rc.find('"', q + 1) - q - 1));
+  std::sort(listed.begin(), listed.end());
+  std::string lint;
+  for (const std::string& name : listed) lint += (lint.empty() ? "" : ",") + name;
+  EXPECT_EQ(lint, found) << "the sandbox's globals and .luacheckrc's stds.sandbox differ";
+}
+
 // The jump cut shortens the player's own jump only: a level script that throws the standing player
 // up (a springboard) keeps the whole rise with jump not held, for launch speeds above the cut;
 // a jump tapped for one frame is still cut short.
