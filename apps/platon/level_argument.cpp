@@ -11,11 +11,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-bool endsWith(const std::string& s, const std::string& tail) {
-  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
-}
-
-bool isFile(const std::string& path) {
+bool regularFile(const std::string& path) {
   std::error_code error;
   return fs::is_regular_file(path, error);
 }
@@ -33,21 +29,21 @@ std::string levelFileOf(const std::string& scene) {
 
 LevelArgument levelArgument(const std::string& argument) {
   LevelArgument out;
-  if (endsWith(argument, ".level")) {
+  if (argument.ends_with(".level")) {
     out.levelFile = core::resolveDataPath(argument);
     const std::string beside = fs::path(out.levelFile).parent_path().empty()
                                    ? std::string("scene.lua")
                                    : (fs::path(out.levelFile).parent_path() / "scene.lua").string();
-    if (isFile(beside)) out.scene = beside;
+    if (regularFile(beside)) out.scene = beside;
     return out;
   }
-  if (endsWith(argument, ".lua")) {
+  if (argument.ends_with(".lua")) {
     out.scene = core::resolveDataPath(argument);
   } else {
     std::string trimmed = argument;
     while (trimmed.size() > 1 && trimmed.back() == '/') trimmed.pop_back();
     for (const std::string& candidate : {trimmed + "/scene.lua", "levels/" + trimmed + "/scene.lua"})
-      if (const std::string found = core::resolveDataPath(candidate); isFile(found)) {
+      if (const std::string found = core::resolveDataPath(candidate); regularFile(found)) {
         out.scene = found;
         break;
       }
