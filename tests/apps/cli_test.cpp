@@ -394,13 +394,13 @@ TEST(Levels, EveryCommandTakesALevelInEachForm) {
 }
 
 // --trace tells what finding a level's inputs needs: velocity, on the ground or not, deaths, the
-// switches on and the checkpoint, every N frames.
+// switches on and the checkpoint, every N frames and on the last (here the goal's).
 TEST(Run, TraceShowsVelocityGroundSwitchesAndCheckpoint) {
   const Ran r = platon({"run", "--trace", "50", "tests/scenarios/cube_switches_solve.lua"}, kRoot);
   ASSERT_EQ(r.status, 0) << r.out << r.err;
   EXPECT_TRUE(contains(r.err, "frame 50: face 0 at (")) << r.err;
   for (const char* part : {"velocity (9.00, 0.00), grounded", "in the air", "deaths 0", "switches on: none",
-                           "switches on: 1", "no checkpoint", "checkpoint face 0 ("})
+                           "switches on: 1", "no checkpoint", "checkpoint face 0 (", ", won"})
     EXPECT_TRUE(contains(r.err, part)) << part << " is not in:\n" << r.err;
 }
 

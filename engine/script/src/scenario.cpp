@@ -643,6 +643,10 @@ ScenarioResult runPlan(const std::string& path, const std::function<Plan()>& mak
       // With the goal reached there is nothing left to see, unless a check waits for a later frame.
       if (failure.empty() && plan.goalBy && f >= plan.lastCheck() && scripts && scripts->status().won) break;
     }
+    // The last frame played is traced too (the goal's, a failure's), whatever the period.
+    if (options.traceEvery > 0 && scripts && result.frames % options.traceEvery != 0)
+      std::fprintf(stderr, "%s: frame %llu: %s\n", path.c_str(), static_cast<unsigned long long>(result.frames),
+                   traceText(scripts->status()).c_str());
     keepRecording();
     result.hash = hex(scene->world().stateHash());
     if (scripts) result.status = scripts->status();
