@@ -70,9 +70,6 @@ function Player.tick(self, input)
     local nx, ny = contact(e, i)
     if -(nx * dx + ny * dy) > Player.GROUND_COS then self.grounded = true end
   end
-  -- Just put back by a hot reload, the entity has no contacts before its first step: it stands
-  -- where it stood, so a reload costs no frame of ground.
-  if self.reloaded then self.grounded, self.reloaded = wasGrounded, nil end
   -- The fall speed the frame before this one's contact stopped it: louder the harder it lands.
   if self.grounded and not wasGrounded and (self.fall or 0) > Player.LAND_SPEED then
     play("land", min(1, self.fall / 12))

@@ -457,7 +457,6 @@ local function restorePlayer(saved)
     for k, v in pairs(saved.state or {}) do
       if k ~= "entity" and type(rawget(player, k)) == type(v) then rawset(player, k, v) end
     end
-    rawset(player, "reloaded", true)  -- its entity has no contacts until its first step
   end
   return true
 end

@@ -27,7 +27,7 @@ std::string clockText(uint64_t frames, bool hundredths) {
 
 std::vector<std::string> hudLines(const core::Scene& scene, const script::GameStatus& status) {
   std::vector<std::string> lines{scene.manifest().name + "    " + clockText(status.time) + "    deaths " +
-                                 std::to_string(status.deaths) + (status.won ? "    goal reached!" : "")};
+                                 std::to_string(status.deaths)};
   if (!status.message.empty()) lines.push_back(status.message);
   return lines;
 }

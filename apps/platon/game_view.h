@@ -21,7 +21,8 @@ core::Display* displayOf(core::Scene& scene);
 // A time in frames as a clock: 1:05.25, or 1:05 as par times are written.
 std::string clockText(uint64_t frames, bool hundredths = true);
 // The heads-up lines of a level being played, the same in the game, `platon play` and
-// `platon shot`: its name, clock and deaths (and "goal reached!"), then its latest message.
+// `platon shot`: its name, clock and deaths, then its latest message (the game's says "goal
+// reached" when it is).
 std::vector<std::string> hudLines(const core::Scene& scene, const script::GameStatus& status);
 
 class GameView {

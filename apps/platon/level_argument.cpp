@@ -16,15 +16,6 @@ bool regularFile(const std::string& path) {
   return fs::is_regular_file(path, error);
 }
 
-// The level file a scene names (a broken manifest says why when the scene is loaded).
-std::string levelFileOf(const std::string& scene) {
-  try {
-    return core::loadManifest(scene).levelFile;
-  } catch (const std::exception&) {
-    return "";
-  }
-}
-
 }  // namespace
 
 LevelArgument levelArgument(const std::string& argument) {
@@ -53,7 +44,7 @@ LevelArgument levelArgument(const std::string& argument) {
                                "name under levels/; looked for " +
                                trimmed + "/scene.lua and levels/" + trimmed + "/scene.lua)");
   }
-  out.levelFile = levelFileOf(out.scene);
+  out.levelFile = core::loadManifest(out.scene).levelFile;  // a broken manifest says why, at its place
   return out;
 }
 

@@ -11,7 +11,8 @@ struct LevelArgument {
   std::string levelFile;  // the .level file the scene names, or the one given ("" when none)
 };
 
-// Throws std::runtime_error naming what it looked for when the argument is none of these.
+// Throws std::runtime_error naming what it looked for when the argument is none of these, and the
+// manifest's own error (file:line:column) when the scene's manifest is broken.
 LevelArgument levelArgument(const std::string& argument);
 
 }  // namespace platon::app
