@@ -8,7 +8,7 @@ local play = platon.sound.play
 local position, destroyEntity = world.position, world.destroyEntity
 local valid, refreshPierce = world.valid, world.refreshPierce
 local pcall, tostring, error, rawget, rawset, type = pcall, tostring, error, rawget, rawset, type
-local DOOR = 1000
+local DOOR = platon.tags.door  -- door n is DOOR + n
 -- Taken once, now: a level's own (sandboxed) player script shares `game` and may write to it, so
 -- nothing here calls a function found in `game` later, and what it reads there it reads raw.
 local Player = game.Player

@@ -25,6 +25,63 @@ local disabled, protect = engine.disabled, engine.protect
 -- read raw, once, so no metamethod of theirs ever runs outside a sandboxed call.
 local HOOKS = { "build", "tick", "draw", "save", "onReload" }
 
+-- A mod's line tags (docs/scripting.md, "Tags"): tags = { word = { look, passage, handlers } }.
+-- Read raw, in word order (a table's own order differs between runs); checked here, so that a
+-- wrong field is the mod's error by name. The look and passage go to the engine's tag table
+-- (ScriptSystem::declareTags), the handlers stay here (composedRules).
+local TAG_HANDLERS = { "contact", "beginContact", "overContact", "endContact", "touchContact" }
+local MAX_TAGS = 64  -- a mod's own words
+
+local function tagsOf(m, tags, path)
+  if tags == nil then return end
+  if type(tags) ~= "table" then error(path .. ": tags: expected a table of tag words, got a " .. type(tags), 0) end
+  local words = {}
+  for word in next, tags do
+    if type(word) ~= "string" then error(path .. ": tags: the keys are tag words, got a " .. type(word), 0) end
+    words[#words + 1] = word
+    if #words > MAX_TAGS then error(path .. ": tags: more than " .. MAX_TAGS .. " words", 0) end
+  end
+  table.sort(words)
+  m.declared, m.handlers = {}, {}
+  for _, word in ipairs(words) do
+    local t = rawget(tags, word)
+    local function bad(field, expected, v)
+      error(path .. ": tags." .. word .. (field and "." .. field or "") .. ": expected " .. expected .. ", got "
+            .. (type(v) == "string" and string.format("%q", v:sub(1, 40)) or "a " .. type(v)), 0)
+    end
+    if type(t) ~= "table" then bad(nil, "a table { color =, passable =, contact = ... }", t) end
+    local d = { owner = path, word = word, look = false, passage = "wall", r = 204, g = 121, b = 167 }
+    local h = {}
+    for field, v in next, t do
+      if field == "color" then
+        local r, g, b
+        if type(v) == "string" then r, g, b = v:match("^#(%x%x)(%x%x)(%x%x)$") end
+        if not r then bad(field, 'a colour "#rrggbb"', v) end
+        d.r, d.g, d.b, d.look = tonumber(r, 16), tonumber(g, 16), tonumber(b, 16), true
+      elseif field == "glow" or field == "spikes" or field == "numbered" then
+        if type(v) ~= "boolean" then bad(field, "true or false", v) end
+        d[field], d.look = v, true
+      elseif field == "passable" then
+        if type(v) == "boolean" then d.passage = v and "through" or "wall"
+        elseif type(v) == "function" then d.passage, h.pierce = "door", v
+        else bad(field, "true, false or a function(game, entity, tag, kind) deciding each contact", v) end
+        d.look = true
+      else
+        local known = false
+        for _, name in ipairs(TAG_HANDLERS) do known = known or name == field end
+        if not known then
+          bad(field, "one of color, glow, spikes, numbered, passable, " .. table.concat(TAG_HANDLERS, ", "),
+              field)
+        end
+        if type(v) ~= "function" then bad(field, "a function", v) end
+        h[field] = v
+      end
+    end
+    m.declared[#m.declared + 1] = d
+    m.handlers[word] = h
+  end
+end
+
 local function sandboxedModule(t, path, id)
   if t == nil then return { id = id, name = path } end
   if type(t) ~= "table" then error(path .. ": a level script or mod returns a table", 0) end
@@ -38,6 +95,7 @@ local function sandboxedModule(t, path, id)
     m.start = { face = tonumber(rawget(start, "face")), x = tonumber(rawget(start, "x")),
                 y = tonumber(rawget(start, "y")) }
   end
+  tagsOf(m, rawget(t, "tags"), path)
   return m
 end
 
@@ -325,6 +383,28 @@ end
 
 local scene = {}
 
+-- The mods, loaded once, before the level file is read: their tags are words it may write.
+local modsLoaded = false
+local function loadMods()
+  if modsLoaded then return end
+  modsLoaded = true
+  Mods = {}
+  for i, path in ipairs(setup.mods) do
+    local mod, id = load(path, false, levelView)
+    Mods[i] = sandboxedModule(mod, path, id)
+  end
+end
+
+-- What the mods declare of their tags, in the manifest's order, for the engine's tag table.
+function scene.declare()
+  loadMods()
+  local out = {}
+  for _, m in ipairs(Mods) do
+    for _, d in ipairs(m.declared or {}) do out[#out + 1] = d end
+  end
+  return out
+end
+
 -- `frames`: the level's frames played so far, carried over a hot reload (0 on a fresh load), so
 -- that the new version's build sees game.frame() where the old one was.
 function scene.build(frames)
@@ -352,24 +432,94 @@ function scene.build(frames)
   for key, rule in pairs(GAME_FIELDS) do
     if rule[1](rawget(game, key)) then gameGood[key] = rawget(game, key) end
   end
-  Mods = {}
-  for i, path in ipairs(setup.mods) do
-    local mod, id = load(path, false, levelView)
-    Mods[i] = sandboxedModule(mod, path, id)
-  end
+  loadMods()
   if Level.id then run(Level, "build", levelView)
   elseif Level.build then Level.build(levelView) end
   for i = 1, #Mods do run(Mods[i], "build", levelView) end  -- after the level's, in the manifest's order
 end
 
-function scene.start()
-  if setup.trusted.rules then
-    local rules = load(setup.rules, true, game)
-    if rules then engine.setRules(rules, nil, setup.rules) end
-  else
-    local rules, id = load(setup.rules, false, rulesView)
-    if rules then engine.setRules(rules, id, setup.rules) end
+-- The rules as the world calls them when mods declare tags or handlers: the rules script's
+-- callback first, then each mod's handler for the contact's tag, in the manifest's order; the
+-- last answer that is not nil is the contact's. Whether a line is passed is its tag's owner's
+-- say: the rules' for the game's tags, a mod's `passable` for its own.
+local function composedRules(rules, rulesId)
+  local tags, kinds = platon.tags, platon.tagKinds
+  local byTag, passOf, any = {}, {}, false  -- a kind's number -> its handlers; its own passage
+  for _, m in ipairs(Mods) do
+    for _, d in ipairs(m.declared or {}) do
+      any = true
+      local h = m.handlers[d.word]
+      local n = tags[d.word]
+      if d.look then passOf[n] = h.pierce and { m = m, f = h.pierce } or d.passage == "through" end
+      local list = byTag[n] or {}
+      byTag[n] = list
+      list[#list + 1] = { m = m, h = h }
+    end
   end
+  if not any then return nil end
+  local ranges = {}  -- the numbered kinds that have handlers or a passage of a mod's
+  for _, k in ipairs(kinds) do
+    if k.count > 0 and (byTag[k.number] or passOf[k.number] ~= nil) then
+      ranges[#ranges + 1] = { k.number, k.number + k.count }
+    end
+  end
+  local function kindOf(tag)
+    if byTag[tag] or passOf[tag] ~= nil then return tag end
+    for i = 1, #ranges do
+      local r = ranges[i]
+      if tag > r[1] and tag <= r[2] then return r[1] end
+    end
+    return tag
+  end
+  local function ruleOf(name)  -- the rules' callback, raw, called as its script's
+    local f = rules and rawget(rules, name)
+    if type(f) ~= "function" or not rulesId then return type(f) == "function" and f or nil end
+    return function(...)
+      local ok, r = call(rulesId, f, ...)
+      if ok then return r end
+    end
+  end
+  local out = {}
+  local rulesPierce = ruleOf("pierce")
+  out.pierce = function(entity, tag, kind, part, line)
+    local own = passOf[kindOf(tag)]
+    if own == nil then
+      if rulesPierce then return rulesPierce(entity, tag, kind, part, line) end
+      return kind == "warp"
+    end
+    if own == true or own == false then return own end
+    local ok, r = call(own.m.id, own.f, levelView, entity, tag, kind, part, line)
+    return ok and r == true
+  end
+  for _, name in ipairs(TAG_HANDLERS) do
+    local rule = ruleOf(name)
+    out[name] = function(entity, tag, ...)
+      local answer
+      if rule then answer = rule(entity, tag, ...) end
+      local list = byTag[kindOf(tag)]
+      if list then
+        for i = 1, #list do
+          local f = list[i].h[name]
+          if f then
+            local ok, a = call(list[i].m.id, f, levelView, entity, tag, ...)
+            if ok and a ~= nil then answer = a end
+          end
+        end
+      end
+      return answer
+    end
+  end
+  out.crushed = ruleOf("crushed")
+  return out
+end
+
+function scene.start()
+  local rules, id
+  if setup.trusted.rules then rules = load(setup.rules, true, game)
+  else rules, id = load(setup.rules, false, rulesView) end
+  local composed = composedRules(rules, id)
+  if composed then engine.setRules(composed, nil, setup.rules)
+  elseif rules then engine.setRules(rules, id, setup.rules) end
   if Progression.start then Progression.start(game) end
   protectPlayer()
 end
@@ -507,11 +657,11 @@ function scene.status()
   else
     status.checkpointFace = nil
   end
-  -- The doors the switches hold open (tag 1000 + n), for the renderer, in increasing order.
+  -- The doors the switches hold open (door n), for the renderer, in increasing order.
   local open = status.openTags or {}
   for i = #open, 1, -1 do open[i] = nil end
-  local on = game.openSwitches
-  for i = 1, #on do open[i] = 1000 + on[i] end
+  local on, door = game.openSwitches, platon.tags.door
+  for i = 1, #on do open[i] = door + on[i] end
   status.openTags = open
   return status
 end

@@ -31,8 +31,9 @@ stage::Stage stageFor(const stage::Level& level) {
   return core::meshStageOf(level, *meshes->meshSource());
 }
 
-// The level file of a level given in any of its forms (level_argument.h).
-std::string levelFileArgument(const std::string& argument) {
+// A level given in any of its forms (level_argument.h), read with its scene's tag words (the
+// game's and its mods').
+stage::Level levelOfArgument(const std::string& argument) {
   LevelArgument level;
   try {
     level = levelArgument(argument);
@@ -42,7 +43,17 @@ std::string levelFileArgument(const std::string& argument) {
     throw stage::StageError({argument, 0, 0}, why);
   }
   if (level.levelFile.empty()) throw stage::StageError({level.scene, 0, 0}, "the scene names no level file");
-  return level.levelFile;
+  std::shared_ptr<const stage::TagTable> tags = stage::gameTags();
+  if (!level.scene.empty()) {
+    try {
+      tags = core::sceneTags(level.scene, engineRegistry(Presentation::Headless));
+    } catch (const stage::StageError&) {
+      throw;
+    } catch (const std::exception& e) {  // a mod that declares its tags wrongly
+      throw stage::StageError({level.scene, 0, 0}, e.what());
+    }
+  }
+  return stage::parseLevel(stage::readLevelFile(level.levelFile), level.levelFile, tags);
 }
 
 }  // namespace
@@ -55,8 +66,8 @@ int checkCommand(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     std::string file = argv[i];
     try {
-      file = levelFileArgument(file);
-      const stage::Level level = stage::parseLevel(stage::readLevelFile(file), file);
+      const stage::Level level = levelOfArgument(file);
+      file = level.file;
       const stage::CheckReport report = checkLevel(level, stageFor(level));
       for (const auto& f : report.errors) std::printf("%s: error: %s\n", where(f.where).c_str(), f.message.c_str());
       for (const auto& f : report.warnings) std::printf("%s: warning: %s\n", where(f.where).c_str(), f.message.c_str());
@@ -91,10 +102,9 @@ int netCommand(int argc, char** argv) {
       s = stage::platonicStage(*solid, 1000);
       title = std::string(stage::solidName(*solid)) + ": " + std::to_string(s.faceCount()) + " faces";
     } else {
-      const std::string file = levelFileArgument(what);
-      level = stage::parseLevel(stage::readLevelFile(file), file);
+      level = levelOfArgument(what);
       s = stageFor(*level);
-      title = file;
+      title = level->file;
     }
     std::ofstream file(out);
     file << stage::netSvg(s, stage::unfold(s), title, level ? &*level : nullptr);

@@ -1,14 +1,17 @@
--- The game's contact rules (trusted). Line tags:
---   0          plain solid wall or floor
---   1          hazard: touching it kills the player
---   2          goal: a trigger line (passable); the player entering it wins
---   3          checkpoint: a trigger line; entering it moves the restart point there
---   1000 + n   door n: solid while switch n is off, open while it is on
---   2000 + n   switch n: a trigger line; entering it toggles switch n
--- Warp lines (the solid's edges) always pierce. One-way lines are a line kind, not a tag.
+-- The game's contact rules (trusted), for the game's line tags (their numbers and looks are the
+-- engine's tag table, engine/stage/src/tags.cpp; platon.tags has them by word):
+--   solid       plain wall or floor
+--   hazard      touching it kills the player
+--   goal        a trigger line (passable); the player entering it wins
+--   checkpoint  a trigger line; entering it moves the restart point there
+--   door n      solid while switch n is off, open while it is on
+--   switch n    a trigger line; entering it toggles switch n
+-- Warp lines (the solid's edges) always pierce. One-way lines are a line kind, not a tag. A mod
+-- adds its own tags, and handlers to these, without touching this file (docs/scripting.md, "Tags").
 local game = ...
-local HAZARD, GOAL, CHECKPOINT = 1, 2, 3
-local DOOR, SWITCH = 1000, 2000
+local tags = platon.tags
+local HAZARD, GOAL, CHECKPOINT = tags.hazard, tags.goal, tags.checkpoint
+local DOOR, SWITCH = tags.door, tags.switch
 local play = platon.sound.play
 
 local function isPlayer(entity) return game.player ~= nil and entity == game.player.entity end

@@ -18,7 +18,7 @@ namespace {
 class TriggerRules final : public physics::Rules {
  public:
   bool pierce(physics::EntityId, const physics::LineRef& line) override {
-    return line.kind == physics::LineKind::Warp || stage::playerPassesThrough(line.tag);
+    return line.kind == physics::LineKind::Warp || stage::gameTags()->playerPasses(line.tag);
   }
 };
 

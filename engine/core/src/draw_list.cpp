@@ -20,11 +20,11 @@ bool DrawList::polygon(Place place, std::span<const Point2> points, Color color,
   return true;
 }
 
-bool DrawList::wall(Place place, Point2 a, Point2 b, uint32_t tag, uint8_t lineKind) {
+bool DrawList::wall(Place place, Point2 a, Point2 b, uint32_t tag, uint8_t lineKind, stage::TagStyle style) {
   if (!enabled_) return true;
   if (shapes_.size() >= kMaxShapes || points_.size() + 2 > kMaxPoints) return false;
   shapes_.push_back(
-      {ShapeKind::Wall, place, Color{}, 0, a, static_cast<uint32_t>(points_.size()), 2, 0, tag, lineKind});
+      {ShapeKind::Wall, place, Color{}, 0, a, static_cast<uint32_t>(points_.size()), 2, 0, tag, lineKind, 1, style});
   points_.push_back(a);
   points_.push_back(b);
   return true;

@@ -49,7 +49,7 @@ physics::SolveReport Scene::step(const InputFrame& input) {
 
 void Scene::draw(DrawList& out) const {
   if (!out.enabled()) return;
-  drawWorld(world_, looks_, out);
+  drawWorld(world_, looks_, *tags_, out);
   for (const auto& s : systems_) s->draw(*this, out);
 }
 
@@ -188,10 +188,31 @@ stage::Stage meshStageOf(const stage::Level& level, MeshSource& source) {
   }
 }
 
+// The scene's scripting system, made before the level file is read (and not yet in the scene's
+// order): its mods may declare the tag words the level writes. Nothing when it has no scripts.
+static std::unique_ptr<System> scriptsDeclaringTags(Scene& scene, const SystemRegistry& registry) {
+  const SceneManifest& manifest = scene.manifest();
+  if (!manifest.needs("scripting") || !shouldCreate("scripting", manifest, registry)) return nullptr;
+  std::unique_ptr<System> scripting = registry.create("scripting", scene);
+  auto tags = std::make_shared<stage::TagTable>(*stage::gameTags());
+  scripting->declareTags(scene, *tags);
+  scene.setTags(std::move(tags));
+  return scripting;
+}
+
+std::shared_ptr<const stage::TagTable> sceneTags(const std::string& manifestPath, const SystemRegistry& registry) {
+  Scene scene;
+  scene.setManifest(loadManifest(manifestPath));
+  scriptsDeclaringTags(scene, registry);
+  return scene.tags();
+}
+
 std::unique_ptr<Scene> loadScene(const std::string& manifestPath, const SystemRegistry& registry, Scene* replacing) {
   auto scene = std::make_unique<Scene>();
-  SceneManifest manifest = loadManifest(manifestPath);
+  scene->setManifest(loadManifest(manifestPath));
+  const SceneManifest& manifest = scene->manifest();
   const auto gravity = static_cast<int64_t>(std::llround(manifest.gravity * 65536.0));
+  std::unique_ptr<System> scripting = scriptsDeclaringTags(*scene, registry);
   if (!manifest.levelFile.empty()) {
     // Parsed and checked whole before anything enters the world: a bad file builds nothing.
     std::string text;
@@ -201,7 +222,7 @@ std::unique_ptr<Scene> loadScene(const std::string& manifestPath, const SystemRe
       const auto place = manifest.placeOf.find(manifest.levelFile);
       throw std::runtime_error((place == manifest.placeOf.end() ? manifestPath : place->second) + ": " + e.what());
     }
-    stage::Level level = stage::parseLevel(text, manifest.levelFile);
+    stage::Level level = stage::parseLevel(text, manifest.levelFile, scene->tags());
     stage::Stage solid = level.solid ? stage::platonicStageOf(level) : meshStage(level, manifest, registry, *scene);
     stage::checkLevelOnStage(level, solid);
     stage::buildLevel(level, solid, scene->world(), 0, gravity);
@@ -215,11 +236,12 @@ std::unique_ptr<Scene> loadScene(const std::string& manifestPath, const SystemRe
       scene->world().mapPart(scene->stage()->part(i)).setGravity({0, -gravity});
   }
   loadSounds(manifest, *scene);
-  const std::vector<std::string> systems = manifest.systems;
-  scene->setManifest(std::move(manifest));
-  for (const std::string& name : systems)
-    if (shouldCreate(name, scene->manifest(), registry) && !scene->findSystem(name))
+  for (const std::string& name : manifest.systems) {
+    if (name == "scripting" && scripting)
+      scene->addSystem(std::move(scripting), name);
+    else if (shouldCreate(name, manifest, registry) && !scene->findSystem(name))
       scene->addSystem(registry.create(name, *scene), name);
+  }
   for (size_t i = 0; replacing && i < scene->systemCount(); ++i)
     if (System* old = replacing->findSystem(scene->systemName(i)); old && !scene->systemName(i).empty())
       scene->system(i).carryBeforeBuild(*old);

@@ -12,7 +12,7 @@ Point3 point3(const Eigen::Vector3d& v) {
 }
 Eigen::Vector3d vector3(const Point3& p) { return {p.x, p.y, p.z}; }
 
-std::vector<ViewLine> linesOf(const physics::MapPart& part) {
+std::vector<ViewLine> linesOf(const physics::MapPart& part, const stage::TagTable& tags) {
   const auto segments = part.segments();
   const auto lines = part.lines();
   std::vector<ViewLine> out;
@@ -22,7 +22,9 @@ std::vector<ViewLine> linesOf(const physics::MapPart& part) {
     out.push_back({{static_cast<float>(s.a.x), static_cast<float>(s.a.y)},
                    {static_cast<float>(s.b.x), static_cast<float>(s.b.y)},
                    lines[i].tag,
-                   static_cast<uint8_t>(lines[i].kind)});
+                   static_cast<uint8_t>(lines[i].kind),
+                   tags.style(lines[i].tag),
+                   tags.passage(lines[i].tag) == stage::Passage::Door});
   }
   return out;
 }
@@ -37,7 +39,7 @@ std::shared_ptr<StageView> flatStage(const Scene& scene, physics::MapPartId part
     const physics::MapPartId id = part;
     ViewFace face;
     face.part = id;
-    face.lines = linesOf(*found);
+    face.lines = linesOf(*found, *scene.tags());
     float x0 = 0, y0 = 0, x1 = 1, y1 = 1;
     bool first = true;
     for (const ViewLine& l : face.lines)
@@ -58,10 +60,11 @@ std::shared_ptr<StageView> flatStage(const Scene& scene, physics::MapPartId part
 
 std::shared_ptr<const StageView> stageView(const Scene& scene, physics::MapPartId playerPart) {
   if (!scene.stage()) return flatStage(scene, playerPart);
-  return stageView(*scene.stage(), scene.world());
+  return stageView(*scene.stage(), scene.world(), *scene.tags());
 }
 
-std::shared_ptr<const StageView> stageView(const stage::Stage& net, const physics::World& world) {
+std::shared_ptr<StageView> stageView(const stage::Stage& net, const physics::World& world,
+                                     const stage::TagTable& tags) {
   const stage::Stage* stage = &net;
   auto view = std::make_shared<StageView>();
   view->centre = point3(stage->centre);
@@ -80,7 +83,7 @@ std::shared_ptr<const StageView> stageView(const stage::Stage& net, const physic
     }
     face.origin = point3(f.origin), face.xAxis = point3(f.xAxis), face.yAxis = point3(f.yAxis);
     face.normal = point3(f.normal);
-    face.lines = linesOf(world.mapPart(face.part));
+    face.lines = linesOf(world.mapPart(face.part), tags);
     view->faces.push_back(std::move(face));
   }
   view->radius = static_cast<float>(radius);

@@ -35,7 +35,7 @@ void drawEntity(const physics::EntityView& e, const Look& look, DrawList& out, s
 
 }  // namespace
 
-void drawWorld(const physics::World& world, const Looks& looks, DrawList& out) {
+void drawWorld(const physics::World& world, const Looks& looks, const stage::TagTable& tags, DrawList& out) {
   if (!out.enabled()) return;
   std::vector<Point2> scratch;
   for (const physics::PlatformId id : world.platforms()) {
@@ -44,7 +44,7 @@ void drawWorld(const physics::World& world, const Looks& looks, DrawList& out) {
       const physics::Segment& s = line.segment;
       out.wall(Place::onFace(p.part), {static_cast<float>(s.a.x), static_cast<float>(s.a.y)},
                {static_cast<float>(s.b.x), static_cast<float>(s.b.y)}, line.tag,
-               line.kind == physics::LineKind::OneWay ? 2 : 0);
+               line.kind == physics::LineKind::OneWay ? 2 : 0, tags.style(line.tag));
     }
   }
   for (const physics::EntityId id : world.entities()) {

@@ -20,16 +20,11 @@ Color faceColor(size_t index) { return index % 2 ? Color{92, 96, 118, 255} : Col
 constexpr Color kRim{30, 30, 44, 255};
 constexpr float kTile = 512;  // level units
 
-// The game's tags (scripts/rules/game.lua): 0 solid, 1 hazard, 2 goal, 3 checkpoint, 1000 + n
-// door, 2000 + n switch. Hazards and the goal glow.
+// A line's colour: its tag's look from the scene's tag table (stage/tags.h); a one-way line's own.
 Color wallColor(const core::ViewLine& line) {
-  if (line.kind == 2) return {86, 180, 233, 255};                      // one-way: sky blue
-  if (line.tag == 1) return {213, 94, 0, kGlow};                       // hazard: vermillion, spiked
-  if (line.tag == 2) return {240, 228, 66, kGlow};                     // goal: yellow, glowing
-  if (line.tag == 3) return {0, 158, 115, 255};                        // checkpoint: bluish green
-  if (line.tag >= 1000 && line.tag < 2000) return {0, 114, 178, 255};  // door: blue
-  if (line.tag >= 2000 && line.tag < 3000) return {230, 159, 0, 255};  // switch: orange
-  return {232, 226, 214, 255};                                         // stone
+  if (line.kind == 2) return {86, 180, 233, 255};  // one-way: sky blue
+  const stage::TagStyle& s = line.style;
+  return {s.r, s.g, s.b, s.glow ? kGlow : uint8_t{255}};
 }
 
 void quad(std::vector<LitVertex>& out, const Vector3f& a, const Vector3f& b, const Vector3f& c, const Vector3f& d,
@@ -191,7 +186,7 @@ void StageMesh::addFace(const core::ViewFace& face, size_t index) {
   }
   for (const core::ViewLine& line : face.lines) {
     if (line.kind == 1) continue;  // warp lines are the face's own edges: the rim shows them
-    if (line.tag >= 1000 && line.tag < 2000)
+    if (line.door)
       doors_.push_back({index, line});
     else
       addWall(f, line, fixed_);
@@ -236,7 +231,7 @@ void StageMesh::addWall(const Frame& f, const core::ViewLine& line, std::vector<
   quad(out, a0, a1, a1 + up, a0 + up, -along, color);
   quad(out, b0, b1, b1 + up, b0 + up, along, color);
   // A hazard says so by its shape as well as its colour: a row of spikes along its top.
-  if (line.tag == 1 && line.kind != 2 && heightScale >= 1) {
+  if (line.style.spikes && line.kind != 2 && heightScale >= 1) {
     const float length = (b - a).norm(), spike = 2.5f * halfWidth;
     const int count = std::max(1, static_cast<int>(length / (2 * spike)));
     const float pitch = length / static_cast<float>(count);
@@ -351,7 +346,7 @@ void StageMesh::addShapes(const core::DrawList& draw, physics::MapPartId onlyFac
     const Frame* f = frameOf(s.place.face);
     if (!f) continue;
     if (s.kind == core::ShapeKind::Wall) {
-      addWall(*f, {points[s.first], points[s.first + 1], s.tag, s.lineKind}, out, 1, true);
+      addWall(*f, {points[s.first], points[s.first + 1], s.tag, s.lineKind, s.style}, out, 1, true);
       continue;
     }
     if (s.kind == core::ShapeKind::Polygon && s.body != 0) {

@@ -31,7 +31,7 @@ class StageMesh {
   // The fixed part: faces, rims and walls.
   const std::vector<LitVertex>& fixed() const { return fixed_; }
 
-  // The doors (lines tagged 1000 + n): raised walls while shut, a low dashed sill while their tag
+  // The doors (lines of a kind whose passage is Door): raised walls while shut, a low dashed sill while their tag
   // is in `openTags`. Appended to `out` each frame, since they open and shut.
   void addDoors(std::span<const uint32_t> openTags, std::vector<LitVertex>& out) const;
 

@@ -390,11 +390,17 @@ ScriptSystem::~ScriptSystem() {
   if (state_ && state_->rules) state_->scene->world().setRules(nullptr);
 }
 
-void ScriptSystem::build(core::Scene& scene) {
+// Loads scripts/scene.lua with the manifest's setup, once: declareTags and build both need it.
+void ScriptSystem::prepare(core::Scene& scene) {
+  if (state_->driver.isSet()) return;
   lua_State* L = state_->host.state();
   const core::SceneManifest& m = scene.manifest();
   // The trusted `platon` global: the API table itself (sandboxes get read-only views of it).
   state_->host.pushApi();
+  lua_newtable(L);  // platon.tags and platon.tagKinds: filled once the scene's tags are known (setTagsApi)
+  lua_setfield(L, -2, "tags");
+  lua_newtable(L);
+  lua_setfield(L, -2, "tagKinds");
   lua_setglobal(L, "platon");
   state_->files.push_back(state_->root + "/scripts/scene.lua");
   state_->host.loadFile(state_->files.back(), Trust::Trusted);
@@ -445,6 +451,109 @@ void ScriptSystem::build(core::Scene& scene) {
   lua_getfield(L, -2, "afterStep");
   state_->afterStep = lua::Ref(L, -1);
   lua_pop(L, 3);
+}
+
+// platon.tags: each kind's word and its number (a numbered kind's base), as the scene has them.
+void ScriptSystem::setTagsApi(const stage::TagTable& tags) {
+  lua_State* L = state_->host.state();
+  lua::StackGuard guard(L);
+  state_->host.pushApi();
+  lua_getfield(L, -1, "tags");
+  lua_getfield(L, -2, "tagKinds");
+  int i = 0;
+  for (const stage::TagKind& k : tags.kinds()) {
+    lua_pushnumber(L, k.number);
+    lua_setfield(L, -3, k.word.c_str());
+    lua_createtable(L, 0, 8);
+    auto field = [&](const char* key, auto push) {
+      push();
+      lua_setfield(L, -2, key);
+    };
+    field("word", [&] { lua_pushlstring(L, k.word.data(), k.word.size()); });
+    field("number", [&] { lua_pushnumber(L, k.number); });
+    field("count", [&] { lua_pushnumber(L, k.count); });
+    field("passable", [&] {
+      lua_pushstring(L, k.passage == stage::Passage::Through ? "through"
+                        : k.passage == stage::Passage::Door  ? "door"
+                                                             : "wall");
+    });
+    char colour[8];
+    std::snprintf(colour, sizeof colour, "#%02x%02x%02x", k.style.r, k.style.g, k.style.b);
+    field("color", [&] { lua_pushstring(L, colour); });
+    field("glow", [&] { lua_pushboolean(L, k.style.glow); });
+    field("spikes", [&] { lua_pushboolean(L, k.style.spikes); });
+    field("owner", [&] { lua_pushlstring(L, k.owner.data(), k.owner.size()); });
+    lua_rawseti(L, -2, ++i);
+  }
+  tagsSet_ = true;
+}
+
+void ScriptSystem::declareTags(core::Scene& scene, stage::TagTable& tags) {
+  prepare(scene);
+  lua_State* L = state_->host.state();
+  lua::StackGuard guard(L);
+  state_->host.beginFrame();
+  state_->callDriver("declare", 0, 1);  // loads the mods: a list of { owner =, word =, ... }
+  state_->throwKeptErrors();
+  const int list = lua_gettop(L);
+  for (int i = 1;; ++i) {
+    lua_rawgeti(L, list, i);
+    if (!lua_istable(L, -1)) break;
+    auto text = [&](const char* key) {
+      lua_getfield(L, -1, key);
+      std::string v = lua_isstring(L, -1) ? lua_tostring(L, -1) : "";
+      lua_pop(L, 1);
+      return v;
+    };
+    auto number = [&](const char* key) {
+      lua_getfield(L, -1, key);
+      const double v = lua_tonumber(L, -1);
+      lua_pop(L, 1);
+      return v;
+    };
+    auto flag = [&](const char* key) {
+      lua_getfield(L, -1, key);
+      const bool v = lua_toboolean(L, -1) != 0;
+      lua_pop(L, 1);
+      return v;
+    };
+    stage::TagKind kind;
+    kind.owner = text("owner");
+    kind.word = text("word");
+    try {
+      if (!flag("look")) {  // handlers for a word declared before: it must exist
+        if (!tags.find(kind.word))
+          throw stage::TagError("no tag '" + kind.word + "' to add handlers to, and no look or passage to make one (" +
+                                tags.words() + ")");
+      } else {
+        if (const stage::TagKind* k = tags.find(kind.word))
+          throw stage::TagError("the tag '" + kind.word + "' is " + k->owner +
+                                "'s: a mod may add handlers to it, not change its look or passage");
+        uint32_t next = stage::kFirstModTag;
+        for (const stage::TagKind& k : tags.kinds())
+          if (k.number >= next) next = k.number + stage::kModTagStep;
+        kind.number = next;
+        kind.count = flag("numbered") ? 999 : 0;
+        const std::string passage = text("passage");
+        kind.passage = passage == "through" ? stage::Passage::Through
+                       : passage == "door"  ? stage::Passage::Door
+                                            : stage::Passage::Wall;
+        kind.style = {static_cast<uint8_t>(number("r")), static_cast<uint8_t>(number("g")),
+                      static_cast<uint8_t>(number("b")), flag("glow"), flag("spikes")};
+        tags.add(kind);
+      }
+    } catch (const stage::TagError& e) {
+      throw ScriptError(kind.owner + ": tags." + kind.word + ": " + e.what(), "");
+    }
+    lua_pop(L, 1);
+  }
+  setTagsApi(tags);
+}
+
+void ScriptSystem::build(core::Scene& scene) {
+  prepare(scene);
+  if (!tagsSet_) setTagsApi(*scene.tags());
+  lua_State* L = state_->host.state();
   state_->host.beginFrame();
   lua_pushnumber(L, carriedFrames_);
   state_->callDriver("build", 1, 0);

@@ -19,16 +19,6 @@ std::string decimal(double v) {
   return text;
 }
 
-std::string tagWords(uint32_t tag) {
-  if (tag == 0) return "";
-  if (tag == kTagHazard) return " hazard";
-  if (tag == kTagGoal) return " goal";
-  if (tag == kTagCheckpoint) return " checkpoint";
-  if (tag > kTagDoor && tag < kTagDoor + 1000) return " door " + std::to_string(tag - kTagDoor);
-  if (tag > kTagSwitch && tag < kTagSwitch + 1000) return " switch " + std::to_string(tag - kTagSwitch);
-  return " tag " + std::to_string(tag);
-}
-
 std::string pointText(physics::Vec2 p) { return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")"; }
 
 std::vector<physics::Vec2> goalSquare(const Level& level) {
@@ -53,7 +43,7 @@ void checkPoint(const Level& level, const Stage& stage, const LevelPoint& p, con
   // is at least as far from the point as the edge is. A line whose bounding box is farther than
   // the clearance is passed over without a distance (the check is one pass over the level).
   auto tooClose = [&](const LevelLine& l, double x, double y) {
-    if (!counts(l, Counting::Clearance)) return -1.0;
+    if (!counts(l, *level.tags, Counting::Clearance)) return -1.0;
     const double lo = kStartClearance;
     if (x < std::min(l.a.x, l.b.x) - lo || x > std::max(l.a.x, l.b.x) + lo || y < std::min(l.a.y, l.b.y) - lo ||
         y > std::max(l.a.y, l.b.y) + lo)
@@ -135,8 +125,8 @@ std::string writeLevel(const Level& level) {
           << decimal(static_cast<double>(face.gravityQ16->y) / 65536);
     out << "  # face " << f << "\n";
     for (const LevelLine& l : face.lines)
-      out << l.a.x << " " << l.a.y << " " << l.b.x << " " << l.b.y << (l.oneWay ? " oneway" : "") << tagWords(l.tag)
-          << "\n";
+      out << l.a.x << " " << l.a.y << " " << l.b.x << " " << l.b.y << (l.oneWay ? " oneway" : "")
+          << level.tags->written(l.tag) << "\n";
   }
   return out.str();
 }
@@ -200,7 +190,8 @@ void buildLevel(const Level& level, Stage& stage, physics::World& world, physics
   }
   const std::vector<physics::Vec2> square = goalSquare(level);
   physics::MapPart& goalPart = world.mapPart(stage.part(static_cast<size_t>(level.goal.face)));
-  for (size_t i = 0; i < square.size(); ++i) goalPart.line(square[i], square[(i + 1) % square.size()], kTagGoal);
+  for (size_t i = 0; i < square.size(); ++i)
+    goalPart.line(square[i], square[(i + 1) % square.size()], level.tags->number("goal"));
 }
 
 std::string readLevelFile(const std::string& path) {

@@ -87,7 +87,7 @@ CheckReport checkLevel(const Level& level, const Stage& stage) {
         const physics::Vec2 a = corners[k], b = corners[(k + 1) % corners.size()];
         const double len = std::hypot(double(b.x) - a.x, double(b.y) - a.y);
         if (std::abs(side(a, b, l.a.x, l.a.y)) / len > 1 || std::abs(side(a, b, l.b.x, l.b.y)) / len > 1) continue;
-        if (!counts(l, Counting::Reach)) continue;
+        if (!counts(l, *level.tags, Counting::Reach)) continue;
         report.warnings.push_back({{level.file, l.sourceLine, l.sourceColumn},
                                    "the segment lies along edge " + std::to_string(k) + " of face " +
                                        std::to_string(f) + ": it blocks the way to face " +

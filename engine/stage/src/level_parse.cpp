@@ -206,11 +206,13 @@ constexpr int kMostFaces = 2147483647;
 
 class Parser {
  public:
-  Parser(std::string_view text, const std::string& file) : file_(file), reader_(text, file) {}
+  Parser(std::string_view text, const std::string& file, std::shared_ptr<const TagTable> tags)
+      : file_(file), reader_(text, file), tags_(std::move(tags)) {}
 
   Level parse() {
     Level level;
     level.file = file_;
+    level.tags = tags_;
     solidLine(level);
     startLine(level);
     goalLine(level);
@@ -470,24 +472,17 @@ class Parser {
       if (t.text == "oneway") {
         if (out.oneWay) fail(line, t, "oneway given twice");
         out.oneWay = true;
-      } else if (t.text == "solid") {
-        setTag(0);
-      } else if (t.text == "hazard") {
-        setTag(kTagHazard);
-      } else if (t.text == "goal") {
-        setTag(kTagGoal);
-      } else if (t.text == "checkpoint") {
-        setTag(kTagCheckpoint);
-      } else if (t.text == "door") {
-        setTag(kTagDoor + numbered("door", 1, 999));
-      } else if (t.text == "switch") {
-        setTag(kTagSwitch + numbered("switch", 1, 999));
       } else if (t.text == "tag") {
         setTag(numbered("tag", 0, 2147483647));
+      } else if (const TagKind* kind = tags_->find(t.text)) {
+        if (kind->count == 0) {
+          setTag(kind->number);
+        } else {
+          const std::string what(t.text);
+          setTag(kind->number + numbered(what.c_str(), 1, static_cast<int>(kind->count)));
+        }
       } else {
-        fail(line, t,
-             "unknown segment word " + quoted(t.text) +
-                 " (known: oneway, solid, hazard, goal, checkpoint, door N, switch N, tag N)");
+        fail(line, t, "unknown segment word " + quoted(t.text) + " (known: oneway, " + tags_->words() + ", tag N)");
       }
     }
     return out;
@@ -505,11 +500,14 @@ class Parser {
 
   std::string file_;
   LineReader reader_;
+  std::shared_ptr<const TagTable> tags_;
   std::string startFaceText_, goalFaceText_;  // the face numbers as written, for checkFaceIndex
 };
 
 }  // namespace
 
-Level parseLevel(std::string_view text, const std::string& file) { return Parser(text, file).parse(); }
+Level parseLevel(std::string_view text, const std::string& file, std::shared_ptr<const TagTable> tags) {
+  return Parser(text, file, tags ? std::move(tags) : gameTags()).parse();
+}
 
 }  // namespace platon::stage

@@ -97,15 +97,14 @@ std::string neighbourTable(const Stage& stage) {
 
 namespace {
 
-// The game's tag colours (as the renderer's, darker where white paper needs it).
-const char* tagColour(const LevelLine& l) {
-  if (l.tag == kTagHazard) return "#d55e00";
-  if (l.tag == kTagGoal) return "#b8a200";
-  if (l.tag == kTagCheckpoint) return "#009e73";
-  if (l.tag > kTagDoor && l.tag < kTagDoor + 1000) return "#0072b2";
-  if (l.tag > kTagSwitch && l.tag < kTagSwitch + 1000) return "#e69f00";
-  if (l.oneWay) return "#56b4e9";
-  return "#333";
+// A line's colour on white paper: its tag's, darkened where it is too light to read there.
+std::string tagColour(const LevelLine& l, const TagTable& tags) {
+  if (l.tag == 0) return l.oneWay ? "#56b4e9" : "#333";
+  const TagStyle s = tags.style(l.tag);
+  const double light = (0.2126 * s.r + 0.7152 * s.g + 0.0722 * s.b) / 255, k = light > 0.7 ? 0.75 : 1.0;
+  char out[8];
+  std::snprintf(out, sizeof out, "#%02x%02x%02x", int(s.r * k), int(s.g * k), int(s.b * k));
+  return out;
 }
 
 }  // namespace
@@ -195,8 +194,9 @@ std::string netSvg(const Stage& stage, const std::vector<NetFace>& net, const st
     for (const LevelLine& l : levelFace->lines) {
       const std::string pa = px(at.place(l.a.x, l.a.y)), pb = px(at.place(l.b.x, l.b.y));
       svg << "<line x1=\"" << pa.substr(0, pa.find(',')) << "\" y1=\"" << pa.substr(pa.find(',') + 1) << "\" x2=\""
-          << pb.substr(0, pb.find(',')) << "\" y2=\"" << pb.substr(pb.find(',') + 1) << "\" stroke=\"" << tagColour(l)
-          << "\" stroke-width=\"2\"" << (l.oneWay ? " stroke-dasharray=\"5,3\"" : "") << "/>\n";
+          << pb.substr(0, pb.find(',')) << "\" y2=\"" << pb.substr(pb.find(',') + 1) << "\" stroke=\""
+          << tagColour(l, *level->tags) << "\" stroke-width=\"2\"" << (l.oneWay ? " stroke-dasharray=\"5,3\"" : "")
+          << "/>\n";
     }
     for (const auto& [point, name, colour] :
          {std::tuple{&level->start, "start", "#1a1"}, std::tuple{&level->goal, "goal", "#b8a200"}}) {

@@ -32,15 +32,17 @@ FlatMap unfoldAcross(const Stage& stage, size_t face, size_t edge) {
   return map;
 }
 
-bool counts(const LevelLine& line, Counting counting) {
-  if (playerPassesThrough(line.tag)) return false;
-  return counting == Counting::Clearance || (!line.oneWay && !(line.tag > kTagDoor && line.tag < kTagDoor + 1000));
+bool counts(const LevelLine& line, const TagTable& tags, Counting counting) {
+  const Passage passage = tags.passage(line.tag);
+  if (passage == Passage::Through) return false;
+  return counting == Counting::Clearance || (!line.oneWay && passage != Passage::Door);
 }
 
 std::vector<FlatWall> wallsNear(const Level& level, const Stage& stage, size_t face, double margin, Counting counting) {
   std::vector<FlatWall> out;
   for (const LevelLine& l : level.faces[face].lines)
-    if (counts(l, counting)) out.push_back({double(l.a.x), double(l.a.y), double(l.b.x), double(l.b.y), int(face), &l});
+    if (counts(l, *level.tags, counting))
+      out.push_back({double(l.a.x), double(l.a.y), double(l.b.x), double(l.b.y), int(face), &l});
   const StageFace& here = stage.faces[face];
   for (size_t k = 0; k < here.corners.size(); ++k) {
     const auto [g, j] = here.neighbours[k];
@@ -55,7 +57,7 @@ std::vector<FlatWall> wallsNear(const Level& level, const Stage& stage, size_t f
       if (std::max(l.a.x, l.b.x) < x0 || std::min(l.a.x, l.b.x) > x1 || std::max(l.a.y, l.b.y) < y0 ||
           std::min(l.a.y, l.b.y) > y1)
         continue;
-      if (!counts(l, counting)) continue;
+      if (!counts(l, *level.tags, counting)) continue;
       // Near the edge: either end within the margin of it, or the line crossing its strip.
       const double ea = distanceToSegment(l.a.x, l.a.y, p, q), eb = distanceToSegment(l.b.x, l.b.y, p, q);
       const double mid = distanceToSegment((double(l.a.x) + l.b.x) / 2, (double(l.a.y) + l.b.y) / 2, p, q);

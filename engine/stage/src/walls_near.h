@@ -33,7 +33,7 @@ FlatMap unfoldAcross(const Stage& stage, size_t face, size_t edge);
 // through (shut doors and one-way lines included); for the reachability search, walls only
 // (doors open, one-way lines passable).
 enum class Counting { Clearance, Reach };
-bool counts(const LevelLine& line, Counting counting);
+bool counts(const LevelLine& line, const TagTable& tags, Counting counting);
 
 // The lines of `face`, and those of its neighbours within `margin` of the shared edge, that count.
 std::vector<FlatWall> wallsNear(const Level& level, const Stage& stage, size_t face, double margin, Counting counting);

@@ -46,7 +46,7 @@ class Renderer : public ::testing::Test {
     face.part = 0;
     face.corners = {{0, 0}, {1000, 0}, {1000, 1000}, {0, 1000}};
     face.xAxis = {1, 0, 0}, face.yAxis = {0, 1, 0}, face.normal = {0, 0, 1};
-    face.lines.push_back({{100, 100}, {900, 100}, 1, 0});
+    face.lines.push_back({{100, 100}, {900, 100}, 1, 0, stage::gameTags()->style(1)});  // a hazard
     stage->faces.push_back(face);
     // Face 3: the cube's bottom, 1000 below, facing down: away from the camera.
     core::ViewFace bottom;

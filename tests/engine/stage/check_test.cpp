@@ -53,7 +53,7 @@ void wallIn(stage::Level& level, double half, double angle, double gap, bool doo
     if (k == 0 && gap > 0) {  // the bottom side, with an opening in its middle
       lines.push_back({at(a.x, a.y), at(-gap / 2, a.y)});
       lines.push_back({at(gap / 2, a.y), at(b.x, b.y)});
-      if (door) lines.push_back({at(-gap / 2, a.y), at(gap / 2, a.y), false, stage::kTagDoor + 1});
+      if (door) lines.push_back({at(-gap / 2, a.y), at(gap / 2, a.y), false, stage::gameTags()->number("door") + 1});
       continue;
     }
     lines.push_back({at(a.x, a.y), at(b.x, b.y)});

@@ -56,10 +56,10 @@ TEST(LevelFormat, CommentsTagsGravityAndDecimals) {
   EXPECT_EQ(level.startMillidegrees, 90250);
   EXPECT_EQ(level.goal.face, 1);  // two numbers: on the start face
   EXPECT_EQ(level.faces[0].gravityQ16, (physics::Vec2w{32768, -16384}));
-  EXPECT_EQ(level.faces[0].lines[0].tag, stage::kTagHazard);
+  EXPECT_EQ(level.faces[0].lines[0].tag, stage::gameTags()->number("hazard"));
   EXPECT_TRUE(level.faces[0].lines[1].oneWay);
-  EXPECT_EQ(level.faces[0].lines[2].tag, stage::kTagDoor + 7);
-  EXPECT_EQ(level.faces[3].lines[0].tag, stage::kTagSwitch + 12);
+  EXPECT_EQ(level.faces[0].lines[2].tag, stage::gameTags()->number("door") + 7);
+  EXPECT_EQ(level.faces[3].lines[0].tag, stage::gameTags()->number("switch") + 12);
   EXPECT_EQ(level.faces[3].lines[1].tag, 77u);
   EXPECT_EQ(level.faces[3].lines[1].sourceLine, 15);
 }
@@ -239,9 +239,13 @@ stage::Level randomLevel(platon::testing::Rng& rng) {
       stage::LevelLine l{inside(f), inside(f)};
       if (l.a == l.b) continue;
       l.oneWay = rng.between(0, 3) == 0;
-      const uint32_t tags[] = {
-          0,   stage::kTagHazard, stage::kTagGoal, stage::kTagCheckpoint, stage::kTagDoor + 5, stage::kTagSwitch + 999,
-          4242};
+      const uint32_t tags[] = {0,
+                               stage::gameTags()->number("hazard"),
+                               stage::gameTags()->number("goal"),
+                               stage::gameTags()->number("checkpoint"),
+                               stage::gameTags()->number("door") + 5,
+                               stage::gameTags()->number("switch") + 999,
+                               4242};
       l.tag = tags[rng.between(0, 6)];
       face.lines.push_back(l);
     }
@@ -282,11 +286,11 @@ TEST(LevelFormat, BuildPutsEveryLineGravityAndTheGoalInTheWorld) {
   EXPECT_EQ(f0.gravity(), (physics::Vec2w{16384, 0}));
   EXPECT_EQ(world.mapPart(1).gravity(), (physics::Vec2w{0, -22938}));
   EXPECT_EQ(f0.lines().size(), 3u + 1u);  // three warp edges, one line
-  EXPECT_EQ(f0.lines()[3].tag, stage::kTagHazard);
+  EXPECT_EQ(f0.lines()[3].tag, stage::gameTags()->number("hazard"));
   const physics::MapPart& f5 = world.mapPart(5);
   ASSERT_EQ(f5.lines().size(), 3u + 1u + 4u);  // edges, the one-way line, the goal's square
   EXPECT_EQ(f5.lines()[3].kind, physics::LineKind::OneWay);
-  for (size_t i = 4; i < 8; ++i) EXPECT_EQ(f5.lines()[i].tag, stage::kTagGoal);
+  for (size_t i = 4; i < 8; ++i) EXPECT_EQ(f5.lines()[i].tag, stage::gameTags()->number("goal"));
 }
 
 }  // namespace

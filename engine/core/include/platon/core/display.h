@@ -14,6 +14,7 @@
 #include "platon/physics/ids.h"
 #include "platon/physics/world.h"
 #include "platon/stage/stage.h"
+#include "platon/stage/tags.h"
 
 namespace platon::core {
 
@@ -27,7 +28,9 @@ struct Point3 {
 struct ViewLine {
   Point2 a, b;
   uint32_t tag = 0;
-  uint8_t kind = 0;  // physics::LineKind: 0 solid, 1 warp (a face edge), 2 one-way
+  uint8_t kind = 0;            // physics::LineKind: 0 solid, 1 warp (a face edge), 2 one-way
+  stage::TagStyle style = {};  // its tag's look, from the scene's tag table
+  bool door = false;           // its tag's passage is a door's: drawn shut or open by GameStatus::openTags
 };
 
 // One face of the stage: its outline and lines in its own 2D frame and where that frame sits in 3D
@@ -69,7 +72,8 @@ struct View {
 // it again when the player changes part.
 std::shared_ptr<const StageView> stageView(const Scene& scene, physics::MapPartId playerPart);
 // The same for a stage in a world (the stage's parts hold its faces' lines).
-std::shared_ptr<const StageView> stageView(const stage::Stage& stage, const physics::World& world);
+std::shared_ptr<StageView> stageView(const stage::Stage& stage, const physics::World& world,
+                                     const stage::TagTable& tags = *stage::gameTags());
 // What the camera follows when the player stands at (x, y) on map part `face`, whose gravity
 // (any length; zero: the face's -y) gives its down.
 camera::CameraTarget cameraTarget(const StageView& stage, physics::MapPartId face, float x, float y,

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "platon/physics/ids.h"
+#include "platon/stage/tags.h"
 
 namespace platon::core {
 
@@ -50,6 +51,7 @@ struct DrawShape {
   // A body's ball: its height over its width along the way it stands (below 1 squashed, as on a
   // landing; above 1 stretched, as in a jump's start), its volume kept.
   float squash = 1;
+  stage::TagStyle style = {};  // a wall's tag's look
 };
 
 // A frame's list holds at most kMaxShapes shapes, kMaxPoints polygon and line points and
@@ -71,7 +73,7 @@ class DrawList {
   bool polygon(Place place, std::span<const Point2> points, Color color, uint32_t body = 0);
   // A line of the world drawn as the stage's own lines are (a moving platform's), by its tag and
   // kind (ViewLine's).
-  bool wall(Place place, Point2 a, Point2 b, uint32_t tag, uint8_t lineKind);
+  bool wall(Place place, Point2 a, Point2 b, uint32_t tag, uint8_t lineKind, stage::TagStyle style = {});
   bool line(Place place, Point2 a, Point2 b, float width, Color color);
   bool text(Place place, Point2 at, std::string_view text, float height, Color color);
   void clear();

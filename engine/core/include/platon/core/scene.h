@@ -28,6 +28,10 @@ class Scene {
   // The level file the stage came from, when the manifest names one.
   void setLevel(stage::Level level) { level_ = std::move(level); }
   const stage::Level* level() const { return level_ ? &*level_ : nullptr; }
+  // The scene's line tags: the game's and what its systems declared (System::declareTags), the
+  // words its level file was read with and the looks the renderer gives them.
+  void setTags(std::shared_ptr<const stage::TagTable> tags) { tags_ = std::move(tags); }
+  const std::shared_ptr<const stage::TagTable>& tags() const { return tags_; }
 
   // The manifest the scene was loaded from (empty for scenes built in code).
   const SceneManifest& manifest() const { return manifest_; }
@@ -58,6 +62,7 @@ class Scene {
  private:
   SceneManifest manifest_;
   physics::World world_;
+  std::shared_ptr<const stage::TagTable> tags_ = stage::gameTags();
   std::optional<stage::Stage> stage_;
   std::optional<stage::Level> level_;
   Looks looks_;
@@ -73,6 +78,10 @@ class Scene {
 // the scene it replaces: each new system is given its predecessor before build (carryBeforeBuild).
 std::unique_ptr<Scene> loadScene(const std::string& manifestPath, const SystemRegistry& registry,
                                  Scene* replacing = nullptr);
+
+// The line tags a scene's level file may write: the game's and those its mods declare (the mods
+// are run for it, in a scene of their own). For tools that read a level without playing it.
+std::shared_ptr<const stage::TagTable> sceneTags(const std::string& manifestPath, const SystemRegistry& registry);
 
 // A mesh level's stage: its MESH file (relative to the level file) read by `source`, made a convex
 // solid with the level's size. Throws StageError naming the level file and what is wrong.

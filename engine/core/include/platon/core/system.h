@@ -13,6 +13,7 @@
 
 #include "platon/core/draw_list.h"
 #include "platon/core/input.h"
+#include "platon/stage/tags.h"
 
 namespace platon::core {
 
@@ -26,6 +27,9 @@ struct SoundFrame;
 class System {
  public:
   virtual ~System() = default;
+  // Once, before the level file is read: add the line tags this system's content declares (a
+  // mod's own words, stage/tags.h), so that the level may write them. Throwing refuses the scene.
+  virtual void declareTags(Scene& scene, stage::TagTable& tags) { (void)scene, (void)tags; }
   // Once, after the stage's faces exist and before they are initialized: add the level's lines.
   virtual void build(Scene& scene) { (void)scene; }
   // Once, after the faces are initialized: place the player and the level's entities.

@@ -11,6 +11,6 @@ namespace platon::core {
 // Adds `world`'s entities and platforms to `out` (nothing when `out` is disabled). Each instance
 // of an entity is one shape tagged with the entity (DrawShape::body), so the renderer draws the
 // entity once however many faces it spans.
-void drawWorld(const physics::World& world, const Looks& looks, DrawList& out);
+void drawWorld(const physics::World& world, const Looks& looks, const stage::TagTable& tags, DrawList& out);
 
 }  // namespace platon::core

@@ -35,6 +35,7 @@ class ScriptSystem final : public core::System {
   ScriptSystem(core::Scene& scene, std::string root);
   ~ScriptSystem() override;
 
+  void declareTags(core::Scene& scene, stage::TagTable& tags) override;
   void build(core::Scene& scene) override;
   void start(core::Scene& scene) override;
   void beforeStep(core::Scene& scene, const core::InputFrame& input) override;
@@ -61,6 +62,9 @@ class ScriptSystem final : public core::System {
 
  private:
   GameStatus readStatus() const;
+  void prepare(core::Scene& scene);
+  void setTagsApi(const stage::TagTable& tags);
+  bool tagsSet_ = false;
   std::unique_ptr<State> state_;
   double carriedFrames_ = 0;  // the level's frames played, from the version this one replaces
 };

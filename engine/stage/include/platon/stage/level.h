@@ -14,18 +14,9 @@
 #include "platon/stage/polyhedron.h"
 #include "platon/stage/stage.h"
 #include "platon/stage/stage_error.h"
+#include "platon/stage/tags.h"
 
 namespace platon::stage {
-
-// Line tags as the game's rules read them (scripts/rules/game.lua): a door or switch n is the
-// base plus n (n from 1 to 999). Mods may use any other number with "tag N".
-inline constexpr uint32_t kTagHazard = 1, kTagGoal = 2, kTagCheckpoint = 3, kTagDoor = 1000, kTagSwitch = 2000;
-
-// The triggers the game's rules let the player through: the goal, checkpoints, switches (doors
-// depend on their switch). The level checks count every other line as a wall.
-inline bool playerPassesThrough(uint32_t tag) {
-  return tag == kTagGoal || tag == kTagCheckpoint || (tag > kTagSwitch && tag < kTagSwitch + 1000);
-}
 
 struct LevelLine {
   physics::Vec2 a, b;
@@ -64,12 +55,15 @@ struct Level {
   int32_t size = 0;  // face edge (Platonic) or longest edge (mesh), in units
   std::vector<LevelFace> faces;
   int endLine = 0;  // the line after the last, for "missing" messages
+  // The tag table the level was read with: its words are the segments' tags (tags.h).
+  std::shared_ptr<const TagTable> tags = gameTags();
 
   friend bool operator==(const Level&, const Level&);
 };
 
-// The level's text, syntax and ranges only. Throws StageError with file:line:column.
-Level parseLevel(std::string_view text, const std::string& file);
+// The level's text, syntax and ranges only, its segments' tag words from `tags` (the game's, and
+// a scene's mods' own). Throws StageError with file:line:column.
+Level parseLevel(std::string_view text, const std::string& file, std::shared_ptr<const TagTable> tags = gameTags());
 
 // The text of `level` as parseLevel reads it (comments are not kept; numbers are written as
 // parsed): parseLevel(writeLevel(l)) == l for every level parseLevel accepts.

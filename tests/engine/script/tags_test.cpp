@@ -1,0 +1,240 @@
+// Line tags that mods add (docs/scripting.md, "Tags"): a word the level file writes, with its look
+// and its handlers, on top of the game's rules, never a copy of them; several mods in the
+// manifest's order. Played through the engine as a level with mods is.
+#include <algorithm>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "platon/core/display.h"
+#include "platon/core/live_scene.h"
+#include "platon/script/script_system.h"
+#include "platon/stage/level.h"
+#include "platon/testing/temp_folder.h"
+
+namespace platon::script {
+namespace {
+
+using Folder = testing::TempFolder;
+
+// A cube: the player starts on face 0 above a floor whose words are `floorWords`; a wall across
+// the walk to the right (x 2000) has the words `wallWords`. Mods are written as given, in order.
+struct ModLevel {
+  Folder folder;
+  std::string scene;
+  ModLevel(const std::string& name, const std::string& floorWords, const std::string& wallWords,
+           const std::vector<std::string>& mods)
+      : folder(name) {
+    folder.write("cube.level", "HEXAHEDRON\n0 600 700\n2 2000 800\n4096\n%\n256 512 4096 512 " + floorWords +
+                                   "\n2000 513 2000 1400 " + wallWords +
+                                   "\n%\n0 512 4096 512\n%\n0 512 4096 512\n%\n0 512 4096 512\n%\n%\n");
+    std::string list;
+    for (size_t i = 0; i < mods.size(); ++i) {
+      const std::string file = "mod" + std::to_string(i + 1) + ".lua";
+      folder.write(file, mods[i]);
+      list += "'" + file + "', ";
+    }
+    scene = folder.write("scene.lua",
+                         "return { systems = { 'scripting' }, stage = { level = 'cube.level' }, gravity = 0.35,"
+                         " scripts = { preset = 'game', mods = { " +
+                             list + "} } }\n");
+  }
+};
+
+core::SystemRegistry scripting() {
+  core::SystemRegistry registry;
+  registry.add("scripting", makeScriptSystem);
+  return registry;
+}
+
+ScriptSystem& scriptsOf(core::LiveScene& live) {
+  return dynamic_cast<ScriptSystem&>(*live.scene().findSystem("scripting"));
+}
+
+struct Played {
+  int32_t highest = 0, farthest = 0;  // the player's largest y and x on face 0
+  GameStatus last;
+  std::set<std::string> messages;  // every message shown
+};
+
+// Plays `frames` frames, holding right when asked; no frame may fail.
+Played play(core::LiveScene& live, int frames, bool right) {
+  Played run;
+  core::InputEdges edges;
+  for (int f = 0; f < frames; ++f) {
+    const std::optional<std::string> error =
+        live.step(edges.next(right ? core::InputFrame::bit(core::Button::Right) : 0));
+    EXPECT_FALSE(error.has_value()) << *error;
+    run.last = scriptsOf(live).status();
+    run.messages.insert(run.last.message);
+    if (run.last.face == live.scene().stage()->part(0)) {
+      run.highest = std::max(run.highest, run.last.y);
+      run.farthest = std::max(run.farthest, run.last.x);
+    }
+  }
+  return run;
+}
+
+// A springboard in five lines: what the issue asked of a mod's tag.
+const char* kSprings =
+    "return { tags = { spring = { color = '#cc79a7', glow = true,\n"
+    "  contact = function(game, entity, tag, kind, part, line, nx, ny)\n"
+    "    game.world.setVelocity(entity, nx * 20, ny * 20)\n"
+    "    return { keepVelocity = true }\n"
+    "  end } } }\n";
+
+TEST(Tags, AModsWordInTheLevelFileLaunchesThePlayer) {
+  ModLevel sprung("tags_spring", "spring", "", {kSprings});
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene live(sprung.scene, registry, false);
+  const Played withSpring = play(live, 240, false);
+  // The same level on a plain floor: the player lands at y 608 and stays.
+  ModLevel plain("tags_plain", "solid", "", {kSprings});
+  core::LiveScene still(plain.scene, registry, false);
+  const Played withoutSpring = play(still, 240, false);
+  EXPECT_LT(withoutSpring.highest, 710);
+  // Thrown up at 20 units a frame against 0.35 of gravity: about 570 units over the floor.
+  EXPECT_GT(withSpring.highest, 1100) << "the spring did not throw the player";
+  EXPECT_EQ(withSpring.last.deaths, 0);
+}
+
+TEST(Tags, TheModsTagIsInTheTableWithItsLookAndNumberForTheRendererAndLua) {
+  ModLevel level("tags_look", "spring", "", {kSprings});
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene live(level.scene, registry, false);
+  const stage::TagKind* spring = live.scene().tags()->find("spring");
+  ASSERT_NE(spring, nullptr);
+  EXPECT_GE(spring->number, stage::kFirstModTag);
+  EXPECT_NE(spring->owner.find("mod1.lua"), std::string::npos) << spring->owner;
+  EXPECT_EQ(spring->style.r, 0xcc);
+  EXPECT_TRUE(spring->style.glow);
+  // The renderer's view of the floor: the spring's colour, from the table.
+  const auto view = core::stageView(live.scene(), live.scene().stage()->part(0));
+  bool drawn = false;
+  for (const core::ViewLine& l : view->faces[0].lines)
+    drawn = drawn || (l.tag == spring->number && l.style.r == 0xcc && l.style.g == 0x79 && l.style.glow);
+  EXPECT_TRUE(drawn) << "the floor is not drawn in the spring's look";
+  // Lua sees the same table.
+  EXPECT_EQ(scriptsOf(live).evaluate("return platon.tags.spring", "t"), std::to_string(spring->number));
+  EXPECT_EQ(scriptsOf(live).evaluate("return platon.tags.hazard", "t"), "1");
+  EXPECT_EQ(scriptsOf(live).evaluate("for _, k in ipairs(platon.tagKinds) do if k.word == 'spring' then "
+                                     "return k.color .. ' ' .. k.passable end end",
+                                     "t"),
+            "#cc79a7 wall");
+}
+
+TEST(Tags, APassableModTagLetsThePlayerThroughAndSaysWhenEntered) {
+  const std::string gate =
+      "return { tags = { gate = { passable = true, color = '#56b4e9',\n"
+      "  beginContact = function(game) game.message('through the gate') end } } }\n";
+  ModLevel level("tags_gate", "", "gate", {gate});
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene live(level.scene, registry, false);
+  const Played run = play(live, 300, true);
+  EXPECT_EQ(run.last.message, "through the gate");
+  EXPECT_GT(run.farthest, 2200) << "the gate stopped the player";
+  // The same wall as a plain wall stops it.
+  ModLevel wall("tags_wall", "", "solid", {gate});
+  core::LiveScene stopped(wall.scene, registry, false);
+  EXPECT_LT(play(stopped, 300, true).farthest, 2000);
+}
+
+TEST(Tags, AModTagsPassageMayBeAFunctionLikeADoor) {
+  // Open from frame 100 on: the player, walking from frame 0, waits at it until then.
+  const std::string gate =
+      "return { tags = { gate = { passable = function(game) return game.frame() >= 100 end } } }\n";
+  ModLevel level("tags_door", "", "gate", {gate});
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene live(level.scene, registry, false);
+  EXPECT_LT(play(live, 95, true).farthest, 2000);
+  EXPECT_GT(play(live, 200, true).farthest, 2200);
+}
+
+TEST(Tags, ModsAddHandlersToTheGamesTagsAndComposeInTheManifestsOrder) {
+  // Both mods answer the spring's contact; the second's answer (later in the manifest) is the
+  // contact's: a spring the second mod made dead.
+  const std::string second =
+      "return { tags = { spring = { contact = function(game) game.message('second') return {} end },\n"
+      "                  hazard = { contact = function(game) game.message('hazard seen') end } } }\n";
+  ModLevel level("tags_order", "spring", "", {kSprings, second});
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene live(level.scene, registry, false);
+  const Played run = play(live, 240, false);
+  EXPECT_EQ(run.last.message, "second");
+  EXPECT_LT(run.highest, 710) << "the later mod's answer did not win";
+  // The game's hazard still kills, and the mod saw it.
+  ModLevel deadly("tags_hazard", "hazard", "", {kSprings, second});
+  core::LiveScene dying(deadly.scene, registry, false);
+  const Played died = play(dying, 120, false);
+  EXPECT_GE(died.last.deaths, 1);
+  EXPECT_TRUE(died.messages.count("hazard seen")) << "the mod's hazard handler never ran";
+}
+
+// Every way a mod's tags can be wrong is refused when the scene loads, naming the mod and the word.
+TEST(Tags, AWrongDeclarationIsTheModsErrorByName) {
+  const std::pair<std::string, std::string> cases[] = {
+      {"return { tags = { spring = { color = 'pink' } } }", "mod1.lua: tags.spring.color: expected a colour"},
+      {"return { tags = { spring = { glow = 1 } } }", "mod1.lua: tags.spring.glow: expected true or false"},
+      {"return { tags = { spring = { bounce = 2 } } }", "mod1.lua: tags.spring.bounce: expected one of color"},
+      {"return { tags = { spring = { contact = 3 } } }", "mod1.lua: tags.spring.contact: expected a function"},
+      {"return { tags = { spring = 5 } }", "mod1.lua: tags.spring: expected a table"},
+      {"return { tags = 'spring' }", "mod1.lua: tags: expected a table of tag words"},
+      {"return { tags = { [1] = {} } }", "mod1.lua: tags: the keys are tag words"},
+      {"return { tags = { hazard = { color = '#000000' } } }",
+       "mod1.lua: tags.hazard: the tag 'hazard' is the game's: a mod may add handlers to it, not change its look"},
+      {"return { tags = { spring = { contact = function() end } } }",
+       "mod1.lua: tags.spring: no tag 'spring' to add handlers to"},
+      {"return { tags = { tag = { color = '#000000' } } }", "mod1.lua: tags.tag: 'tag' is the level format's own"},
+      {"return { tags = { oneway = { glow = true } } }", "mod1.lua: tags.oneway: 'oneway' is the level format's own"},
+      {"return { tags = { ['2x'] = { glow = true } } }", "mod1.lua: tags.2x: '2x' is no tag word"},
+  };
+  const core::SystemRegistry registry = scripting();
+  int i = 0;
+  for (const auto& [mod, expected] : cases) {
+    SCOPED_TRACE(mod);
+    ModLevel level("tags_wrong_" + std::to_string(i++), "", "", {mod});
+    try {
+      core::LiveScene live(level.scene, registry, false);
+      ADD_FAILURE() << "loaded";
+    } catch (const std::exception& e) {
+      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+    }
+  }
+  // The same word from two mods: the second is told whose it is.
+  ModLevel twice("tags_twice", "", "", {kSprings, kSprings});
+  try {
+    core::LiveScene live(twice.scene, registry, false);
+    ADD_FAILURE() << "loaded";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("mod2.lua: tags.spring: the tag 'spring' is "), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("mod1.lua's: a mod may add handlers to it"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Tags, ALevelWritingAWordNoModDeclaresListsTheKnownOnes) {
+  ModLevel level("tags_unknown", "springy", "", {kSprings});
+  const core::SystemRegistry registry = scripting();
+  try {
+    core::LiveScene live(level.scene, registry, false);
+    ADD_FAILURE() << "loaded";
+  } catch (const std::exception& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("cube.level:6:18: unknown segment word 'springy'"), std::string::npos) << what;
+    EXPECT_NE(what.find("door N, switch N, spring, tag N"), std::string::npos) << what;
+  }
+}
+
+TEST(Tags, AReloadKeepsTheModsTags) {
+  ModLevel level("tags_reload", "spring", "", {kSprings});
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene live(level.scene, registry, false);
+  play(live, 30, false);
+  const core::ReloadReport r = live.reload();
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_GT(play(live, 240, false).highest, 1100);
+}
+
+}  // namespace
+}  // namespace platon::script
