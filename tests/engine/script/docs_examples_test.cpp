@@ -104,6 +104,20 @@ TEST(DocsExamples, EveryLuaExampleInScriptingMdRuns) {
       folder.write("r/level.lua", kFloor);
       folder.write("r/rules.lua", e.code);
       play(folder.write("r/scene.lua", withRules("rules.lua")));
+    } else if (e.kind == "mod") {
+      // A mod that declares a word: the first face's floor is written with it, and the player
+      // lands on it.
+      const std::smatch word = [&] {
+        std::smatch m;
+        std::regex_search(e.code, m, std::regex(R"(tags = \{ (\w+) =)"));
+        return m;
+      }();
+      const std::string floor = "0 512 4096 512" + (word.empty() ? std::string() : " " + word[1].str());
+      folder.write("mod/cube.level", "HEXAHEDRON\n0 600 700\n2 2000 800\n4096\n%\n" + floor + "\n%\n%\n%\n%\n%\n");
+      folder.write("mod/mod.lua", e.code);
+      play(folder.write("mod/scene.lua",
+                        "return { systems = { 'scripting' }, stage = { level = 'cube.level' }, gravity = 0.35,"
+                        " scripts = { preset = 'game', mods = { 'mod.lua' } } }\n"));
     } else if (e.kind == "scenario") {
       const ScenarioResult r = runScenario(folder.write("s.lua", e.code));
       EXPECT_TRUE(r.passed) << r.message;
@@ -119,7 +133,8 @@ TEST(DocsExamples, EveryLuaExampleInScriptingMdRuns) {
       ADD_FAILURE() << "untagged or unknown example kind '" << e.kind << "'";
     }
   }
-  for (const char* kind : {"manifest", "level", "rules", "scenario", "replay"}) EXPECT_GT(counts[kind], 0) << kind;
+  for (const char* kind : {"manifest", "level", "rules", "mod", "scenario", "replay"})
+    EXPECT_GT(counts[kind], 0) << kind;
 }
 
 }  // namespace

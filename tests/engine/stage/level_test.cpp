@@ -441,3 +441,97 @@ TEST(Check, ReachabilityAndWarnings) {
 }
 
 }  // namespace
+
+namespace {
+
+// A table with a mod's kinds on top of the game's: a word alone and a numbered one.
+std::shared_ptr<const stage::TagTable> withModTags() {
+  auto t = std::make_shared<stage::TagTable>(*stage::gameTags());
+  t->add({"spring", stage::kFirstModTag, 0, stage::Passage::Wall, {204, 121, 167, true}, "springs.lua"});
+  t->add({"bumper", stage::kFirstModTag + stage::kModTagStep, 999, stage::Passage::Through, {}, "bumpers.lua"});
+  return t;
+}
+
+TEST(Tags, TheTableRefusesWhatWouldMakeAWordOrANumberMeanTwoThings) {
+  stage::TagTable t = *stage::gameTags();
+  const std::pair<stage::TagKind, std::string> refused[] = {
+      {{"hazard", 5000}, "the tag 'hazard' is already the game's"},
+      {{"lava", 1}, "overlaps 'hazard'"},
+      {{"lava", 1500}, "overlaps 'door'"},       // inside door's numbers
+      {{"lava", 990, 20}, "overlaps 'door'"},    // a range reaching into them
+      {{"lava", 2999, 5}, "overlaps 'switch'"},  // the last switch
+      {{"tag", 9000}, "the level format's own word"},
+      {{"oneway", 9000}, "the level format's own word"},
+      {{"", 9000}, "is no tag word"},
+      {{"9lives", 9000}, "is no tag word"},
+      {{"la va", 9000}, "is no tag word"},
+      {{std::string(33, 'a'), 9000}, "is no tag word"},
+      {{"lava", 4294967290u, 10}, "runs past the largest tag number"},
+  };
+  for (const auto& [kind, why] : refused) {
+    SCOPED_TRACE(kind.word);
+    try {
+      t.add(kind);
+      ADD_FAILURE() << "added";
+    } catch (const stage::TagError& e) {
+      EXPECT_NE(std::string(e.what()).find(why), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_EQ(t.kinds().size(), stage::gameTags()->kinds().size());
+  t.add({"lava", 3000, 0});  // just past the last switch
+  EXPECT_EQ(t.number("lava"), 3000u);
+}
+
+TEST(Tags, AModsWordsAreReadWrittenAndListedLikeTheGames) {
+  const auto tags = withModTags();
+  const std::string text =
+      "HEXAHEDRON\n0 600 700\n2 2000 800\n4096\n%\n0 512 4096 512 spring\n"
+      "100 900 400 900 oneway bumper 7\n500 900 700 900 door 3\n800 900 900 900 tag 42\n"
+      "%\n%\n%\n%\n%\n";
+  const stage::Level level = stage::parseLevel(text, "m.level", tags);
+  ASSERT_EQ(level.faces[0].lines.size(), 4u);
+  EXPECT_EQ(level.faces[0].lines[0].tag, stage::kFirstModTag);
+  EXPECT_EQ(level.faces[0].lines[1].tag, stage::kFirstModTag + stage::kModTagStep + 7);
+  const std::string written = stage::writeLevel(level);
+  EXPECT_NE(written.find("0 512 4096 512 spring\n"), std::string::npos) << written;
+  EXPECT_NE(written.find("100 900 400 900 oneway bumper 7\n"), std::string::npos) << written;
+  EXPECT_NE(written.find("800 900 900 900 tag 42\n"), std::string::npos) << written;
+  EXPECT_EQ(stage::parseLevel(written, "m.level", tags), level);
+  // Without the mod, its words are unknown, and the message lists what the table knows.
+  try {
+    stage::parseLevel(text, "m.level");
+    ADD_FAILURE() << "read without the mod's words";
+  } catch (const stage::StageError& e) {
+    EXPECT_STREQ(e.what(),
+                 "m.level:6:16: unknown segment word 'spring' (known: oneway, solid, hazard, goal, "
+                 "checkpoint, door N, switch N, tag N)");
+  }
+  try {
+    stage::parseLevel("HEXAHEDRON\n0 600 700\n2 2000 800\n4096\n%\n0 512 4096 512 bumper 1000\n%\n%\n%\n%\n%\n",
+                      "m.level", tags);
+    ADD_FAILURE() << "bumper 1000 read";
+  } catch (const stage::StageError& e) {
+    EXPECT_NE(std::string(e.what()).find("m.level:6:23:"), std::string::npos) << e.what();
+  }
+  // A passable kind of a mod's is passed by the level checks as the goal is.
+  EXPECT_TRUE(tags->playerPasses(stage::kFirstModTag + stage::kModTagStep + 7));
+  EXPECT_FALSE(tags->playerPasses(stage::kFirstModTag));
+}
+
+// docs/level-format.md's table of words is the game's table, word for word and number for number.
+TEST(Tags, TheDocumentedWordsAreTheGamesTable) {
+  const std::string doc = readFile(std::string(PLATON_SOURCE_ROOT) + "/docs/level-format.md");
+  for (const stage::TagKind& k : stage::gameTags()->kinds()) {
+    SCOPED_TRACE(k.word);
+    const std::string word = "`" + k.word + (k.count ? " N`" : "`");
+    const size_t row = doc.find("| " + word);
+    const size_t rowSolid = doc.find(word + " |");
+    ASSERT_TRUE(row != std::string::npos || rowSolid != std::string::npos) << "no row for " << word;
+    const size_t at = row != std::string::npos ? row : rowSolid;
+    const std::string line = doc.substr(at, doc.find('\n', at) - at);
+    const std::string number = k.count ? std::to_string(k.number) + " + N" : std::to_string(k.number);
+    EXPECT_NE(line.find("| " + number + " |"), std::string::npos) << line;
+  }
+}
+
+}  // namespace

@@ -29,8 +29,8 @@ struct TagKind {
   uint32_t number = 0;  // the tag; for a numbered kind the base, and "word n" is number + n
   uint32_t count = 0;   // 0: the word stands alone; n > 0: it takes a number 1..n
   Passage passage = Passage::Wall;
-  TagStyle style;
-  std::string owner;  // who declared it: "the game", or a mod's file (for messages)
+  TagStyle style = {};
+  std::string owner = {};  // who declared it: "the game", or a mod's file (for messages)
 
   bool holds(uint32_t tag) const { return count == 0 ? tag == number : tag > number && tag - number <= count; }
 };
