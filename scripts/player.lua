@@ -25,6 +25,7 @@ Player.JUMP_CUT = 4         -- releasing jump while rising from a jump caps the 
 Player.COYOTE_FRAMES = 6    -- a jump still works this long after leaving a ledge
 Player.BUFFER_FRAMES = 6    -- a jump pressed this long before landing happens on landing
 Player.GROUND_COS = 0.64    -- a contact whose normal is within ~50 degrees of up is ground
+Player.WALL_COS = 0.9       -- one within ~25 degrees of sideways is a wall; self.wall: the way off it (1, -1)
 Player.LAND_SPEED = 2.5     -- units per frame: a landing from a fall this fast or faster is heard
 Player.LAND_SQUASH = 0.7    -- the ball's height over its width on a hard landing (drawn only)
 Player.JUMP_STRETCH = 1.3   -- and at a jump's start
@@ -40,8 +41,8 @@ function Player.spawn(_, face, x, y, degrees)
     error(err, 2)
   end
   look(e, Player.COLOUR, "ball")  -- the engine draws it, once, however many faces it spans
-  return setmetatable({ entity = e, coyote = 0, buffer = 0, grounded = false, jumping = false, face = face, fall = 0,
-                        squash = 1 }, Player)
+  return setmetatable({ entity = e, coyote = 0, buffer = 0, grounded = false, wall = 0, jumping = false, face = face,
+                        fall = 0, squash = 1 }, Player)
 end
 
 local function approach(value, target, step)
@@ -65,10 +66,12 @@ function Player.tick(self, input)
   end
 
   local wasGrounded = self.grounded
-  self.grounded = false
+  self.grounded, self.wall = false, 0
   for i = 1, contactCount(e) do
     local nx, ny = contact(e, i)
     if -(nx * dx + ny * dy) > Player.GROUND_COS then self.grounded = true end
+    local side = nx * rx + ny * ry  -- a wall's normal points away from it, along right or left
+    if side > Player.WALL_COS then self.wall = 1 elseif side < -Player.WALL_COS then self.wall = -1 end
   end
   -- The fall speed the frame before this one's contact stopped it: louder the harder it lands.
   if self.grounded and not wasGrounded and (self.fall or 0) > Player.LAND_SPEED then
@@ -97,8 +100,8 @@ function Player.tick(self, input)
   -- The jump cut shortens the player's own jump only: a rise a springboard, a rule or a script
   -- gave it is its to keep.
   if self.grounded or fall >= 0 then self.jumping = false end
-  if self.buffer > 0 and self.coyote > 0 then
-    fall = -Player.JUMP_SPEED
+  if self.buffer > 0 and self:canJump() then
+    along, fall = self:jump(along)
     self.buffer, self.coyote, self.jumping = 0, 0, true
     play("jump")
     self.squash = Player.JUMP_STRETCH
@@ -117,6 +120,14 @@ function Player.tick(self, input)
     look(e, Player.COLOUR, "ball", squash)
   end
 end
+
+-- Whether a jump asked for now happens: on the ground, or just off it (coyote time). Asked only
+-- while a jump is wanted (pressed, or buffered). A double jump or a wall jump overrides it.
+function Player.canJump(self) return self.coyote > 0 end
+
+-- The jump: the speed along the face (+ right) and the fall speed (- up) it starts with, from the
+-- speed along the face before it. A wall jump overrides it to push off the wall.
+function Player.jump(_, along) return along, -Player.JUMP_SPEED end
 
 -- The engine draws the player's body by its look (set in spawn): a player that wants more (a
 -- face, a trail) draws it here with platon.draw.

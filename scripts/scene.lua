@@ -419,7 +419,11 @@ function scene.build(frames)
   -- What the player and progression scripts see of the level: its start, as data.
   local start = Level.start
   game.level = { start = start and { face = start.face, x = start.x, y = start.y } }
-  local Player, playerId = load(setup.player, setup.trusted.player, game)
+  -- A level's own player script gets the game's player to build on (its second argument): a copy
+  -- of scripts/player.lua run in a sandbox of its own, so that what the level changes in it stays
+  -- the level's and its functions run inside the level's limits.
+  local base = not setup.trusted.player and setup.player ~= "" and engine.load("scripts/player.lua", "base", game)
+  local Player, playerId = load(setup.player, setup.trusted.player, game, base or nil)
   PlayerModule = setup.trusted.player and Player or sandboxedFunctions(Player, playerId, GAME_CHECKS)
   game.Player = sealed(PlayerModule, "game.Player")
   local progression, progressionId = load(setup.progression, setup.trusted.progression, game)

@@ -152,21 +152,25 @@ std::string engineScript(const std::string& root, const std::string& path) {
   return file;
 }
 
-// engine.load(path, trusted, ...) -> the chunk's result (and, sandboxed, its sandbox's id). Trust
+// engine.load(path, trusted or "base", ...) -> the chunk's result (and, sandboxed, its sandbox's id). Trust
 // is what the manifest decided from what it wrote (setup.trusted): a trusted path is an engine
 // script (scripts/..., resolved under the engine's root); any other was resolved and checked by
 // the manifest (inside the level's folder) and runs sandboxed.
+// how may also be "base": an engine script run sandboxed, as the base a level's own script
+// extends (scripts/player.lua under a level's player: its functions then run inside the level's
+// limits, as the level's own do).
 int engineLoad(lua_State* L) {
   ScriptSystem::State& state = stateOf(L);
   const std::string path(lua::checkString(L, 1));
-  const bool trusted = lua::checkBoolean(L, 2);
+  const bool base = lua_type(L, 2) == LUA_TSTRING && std::string_view(lua_tostring(L, 2)) == "base";
+  const bool trusted = !base && lua::checkBoolean(L, 2);
   const int nargs = lua_gettop(L) - 2;
   // A file that cannot be found is named at the manifest's line:column that names it.
   const auto place = state.scene->manifest().placeOf.find(path);
   const std::string named = place == state.scene->manifest().placeOf.end() ? "" : " (named at " + place->second + ")";
   std::string file;
   try {
-    file = trusted ? engineScript(state.root, path) : path;
+    file = trusted || base ? engineScript(state.root, path) : path;
   } catch (const ScriptError& e) {
     throw ScriptError(e.what() + named, e.traceback());
   }

@@ -118,6 +118,12 @@ TEST(DocsExamples, EveryLuaExampleInScriptingMdRuns) {
       play(folder.write("mod/scene.lua",
                         "return { systems = { 'scripting' }, stage = { level = 'cube.level' }, gravity = 0.35,"
                         " scripts = { preset = 'game', mods = { 'mod.lua' } } }\n"));
+    } else if (e.kind == "player") {
+      folder.write("p/level.lua", kFloor);
+      folder.write("p/player.lua", e.code);
+      play(folder.write("p/scene.lua",
+                        "return { systems = { 'scripting' }, gravity = 0.35, scripts = { preset = "
+                        "'game', level = 'level.lua', player = 'player.lua' } }\n"));
     } else if (e.kind == "scenario") {
       const ScenarioResult r = runScenario(folder.write("s.lua", e.code));
       EXPECT_TRUE(r.passed) << r.message;
@@ -133,7 +139,7 @@ TEST(DocsExamples, EveryLuaExampleInScriptingMdRuns) {
       ADD_FAILURE() << "untagged or unknown example kind '" << e.kind << "'";
     }
   }
-  for (const char* kind : {"manifest", "level", "rules", "mod", "scenario", "replay"})
+  for (const char* kind : {"manifest", "level", "rules", "mod", "player", "scenario", "replay"})
     EXPECT_GT(counts[kind], 0) << kind;
 }
 

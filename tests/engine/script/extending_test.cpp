@@ -1,6 +1,7 @@
-// Line tags that mods add (docs/scripting.md, "Tags"): a word the level file writes, with its look
-// and its handlers, on top of the game's rules, never a copy of them; several mods in the
-// manifest's order. Played through the engine as a level with mods is.
+// Extending the game, never copying it: line tags that mods add (docs/scripting.md, "Tags"), a
+// word the level file writes with its look and its handlers, on top of the game's rules, several
+// mods in the manifest's order; and a level's player built on the game's (docs/scripting.md, "The
+// player"). Played through the engine as such a level is.
 #include <algorithm>
 #include <fstream>
 #include <set>
@@ -25,7 +26,7 @@ struct ModLevel {
   Folder folder;
   std::string scene;
   ModLevel(const std::string& name, const std::string& floorWords, const std::string& wallWords,
-           const std::vector<std::string>& mods)
+           const std::vector<std::string>& mods, const std::string& player = "")
       : folder(name) {
     folder.write("cube.level", "HEXAHEDRON\n0 600 700\n2 2000 800\n4096\n%\n256 512 4096 512 " + floorWords +
                                    "\n2000 513 2000 1400 " + wallWords +
@@ -36,10 +37,12 @@ struct ModLevel {
       folder.write(file, mods[i]);
       list += "'" + file + "', ";
     }
-    scene = folder.write("scene.lua",
-                         "return { systems = { 'scripting' }, stage = { level = 'cube.level' }, gravity = 0.35,"
-                         " scripts = { preset = 'game', mods = { " +
-                             list + "} } }\n");
+    if (!player.empty()) folder.write("player.lua", player);
+    scene =
+        folder.write("scene.lua",
+                     "return { systems = { 'scripting' }, stage = { level = 'cube.level' }, gravity = 0.35,"
+                     " scripts = { preset = 'game', " +
+                         std::string(player.empty() ? "" : "player = 'player.lua', ") + "mods = { " + list + "} } }\n");
   }
 };
 
@@ -59,13 +62,15 @@ struct Played {
   std::set<std::string> messages;  // every message shown
 };
 
-// Plays `frames` frames, holding right when asked; no frame may fail.
-Played play(core::LiveScene& live, int frames, bool right) {
+// Plays `frames` frames, holding right when asked, jumping on the frames in `jumps` (counted from
+// this call's first); no frame may fail.
+Played play(core::LiveScene& live, int frames, bool right, const std::set<int>& jumps = {}) {
   Played run;
   core::InputEdges edges;
   for (int f = 0; f < frames; ++f) {
-    const std::optional<std::string> error =
-        live.step(edges.next(right ? core::InputFrame::bit(core::Button::Right) : 0));
+    const uint8_t held = (right ? core::InputFrame::bit(core::Button::Right) : 0) |
+                         (jumps.count(f) ? core::InputFrame::bit(core::Button::Jump) : 0);
+    const std::optional<std::string> error = live.step(edges.next(held));
     EXPECT_FALSE(error.has_value()) << *error;
     run.last = scriptsOf(live).status();
     run.messages.insert(run.last.message);
@@ -234,6 +239,91 @@ TEST(Tags, AReloadKeepsTheModsTags) {
   const core::ReloadReport r = live.reload();
   ASSERT_TRUE(r.ok) << r.error;
   EXPECT_GT(play(live, 240, false).highest, 1100);
+}
+
+// The player: a double jump and a wall jump, each a few lines on top of the game's player, which a
+// level's own player script is handed (docs/scripting.md, "The player").
+const char* kDoubleJump =
+    "local game, Player = ...\n"
+    "local canJump = Player.canJump\n"
+    "function Player.canJump(self)\n"
+    "  if self.grounded then self.airJumps = 1 end\n"
+    "  if canJump(self) then return true end\n"
+    "  if (self.airJumps or 0) == 0 then return false end\n"
+    "  self.airJumps = self.airJumps - 1\n"
+    "  return true\n"
+    "end\n"
+    "return Player\n";
+
+const char* kWallJump =
+    "local game, Player = ...\n"
+    "local canJump, jump = Player.canJump, Player.jump\n"
+    "function Player.canJump(self) return canJump(self) or self.wall ~= 0 end\n"
+    "function Player.jump(self, along)\n"
+    "  if self.grounded or self.wall == 0 then return jump(self, along) end\n"
+    "  return self.wall * Player.WALK_SPEED, -Player.JUMP_SPEED  -- off the wall\n"
+    "end\n"
+    "return Player\n";
+
+TEST(ExtendedPlayer, ADoubleJumpJumpsAgainInTheAirAndOnlyOnce) {
+  const core::SystemRegistry registry = scripting();
+  // Landed by frame 60; jump at 60, again near the top (75), and once more (90), each held for 12
+  // frames (a released jump is cut short).
+  std::set<int> jumps;
+  for (int at : {60, 75, 90})
+    for (int f = at; f < at + 12; ++f) jumps.insert(f);
+  ModLevel game("player_game", "", "", {}), doubled("player_double", "", "", {}, kDoubleJump);
+  core::LiveScene plain(game.scene, registry, false), extended(doubled.scene, registry, false);
+  const Played one = play(plain, 160, false, jumps), two = play(extended, 160, false, jumps);
+  // One jump held 12 frames: about 130 units over the 608 it stands at; the second adds as much
+  // again, and the third nothing.
+  EXPECT_LT(one.highest, 608 + 150);
+  EXPECT_GT(two.highest, one.highest + 80) << "no second jump";
+  EXPECT_LT(two.highest, 608 + 2 * 150) << "a third jump: the air jump came back without landing";
+  // Landed again, it has its air jump back.
+  std::set<int> later;
+  for (int at : {10, 25})
+    for (int f = at; f < at + 12; ++f) later.insert(f);
+  const Played again = play(extended, 160, false, later);
+  EXPECT_GT(again.highest, one.highest + 80);
+}
+
+TEST(ExtendedPlayer, AWallJumpPushesOffTheWallTheGamesPlayerOnlySlidesDown) {
+  const core::SystemRegistry registry = scripting();
+  // Walk right into the wall at x 2000 (reached by frame 200), jump, and jump again against it,
+  // each held for 10 frames.
+  std::set<int> jumps;
+  for (int at : {200, 212})
+    for (int f = at; f < at + 10; ++f) jumps.insert(f);
+  ModLevel game("wall_game", "", "", {}), walled("wall_jump", "", "", {}, kWallJump);
+  core::LiveScene plain(game.scene, registry, false), extended(walled.scene, registry, false);
+  play(plain, 213, true, jumps);
+  play(extended, 213, true, jumps);
+  const Played stays = play(plain, 12, true), off = play(extended, 12, true);
+  EXPECT_GT(stays.last.x, 1880) << "the game's player left the wall";
+  EXPECT_LT(off.last.x, 1880) << "no push off the wall";
+  EXPECT_GT(off.highest, stays.highest) << "the wall jump did not go up";
+}
+
+TEST(ExtendedPlayer, TheBaseIsTheLevelsOwnCopyRunInItsLimits) {
+  // What the level changes in its player is its own: the game's player (another level, the same
+  // process) is untouched; and a loop in the base's overridden hook is stopped by the budget.
+  const core::SystemRegistry registry = scripting();
+  ModLevel fast("player_fast", "", "", {}, "local game, Player = ...\nPlayer.WALK_SPEED = 30\nreturn Player\n");
+  core::LiveScene quick(fast.scene, registry, false);
+  ModLevel game("player_plain", "", "", {});
+  core::LiveScene plain(game.scene, registry, false);
+  EXPECT_GT(play(quick, 60, true).farthest, play(plain, 60, true).farthest + 300) << "the level's speed is not used";
+  EXPECT_EQ(scriptsOf(plain).evaluate("local game = ... return game.Player.WALK_SPEED", "t"), "9");
+  ModLevel looping("player_loop", "", "", {},
+                   "local game, Player = ...\nfunction Player.canJump() while true do end end\nreturn Player\n");
+  core::LiveScene loops(looping.scene, registry, false);
+  core::InputEdges edges;
+  std::optional<std::string> error;
+  for (int f = 0; f < 80 && !error; ++f)
+    error = loops.step(edges.next(f == 70 ? core::InputFrame::bit(core::Button::Jump) : 0));
+  ASSERT_TRUE(error.has_value()) << "the loop ran unchecked";
+  EXPECT_NE(error->find("player.lua:2"), std::string::npos) << *error;
 }
 
 }  // namespace
