@@ -41,7 +41,7 @@ const Command kCommands[] = {
      "  --settings F     volumes, keys, display (default $XDG_CONFIG_HOME/platon/settings.txt)\n"
      "  --record DIR     write a replay of each level played to DIR/<level>.replay\n"
      "keys: arrows or WASD move, Space jumps, R restarts, Esc pauses, Tab settings, F5 reloads,\n"
-     "      F3 frame rate, F11 fullscreen, F12 screenshot; a gamepad works too\n",
+     "      F2 debug view, F3 frame rate, F11 fullscreen, F12 screenshot; a gamepad works too\n",
      gameCommand},
     {"play", "one level in a window (or headless), with hot reload",
      "usage: platon play LEVEL [--frames N] [--input run.replay] [--record out.replay]\n"
@@ -55,16 +55,18 @@ const Command kCommands[] = {
      "  --headless       no window, even when the scene names \"rendering\"; exits 1 if a frame had a\n"
      "                   script error\n"
      "  --shot F         save the last frame shown to F (PNG) at the end\n"
-     "keys in the window: arrows or WASD move, Space jumps, R restarts, F3 frame rate, F11 fullscreen,\n"
-     "F12 screenshot, Esc quits\n"
+     "keys in the window: arrows or WASD move, Space jumps, R restarts, F2 debug view, F3 frame rate,\n"
+     "F11 fullscreen, F12 screenshot, Esc quits\n"
      "SIGINT or SIGTERM ends the play after the frame; if the frame does not end, a second signal, or\n"
      "3 s after the first ($PLATON_STOP_GRACE seconds if set), ends it at once, without writing the recording\n",
      playCommand},
     {"shot", "a level's picture after N frames, as a PNG (offscreen)",
-     "usage: platon shot LEVEL [--frame N] [--size WxH] [--input run.replay] --out file.png\n"
+     "usage: platon shot LEVEL [--frame N] [--size WxH] [--input run.replay] [--debug] --out file.png\n"
      "  --frame N        the picture after N frames (default 0: the start)\n"
      "  --size WxH       pixels (default 1280x720)\n"
      "  --input F        the buttons of a recorded run\n"
+     "  --debug          the debug view over it (F2 in a window): lines by kind and tag, platforms,\n"
+     "                   bodies and their copies across edges, velocities, contacts and normals\n"
      "  --out F          the PNG to write\n",
      shotCommand},
     {"run", "scenarios and replays, headless: pass or fail each",

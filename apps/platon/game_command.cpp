@@ -238,7 +238,9 @@ bool Game::load(size_t level) {
   loaded_ = true;
   notice_.clear();
   lastFrameError_.clear();
+  const bool debug = view_.debug();  // the overlay stays on from one level to the next
   view_ = GameView{};
+  view_.setDebug(debug);
   view_.step(live_->scene(), status(), 1.0 / clock_.hz());
   edges_.reset();
   taps_.reset();
@@ -280,6 +282,7 @@ void Game::handle(const core::WindowInput& input) {
   }
   for (const core::Key key : input.pressed) {
     if (key == core::Key::ShowFps) showFps_ = !showFps_;
+    if (key == core::Key::Debug) view_.setDebug(!view_.debug());
     if (key == core::Key::Screenshot)
       if (core::Display* d = display()) {
         notice_ = saveScreenshot(*d);

@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <utility>
 
+#include "platon/core/debug_view.h"
+
 namespace platon::app {
 
 script::GameStatus statusOf(core::Scene& scene) {
@@ -71,6 +73,7 @@ void GameView::redraw(core::Scene& scene) {
   drawing_.clear();
   scene.draw(drawing_);
   feedback_.draw(drawing_);
+  if (debug_) core::drawDebug(scene, drawing_);
   ++steps_;
 }
 

@@ -39,6 +39,9 @@ class GameView {
   const camera::Camera& camera() const { return camera_; }
   // The events' particles, flashes, shake and freezes (feedback.h).
   Feedback& feedback() { return feedback_; }
+  // The debug overlay (core/debug_view.h) over the picture, from the next step on.
+  void setDebug(bool on) { debug_ = on; }
+  bool debug() const { return debug_; }
 
  private:
   // The step's picture: the scene's shapes and the feedback's, the last one kept to draw between.
@@ -55,6 +58,7 @@ class GameView {
   bool placed_ = false;
   Feedback feedback_;
   uint64_t steps_ = 0;  // the shake's phase
+  bool debug_ = false;
 };
 
 }  // namespace platon::app

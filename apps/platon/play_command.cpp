@@ -266,6 +266,7 @@ int playCommand(int argc, char** argv) {
       };
       if (events.closed || pressed(core::Key::Escape)) break;
       if (pressed(core::Key::ShowFps)) showFps = !showFps;
+      if (pressed(core::Key::Debug)) gameView.setDebug(!gameView.debug());
       if (pressed(core::Key::Screenshot)) std::printf("%s\n", saveScreenshot(*display).c_str());
       keys = events.held;
       taps.add(events.tapped);

@@ -31,6 +31,7 @@ int shotCommand(int argc, char** argv) {
   std::string level, out, inputPath;
   uint64_t frames = 0;
   int width = 1280, height = 720;
+  bool debug = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--frame" && i + 1 < argc) {
@@ -50,6 +51,8 @@ int shotCommand(int argc, char** argv) {
       inputPath = argv[++i];
     else if (a == "--out" && i + 1 < argc)
       out = argv[++i];
+    else if (a == "--debug")
+      debug = true;
     else if (level.empty() && !a.empty() && a[0] != '-')
       level = a;
     else
@@ -69,6 +72,7 @@ int shotCommand(int argc, char** argv) {
     display.resize(width, height);
     auto status = [&] { return statusOf(live.scene()); };
     GameView view;
+    view.setDebug(debug);
     view.step(live.scene(), status(), 1.0 / 60);
     core::InputEdges edges;
     for (uint64_t f = 0; f < frames; ++f) {

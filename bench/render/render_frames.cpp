@@ -178,7 +178,7 @@ Frames measureLevel(const std::string& scenePath, const std::string& replayPath,
     }
     std::vector<render::LitVertex> triangles = mesh.fixed();
     mesh.addDoors(s.openTags, triangles);
-    mesh.addShapes(draw, s.face, triangles);
+    mesh.addShapes(draw, s.face, triangles, triangles);  // no overlay in the bench
     floor->upload(triangles);
     out.triangles = triangles.size() / 3;
     const Eigen::Matrix4f vp = mesh.viewProjection(view.camera, view.verticalFov, 1280.0 / 720.0);

@@ -328,17 +328,35 @@ void StageMesh::addBodyPolygon(const Frame& f, const core::DrawShape& s, std::sp
   }
 }
 
-void StageMesh::addShapes(const core::DrawList& draw, physics::MapPartId onlyFace, std::vector<LitVertex>& out) const {
+void StageMesh::addShapes(const core::DrawList& draw, physics::MapPartId onlyFace, std::vector<LitVertex>& out,
+                          std::vector<LitVertex>& overlay) const {
   const auto points = draw.points();
   const auto shapes = draw.shapes();
   for (size_t index = 0; index < shapes.size(); ++index) {
     core::DrawShape s = shapes[index];
     if (s.place.screen || s.kind == core::ShapeKind::Text) continue;
+    std::vector<LitVertex>& into = s.place.overlay ? overlay : out;
     if (s.color.a == kGlow || s.color.a == kTiled) s.color.a = 255;  // the stage's own markers, not the scripts'
+    if (s.kind == core::ShapeKind::Circle && s.place.overlay) {      // a flat dot over the walls
+      const Frame* f = frameOf(s.place.face);
+      if (!f) continue;
+      constexpr int kSides = 12;
+      for (int k = 0; k < kSides; ++k) {
+        const float a0 = static_cast<float>(2 * M_PI * k / kSides),
+                    a1 = static_cast<float>(2 * M_PI * (k + 1) / kSides);
+        auto on = [&](float a) {
+          return Vector3f(f->origin + (s.at.x + s.size * std::cos(a)) * f->xAxis +
+                          (s.at.y + s.size * std::sin(a)) * f->yAxis + 0.004f * edge_ * f->normal);
+        };
+        const Vector3f c = f->origin + s.at.x * f->xAxis + s.at.y * f->yAxis + 0.004f * edge_ * f->normal;
+        addTriangle(into, c, on(a0), on(a1), f->normal, {s.color.r, s.color.g, s.color.b, kGlow});
+      }
+      continue;
+    }
     if (s.kind == core::ShapeKind::Circle && s.body != 0 && !flat_) {
       size_t end = index + 1;  // the entity's instances come one after another
       while (end < shapes.size() && shapes[end].kind == core::ShapeKind::Circle && shapes[end].body == s.body) ++end;
-      addBall(shapes.subspan(index, end - index), out);
+      addBall(shapes.subspan(index, end - index), into);
       index = end - 1;
       continue;
     }
@@ -346,11 +364,11 @@ void StageMesh::addShapes(const core::DrawList& draw, physics::MapPartId onlyFac
     const Frame* f = frameOf(s.place.face);
     if (!f) continue;
     if (s.kind == core::ShapeKind::Wall) {
-      addWall(*f, {points[s.first], points[s.first + 1], s.tag, s.lineKind, s.style}, out, 1, true);
+      addWall(*f, {points[s.first], points[s.first + 1], s.tag, s.lineKind, s.style}, into, 1, true);
       continue;
     }
     if (s.kind == core::ShapeKind::Polygon && s.body != 0) {
-      addBodyPolygon(*f, s, points, out);
+      addBodyPolygon(*f, s, points, into);
       continue;
     }
     auto at = [&](core::Point2 p, float lift) {
@@ -364,25 +382,29 @@ void StageMesh::addShapes(const core::DrawList& draw, physics::MapPartId onlyFac
         const auto& sphere = unitSphere();
         for (const Vector3f& v : sphere) {
           const Vector3f p = centre + r * v;
-          out.push_back({p.x(), p.y(), p.z(), v.x(), v.y(), v.z(), s.color.r, s.color.g, s.color.b, s.color.a});
+          into.push_back({p.x(), p.y(), p.z(), v.x(), v.y(), v.z(), s.color.r, s.color.g, s.color.b, s.color.a});
         }
         break;
       }
       case core::ShapeKind::Polygon:
         for (uint32_t i = 1; i + 1 < s.count; ++i)
-          addTriangle(out, at(points[s.first], 0.003f), at(points[s.first + i], 0.003f),
+          addTriangle(into, at(points[s.first], 0.003f), at(points[s.first + i], 0.003f),
                       at(points[s.first + i + 1], 0.003f), f->normal, s.color);
         break;
-      case core::ShapeKind::Line:
+      case core::ShapeKind::Line: {
+        const float lift = 0.004f;
+        core::Color color = s.color;  // the overlay's glow: it reads the same in any light
+        if (s.place.overlay) color.a = kGlow;
         for (uint32_t i = 1; i < s.count; ++i) {
           const core::Point2 p = points[s.first + i - 1], q = points[s.first + i];
           const float dx = q.x - p.x, dy = q.y - p.y, len = std::hypot(dx, dy);
           if (len <= 0) continue;
           const float hx = -dy / len * s.size / 2, hy = dx / len * s.size / 2;
-          quad(out, at({p.x - hx, p.y - hy}, 0.004f), at({q.x - hx, q.y - hy}, 0.004f),
-               at({q.x + hx, q.y + hy}, 0.004f), at({p.x + hx, p.y + hy}, 0.004f), f->normal, s.color);
+          quad(into, at({p.x - hx, p.y - hy}, lift), at({q.x - hx, q.y - hy}, lift), at({q.x + hx, q.y + hy}, lift),
+               at({p.x + hx, p.y + hy}, lift), f->normal, color);
         }
         break;
+      }
       case core::ShapeKind::Text:
       case core::ShapeKind::Wall:
         break;

@@ -35,8 +35,11 @@ class StageMesh {
   // is in `openTags`. Appended to `out` each frame, since they open and shut.
   void addDoors(std::span<const uint32_t> openTags, std::vector<LitVertex>& out) const;
 
-  // The draw list's shapes on faces, appended to `out`. Text is not drawn here.
-  void addShapes(const core::DrawList& draw, physics::MapPartId onlyFace, std::vector<LitVertex>& out) const;
+  // The draw list's shapes on faces, appended to `out`; the debug overlay's (Place::overlay) to
+  // `overlay`, which is drawn over everything (its triangles face out of their face, so those on
+  // faces turned away are culled). Text is not drawn here.
+  void addShapes(const core::DrawList& draw, physics::MapPartId onlyFace, std::vector<LitVertex>& out,
+                 std::vector<LitVertex>& overlay) const;
 
   // A face point in stage space; false when the part is not on the stage.
   bool toStage(physics::MapPartId part, core::Point2 p, float lift, Eigen::Vector3f& out) const;

@@ -23,7 +23,7 @@ StageRenderer::StageRenderer() : program_(shaders::lit_vert, shaders::lit_frag, 
   viewProjection_ = program_.uniform("viewProjection");
   lightDirection_ = program_.uniform("lightDirection");
   eye_ = program_.uniform("eye");
-  for (Buffer* b : {&fixed_, &shapes_}) {
+  for (Buffer* b : {&fixed_, &shapes_, &overlay_}) {
     glGenVertexArrays(1, &b->vao);
     glGenBuffers(1, &b->vbo);
     glBindVertexArray(b->vao);
@@ -34,7 +34,7 @@ StageRenderer::StageRenderer() : program_(shaders::lit_vert, shaders::lit_frag, 
 }
 
 StageRenderer::~StageRenderer() {
-  for (Buffer* b : {&fixed_, &shapes_}) {
+  for (Buffer* b : {&fixed_, &shapes_, &overlay_}) {
     glDeleteBuffers(1, &b->vbo);
     glDeleteVertexArrays(1, &b->vao);
   }
@@ -71,9 +71,11 @@ void StageRenderer::draw(const core::View& view, const core::DrawList& draw, int
     upload(fixed_, mesh_->fixed(), GL_STATIC_DRAW);
   }
   scratch_.clear();
+  overlayScratch_.clear();
   mesh_->addDoors(view.openTags, scratch_);
-  mesh_->addShapes(draw, view.face, scratch_);
+  mesh_->addShapes(draw, view.face, scratch_, overlayScratch_);
   upload(shapes_, scratch_, GL_STREAM_DRAW);
+  upload(overlay_, overlayScratch_, GL_STREAM_DRAW);
 
   const double aspect = height > 0 ? static_cast<double>(width) / height : 1.0;
   viewProjectionMatrix_ = mesh_->viewProjection(view.camera, view.verticalFov, aspect);
@@ -93,6 +95,8 @@ void StageRenderer::draw(const core::View& view, const core::DrawList& draw, int
   glUniform3f(eye_, eye.x(), eye.y(), eye.z());
   drawBuffer(fixed_);
   drawBuffer(shapes_);
+  glDisable(GL_DEPTH_TEST);  // the debug overlay: over walls and bodies, culled on faces turned away
+  drawBuffer(overlay_);
   glBindVertexArray(0);
   glDisable(GL_CULL_FACE);
   glDisable(GL_DEPTH_TEST);

@@ -38,10 +38,10 @@ class StageRenderer {
 
   GlProgram program_;
   GLint viewProjection_ = -1, lightDirection_ = -1, eye_ = -1;
-  Buffer fixed_, shapes_;
+  Buffer fixed_, shapes_, overlay_;
   std::shared_ptr<const core::StageView> stage_;  // what fixed_ holds
   std::optional<StageMesh> mesh_;
-  std::vector<LitVertex> scratch_;
+  std::vector<LitVertex> scratch_, overlayScratch_;
   Eigen::Matrix4f viewProjectionMatrix_ = Eigen::Matrix4f::Identity();
   Eigen::Vector3f eyePosition_ = Eigen::Vector3f::Zero();  // stage space, for project()
   int width_ = 1, height_ = 1;

@@ -94,6 +94,8 @@ std::optional<core::Key> keyOf(SDL_Keycode key) {
       return core::Key::Restart;
     case SDLK_F5:
       return core::Key::Reload;
+    case SDLK_F2:
+      return core::Key::Debug;
     case SDLK_F3:
       return core::Key::ShowFps;
     case SDLK_F12:

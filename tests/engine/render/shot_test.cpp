@@ -86,11 +86,11 @@ const Case kCases[] = {
 class Shots : public ::testing::Test {
  protected:
   static void SetUpTestSuite() { IMG_Init(IMG_INIT_PNG); }
-  std::string shoot(const Case& c, const char* size = "320x180") {
-    std::string out = folder.path(std::string(c.level) + std::to_string(c.frame) + ".png");
+  std::string shoot(const Case& c, const char* size = "320x180", const std::string& extra = "") {
+    std::string out = folder.path(std::string(c.level) + std::to_string(c.frame) + (extra.empty() ? "" : "x") + ".png");
     const std::string command = std::string("SDL_VIDEODRIVER=offscreen ") + PLATON_EXE + " shot " + c.level +
                                 " --input tests/replays/" + c.replay + ".replay --frame " + std::to_string(c.frame) +
-                                " --size " + size + " --out " + out + " > /dev/null";
+                                " --size " + size + " " + extra + " --out " + out + " > /dev/null";
     EXPECT_EQ(std::system(command.c_str()), 0) << command;
     return out;
   }
@@ -198,6 +198,40 @@ TEST_F(Shots, EventsReadWithoutTheHud) {
     ASSERT_FALSE(a.rgba.empty());
     ASSERT_FALSE(b.rgba.empty());
     EXPECT_GT(count(b, e.colour), count(a, e.colour) + 60) << e.what << " at frame " << after.frame;
+  }
+}
+
+}  // namespace
+
+namespace {
+
+// The debug view (`platon shot --debug`, F2 in a window) draws what the physics sees, over walls
+// and bodies: counted by the overlay's colours, which the game's own picture never shows.
+TEST_F(Shots, TheDebugViewShowsLinesPlatformsContactsAndCopies) {
+  auto near = [](int r, int g, int b, int R, int G, int B) {
+    return std::abs(r - R) < 40 && std::abs(g - G) < 40 && std::abs(b - B) < 40;
+  };
+  struct Look {
+    const char* what;
+    Case at;
+    int r, g, b;
+  };
+  const Look looks[] = {
+      {"solid lines", {"cube_switches", "cube_switches_solve", 120}, 160, 255, 120},
+      {"a contact and its normal", {"cube_switches", "cube_switches_solve", 120}, 255, 60, 60},
+      {"the moving platform", {"cube_lift", "cube_lift_ride", 200}, 230, 60, 230},
+      {"a copy across an edge", {"tetra_around", "tetra_around_run", 365}, 255, 140, 0},
+  };
+  for (const Look& l : looks) {
+    const Picture plain = load(shoot(l.at, "640x360")), debug = load(shoot(l.at, "640x360", "--debug"));
+    ASSERT_FALSE(plain.rgba.empty());
+    ASSERT_FALSE(debug.rgba.empty());
+    auto count = [&](const Picture& p) {
+      int n = 0;
+      for (size_t i = 0; i < p.rgba.size(); i += 4) n += near(p.rgba[i], p.rgba[i + 1], p.rgba[i + 2], l.r, l.g, l.b);
+      return n;
+    };
+    EXPECT_GT(count(debug), count(plain) + 30) << l.what << ": " << count(debug) << " against " << count(plain);
   }
 }
 

@@ -82,7 +82,20 @@ camera::CameraTarget cameraTarget(const StageView& stage, const Scene& scene, ph
                                   float y);
 
 // Keys the game's menus and controls act on once per press (held buttons go to the simulation).
-enum class Key : uint8_t { Escape, Enter, Up, Down, Left, Right, Restart, Reload, ShowFps, Settings, Screenshot };
+enum class Key : uint8_t {
+  Escape,
+  Enter,
+  Up,
+  Down,
+  Left,
+  Right,
+  Restart,
+  Reload,
+  ShowFps,
+  Settings,
+  Screenshot,
+  Debug
+};
 
 // The keys and gamepad buttons that hold each of the player's buttons (Left, Right, Up, Down, Jump,
 // Restart), by SDL's names for them (keys: "Left", "A", "Space", "Keypad 4"; pad buttons: "a",

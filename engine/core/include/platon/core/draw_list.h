@@ -28,7 +28,9 @@ struct Point2 {
 struct Place {
   bool screen = false;
   physics::MapPartId face = 0;
+  bool overlay = false;  // on a face, drawn over its walls and unlit (the debug overlay)
   static Place onFace(physics::MapPartId face) { return {false, face}; }
+  static Place overlayOnFace(physics::MapPartId face) { return {false, face, true}; }
   static Place onScreen() { return {true, 0}; }
 };
 
