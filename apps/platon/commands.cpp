@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "defs_command.h"
 #include "game_command.h"
 #include "merge_command.h"
 #include "play_command.h"
@@ -93,6 +94,11 @@ const Command kCommands[] = {
      "usage: platon net SOLID|LEVEL -o net.svg\n"
      "  SOLID            TETRAHEDRON, HEXAHEDRON, OCTAHEDRON, DODECAHEDRON or ICOSAHEDRON\n",
      netCommand},
+    {"defs", "the Lua language server's definitions of the scripting API",
+     "usage: platon defs DIR\n"
+     "  writes DIR/trusted (the engine's own scripts) and DIR/sandbox (level scripts and mods): ---@meta\n"
+     "  definitions made from the engine's binding tables, and a .luarc.json pointing the server at them\n",
+     defsCommand},
 };
 
 }  // namespace

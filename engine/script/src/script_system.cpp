@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <unordered_map>
 
+#include "embedded_lua.h"
 #include "lua_rules.h"
 #include "lua_stack.h"
 #include "platon/core/data_root.h"
@@ -720,6 +721,33 @@ std::string ScriptSystem::evaluate(const std::string& code, const std::string& c
   size_t n = 0;
   const char* text = lua_tolstring(L, -1, &n);
   return std::string(text ? text : "", n);
+}
+
+std::string ScriptSystem::definitions(bool sandboxed, std::vector<std::string>& problems) {
+  lua_State* L = state_->host.state();
+  lua::StackGuard guard(L);
+  state_->host.loadString(embedded_lua::definitions, "=platon/definitions", Trust::Trusted);
+  if (sandboxed)
+    state_->host.pushSandboxApi();
+  else
+    state_->host.pushApi();
+  state_->callDriver("game", 0, 1);
+  lua_getfield(L, -1, "levelApi");
+  lua_remove(L, -2);
+  state_->host.loadString(embedded_lua::api_signatures, "=platon/api_signatures", Trust::Trusted);
+  state_->host.call(0, 1);
+  lua_pushboolean(L, sandboxed);
+  state_->host.call(4, 2);
+  for (int i = 1;; ++i) {
+    lua_rawgeti(L, -1, i);
+    if (!lua_isstring(L, -1)) break;
+    problems.emplace_back(lua_tostring(L, -1));
+    lua_pop(L, 1);
+  }
+  lua_pop(L, 2);
+  size_t n = 0;
+  const char* text = lua_tolstring(L, -1, &n);
+  return {text ? text : "", n};
 }
 
 void ScriptSystem::sourceFiles(std::vector<std::string>& out) const {

@@ -57,6 +57,10 @@ class ScriptSystem final : public core::System {
   // scenarios' checks. Returns its first result converted to a string ("" for nil).
   std::string evaluate(const std::string& code, const std::string& chunkName);
   size_t luaMemoryBytes() const;
+  // The Lua language server's definitions (---@meta) of the API trusted scripts see, or sandboxed
+  // ones (with the `game` level scripts get), from the live binding tables; `problems` gets each
+  // binding with no definition and each definition with no binding (`platon defs`).
+  std::string definitions(bool sandboxed, std::vector<std::string>& problems);
 
   struct State;  // the Lua state and what the bindings reach (script_system.cpp)
 

@@ -1,0 +1,81 @@
+// The Lua language server's definitions (`platon defs`, docs/scripting.md "Editors") are made from
+// the live binding tables: every binding has a definition and every definition a binding, in the
+// trusted set and the sandboxed one, and the shipped definitions are what the engine makes now.
+#include <fstream>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "platon/core/live_scene.h"
+#include "platon/script/script_system.h"
+#include "platon/testing/temp_folder.h"
+
+namespace platon::script {
+namespace {
+
+std::string fileText(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+struct Game {
+  testing::TempFolder folder{"definitions"};
+  core::SystemRegistry registry;
+  std::unique_ptr<core::LiveScene> live;
+  Game() {
+    registry.add("scripting", makeScriptSystem);
+    live = std::make_unique<core::LiveScene>(
+        folder.write("scene.lua", "return { systems = { 'scripting' }, scripts = { preset = 'game' } }\n"), registry,
+        false);
+  }
+  ScriptSystem& scripts() { return dynamic_cast<ScriptSystem&>(*live->scene().findSystem("scripting")); }
+};
+
+TEST(Definitions, EveryBindingHasOneAndEveryOneABindingInBothSets) {
+  Game game;
+  for (const bool sandboxed : {false, true}) {
+    std::vector<std::string> problems;
+    const std::string text = game.scripts().definitions(sandboxed, problems);
+    for (const std::string& p : problems) ADD_FAILURE() << (sandboxed ? "sandbox: " : "trusted: ") << p;
+    EXPECT_EQ(text.rfind("---@meta\n", 0), 0u);
+    EXPECT_NE(text.find("function platon.world.setVelocity(entity, vx, vy) end"), std::string::npos);
+    EXPECT_NE(text.find("---@type table<string, integer>\nplaton.tags = {}"), std::string::npos);
+    EXPECT_EQ(text.find("function Game.message(text) end") != std::string::npos, sandboxed);
+  }
+}
+
+// The check can fail both ways: a binding the table lacks, an entry with no binding.
+TEST(Definitions, ABindingWithoutADefinitionAndADefinitionWithoutABindingAreNamed) {
+  Game game;
+  const std::string root = std::string(PLATON_SOURCE_ROOT) + "/engine/script/lua/";
+  const std::string code =
+      "local game = ...\n"
+      "local make = loadstring(" +
+      std::string("[==[") + fileText(root + "definitions.lua") + "]==])\n" + "local signatures = loadstring([==[" +
+      fileText(root + "api_signatures.lua") + "]==])()\n" +
+      "signatures['platon.world.position'] = nil\n"
+      "signatures['platon.world.teleport'] = { 'entity: integer', '', 'no such binding' }\n"
+      "local _, problems = make(platon, game.levelApi, signatures, false)\n"
+      "return table.concat(problems, '\\n')\n";
+  const std::string problems = game.scripts().evaluate(code, "=definitions check");
+  EXPECT_NE(problems.find("platon.world.position: a binding with no definition"), std::string::npos) << problems;
+  EXPECT_NE(problems.find("platon.world.teleport: a definition with no binding"), std::string::npos) << problems;
+}
+
+// docs/lua-definitions/ is what `platon defs` writes now (PLATON_UPDATE_DEFINITIONS=1 writes it).
+TEST(Definitions, TheShippedDefinitionsAreTheEnginesNow) {
+  Game game;
+  for (const bool sandboxed : {false, true}) {
+    std::vector<std::string> problems;
+    const std::string made = game.scripts().definitions(sandboxed, problems);
+    const std::string path = std::string(PLATON_SOURCE_ROOT) + "/docs/lua-definitions/" +
+                             (sandboxed ? "sandbox" : "trusted") + "/platon.lua";
+    if (std::getenv("PLATON_UPDATE_DEFINITIONS")) std::ofstream(path, std::ios::binary) << made;
+    EXPECT_EQ(fileText(path), made) << path << " is stale: run platon defs docs/lua-definitions";
+  }
+}
+
+}  // namespace
+}  // namespace platon::script
