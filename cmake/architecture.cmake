@@ -23,6 +23,8 @@ set(PLATON_ARROWS_platon_synth "")
 # The audio system is a plugin too: the synthesizer and core's headers, no engine library.
 set(PLATON_ARROWS_platon_audio platon_synth)
 set(PLATON_ARROWS_platon_mesh platon_files)
+# Level packages: the data reader (core) for their manifests, bounded reads (files).
+set(PLATON_ARROWS_platon_package platon_core platon_files)
 
 set(PLATON_MODULES "" CACHE INTERNAL "")
 

@@ -5,6 +5,7 @@
 #include "defs_command.h"
 #include "game_command.h"
 #include "merge_command.h"
+#include "pack_command.h"
 #include "play_command.h"
 #include "run_command.h"
 #include "shot_command.h"
@@ -94,6 +95,22 @@ const Command kCommands[] = {
      "usage: platon net SOLID|LEVEL -o net.svg\n"
      "  SOLID            TETRAHEDRON, HEXAHEDRON, OCTAHEDRON, DODECAHEDRON or ICOSAHEDRON\n",
      netCommand},
+    {"pack", "a level and a run that finishes it, as one package to share",
+     "usage: platon pack LEVEL --replay run.replay [-o out.platon] [--timeout S]\n"
+     "  LEVEL            the level's folder (or its scene.lua): every file in it goes in\n"
+     "  --replay F       a run that reaches the goal (platon play --record, platon game --record);\n"
+     "                   replayed headless first: the level must check and the run reach its goal\n"
+     "  -o F             the package (default FOLDER.platon)\n"
+     "  --timeout S      the replay's wall-clock limit (default 120)\n",
+     packCommand},
+    {"install", "a level package into the player's levels (listed on the title screen)",
+     "usage: platon install PACKAGE [--levels DIR] [--timeout S]\n"
+     "  unpacks it only inside its own folder (links, devices, '..' and files not in its manifest or\n"
+     "  not matching their SHA-256 are refused), checks the level and replays its run headless in\n"
+     "  a worker process; installs it only when the run reaches the goal\n"
+     "  --levels DIR     where (default $XDG_DATA_HOME/platon/levels)\n"
+     "  --timeout S      the replay's wall-clock limit (default 120)\n",
+     installCommand},
     {"defs", "the Lua language server's definitions of the scripting API",
      "usage: platon defs DIR\n"
      "  writes DIR/trusted (the engine's own scripts) and DIR/sandbox (level scripts and mods): ---@meta\n"

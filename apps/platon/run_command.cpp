@@ -440,4 +440,12 @@ int scenarioCommand(int argc, char** argv) {
   }
 }
 
+script::ScenarioResult runIsolated(const std::string& file, double timeout) {
+  script::RunOptions options;
+  options.pluginFolders = pluginFolders();
+  std::vector<Outcome> outcomes(1);
+  runInWorkers({file}, options, {""}, 1, timeout, outcomes);
+  return outcomes[0].result;
+}
+
 }  // namespace platon::app

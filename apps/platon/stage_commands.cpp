@@ -83,6 +83,19 @@ int checkCommand(int argc, char** argv) {
   return errors ? 1 : 0;
 }
 
+std::vector<std::string> levelErrors(const std::string& argument) {
+  std::vector<std::string> out;
+  try {
+    const stage::Level level = levelOfArgument(argument);
+    for (const auto& f : checkLevel(level, stageFor(level)).errors) out.push_back(where(f.where) + ": " + f.message);
+  } catch (const stage::StageError& e) {
+    out.push_back(where(e.where()) + ": " + e.reason());
+  } catch (const std::exception& e) {
+    out.emplace_back(e.what());
+  }
+  return out;
+}
+
 int netCommand(int argc, char** argv) {
   std::string what, out;
   for (int i = 1; i < argc; ++i) {
