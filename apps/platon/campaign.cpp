@@ -1,8 +1,10 @@
 #include "campaign.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <fcntl.h>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -21,6 +23,19 @@ bool isFile(const std::string& path) {
 }
 
 }  // namespace
+
+std::vector<CampaignLevel> userLevels(const std::string& folder) {
+  std::vector<CampaignLevel> out;
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
+    const std::string name = entry.path().filename().string();
+    if (name.empty() || name[0] == '.' || !std::filesystem::is_regular_file(entry.path() / "scene.lua", error))
+      continue;
+    out.push_back({"yours/" + name, (entry.path() / "scene.lua").string(), 0, true});
+  }
+  std::sort(out.begin(), out.end(), [](const CampaignLevel& a, const CampaignLevel& b) { return a.folder < b.folder; });
+  return out;
+}
 
 std::vector<CampaignLevel> readCampaign(const std::string& path) {
   std::istringstream in(files::readBoundedFile(path, size_t{1} << 20));

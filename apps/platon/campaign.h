@@ -12,6 +12,7 @@ struct CampaignLevel {
   std::string folder;      // as written in the campaign file: "cube_intro"
   std::string scene;       // its manifest: <levels>/<folder>/scene.lua
   uint64_t parFrames = 0;  // the par time, in frames (0: none)
+  bool yours = false;      // a level of the player's own (installed), after the campaign: always open
 };
 
 // One level a line: its folder, relative to the file's own folder, then optionally its par time
@@ -19,6 +20,11 @@ struct CampaignLevel {
 // file:line:column for a folder with no scene.lua, a par time that is none or anything more on
 // the line, and for an empty campaign.
 std::vector<CampaignLevel> readCampaign(const std::string& path);
+
+// The player's own levels: each folder of `folder` with a scene.lua (`platon install` puts them
+// there), by name, as "yours/<name>" (its progress kept apart from a campaign level of that name).
+// None when the folder does not exist.
+std::vector<CampaignLevel> userLevels(const std::string& folder);
 
 struct LevelRecord {
   uint64_t bestFrames = 0;  // the fastest finish, in frames
@@ -33,7 +39,7 @@ class Progress {
   // Whether `levels[i]` may be played: the first level, a level done, and the level after one done
   // (levels unlock in order).
   bool open(const std::vector<CampaignLevel>& levels, size_t i) const {
-    return i == 0 || done(levels[i].folder) || done(levels[i - 1].folder);
+    return i == 0 || levels[i].yours || done(levels[i].folder) || done(levels[i - 1].folder);
   }
   // $XDG_DATA_HOME/platon/progress.txt, or ~/.local/share/platon/progress.txt.
   static std::string defaultPath();

@@ -38,10 +38,13 @@ constexpr const char* kLevelArgument =
 const Command kCommands[] = {
     {"game", "the game in a window: title screen, campaign, settings",
      "usage: platon game [--campaign levels/campaign.txt] [--progress file] [--settings file] [--record DIR]\n"
+     "                   [--levels DIR]\n"
      "  --campaign F     the campaign's level list (default levels/campaign.txt)\n"
      "  --progress F     the finished levels and best times (default $XDG_DATA_HOME/platon/progress.txt)\n"
      "  --settings F     volumes, keys, display (default $XDG_CONFIG_HOME/platon/settings.txt)\n"
      "  --record DIR     write a replay of each level played to DIR/<level>.replay\n"
+     "  --levels DIR     the player's own levels, listed after the campaign (default\n"
+     "                   $XDG_DATA_HOME/platon/levels: platon install puts them there)\n"
      "keys: arrows or WASD move, Space jumps, R restarts, Esc pauses, Tab settings, F5 reloads,\n"
      "      F2 debug view, F3 frame rate, F11 fullscreen, F12 screenshot; a gamepad works too\n",
      gameCommand},

@@ -17,6 +17,7 @@
 #include "commands.h"
 #include "engine_registry.h"
 #include "game_view.h"
+#include "pack_command.h"
 #include "platon/core/audio.h"
 #include "platon/core/data_root.h"
 #include "platon/core/display.h"
@@ -251,6 +252,7 @@ bool Game::load(size_t level) {
 std::vector<std::string> Game::titleLines() const {
   std::vector<std::string> lines{"PLATON", "a platformer on the faces of the solids", ""};
   for (size_t i = 0; i < levels_.size(); ++i) {
+    if (levels_[i].yours && (i == 0 || !levels_[i - 1].yours)) lines.push_back("your levels:");
     const LevelRecord* r = progress_.record(levels_[i].folder);
     std::string line = (i == selected_ ? "> " : "  ") + std::to_string(i + 1) + ". " + names_[i];
     if (r) {
@@ -573,7 +575,7 @@ int gameCommand(int argc, char** argv) {
   std::string settingsPath = Settings::defaultPath();
   bool quitAfterFirstFrame = false;
   std::string firstFrameShot;  // the title screen as a PNG, then quit (docs, tests)
-  std::string recordFolder;
+  std::string recordFolder, levelsFolder = userLevelsFolder();
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--campaign" && i + 1 < argc)
@@ -588,12 +590,16 @@ int gameCommand(int argc, char** argv) {
       firstFrameShot = argv[++i], quitAfterFirstFrame = true;
     else if (a == "--record" && i + 1 < argc)
       recordFolder = argv[++i];
+    else if (a == "--levels" && i + 1 < argc)
+      levelsFolder = argv[++i];
     else {
       return usageError("game");
     }
   }
   try {
-    Game game(readCampaign(core::resolveDataPath(campaignPath)), Progress(progressPath), recordFolder, settingsPath);
+    std::vector<CampaignLevel> levels = readCampaign(core::resolveDataPath(campaignPath));
+    for (CampaignLevel& l : userLevels(levelsFolder)) levels.push_back(std::move(l));
+    Game game(std::move(levels), Progress(progressPath), recordFolder, settingsPath);
     return game.run(quitAfterFirstFrame, firstFrameShot);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s\n", e.what());
