@@ -671,6 +671,7 @@ function scene.status()
 end
 
 function scene.game() return game end
+function scene.levelView() return levelView end  -- the game's console hands it to what is typed
 function scene.frame() return game.time end
 
 return scene

@@ -12,7 +12,8 @@ game=(cmake ninja-build make g++ pkg-config
   # the renderer plugin: SDL2 window, GL loader, text, PNG screenshots, the font; Mesa for GL
   # without a GPU (SDL_VIDEODRIVER=offscreen: tools/play's picture when there is no display)
   libsdl2-dev libsdl2-ttf-dev libsdl2-image-dev libepoxy-dev fonts-dejavu-core libgl1-mesa-dri libegl1
-  libsdl2-mixer-dev) # the audio plugin (its sounds are synthesized: no sound files)
+  libsdl2-mixer-dev  # the audio plugin (its sounds are synthesized: no sound files)
+  libarchive-dev nettle-dev)  # level packages (.platon): tar and gzip, SHA-256
 checks=(libgtest-dev libgmock-dev libbenchmark-dev
   libbox2d-dev libchipmunk-dev        # the peers of the benchmarks
   clang libclang-rt-14-dev            # the fuzz stage: libFuzzer and the sanitizer runtimes

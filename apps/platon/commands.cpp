@@ -46,7 +46,8 @@ const Command kCommands[] = {
      "  --levels DIR     the player's own levels, listed after the campaign (default\n"
      "                   $XDG_DATA_HOME/platon/levels: platon install puts them there)\n"
      "keys: arrows or WASD move, Space jumps, R restarts, Esc pauses, Tab settings, F5 reloads,\n"
-     "      F2 debug view, F3 frame rate, F11 fullscreen, F12 screenshot; a gamepad works too\n",
+     "      F2 debug view, ` console (Lua in the level's sandbox), F3 frame rate, F11 fullscreen,\n"
+     "      F12 screenshot; a gamepad works too\n",
      gameCommand},
     {"play", "one level in a window (or headless), with hot reload",
      "usage: platon play LEVEL [--frames N] [--input run.replay] [--record out.replay]\n"

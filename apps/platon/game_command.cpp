@@ -65,6 +65,9 @@ class LevelRecorder {
   void frame(uint8_t held, uint64_t stateHash) {
     if (recorder_) recorder_->frame(held, stateHash);
   }
+  void console(const std::string& code) {
+    if (recorder_) recorder_->console(code);
+  }
   // Writes what was played since start() (nothing when no frame was); "" or what went wrong.
   std::string finish() {
     if (!recorder_) return "";
@@ -158,6 +161,10 @@ class Game {
     }
   }
   void stepSimulation(int due, uint8_t held);
+  // The console (`): a line of Lua run in the level's sandbox between frames, recorded in the
+  // replay; the level waits while it is open. True when the key was the console's.
+  bool consoleKey(core::Key key);
+  void runConsoleLine();
   // The settings screen (from the title and the pause menu): volumes and screen shake, applied at
   // once and saved as the screen is left.
   void openSettings() {
@@ -205,8 +212,12 @@ class Game {
   int menuItem_ = 0;
   bool quit_ = false;
   bool showFps_ = false;
-  std::string notice_;          // a line under the heads-up text (a failed save, a refused reload)
-  std::string lastFrameError_;  // printed once, not on every frame it repeats
+  bool consoleOpen_ = false;
+  bool consoleTyped_ = false;  // the console was open during the latest poll
+  std::string consoleLine_;
+  std::vector<std::string> consoleLog_;  // the lines typed and their answers, the latest last
+  std::string notice_;                   // a line under the heads-up text (a failed save, a refused reload)
+  std::string lastFrameError_;           // printed once, not on every frame it repeats
   LevelRecorder recording_;
   std::chrono::steady_clock::time_point freezeUntil_{};
   Settings settings_;
@@ -239,6 +250,8 @@ bool Game::load(size_t level) {
   loaded_ = true;
   notice_.clear();
   lastFrameError_.clear();
+  consoleOpen_ = false;
+  consoleLog_.clear();
   const bool debug = view_.debug();  // the overlay stays on from one level to the next
   view_ = GameView{};
   view_.setDebug(debug);
@@ -282,7 +295,12 @@ void Game::handle(const core::WindowInput& input) {
     std::printf("paused: the window lost the focus\n");
     std::fflush(stdout);
   }
+  consoleTyped_ = consoleOpen_;
+  if (consoleOpen_)
+    for (const char c : input.text)
+      if (c != '`' && consoleLine_.size() < 400) consoleLine_ += c;
   for (const core::Key key : input.pressed) {
+    if (consoleKey(key)) continue;
     if (key == core::Key::ShowFps) showFps_ = !showFps_;
     if (key == core::Key::Debug) view_.setDebug(!view_.debug());
     if (key == core::Key::Screenshot)
@@ -437,11 +455,53 @@ std::vector<std::string> Game::settingsLines() const {
   return lines;
 }
 
+bool Game::consoleKey(core::Key key) {
+  if (!consoleOpen_) {
+    if (key != core::Key::Console || screen_ != Screen::Playing) return false;
+    if (!dynamic_cast<script::ScriptSystem*>(live_->scene().findSystem("scripting"))) {
+      notice_ = "the console runs Lua in the level's scripts: this level has none";
+      return true;
+    }
+    consoleOpen_ = consoleTyped_ = true;
+    consoleLine_.clear();
+    return true;
+  }
+  if (key == core::Key::Screenshot || key == core::Key::ShowFps || key == core::Key::Debug) return false;
+  if (key == core::Key::Console || key == core::Key::Escape) consoleOpen_ = false;
+  if (key == core::Key::Backspace)
+    while (!consoleLine_.empty()) {  // a whole UTF-8 character
+      const auto last = static_cast<unsigned char>(consoleLine_.back());
+      consoleLine_.pop_back();
+      if ((last & 0xC0) != 0x80) break;
+    }
+  if (key == core::Key::Enter) runConsoleLine();
+  return true;  // the game's other keys wait while the console is open
+}
+
+void Game::runConsoleLine() {
+  if (consoleLine_.empty()) return;
+  auto* scripts = dynamic_cast<script::ScriptSystem*>(live_->scene().findSystem("scripting"));
+  if (!scripts) return;
+  // Run before the next frame, and recorded there: a replay runs it at the same place.
+  const script::ScriptSystem::ConsoleAnswer answer = scripts->console(consoleLine_);
+  recording_.console(consoleLine_);
+  std::printf("console> %s\n%s\n", consoleLine_.c_str(), answer.text.c_str());
+  std::fflush(stdout);
+  consoleLog_.push_back("> " + core::visibleText(consoleLine_, false));
+  if (!answer.text.empty()) {
+    std::string shown = core::visibleText(answer.text, false);
+    if (shown.size() > 160) shown = shown.substr(0, 157) + "...";
+    consoleLog_.push_back((answer.ok ? "" : "error: ") + shown);
+  }
+  if (consoleLog_.size() > 6) consoleLog_.erase(consoleLog_.begin(), consoleLog_.end() - 6);
+  consoleLine_.clear();
+}
+
 void Game::stepSimulation(int due, uint8_t held) {
   // The level-complete screen: the picture goes on (the goal's confetti falls), the game does not.
   if (screen_ == Screen::Complete)
     for (int s = 0; s < due; ++s) view_.idle(live_->scene());
-  for (int s = 0; s < due && screen_ == Screen::Playing; ++s) {
+  for (int s = 0; s < due && screen_ == Screen::Playing && !consoleOpen_; ++s) {
     const uint8_t buttons = taps_.next(held);
     if (std::optional<std::string> error = live_->step(edges_.next(buttons)); error && *error != lastFrameError_) {
       std::fprintf(stderr, "frame error (the game goes on):\n%s\n", core::visibleText(*error, true).c_str());
@@ -478,6 +538,11 @@ void Game::draw(double alpha) {
     view.hud = hudLines(scene, st);
   }
   if (!notice_.empty()) view.hud.push_back(notice_);
+  if (consoleOpen_) {
+    view.hud.emplace_back("console (Lua in the level's sandbox; Enter runs, ` or Esc closes):");
+    view.hud.insert(view.hud.end(), consoleLog_.begin(), consoleLog_.end());
+    view.hud.push_back("> " + core::visibleText(consoleLine_, false) + "_");
+  }
   switch (screen_) {
     case Screen::Title:
       view.centreText = titleLines();
@@ -541,8 +606,10 @@ int Game::run(bool quitAfterFirstFrame, const std::string& firstFrameShot) {
     const int due = clock_.advance(std::chrono::duration_cast<std::chrono::nanoseconds>(now - previous).count() *
                                    settings_.gameSpeed / 100);
     previous = now;
-    if (screen_ == Screen::Playing) taps_.add(input.tapped);  // a menu's keys are not the game's
-    stepSimulation(due, input.held);
+    // A menu's keys are not the game's, nor are the letters typed into the console (an R would
+    // restart the level once it closed).
+    if (screen_ == Screen::Playing && !consoleTyped_) taps_.add(input.tapped);
+    stepSimulation(due, consoleTyped_ ? 0 : input.held);
     draw(screen_ == Screen::Playing ? clock_.alpha() : 1.0);
     if (!titleShown) {  // the window shows the title and reads keys from now on (tests wait for it)
       titleShown = true;

@@ -39,11 +39,21 @@ class LineReader {
         }
         if (line[i] == '#') break;  // a comment, to the end of the line
         const size_t start = i;
-        if (line[i] == '"') {
-          const size_t end = line.find('"', i + 1);
-          if (end == std::string::npos) fail(static_cast<int>(i) + 1, "unfinished string");
-          words.push_back({line.substr(i + 1, end - i - 1), static_cast<int>(start) + 1, true});
-          i = end + 1;
+        if (line[i] == '"') {  // \" \\ and \n inside (a console line's code)
+          std::string text;
+          size_t j = i + 1;
+          for (; j < line.size() && line[j] != '"'; ++j) {
+            if (line[j] != '\\') {
+              text += line[j];
+              continue;
+            }
+            if (++j == line.size() || (line[j] != '"' && line[j] != '\\' && line[j] != 'n'))
+              fail(static_cast<int>(j) + 1, "unknown escape in a string (\\\", \\\\ and \\n are known)");
+            text += line[j] == 'n' ? '\n' : line[j];
+          }
+          if (j >= line.size()) fail(static_cast<int>(i) + 1, "unfinished string");
+          words.push_back({std::move(text), static_cast<int>(start) + 1, true});
+          i = j + 1;
           continue;
         }
         while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') ++i;
@@ -136,6 +146,15 @@ void readHashes(LineReader& in, std::vector<Word>& w, Replay& r) {
   };
   uint64_t expected = nextHashFrame(0, r.hashEvery, frames);
   while (in.next(w)) {
+    if (w[0].text == "console") {  // a line typed in the game's console, run before its frame
+      in.expect(w, "console", 3, "console FRAME \"code\"");
+      const uint64_t frame = in.number(w[1], frames, "console frame");
+      if (frame == 0) in.fail(w[1].column, "console frame 0: a line runs before a frame, counted from 1");
+      if (!r.console.empty() && frame < r.console.back().frame) in.fail(w[1].column, "console frames may not decrease");
+      if (!w[2].quoted) in.fail(w[2].column, "the console's code is written in double quotes");
+      r.console.push_back({frame, w[2].text});
+      continue;
+    }
     in.expect(w, "hash", 3, "hash FRAME HEX16");
     const uint64_t frame = in.number(w[1], frames, "hash frame");
     if (frame == 0) in.fail(w[1].column, "hash frame 0: frames count from 1 (a hash is the state after its frame)");
@@ -231,6 +250,13 @@ Replay readReplay(const std::string& path) {
 }
 
 namespace {
+// A quoted word's text as the reader reads it back: \" \\ and \n escaped.
+std::string escaped(const std::string& text) {
+  std::string out;
+  for (const char ch : text) out += ch == '"' ? "\\\"" : ch == '\\' ? "\\\\" : ch == '\n' ? "\\n" : std::string(1, ch);
+  return out;
+}
+
 std::string hex16(uint64_t value) {
   char hex[17];
   std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(value));
@@ -239,7 +265,7 @@ std::string hex16(uint64_t value) {
 }  // namespace
 
 std::string formatReplay(const Replay& r) {
-  std::string out = "platon replay 1\nscene \"" + r.scene + "\"\n";
+  std::string out = "platon replay 1\nscene \"" + escaped(r.scene) + "\"\n";
   if (r.sceneFiles) out += "scene_files " + hex16(*r.sceneFiles) + "\n";
   if (r.speed != 100) out += "speed " + std::to_string(r.speed) + "\n";
   out += "frames " + std::to_string(r.frames()) + "\nhash_every " + std::to_string(r.hashEvery) + "\ninput\n";
@@ -254,6 +280,8 @@ std::string formatReplay(const Replay& r) {
     i = j;
   }
   out += "end\n";
+  for (const ReplayConsole& c : r.console)
+    out += "console " + std::to_string(c.frame) + " \"" + escaped(c.code) + "\"\n";
   for (const ReplayHash& h : r.hashes) out += "hash " + std::to_string(h.frame) + " " + hex16(h.hash) + "\n";
   return out;
 }
@@ -293,6 +321,8 @@ ReplayRecorder::ReplayRecorder(std::string scene, uint64_t hashEvery, std::optio
   replay_.hashEvery = hashEvery;
   replay_.sceneFiles = sceneFiles;
 }
+
+void ReplayRecorder::console(const std::string& code) { replay_.console.push_back({replay_.frames() + 1, code}); }
 
 void ReplayRecorder::frame(uint8_t held, uint64_t stateHashAfter) {
   replay_.held.push_back(held);

@@ -96,6 +96,10 @@ std::optional<core::Key> keyOf(SDL_Keycode key) {
       return core::Key::Reload;
     case SDLK_F2:
       return core::Key::Debug;
+    case SDLK_BACKQUOTE:
+      return core::Key::Console;
+    case SDLK_BACKSPACE:
+      return core::Key::Backspace;
     case SDLK_F3:
       return core::Key::ShowFps;
     case SDLK_F12:
@@ -195,7 +199,11 @@ core::WindowInput Window::pollEvents() {
       case SDL_WINDOWEVENT:
         if (event.window.event == SDL_WINDOWEVENT_FOCUS_LOST) input.focusLost = true;
         break;
+      case SDL_TEXTINPUT:
+        input.text += event.text.text;
+        break;
       case SDL_KEYDOWN:
+        if (event.key.repeat && event.key.keysym.sym == SDLK_BACKSPACE) input.pressed.push_back(core::Key::Backspace);
         if (event.key.repeat) break;
         input.tapped |= buttonOf(event.key.keysym.scancode);
         input.lastKey = SDL_GetScancodeName(event.key.keysym.scancode);

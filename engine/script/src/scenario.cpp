@@ -177,8 +177,9 @@ struct Plan {
   std::map<uint64_t, std::vector<uint32_t>> switchesAt;  // expect.switches: exactly these on (sorted)
   // expect.checkpoint: the last checkpoint touched, {face, x, y}; false: none yet.
   std::map<uint64_t, std::optional<std::array<int64_t, 3>>> checkpointAt;
-  std::optional<uint64_t> sceneFilesHash;  // a replay's record of the scene's files
-  std::string passNote;                    // added to a passing run's summary
+  std::optional<uint64_t> sceneFilesHash;    // a replay's record of the scene's files
+  std::vector<core::ReplayConsole> console;  // a replay's console lines, each run before its frame
+  std::string passNote;                      // added to a passing run's summary
 
   uint64_t lastCheck() const {
     uint64_t last = 0;
@@ -635,7 +636,13 @@ ScenarioResult runPlan(const std::string& path, const std::function<Plan()>& mak
     if (options.record) recorder.emplace(plan.scene, options.hashEvery, filesHash);
     core::InputEdges edges;
     std::string failure;
+    size_t nextLine = 0;
     for (uint64_t f = 1; f <= plan.frames && failure.empty(); ++f) {
+      // The console's lines where the run typed them (their answers were the player's to read).
+      for (; nextLine < plan.console.size() && plan.console[nextLine].frame == f; ++nextLine) {
+        if (scripts) (void)scripts->console(plan.console[nextLine].code);
+        if (recorder) recorder->console(plan.console[nextLine].code);
+      }
       scene->step(edges.next(plan.held[f]));
       result.frames = f;
       if (recorder) recorder->frame(plan.held[f], scene->world().stateHash());
@@ -697,6 +704,7 @@ ScenarioResult runReplay(const std::string& path, const RunOptions& options) {
         plan.held.insert(plan.held.end(), replay.held.begin(), replay.held.end());
         for (const core::ReplayHash& h : replay.hashes) plan.hashAt[h.frame] = hex(h.hash);
         plan.sceneFilesHash = replay.sceneFiles;
+        plan.console = replay.console;
         if (replay.hashes.empty()) plan.passNote = " (the replay has no hashes: its input ran, nothing was compared)";
         return plan;
       },

@@ -94,7 +94,9 @@ enum class Key : uint8_t {
   ShowFps,
   Settings,
   Screenshot,
-  Debug
+  Debug,
+  Console,   // ` : the game's console
+  Backspace  // repeats while held
 };
 
 // The keys and gamepad buttons that hold each of the player's buttons (Left, Right, Up, Down, Jump,
@@ -118,6 +120,7 @@ struct WindowInput {
   bool closed = false;       // the window was closed
   bool focusLost = false;    // the window lost the keyboard (the game pauses)
   std::string lastKey;       // SDL's name of the last key pressed ("Space"), for binding one
+  std::string text;          // the text typed since the last call (UTF-8), for the console
 };
 
 class Display {

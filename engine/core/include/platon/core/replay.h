@@ -35,6 +35,12 @@ struct ReplayHash {
   uint64_t hash;
 };
 
+// A line typed in the game's console (docs/scripting.md, "Console"): run before frame `frame`.
+struct ReplayConsole {
+  uint64_t frame;
+  std::string code;
+};
+
 struct Replay {
   std::string scene;    // the scene's manifest, as the run named it
   std::string sceneAt;  // "file:line:column" of that path in the replay read, for errors about the scene
@@ -45,9 +51,10 @@ struct Replay {
   // The game speed (percent) a player ran it at in the assist mode: pacing only, so the frames and
   // their hashes are the same at any speed; kept so a run can be watched as it was played.
   int speed = 100;
-  std::vector<uint8_t> held;       // held[f - 1]: the buttons held on frame f (InputFrame::held bits)
-  uint64_t hashEvery = 60;         // frames between recorded hashes (0: none)
-  std::vector<ReplayHash> hashes;  // increasing frames
+  std::vector<uint8_t> held;           // held[f - 1]: the buttons held on frame f (InputFrame::held bits)
+  uint64_t hashEvery = 60;             // frames between recorded hashes (0: none)
+  std::vector<ReplayHash> hashes;      // increasing frames
+  std::vector<ReplayConsole> console;  // frames that do not decrease
 
   uint64_t frames() const { return held.size(); }
 };
@@ -75,6 +82,8 @@ class ReplayRecorder {
  public:
   ReplayRecorder(std::string scene, uint64_t hashEvery, std::optional<uint64_t> sceneFiles = std::nullopt);
   void frame(uint8_t held, uint64_t stateHashAfter);
+  // A console line, run before the next frame.
+  void console(const std::string& code);
   // The game speed the run is played at (Replay::speed).
   void setSpeed(int percent) { replay_.speed = percent; }
   // The replay so far, its last frame's hash included.

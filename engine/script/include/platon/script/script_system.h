@@ -57,6 +57,15 @@ class ScriptSystem final : public core::System {
   // scenarios' checks. Returns its first result converted to a string ("" for nil).
   std::string evaluate(const std::string& code, const std::string& chunkName);
   size_t luaMemoryBytes() const;
+  // Runs a line typed in the game's console (docs/scripting.md, "Console"), between frames: as
+  // sandboxed code in a sandbox of its own, with the level's `game` (what level scripts get) as
+  // `game`, under the sandboxes' budget and memory limit. An expression's value is returned as the
+  // sandboxes' tostring shows it. Never throws: an error is the answer.
+  struct ConsoleAnswer {
+    bool ok = false;
+    std::string text;
+  };
+  ConsoleAnswer console(const std::string& code);
   // The Lua language server's definitions (---@meta) of the API trusted scripts see, or sandboxed
   // ones (with the `game` level scripts get), from the live binding tables; `problems` gets each
   // binding with no definition and each definition with no binding (`platon defs`).
