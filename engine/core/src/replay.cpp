@@ -333,6 +333,8 @@ void ReplayRecorder::frame(uint8_t held, uint64_t stateHashAfter) {
 
 Replay ReplayRecorder::replay() const {
   Replay r = replay_;
+  // A console line typed after the last frame ran before no frame: it changed nothing recorded.
+  while (!r.console.empty() && r.console.back().frame > r.frames()) r.console.pop_back();
   if (r.frames() > 0 && (r.hashes.empty() || r.hashes.back().frame != r.frames()))
     r.hashes.push_back({r.frames(), lastHash_});
   return r;

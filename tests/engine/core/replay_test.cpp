@@ -133,6 +133,38 @@ TEST(Replay, TheSpeedIsOptionalAndSurvivesWriteAndRead) {
   EXPECT_EQ(parseReplay(text, "slow.replay").speed, 70);
 }
 
+// The console's lines (docs/scripting.md, "Console"): any code, quotes, backslashes and line
+// breaks included, reads back as written, each before its frame; what is not one is refused where
+// it is.
+TEST(Replay, ConsoleLinesSurviveWriteAndReadAndBadOnesAreRefusedWhereTheyAre) {
+  ReplayRecorder recorder("levels/a/scene.lua", 5);
+  const std::vector<std::string> codes = {"6 * 7", "game.message(\"a \\\"quoted\\\" word\")", "x = '\\n'\nprint(x)", "",
+                                          "-- # not a comment to the reader"};
+  for (int f = 0; f < 10; ++f) {
+    if (f == 3 || f == 7) recorder.console(codes[static_cast<size_t>(f == 3 ? 0 : 1)]);
+    recorder.frame(0, 7);
+  }
+  recorder.console(codes[2]);  // after the last frame: before a frame that never came, so not kept
+  Replay r = recorder.replay();
+  EXPECT_EQ(r.console.size(), 2u);
+  for (const std::string& c : codes) r.console.push_back({10, c});
+  const Replay back = parseReplay(formatReplay(r), "c.replay");
+  ASSERT_EQ(back.console.size(), r.console.size());
+  for (size_t i = 0; i < r.console.size(); ++i) {
+    EXPECT_EQ(back.console[i].frame, r.console[i].frame);
+    EXPECT_EQ(back.console[i].code, r.console[i].code);
+  }
+  EXPECT_EQ(back.console[0].frame, 4u);  // typed after frame 3: runs before frame 4
+  const std::string body = kHeader + "10 -\nend\n";
+  EXPECT_EQ(errorOf(body + "console 0 \"x\"\n"),
+            "run.replay:8:9: console frame 0: a line runs before a frame, counted from 1");
+  EXPECT_EQ(errorOf(body + "console 5 \"x\"\nconsole 4 \"y\"\n"), "run.replay:9:9: console frames may not decrease");
+  EXPECT_EQ(errorOf(body + "console 5 x\n"), "run.replay:8:11: the console's code is written in double quotes");
+  EXPECT_EQ(errorOf(body + "console 5 \"a\\tb\"\n"),
+            "run.replay:8:14: unknown escape in a string (\\\", \\\\ and \\n are known)");
+  EXPECT_EQ(errorOf(body + "console 11 \"x\"\n").find("run.replay:8:9:"), 0u);
+}
+
 TEST(Replay, TheSceneFilesHashIsOptionalAndSurvivesWriteAndRead) {
   const Replay old = parseReplay(kHeader + "10 -\nend\n", "old.replay");
   EXPECT_FALSE(old.sceneFiles.has_value());  // files from before the line existed still read
