@@ -799,4 +799,32 @@ TEST(ContentFiles, EveryNamedFileIsARegularFileOfBoundedSize) {
     }
 }
 
+// check, net and shot read a level with its scene's tag words: a mod's word is known through the
+// level's folder or scene.lua, and unknown in a level file given alone (which has no mods).
+TEST(Check, AModsTagWordsAreKnownThroughItsScene) {
+  Folder folder("cli_mod_words");
+  folder.write("lvl/cube.level",
+               "HEXAHEDRON\n0 600 700\n2 2000 800\n4096\n%\n256 512 4096 512 spring\n"
+               "%\n0 512 4096 512\n%\n0 512 4096 512\n%\n0 512 4096 512\n%\n%\n");
+  folder.write("lvl/springs.lua", "return { tags = { spring = { color = '#cc79a7' } } }\n");
+  folder.write("lvl/scene.lua",
+               "return { systems = { 'scripting' }, stage = { level = 'cube.level' }, scripts = "
+               "{ preset = 'game', mods = { 'springs.lua' } } }\n");
+  for (const char* given : {"lvl", "lvl/scene.lua"}) {
+    const Ran r = platon({"check", given}, folder.path());
+    EXPECT_EQ(r.status, 0) << given << ": " << r.out << r.err;
+    EXPECT_TRUE(contains(r.out, "cube.level: ok (6 faces)")) << r.out;
+  }
+  EXPECT_EQ(platon({"net", "lvl", "-o", "net.svg"}, folder.path()).status, 0);
+  // The level file has its scene beside it; a copy with none knows the game's words only.
+  EXPECT_EQ(platon({"check", "lvl/cube.level"}, folder.path()).status, 0);
+  std::filesystem::create_directories(folder.path("alone"));
+  std::filesystem::copy_file(folder.path("lvl/cube.level"), folder.path("alone/cube.level"));
+  EXPECT_TRUE(contains(platon({"check", "alone/cube.level"}, folder.path()).out, "unknown segment word 'spring'"));
+  folder.write("lvl/springs.lua", "return { tags = { spring = { color = 'pink' } } }\n");
+  const Ran broken = platon({"check", "lvl"}, folder.path());
+  EXPECT_EQ(broken.status, 1);
+  EXPECT_TRUE(contains(broken.out, "springs.lua: tags.spring.color: expected a colour")) << broken.out;
+}
+
 }  // namespace

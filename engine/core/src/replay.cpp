@@ -39,7 +39,7 @@ class LineReader {
         }
         if (line[i] == '#') break;  // a comment, to the end of the line
         const size_t start = i;
-        if (line[i] == '"') {  // \" \\ and \n inside (a console line's code)
+        if (line[i] == '"') {  // \" \\ and \n inside are escapes (a console line's code)
           std::string text;
           size_t j = i + 1;
           for (; j < line.size() && line[j] != '"'; ++j) {
@@ -47,8 +47,12 @@ class LineReader {
               text += line[j];
               continue;
             }
-            if (++j == line.size() || (line[j] != '"' && line[j] != '\\' && line[j] != 'n'))
-              fail(static_cast<int>(j) + 1, "unknown escape in a string (\\\", \\\\ and \\n are known)");
+            // Any other backslash is itself (a scene path written before escapes: back\slash).
+            if (j + 1 == line.size() || (line[j + 1] != '"' && line[j + 1] != '\\' && line[j + 1] != 'n')) {
+              text += '\\';
+              continue;
+            }
+            ++j;
             text += line[j] == 'n' ? '\n' : line[j];
           }
           if (j >= line.size()) fail(static_cast<int>(i) + 1, "unfinished string");
