@@ -507,7 +507,8 @@ class Parser {
 }  // namespace
 
 Level parseLevel(std::string_view text, const std::string& file, std::shared_ptr<const TagTable> tags) {
-  return Parser(text, file, tags ? std::move(tags) : gameTags()).parse();
+  if (!tags) tags = gameTags();
+  return Parser(text, file, std::move(tags)).parse();
 }
 
 }  // namespace platon::stage

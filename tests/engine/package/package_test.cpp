@@ -90,7 +90,7 @@ class Packages : public ::testing::Test {
     }
     EXPECT_FALSE(fs::exists("/tmp/platon_evil"));
     for (const auto& entry : fs::directory_iterator(folder.path("u")))
-      EXPECT_TRUE(entry.path().filename().string().rfind("p", 0) == 0 ||
+      EXPECT_TRUE(entry.path().filename().string().rfind('p', 0) == 0 ||
                   entry.path().filename().string().rfind("into", 0) == 0)
           << "written outside: " << entry.path();
     return error;
@@ -251,7 +251,7 @@ TEST_F(Packages, AGzipBombIsStoppedAtItsListedSize) {
 TEST_F(Packages, WhatIsNoPackageIsSaidSo) {
   std::ofstream(folder.path("text.platon")) << "hello";
   EXPECT_THROW(readPackage(folder.path("text.platon"), folder.path("a")), PackageError);
-  std::ofstream(folder.path("empty.platon"));
+  { std::ofstream empty(folder.path("empty.platon")); }
   EXPECT_THROW(readPackage(folder.path("empty.platon"), folder.path("b")), PackageError);
   ASSERT_EQ(mkfifo(folder.path("fifo.platon").c_str(), 0600), 0);
   try {  // asked what it is before it is opened: a FIFO would block the reader
