@@ -3,6 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace platon::core {
 namespace {
@@ -47,6 +50,7 @@ void drawPart(const Scene& scene, physics::MapPartId id, float unit, DrawList& o
   const Place place = Place::overlayOnFace(id);
   const auto segments = part->segments();
   const auto lines = part->lines();
+  std::vector<std::pair<std::string, Point2>> labels;  // the tag words shown on this face
   for (size_t i = 0; i < segments.size(); ++i) {
     const Point2 a = point(segments[i].a), b = point(segments[i].b);
     const physics::Line& l = lines[i];
@@ -62,11 +66,12 @@ void drawPart(const Scene& scene, physics::MapPartId id, float unit, DrawList& o
       for (float t = 0.25f; t < 1; t += 0.25f)
         out.line(place, {a.x + dx * t, a.y + dy * t},
                  {a.x + dx * t - dy / length * 8 * unit, a.y + dy * t + dx / length * 8 * unit}, unit, color);
-    if (l.tag != 0 && length > 0) {  // its word beside its middle, on its left
+    if (l.tag != 0 && length > 0) {  // its word beside its middle, on its left; once for lines close together
       const std::string word = tags.written(l.tag).substr(1);
-      out.text(place,
-               {(a.x + b.x) / 2 - dy / length * 12 * unit, (a.y + b.y) / 2 + dx / length * 12 * unit + 16 * unit}, word,
-               16 * unit, color);
+      const Point2 at{(a.x + b.x) / 2 - dy / length * 12 * unit, (a.y + b.y) / 2 + dx / length * 12 * unit + 16 * unit};
+      bool shown = false;
+      for (const auto& [w, p] : labels) shown = shown || (w == word && std::hypot(p.x - at.x, p.y - at.y) < 80 * unit);
+      if (!shown) out.text(place, at, word, 16 * unit, color), labels.emplace_back(word, at);
     }
   }
 }
