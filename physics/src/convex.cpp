@@ -50,6 +50,14 @@ Convex::Convex(std::vector<Vec2> vertices) : vertices_(std::move(vertices)) {
   }
 }
 
+namespace {
+
+// Whether o -> a -> b turns strictly left. In 128 bits: points anywhere in int32 differ by up to
+// 2^32 in each coordinate, and the products of such differences pass 2^63.
+bool leftTurn(Vec2 o, Vec2 a, Vec2 b) { return cross128(wide(a) - wide(o), wide(b) - wide(o)) > 0; }
+
+}  // namespace
+
 std::vector<Vec2> convexHull(std::vector<Vec2> points) {
   std::sort(points.begin(), points.end(), [](Vec2 a, Vec2 b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });
   points.erase(std::unique(points.begin(), points.end()), points.end());
@@ -57,13 +65,13 @@ std::vector<Vec2> convexHull(std::vector<Vec2> points) {
   std::vector<Vec2> hull(2 * points.size());
   size_t k = 0;
   for (const Vec2 p : points) {  // lower hull
-    while (k >= 2 && cross(hull[k - 1] - hull[k - 2], p - hull[k - 2]) <= 0) --k;
+    while (k >= 2 && !leftTurn(hull[k - 2], hull[k - 1], p)) --k;
     hull[k++] = p;
   }
   const size_t lower = k + 1;
   for (size_t i = points.size() - 1; i-- > 0;) {  // upper hull
     const Vec2 p = points[i];
-    while (k >= lower && cross(hull[k - 1] - hull[k - 2], p - hull[k - 2]) <= 0) --k;
+    while (k >= lower && !leftTurn(hull[k - 2], hull[k - 1], p)) --k;
     hull[k++] = p;
   }
   hull.resize(k - 1);
