@@ -105,116 +105,146 @@ std::vector<PlatformId> World::platforms() const {
   return ids;
 }
 
+// The entities standing on platform `slot`: touching one of its lines from the side its face's
+// gravity presses them onto, with where they stood, in handle order.
+std::vector<WorldImpl::Rider> WorldImpl::ridersOf(uint32_t slot) {
+  const MapPartId partId = platforms[slot].part;
+  const Vec2w gravity = part(partId).gravity();
+  std::vector<Rider> riders;
+  std::vector<Vec2> verts;
+  Box near = platforms[slot].box;
+  near.x0 -= 1, near.y0 -= 1, near.x1 += 1, near.y1 += 1;
+  entityIndex.forEachNear(partId, near, [&](uint32_t s) {
+    const Entity& e = *slots[s].entity;
+    const Instance* inst = e.instanceIn(partId);
+    if (!inst) return;
+    worldVertices(*inst, verts);
+    for (const PlatformLine& l : platforms[slot].lines) {
+      if (!stops(l, verts) || !touchesOrOverlaps(verts, l.segment)) continue;
+      const Vec2w d = l.segment.b - l.segment.a;
+      i128 side = 0;
+      for (const Vec2 v : verts) side += cross(d, v - l.segment.a);
+      const Vec2w up = side >= 0 ? Vec2w{-d.y, d.x} : Vec2w{d.y, -d.x};
+      if (dot128(up, gravity) < 0) {
+        riders.push_back({s, inst->position});
+        return;
+      }
+    }
+  });
+  std::sort(riders.begin(), riders.end(), [](const Rider& a, const Rider& b) { return a.entity < b.entity; });
+  return riders;
+}
+
+// The first entity the platform's lines meet moving by `motion`: each entity seen from the lines,
+// moving by -motion. `at` is one (no hit) when none is met; ties go to the lower slot, then line.
+WorldImpl::PlatformHit WorldImpl::firstPlatformHit(uint32_t slot, Vec2w motion) {
+  const Platform& pl = platforms[slot];
+  Box swept = pl.box;
+  (motion.x < 0 ? swept.x0 : swept.x1) += motion.x;
+  (motion.y < 0 ? swept.y0 : swept.y1) += motion.y;
+  PlatformHit hit;
+  std::vector<Vec2> verts;
+  entityIndex.forEachNear(pl.part, swept, [&](uint32_t s) {
+    const Instance* inst = slots[s].entity->instanceIn(pl.part);
+    if (!inst) return;
+    worldVertices(*inst, verts);
+    for (uint32_t k = 0; k < pl.lines.size(); ++k) {
+      if (!stops(pl.lines[k], verts)) continue;
+      const Sweep sw = sweep(verts, -motion, pl.lines[k].segment);
+      if (!sw.hitsWithinFrame()) continue;
+      if (sw.enter < hit.at || (sw.enter == hit.at && (s < hit.entity || (s == hit.entity && k < hit.line))))
+        hit = {sw.enter, s, k};
+    }
+  });
+  return hit;
+}
+
+// `step`, or the longest step a unit at a time shorter, that the platform's lines make without
+// meeting or entering any entity near them (a one-way line may start inside one).
+Vec2w WorldImpl::clearPlatformStep(uint32_t slot, Vec2w step) {
+  const Platform& pl = platforms[slot];
+  std::vector<Vec2> verts;
+  for (;;) {
+    bool clear = true;
+    Box at = pl.box;
+    at.x0 += std::min<int64_t>(0, step.x), at.x1 += std::max<int64_t>(0, step.x);
+    at.y0 += std::min<int64_t>(0, step.y), at.y1 += std::max<int64_t>(0, step.y);
+    entityIndex.forEachNear(pl.part, at, [&](uint32_t s) {
+      const Instance* inst = slots[s].entity->instanceIn(pl.part);
+      if (!clear || !inst) return;
+      worldVertices(*inst, verts);
+      for (const PlatformLine& l : pl.lines) {
+        if (!stops(l, verts)) continue;
+        const Sweep sw = sweep(verts, -step, l.segment);
+        if (sw.hitsWithinFrame() || (sw.startsInside() && l.kind != LineKind::OneWay)) clear = false;
+      }
+    });
+    if (clear || step == Vec2w{}) return step;
+    step = {step.x - (step.x > 0) + (step.x < 0), step.y - (step.y > 0) + (step.y < 0)};  // a unit back
+  }
+}
+
+void WorldImpl::shiftPlatform(uint32_t slot, Vec2w step) {
+  Platform& pl = platforms[slot];
+  for (PlatformLine& l : pl.lines)
+    l.segment = {{static_cast<int32_t>(l.segment.a.x + step.x), static_cast<int32_t>(l.segment.a.y + step.y)},
+                 {static_cast<int32_t>(l.segment.b.x + step.x), static_cast<int32_t>(l.segment.b.y + step.y)}};
+  pl.offset = {static_cast<int32_t>(pl.offset.x + step.x), static_cast<int32_t>(pl.offset.y + step.y)};
+  pl.box = boxOf(pl.lines);
+}
+
+// Moves platform `slot` by its motion, or until a push is impossible (then says so: crushed).
+// Returns how far it moved.
+Vec2w WorldImpl::advancePlatform(uint32_t slot) {
+  const MapPartId partId = platforms[slot].part;
+  Vec2w remaining = wide(platforms[slot].motion);
+  Vec2w moved{};
+  for (int attempt = 0; attempt < 8 && remaining != Vec2w{}; ++attempt) {
+    // Move to the first contact (all the way if none), rounded towards the start, and proved
+    // free of every entity near it.
+    const PlatformHit hit = firstPlatformHit(slot, remaining);
+    const Vec2w step = clearPlatformStep(slot, roundedStep(remaining, hit.at));
+    shiftPlatform(slot, step);
+    moved = moved + step;
+    remaining = remaining - step;
+    if (remaining == Vec2w{} || hit.at == Fraction::one()) break;
+    // Push the entity met by all the platform still has to go; if it cannot make room, the
+    // platform stops here.
+    Entity& pushed = *slots[hit.entity].entity;
+    const Instance& inst = *pushed.instanceIn(partId);
+    const Vec2w inFrame = inst.frame == 0 ? remaining : rotateWideInverse(inst.rotation, remaining);
+    const bool made = push(pushed, inFrame);
+    if (!made && step == Vec2w{}) {
+      Contact c = makeContact(pushed, *pushed.instanceIn(partId), kPlatformLineBit | (slot << 16) | hit.line,
+                              Fraction::zero(), {}, {});
+      callRules([&](Rules& r) { r.crushed(c); });
+      break;
+    }
+  }
+  return moved;
+}
+
+// Carries the riders by what their platform moved, less what it pushed them already.
+void WorldImpl::carryRiders(MapPartId partId, const std::vector<Rider>& riders, Vec2w moved) {
+  for (const Rider& r : riders) {
+    Entity& e = *slots[r.entity].entity;
+    const Instance* inst = e.instanceIn(partId);
+    if (!inst) continue;
+    const Vec2w already = inst->position - r.start;
+    const Vec2w carry = moved - already;
+    if (carry == Vec2w{}) continue;
+    push(e, inst->frame == 0 ? carry : rotateWideInverse(inst->rotation, carry));
+  }
+}
+
 // One platform's frame: find who stands on it, move it as far as its motion goes or until a push
 // is impossible, then carry those standing on it by what it moved (less what it pushed them).
 void WorldImpl::movePlatforms() {
   for (uint32_t slot = 0; slot < platforms.size(); ++slot) {
     if (!platforms[slot].alive || platforms[slot].motion == Vec2{}) continue;
-    const MapPartId partId = platforms[slot].part;
-    const Vec2w gravity = part(partId).gravity();
-    // Riders: touching one of its lines from the side gravity presses them onto.
-    struct Rider {
-      uint32_t entity;
-      Vec2 start;
-    };
-    std::vector<Rider> riders;
-    std::vector<Vec2> verts;
-    Box near = platforms[slot].box;
-    near.x0 -= 1, near.y0 -= 1, near.x1 += 1, near.y1 += 1;
-    entityIndex.forEachNear(partId, near, [&](uint32_t s) {
-      const Entity& e = *slots[s].entity;
-      const Instance* inst = e.instanceIn(partId);
-      if (!inst) return;
-      worldVertices(*inst, verts);
-      for (const PlatformLine& l : platforms[slot].lines) {
-        if (!stops(l, verts) || !touchesOrOverlaps(verts, l.segment)) continue;
-        const Vec2w d = l.segment.b - l.segment.a;
-        i128 side = 0;
-        for (const Vec2 v : verts) side += cross(d, v - l.segment.a);
-        const Vec2w up = side >= 0 ? Vec2w{-d.y, d.x} : Vec2w{d.y, -d.x};
-        if (dot128(up, gravity) < 0) {
-          riders.push_back({s, inst->position});
-          return;
-        }
-      }
-    });
-    std::sort(riders.begin(), riders.end(), [](const Rider& a, const Rider& b) { return a.entity < b.entity; });
-
-    Vec2w remaining = wide(platforms[slot].motion);
-    Vec2w moved{};
-    for (int attempt = 0; attempt < 8 && remaining != Vec2w{}; ++attempt) {
-      Platform& pl = platforms[slot];
-      // The first entity its lines meet, moving by `remaining`: each entity seen from the lines,
-      // moving by -remaining.
-      Box swept = pl.box;
-      (remaining.x < 0 ? swept.x0 : swept.x1) += remaining.x;
-      (remaining.y < 0 ? swept.y0 : swept.y1) += remaining.y;
-      Fraction first = Fraction::one();
-      uint32_t hitEntity = 0, hitLine = 0;
-      entityIndex.forEachNear(partId, swept, [&](uint32_t s) {
-        const Instance* inst = slots[s].entity->instanceIn(partId);
-        if (!inst) return;
-        worldVertices(*inst, verts);
-        for (uint32_t k = 0; k < pl.lines.size(); ++k) {
-          if (!stops(pl.lines[k], verts)) continue;
-          const Sweep sw = sweep(verts, -remaining, pl.lines[k].segment);
-          if (!sw.hitsWithinFrame()) continue;
-          if (sw.enter < first || (sw.enter == first && (s < hitEntity || (s == hitEntity && k < hitLine))))
-            first = sw.enter, hitEntity = s, hitLine = k;
-        }
-      });
-      // Move to the first contact (all the way if none), rounded towards the start, and proved
-      // free of every entity near it.
-      Vec2w step = roundedStep(remaining, first);
-      for (;;) {
-        bool clear = true;
-        Box at = pl.box;
-        at.x0 += std::min<int64_t>(0, step.x), at.x1 += std::max<int64_t>(0, step.x);
-        at.y0 += std::min<int64_t>(0, step.y), at.y1 += std::max<int64_t>(0, step.y);
-        entityIndex.forEachNear(partId, at, [&](uint32_t s) {
-          const Instance* inst = slots[s].entity->instanceIn(partId);
-          if (!clear || !inst) return;
-          worldVertices(*inst, verts);
-          for (const PlatformLine& l : pl.lines) {
-            if (!stops(l, verts)) continue;
-            const Sweep sw = sweep(verts, -step, l.segment);
-            if (sw.hitsWithinFrame() || (sw.startsInside() && l.kind != LineKind::OneWay)) clear = false;
-          }
-        });
-        if (clear || step == Vec2w{}) break;
-        step = {step.x - (step.x > 0) + (step.x < 0), step.y - (step.y > 0) + (step.y < 0)};  // a unit back
-      }
-      for (PlatformLine& l : pl.lines)
-        l.segment = {{static_cast<int32_t>(l.segment.a.x + step.x), static_cast<int32_t>(l.segment.a.y + step.y)},
-                     {static_cast<int32_t>(l.segment.b.x + step.x), static_cast<int32_t>(l.segment.b.y + step.y)}};
-      pl.offset = {static_cast<int32_t>(pl.offset.x + step.x), static_cast<int32_t>(pl.offset.y + step.y)};
-      pl.box = boxOf(pl.lines);
-      moved = moved + step;
-      remaining = remaining - step;
-      if (remaining == Vec2w{} || first == Fraction::one()) break;
-      // Push the entity met by all the platform still has to go; if it cannot make room, the
-      // platform stops here.
-      Entity& pushed = *slots[hitEntity].entity;
-      const Instance& inst = *pushed.instanceIn(partId);
-      const Vec2w inFrame = inst.frame == 0 ? remaining : rotateWideInverse(inst.rotation, remaining);
-      const bool made = push(pushed, inFrame);
-      if (!made && step == Vec2w{}) {
-        Contact c = makeContact(pushed, *pushed.instanceIn(partId), kPlatformLineBit | (slot << 16) | hitLine,
-                                Fraction::zero(), {}, {});
-        callRules([&](Rules& r) { r.crushed(c); });
-        break;
-      }
-    }
-    // Carry the riders by what it moved, less what it pushed them already.
-    for (const Rider& r : riders) {
-      Entity& e = *slots[r.entity].entity;
-      const Instance* inst = e.instanceIn(partId);
-      if (!inst) continue;
-      const Vec2w already = inst->position - r.start;
-      const Vec2w carry = moved - already;
-      if (carry == Vec2w{}) continue;
-      push(e, inst->frame == 0 ? carry : rotateWideInverse(inst->rotation, carry));
-    }
+    const std::vector<Rider> riders = ridersOf(slot);
+    const Vec2w moved = advancePlatform(slot);
+    carryRiders(platforms[slot].part, riders, moved);
   }
 }
 

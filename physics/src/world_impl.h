@@ -143,6 +143,21 @@ struct WorldImpl {
 
   // platforms.cpp
   void movePlatforms();
+  // movePlatforms' steps, for one platform (its slot).
+  struct Rider {
+    uint32_t entity;  // its slot
+    Vec2 start;       // where it stood in the platform's part before the platform moved
+  };
+  struct PlatformHit {
+    Fraction at = Fraction::one();  // of the motion; one: nothing met
+    uint32_t entity = 0, line = 0;
+  };
+  std::vector<Rider> ridersOf(uint32_t slot);
+  PlatformHit firstPlatformHit(uint32_t slot, Vec2w motion);
+  Vec2w clearPlatformStep(uint32_t slot, Vec2w step);
+  void shiftPlatform(uint32_t slot, Vec2w step);
+  Vec2w advancePlatform(uint32_t slot);
+  void carryRiders(MapPartId partId, const std::vector<Rider>& riders, Vec2w moved);
   // Calls visit(line, key) for each line of a live platform in `part` whose platform box meets
   // `box` (the caller tests the line itself).
   template <class Visit>
