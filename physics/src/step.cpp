@@ -642,9 +642,103 @@ class SubMove {
 
 }  // namespace
 
+namespace {
+
+// The directions a contact's normals close to the entity (in its own frame), as one line's.
+void closeDirections(OpenDirections& open, const Instance& inst, const std::vector<Vec2w>& normals) {
+  open.beginLine();
+  for (const Vec2w n : normals)
+    open.addNormal(inst.frame == 0 ? n : shortDirection(rotateWideInverse(inst.rotation, shortDirection(n))));
+}
+
+// The normal a contact with `seg` reports: the line's own when it is one of them (a body on a
+// floor, not the edge of its own shape at the floor's end).
+Vec2w reportedNormal(const std::vector<Vec2w>& normals, const Segment& seg) {
+  Vec2w reported = normals[0];
+  for (const Vec2w n : normals)
+    if (dot128(n, seg.b - seg.a) == 0) reported = n;
+  return reported;
+}
+
+}  // namespace
+
+// The instance's part's own lines it rests against: their normals close directions in `open`,
+// each is a contact. Whether one of them touches it.
+bool WorldImpl::restOnPartLines(Entity& e, Instance& inst, const std::vector<Vec2>& verts, const Box& box) {
+  std::vector<Vec2w>& normals = scratch.lineNormals;
+  const MapPart& p = part(inst.part);
+  bool touching = false;
+  const auto lines = inst.region.lines();
+  for (size_t k = 0; k < lines.size(); ++k) {
+    const Segment& seg = p.segments()[lines[k]];
+    normals.clear();
+    if (outside(seg, box) || !blocks(e, inst, k, verts)) continue;
+    const Nearness nearness = nearNormals(verts, seg, normals);
+    if (nearness == Nearness::Apart) continue;
+    // A copy sits where rounding put it, and may meet a line's end edge-on where the original
+    // glides along it; so may any instance at a seam, the end of a line cut by a face edge. The
+    // slide lifts them off (liftAtSeam); for rest, such a line counts by its own side only.
+    bool ownSide = false;
+    for (const Vec2w n : normals) ownSide = ownSide || dot128(n, seg.b - seg.a) == 0;
+    if (&inst != &e.instances[0] ||
+        (!ownSide && (nearWarpLine(*this, e, inst, seg.a) || nearWarpLine(*this, e, inst, seg.b)))) {
+      const Vec2w d = seg.b - seg.a;
+      i128 side = 0;
+      for (const Vec2 v : verts) side += cross(d, v - seg.a);
+      normals.assign(1, side >= 0 ? Vec2w{-d.y, d.x} : Vec2w{d.y, -d.x});
+    }
+    touching = touching || nearness == Nearness::Touching;
+    closeDirections(scratch.open, inst, normals);
+    e.contacts.push_back(makeContact(e, inst, lines[k], Fraction::zero(), reportedNormal(normals, seg), {}));
+  }
+  return touching;
+}
+
+// The same for the moving platforms' lines near it: they count as the part's own do.
+bool WorldImpl::restOnPlatformLines(Entity& e, Instance& inst, const std::vector<Vec2>& verts, const Box& box) {
+  std::vector<Vec2w>& normals = scratch.lineNormals;
+  bool touching = false;
+  forEachPlatformLine(inst.part, box, [&](const PlatformLine& l, LineIndex key) {
+    if (l.kind == LineKind::OneWay && !wholyInFront(verts, l.segment)) return;
+    normals.clear();
+    const Nearness nearness = nearNormals(verts, l.segment, normals);
+    if (nearness == Nearness::Apart) return;
+    touching = touching || nearness == Nearness::Touching;
+    closeDirections(scratch.open, inst, normals);
+    e.contacts.push_back(makeContact(e, inst, key, Fraction::zero(), reportedNormal(normals, l.segment), {}));
+  });
+  return touching;
+}
+
+// The same for the entities solid to it that it is against: the other polygon's sides count as
+// lines do. One that can be pushed holds it only as a support (a contact against gravity, as in a
+// stack): from the side, walking into it pushes it.
+bool WorldImpl::restOnEntities(Entity& e, Instance& inst, const std::vector<Vec2>& verts, const Box& box) {
+  std::vector<Vec2w>& normals = scratch.lineNormals;
+  std::vector<Vec2>& other = scratch.probe;
+  const Vec2w down = part(inst.part).gravity();
+  bool touching = false;
+  forEachSolidNear(e, inst.part, box, [&](const Entity& o, const Instance& oi) {
+    worldVertices(oi, other);
+    normals.clear();
+    const Nearness nearness = nearNormals(verts, other, normals);
+    if (nearness == Nearness::Apart) return;
+    if (o.filter.pushable) std::erase_if(normals, [&](Vec2w n) { return dot128(n, down) >= 0; });
+    if (normals.empty()) return;
+    touching = touching || nearness == Nearness::Touching;
+    closeDirections(scratch.open, inst, normals);
+    Contact c = makeContact(e, inst, kNoLine, Fraction::zero(), normals[0], {});
+    c.other = o.id;
+    e.contacts.push_back(c);
+  });
+  return touching;
+}
+
+// Whether `e` moving by `w` (its frame) is held where it is by what it is against: every instance's
+// lines, platforms and solid entities. Leaves the contacts that hold it in e.contacts (none when it
+// is not held).
 bool WorldImpl::restsAgainstLines(Entity& e, Vec2w w) {
   OpenDirections& open = scratch.open;
-  std::vector<Vec2w>& normals = scratch.lineNormals;
   open.clear();
   e.contacts.clear();
   bool touching = false;
@@ -652,74 +746,11 @@ bool WorldImpl::restsAgainstLines(Entity& e, Vec2w w) {
     coverMotion(inst, {}, 2);
     std::vector<Vec2>& verts = scratch.now;
     worldVertices(inst, verts);
-    const MapPart& p = part(inst.part);
     Box box = sweptBox(verts, {});
     box.x0 -= 2, box.y0 -= 2, box.x1 += 2, box.y1 += 2;
-    const auto lines = inst.region.lines();
-    for (size_t k = 0; k < lines.size(); ++k) {
-      const Segment& seg = p.segments()[lines[k]];
-      normals.clear();
-      if (outside(seg, box) || !blocks(e, inst, k, verts)) continue;
-      const Nearness nearness = nearNormals(verts, seg, normals);
-      if (nearness == Nearness::Apart) continue;
-      // A copy sits where rounding put it, and may meet a line's end edge-on where the original
-      // glides along it; so may any instance at a seam, the end of a line cut by a face edge. The
-      // slide lifts them off (liftAtSeam); for rest, such a line counts by its own side only.
-      bool ownSide = false;
-      for (const Vec2w n : normals) ownSide = ownSide || dot128(n, seg.b - seg.a) == 0;
-      if (&inst != &e.instances[0] ||
-          (!ownSide && (nearWarpLine(*this, e, inst, seg.a) || nearWarpLine(*this, e, inst, seg.b)))) {
-        const Vec2w d = seg.b - seg.a;
-        i128 side = 0;
-        for (const Vec2 v : verts) side += cross(d, v - seg.a);
-        normals.assign(1, side >= 0 ? Vec2w{-d.y, d.x} : Vec2w{d.y, -d.x});
-      }
-      touching = touching || nearness == Nearness::Touching;
-      // The contact reports the line's own normal when it is one of them (a body on a floor, not
-      // the edge of its own shape at the floor's end).
-      Vec2w reported = normals[0];
-      open.beginLine();
-      for (const Vec2w n : normals) {
-        if (dot128(n, seg.b - seg.a) == 0) reported = n;
-        open.addNormal(inst.frame == 0 ? n : shortDirection(rotateWideInverse(inst.rotation, shortDirection(n))));
-      }
-      e.contacts.push_back(makeContact(e, inst, lines[k], Fraction::zero(), reported, {}));
-    }
-    // Moving platforms' lines count as the part's own do.
-    forEachPlatformLine(inst.part, box, [&](const PlatformLine& l, LineIndex key) {
-      if (l.kind == LineKind::OneWay && !wholyInFront(verts, l.segment)) return;
-      normals.clear();
-      const Nearness nearness = nearNormals(verts, l.segment, normals);
-      if (nearness == Nearness::Apart) return;
-      touching = touching || nearness == Nearness::Touching;
-      Vec2w reported = normals[0];
-      open.beginLine();
-      for (const Vec2w n : normals) {
-        if (dot128(n, l.segment.b - l.segment.a) == 0) reported = n;
-        open.addNormal(inst.frame == 0 ? n : shortDirection(rotateWideInverse(inst.rotation, shortDirection(n))));
-      }
-      e.contacts.push_back(makeContact(e, inst, key, Fraction::zero(), reported, {}));
-    });
-    // Entities it is against, solid to it: the other polygon's sides count as lines do. One that
-    // can be pushed holds it only as a support (a contact against gravity, as in a stack): from the
-    // side, walking into it pushes it.
-    std::vector<Vec2>& other = scratch.probe;
-    const Vec2w down = part(inst.part).gravity();
-    forEachSolidNear(e, inst.part, box, [&](const Entity& o, const Instance& oi) {
-      worldVertices(oi, other);
-      normals.clear();
-      const Nearness nearness = nearNormals(verts, other, normals);
-      if (nearness == Nearness::Apart) return;
-      if (o.filter.pushable) std::erase_if(normals, [&](Vec2w n) { return dot128(n, down) >= 0; });
-      if (normals.empty()) return;
-      touching = touching || nearness == Nearness::Touching;
-      open.beginLine();
-      for (const Vec2w n : normals)
-        open.addNormal(inst.frame == 0 ? n : shortDirection(rotateWideInverse(inst.rotation, shortDirection(n))));
-      Contact c = makeContact(e, inst, kNoLine, Fraction::zero(), normals[0], {});
-      c.other = o.id;
-      e.contacts.push_back(c);
-    });
+    touching = restOnPartLines(e, inst, verts, box) || touching;
+    touching = restOnPlatformLines(e, inst, verts, box) || touching;
+    touching = restOnEntities(e, inst, verts, box) || touching;
   }
   // Resting on a line, it touches it; wedged into a corner, it may be kept up to 1.5 units from
   // the lines by the whole-unit grid, and lines near it count only if they form a corner.

@@ -195,6 +195,10 @@ struct WorldImpl {
   // solid lines it is against (touching or within one unit) so that it cannot move at all. If so,
   // they become its contacts for this frame.
   bool restsAgainstLines(Entity& e, Vec2w w);
+  // Its steps, for one instance (its vertices and their box grown by 2): whether one touches it.
+  bool restOnPartLines(Entity& e, Instance& inst, const std::vector<Vec2>& verts, const Box& box);
+  bool restOnPlatformLines(Entity& e, Instance& inst, const std::vector<Vec2>& verts, const Box& box);
+  bool restOnEntities(Entity& e, Instance& inst, const std::vector<Vec2>& verts, const Box& box);
   // The entity was moving and has just come to rest against its contacts (restsAgainstLines): the
   // rules hear of each. They may let it rest; send it off with a velocity that no longer presses
   // into them (it Stays where it is for the rest of this frame, as a slide along its contacts
