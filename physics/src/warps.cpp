@@ -344,6 +344,101 @@ void WorldImpl::eraseUnlinkedCopies(Move& move) {
       }
 }
 
+// The way back onto a face from past one of its corners: beside the edge the velocity crosses
+// most (`byOut`: the edge that starts at the corner), `away` along that edge from the vertex,
+// `inward` into the face; `meet`, how far along the velocity meets the edge before it passes the
+// vertex; `clear`, how far the next frame's motion stays clear of the other edges at the vertex.
+struct WorldImpl::CornerReturn {
+  size_t corner = 0;
+  Vec2 vertex;
+  bool byOut = false;
+  Vec2w away, inward;
+  int64_t length = 0;  // of the chosen edge
+  int64_t meet = 0, clear = 0;
+};
+
+WorldImpl::CornerReturn WorldImpl::cornerReturn(const Entity& e) const {
+  const MapPart& face = part(e.instances[0].part);
+  const Vec2 at = centreOf(e.instances[0]);
+  const auto loop = face.faceLoop();
+  CornerReturn r;
+  // The corner nearest the centre, and its two edges: `in` ends there, `out` starts there.
+  r.corner = nearestCorner(face, at);
+  const Segment out = face.segments()[loop[r.corner]];
+  const Segment in = face.segments()[loop[(r.corner + loop.size() - 1) % loop.size()]];
+  r.vertex = out.a;
+  // Outward normals (right of each counter-clockwise edge); the edge the velocity leaves by most.
+  const Vec2w outDir = out.b - out.a, inDir = in.b - in.a;
+  const Vec2w outNormal{outDir.y, -outDir.x}, inNormal{inDir.y, -inDir.x};
+  const Vec2w v = e.velocityQ16;
+  const int64_t outLength =
+      static_cast<int64_t>(isqrt(static_cast<u128>(i128{outDir.x} * outDir.x + i128{outDir.y} * outDir.y)));
+  const int64_t inLength =
+      static_cast<int64_t>(isqrt(static_cast<u128>(i128{inDir.x} * inDir.x + i128{inDir.y} * inDir.y)));
+  const i128 leaveOut = (i128{v.x} * outNormal.x + i128{v.y} * outNormal.y) * inLength;
+  const i128 leaveIn = (i128{v.x} * inNormal.x + i128{v.y} * inNormal.y) * outLength;
+  r.byOut = leaveOut >= leaveIn;
+  // Along the chosen edge away from the vertex, and inward (left of the edge).
+  r.away = r.byOut ? outDir : Vec2w{-inDir.x, -inDir.y};
+  r.inward = r.byOut ? Vec2w{-outDir.y, outDir.x} : Vec2w{-inDir.y, inDir.x};
+  r.length = r.byOut ? outLength : inLength;
+  if (r.length == 0) return r;
+  // Two units in; far enough along that the velocity meets the edge before passing the vertex:
+  // along >= 4 + 2 * (velocity toward the vertex) / (velocity out across the edge).
+  const i128 towardVertex = -(i128{v.x} * r.away.x + i128{v.y} * r.away.y);
+  const i128 across = -(i128{v.x} * r.inward.x + i128{v.y} * r.inward.y);
+  r.meet = 4;
+  if (towardVertex > 0 && across > 0)
+    r.meet += static_cast<int64_t>(std::min<i128>(towardVertex * 2 / across + 1, r.length / 4));
+  // And far enough that the next frame's motion (at most this speed and its gravity) ends within
+  // this face or the neighbour across the edge, clear of their other edges at the vertex: a body
+  // put back closer goes through the same vertex again and is put back at the same place every
+  // frame, frozen while its velocity grows.
+  const Vec2w g = face.gravity();
+  const int64_t reach = static_cast<int64_t>((isqrt(static_cast<u128>(i128{v.x} * v.x + i128{v.y} * v.y)) +
+                                              isqrt(static_cast<u128>(i128{g.x} * g.x + i128{g.y} * g.y))) /
+                                             kQ16) +
+                        8;
+  r.clear = alongForClearance(face, r.corner, reach);
+  const Line& crossed = face.lines()[loop[r.byOut ? r.corner : (r.corner + loop.size() - 1) % loop.size()]];
+  if (crossed.kind == LineKind::Warp) {
+    const Warp& w = face.warps()[crossed.warp];
+    const MapPart& neighbour = part(w.target);
+    if (!neighbour.faceLoop().empty()) {
+      const Vec2 image = r.byOut ? w.targetSegment.a : w.targetSegment.b;
+      r.clear = std::max(r.clear, alongForClearance(neighbour, nearestCorner(neighbour, image), reach));
+    }
+  }
+  return r;
+}
+
+// Puts the anchor by the corner as `r` says: as far along as `clear`, or where a wall stands
+// there nearer (half, a quarter of the way, then as near as the edge is met), on the face and free.
+// Returns how far along it went, or -1 (left where it was) when no place is free.
+int64_t WorldImpl::placeByCorner(Entity& e, const CornerReturn& r) {
+  const MapPart& face = part(e.instances[0].part);
+  Instance& anchor = e.instances[0];
+  const Vec2 was = anchor.position;
+  std::vector<Vec2>& verts = scratch.probe;
+  const int64_t far = std::max(r.meet, r.clear);
+  const std::array<int64_t, 4> candidates{far, std::max(r.meet, far / 2), std::max(r.meet, far / 4), r.meet};
+  for (size_t k = 0; k < candidates.size(); ++k) {
+    if (k > 0 && candidates[k] == candidates[k - 1]) continue;
+    const int64_t along = std::min<int64_t>(candidates[k], r.length / 2);
+    // The centre goes there (the origin may lie outside the shape).
+    anchor.position = {r.vertex.x - anchor.centre.x +
+                           static_cast<int32_t>(roundDiv(i128{r.away.x} * along + i128{r.inward.x} * 2, r.length)),
+                       r.vertex.y - anchor.centre.y +
+                           static_cast<int32_t>(roundDiv(i128{r.away.y} * along + i128{r.inward.y} * 2, r.length))};
+    worldVertices(anchor, verts);
+    coverMotion(anchor, {});  // the lines around the new place, for the walls there and the warps to cross
+    if (insideFace(face, centreOf(anchor)) && isFree(e, anchor, verts)) return along;
+  }
+  anchor.position = was;  // a wall right at the corner: leave it (it cannot go far that way)
+  coverMotion(anchor, {});
+  return -1;
+}
+
 // The faces meeting at a vertex of a solid leave less than a full turn around it, so a path
 // through the vertex (or close enough that the copies' rounding agrees) comes out beyond the
 // corner of every face at once: no warp edge is crossed and nothing would ever bring the entity
@@ -357,89 +452,20 @@ void WorldImpl::keepOnFace(Move& move) {
     const MapPart& p = part(inst.part);
     if (p.faceLoop().empty() || insideFace(p, centreOf(inst))) return;  // on a face: the warp links decide
   }
-  const MapPart& face = part(e.instances[0].part);
-  const Vec2 at = centreOf(e.instances[0]);
-  const auto loop = face.faceLoop();
-  // The corner nearest the centre, and its two edges: `in` ends there, `out` starts there.
-  const size_t corner = nearestCorner(face, at);
-  const Segment out = face.segments()[loop[corner]];
-  const Segment in = face.segments()[loop[(corner + loop.size() - 1) % loop.size()]];
-  const Vec2 vertex = out.a;
-  // Outward normals (right of each counter-clockwise edge); the edge the velocity leaves by most.
-  const Vec2w outDir = out.b - out.a, inDir = in.b - in.a;
-  const Vec2w outNormal{outDir.y, -outDir.x}, inNormal{inDir.y, -inDir.x};
-  const Vec2w v = e.velocityQ16;
-  const int64_t outLength =
-      static_cast<int64_t>(isqrt(static_cast<u128>(i128{outDir.x} * outDir.x + i128{outDir.y} * outDir.y)));
-  const int64_t inLength =
-      static_cast<int64_t>(isqrt(static_cast<u128>(i128{inDir.x} * inDir.x + i128{inDir.y} * inDir.y)));
-  const i128 leaveOut = (i128{v.x} * outNormal.x + i128{v.y} * outNormal.y) * inLength;
-  const i128 leaveIn = (i128{v.x} * inNormal.x + i128{v.y} * inNormal.y) * outLength;
-  const bool byOut = leaveOut >= leaveIn;
-  // Along the chosen edge away from the vertex, and inward (left of the edge).
-  const Vec2w away = byOut ? outDir : Vec2w{-inDir.x, -inDir.y};
-  const Vec2w inward = byOut ? Vec2w{-outDir.y, outDir.x} : Vec2w{-inDir.y, inDir.x};
-  const int64_t length = byOut ? outLength : inLength;
-  if (length == 0) return;
-  // Two units in; far enough along that the velocity meets the edge before passing the vertex:
-  // along >= 4 + 2 * (velocity toward the vertex) / (velocity out across the edge).
-  const i128 towardVertex = -(i128{v.x} * away.x + i128{v.y} * away.y);
-  const i128 across = -(i128{v.x} * inward.x + i128{v.y} * inward.y);
-  int64_t meet = 4;
-  if (towardVertex > 0 && across > 0)
-    meet += static_cast<int64_t>(std::min<i128>(towardVertex * 2 / across + 1, length / 4));
-  // And far enough that the next frame's motion (at most this speed and its gravity) ends within
-  // this face or the neighbour across the edge, clear of their other edges at the vertex: a body
-  // put back closer goes through the same vertex again and is put back at the same place every
-  // frame, frozen while its velocity grows.
-  const Vec2w g = face.gravity();
-  const int64_t reach = static_cast<int64_t>((isqrt(static_cast<u128>(i128{v.x} * v.x + i128{v.y} * v.y)) +
-                                              isqrt(static_cast<u128>(i128{g.x} * g.x + i128{g.y} * g.y))) /
-                                             kQ16) +
-                        8;
-  int64_t clear = alongForClearance(face, corner, reach);
-  const Line& crossed = face.lines()[loop[byOut ? corner : (corner + loop.size() - 1) % loop.size()]];
-  if (crossed.kind == LineKind::Warp) {
-    const Warp& w = face.warps()[crossed.warp];
-    const MapPart& neighbour = part(w.target);
-    if (!neighbour.faceLoop().empty()) {
-      const Vec2 image = byOut ? w.targetSegment.a : w.targetSegment.b;
-      clear = std::max(clear, alongForClearance(neighbour, nearestCorner(neighbour, image), reach));
-    }
-  }
-  // Where a wall stands there, nearer: half, a quarter of the way, then as near as the edge is met.
-  Instance& anchor = e.instances[0];
-  const Vec2 was = anchor.position;
-  std::vector<Vec2>& verts = scratch.probe;
-  const int64_t far = std::max(meet, clear);
-  const std::array<int64_t, 4> candidates{far, std::max(meet, far / 2), std::max(meet, far / 4), meet};
-  int64_t along = -1;
-  for (size_t k = 0; k < candidates.size(); ++k) {
-    if (k > 0 && candidates[k] == candidates[k - 1]) continue;
-    along = std::min<int64_t>(candidates[k], length / 2);
-    // The centre goes there (the origin may lie outside the shape).
-    anchor.position = {
-        vertex.x - anchor.centre.x + static_cast<int32_t>(roundDiv(i128{away.x} * along + i128{inward.x} * 2, length)),
-        vertex.y - anchor.centre.y + static_cast<int32_t>(roundDiv(i128{away.y} * along + i128{inward.y} * 2, length))};
-    worldVertices(anchor, verts);
-    coverMotion(anchor, {});  // the lines around the new place, for the walls there and the warps to cross
-    if (insideFace(face, centreOf(anchor)) && isFree(e, anchor, verts)) break;
-    along = -1;
-  }
-  if (along < 0) {
-    anchor.position = was;  // a wall right at the corner: leave it (it cannot go far that way)
-    coverMotion(anchor, {});
-    return;
-  }
+  const CornerReturn r = cornerReturn(e);
+  if (r.length == 0) return;
+  const int64_t along = placeByCorner(e, r);
+  if (along < 0) return;
   // Nearer than the next frame's motion (walls about the vertex leave no room further off), it
   // would go out past the same vertex again and be put back here frame after frame with its
   // velocity unchanged: the vertex stops it there, as a wall would, and gravity or its own push
   // takes it on from rest.
-  if (along < std::min<int64_t>(clear, length / 2)) {
+  if (along < std::min<int64_t>(r.clear, r.length / 2)) {
     e.velocityQ16 = {};
     e.subunitQ17 = {};
   }
   while (e.instances.size() > 1) eraseInstance(move, e.instances.size() - 1);
+  Instance& anchor = e.instances[0];
   anchor.idealQ30 = q30FromPoint(anchor.position);
   // What it overlaps where it now is, as at insert: the lines it left end, the lines it now
   // overlaps begin, and the warp edges it straddles get their copies now. (With the overlaps of

@@ -229,6 +229,10 @@ struct WorldImpl {
   // After a slide: an entity whose every copy is beyond its face's corners (it went through a
   // vertex) is put back on the anchor's face by that corner (faces: MapPart::faceLoop).
   void keepOnFace(Move& move);
+  // Its steps: where and how to come back by the corner, and the anchor put there.
+  struct CornerReturn;
+  CornerReturn cornerReturn(const Entity& e) const;
+  int64_t placeByCorner(Entity& e, const CornerReturn& r);
   void eraseUnlinkedCopies(Move& move);
   void eraseInstance(Move& move, size_t index);
 
