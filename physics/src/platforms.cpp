@@ -160,8 +160,9 @@ WorldImpl::PlatformHit WorldImpl::firstPlatformHit(uint32_t slot, Vec2w motion) 
 }
 
 // `step`, or the longest step a unit at a time shorter, that the platform's lines make without
-// meeting or entering any entity near them (a one-way line may start inside one).
-Vec2w WorldImpl::clearPlatformStep(uint32_t slot, Vec2w step) {
+// meeting or entering any entity near them (a one-way line may start inside one). `blocker` gets
+// the last entity (its slot) that made a step shorter.
+Vec2w WorldImpl::clearPlatformStep(uint32_t slot, Vec2w step, std::optional<uint32_t>& blocker) {
   const Platform& pl = platforms[slot];
   std::vector<Vec2> verts;
   for (;;) {
@@ -178,6 +179,7 @@ Vec2w WorldImpl::clearPlatformStep(uint32_t slot, Vec2w step) {
         const Sweep sw = sweep(verts, -step, l.segment);
         if (sw.hitsWithinFrame() || (sw.startsInside() && l.kind != LineKind::OneWay)) clear = false;
       }
+      if (!clear) blocker = s;
     });
     if (clear || step == Vec2w{}) return step;
     step = {step.x - (step.x > 0) + (step.x < 0), step.y - (step.y > 0) + (step.y < 0)};  // a unit back
@@ -193,17 +195,21 @@ void WorldImpl::shiftPlatform(uint32_t slot, Vec2w step) {
   pl.box = boxOf(pl.lines);
 }
 
-// Moves platform `slot` by its motion, or until a push is impossible (then says so: crushed).
-// Returns how far it moved.
+// Moves platform `slot` by its motion, or until a push is impossible. A platform never moves less
+// than its motion without saying why: a frame it ends short of it calls Rules::crushed with the
+// entity that stopped it (once). Returns how far it moved.
 Vec2w WorldImpl::advancePlatform(uint32_t slot) {
   const MapPartId partId = platforms[slot].part;
   Vec2w remaining = wide(platforms[slot].motion);
   Vec2w moved{};
+  std::optional<uint32_t> blocker;  // the last entity in its way
+  bool crushedSaid = false;
   for (int attempt = 0; attempt < 8 && remaining != Vec2w{}; ++attempt) {
     // Move to the first contact (all the way if none), rounded towards the start, and proved
     // free of every entity near it.
     const PlatformHit hit = firstPlatformHit(slot, remaining);
-    const Vec2w step = clearPlatformStep(slot, roundedStep(remaining, hit.at));
+    if (hit.at != Fraction::one()) blocker = hit.entity;
+    const Vec2w step = clearPlatformStep(slot, roundedStep(remaining, hit.at), blocker);
     shiftPlatform(slot, step);
     moved = moved + step;
     remaining = remaining - step;
@@ -215,13 +221,24 @@ Vec2w WorldImpl::advancePlatform(uint32_t slot) {
     const Vec2w inFrame = inst.frame == 0 ? remaining : rotateWideInverse(inst.rotation, remaining);
     const bool made = push(pushed, inFrame);
     if (!made && step == Vec2w{}) {
-      Contact c = makeContact(pushed, *pushed.instanceIn(partId), kPlatformLineBit | (slot << 16) | hit.line,
-                              Fraction::zero(), {}, {});
-      callRules([&](Rules& r) { r.crushed(c); });
+      crushed(slot, hit.entity, hit.line);
+      crushedSaid = true;
       break;
     }
   }
+  // Short of its motion, whatever stopped it (a push that made only part of the room, the
+  // attempts running out, an entity it could not clear): the rules hear of it, as of a crush.
+  if (remaining != Vec2w{} && !crushedSaid && blocker && slots[*blocker].entity &&
+      slots[*blocker].entity->instanceIn(partId))
+    crushed(slot, *blocker, 0);
   return moved;
+}
+
+void WorldImpl::crushed(uint32_t slot, uint32_t entity, uint32_t line) {
+  Entity& e = *slots[entity].entity;
+  Contact c = makeContact(e, *e.instanceIn(platforms[slot].part), kPlatformLineBit | (slot << 16) | line,
+                          Fraction::zero(), {}, {});
+  callRules([&](Rules& r) { r.crushed(c); });
 }
 
 // Carries the riders by what their platform moved, less what it pushed them already.

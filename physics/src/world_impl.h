@@ -154,7 +154,9 @@ struct WorldImpl {
   };
   std::vector<Rider> ridersOf(uint32_t slot);
   PlatformHit firstPlatformHit(uint32_t slot, Vec2w motion);
-  Vec2w clearPlatformStep(uint32_t slot, Vec2w step);
+  Vec2w clearPlatformStep(uint32_t slot, Vec2w step, std::optional<uint32_t>& blocker);
+  // Rules::crushed for the entity (its slot) that platform `slot`'s line `line` stopped.
+  void crushed(uint32_t slot, uint32_t entity, uint32_t line);
   void shiftPlatform(uint32_t slot, Vec2w step);
   Vec2w advancePlatform(uint32_t slot);
   void carryRiders(MapPartId partId, const std::vector<Rider>& riders, Vec2w moved);

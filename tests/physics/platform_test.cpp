@@ -1,6 +1,8 @@
 // Moving platforms: they carry what stands on them, push what is in their way, stop (and report)
 // where a push is impossible, and never overlap anything solid to them.
 #include <random>
+#include <set>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -206,6 +208,122 @@ TEST(Platforms, RandomPlatformsNeverOverlapAnything) {
     };
     EXPECT_EQ(run(true), run(false)) << "trial " << trial;
   }
+}
+
+namespace {
+
+// Which platforms were reported crushing something this frame.
+struct CrushLog : Rules {
+  std::set<uint32_t> platforms;  // PlatformId::index
+  void crushed(const Contact& c) override { platforms.insert(c.line.platform.index); }
+};
+
+// Every frame, every platform either moved its whole motion (a completed push) or the rules heard
+// why not (crushed): over random bodies (boxes, heptagons, triangles, turned), random slopes of
+// platform lines (solid and one-way), random motions up to 40 units a frame, two platforms at once.
+// Counts the frames checked and the short moves met (the family must meet some).
+void checkShortMovesAreCrushes(uint64_t seed, std::string& failure, int& frames, int& shortMoves) {
+  std::mt19937_64 r(seed);
+  World world;
+  CrushLog rules;
+  world.setRules(&rules);
+  MapPart& part = world.createMapPart(1);
+  part.line({-3000, 0}, {3000, 0});
+  part.line({-3000, 3000}, {-3000, 0});
+  part.line({3000, 0}, {3000, 3000});
+  part.line({3000, 3000}, {-3000, 3000});
+  part.setGravity({0, -in(r, 4000, 40000)});
+  part.initialize();
+  for (int i = 0; i < 6; ++i) {
+    const int kind = in(r, 0, 2);
+    const Convex shape = kind == 0   ? Convex::box(in(r, 20, 80), in(r, 20, 80))
+                         : kind == 1 ? Convex::regular(7, in(r, 30, 90))
+                                     : Convex::regular(3, in(r, 30, 90));
+    const EntityId id = world.createEntity(shape);
+    for (int tries = 0; tries < 30; ++tries) try {
+        world.insert(id, 1, {in(r, -1500, 1500), in(r, 100, 600)}, static_cast<Angle>(r()));
+        break;
+      } catch (const Error&) {}
+  }
+  std::vector<PlatformId> platforms;
+  for (int i = 0; i < 2; ++i) {
+    const Vec2 a{in(r, -1500, 1500), in(r, 300, 2500)};
+    const Vec2 b{a.x + in(r, 100, 600), a.y + in(r, -500, 500)};  // any slope
+    const bool oneWay = r() % 2 == 0;
+    try {
+      platforms.push_back(
+          world.createPlatform(1, std::vector<PlatformLine>{{{a, b}, 0, oneWay ? LineKind::OneWay : LineKind::Solid}}));
+    } catch (const Error&) {}
+  }
+  for (int f = 0; f < 400; ++f) {
+    if (f % 50 == 0)
+      for (const PlatformId p : platforms) {
+        // Mostly towards the floor and the bodies, now and then steep and fast.
+        const Vec2 m = r() % 3 == 0 ? Vec2{in(r, -3, 3), -in(r, 20, 40)} : Vec2{in(r, -8, 8), in(r, -8, 8)};
+        world.setPlatformMotion(p, m);
+      }
+    std::vector<Vec2> before;
+    for (const PlatformId p : platforms) before.push_back(world.platform(p).offset);
+    rules.platforms.clear();
+    world.solve();
+    ++frames;
+    for (size_t k = 0; k < platforms.size(); ++k) {
+      const PlatformView v = world.platform(platforms[k]);
+      const Vec2 moved{v.offset.x - before[k].x, v.offset.y - before[k].y};
+      if (moved == v.motion) continue;
+      ++shortMoves;
+      if (!rules.platforms.count(platforms[k].index)) {
+        failure = "seed " + std::to_string(seed) + ", frame " + std::to_string(f) + ": platform " + std::to_string(k) +
+                  " moved " + toString(moved) + " of " + toString(v.motion) + ", silently";
+        return;
+      }
+    }
+    if (world.countOverlaps() != 0) {
+      failure = "seed " + std::to_string(seed) + ", frame " + std::to_string(f) + ": overlap";
+      return;
+    }
+  }
+}
+
+}  // namespace
+
+// The findings: a sloped line moving (-1, -39) onto a heptagon lying on the floor, and a one-way
+// platform lifting a box into a second platform, each moved only part of the way, silently. Now
+// every short move is a completed push or a crushed call, for every shape, slope and speed.
+TEST(Platforms, AShortMoveIsAlwaysACrushTheRulesHear) {
+  {
+    World world;
+    CrushLog rules;
+    world.setRules(&rules);
+    MapPart& part = world.createMapPart(1);
+    part.line({-3000, 0}, {3000, 0});
+    part.setGravity({0, -kUnit / 2});
+    part.initialize();
+    const EntityId heptagon = world.createEntity(Convex::regular(7, 60));
+    world.insert(heptagon, 1, {0, 60}, 0);
+    for (int f = 0; f < 30; ++f) world.solve();
+    const PlatformId slope =
+        world.createPlatform(1, std::vector<PlatformLine>{{{{-200, 400}, {200, 160}}, 0, LineKind::Solid}});
+    world.setPlatformMotion(slope, {-1, -39});
+    for (int f = 0; f < 40; ++f) {
+      const Vec2 before = world.platform(slope).offset;
+      rules.platforms.clear();
+      world.solve();
+      const Vec2 after = world.platform(slope).offset;
+      if (after != Vec2{before.x - 1, before.y - 39}) {
+        ASSERT_TRUE(rules.platforms.count(slope.index))
+            << "frame " << f << ": moved " << toString({after.x - before.x, after.y - before.y});
+      }
+      ASSERT_EQ(world.countOverlaps(), 0u);
+    }
+  }
+  std::string failure;
+  int frames = 0, shortMoves = 0;
+  for (uint64_t seed = 1; seed <= 150 && failure.empty(); ++seed)
+    checkShortMovesAreCrushes(seed, failure, frames, shortMoves);
+  EXPECT_EQ(failure, "") << "after " << frames << " frames";
+  EXPECT_GT(shortMoves, 100) << "the family met too few short moves to say anything (" << frames << " frames)";
+  std::printf("%d platform frames, %d short moves, each a crush the rules heard\n", frames, shortMoves);
 }
 
 TEST(Platforms, BadPlatformsAreRefused) {

@@ -70,7 +70,9 @@ class Rules {
   // Solid lines and entities: a rotation was stopped by one.
   virtual void touchContact(const Contact&) {}
   // A moving platform could not push this entity out of its way (it is caught between the platform
-  // and something else) and stopped for this frame. Contact::line is the platform's line. What it
+  // and something else) and stopped for this frame, short of its motion (any frame a platform ends
+  // short of its motion calls this once, with the entity that stopped it). Contact::line is the
+  // platform's line (line 0 when the platform was stopped short of meeting one). What it
   // means (a squashed player, a jammed door) is the rules' business: the world keeps everything
   // where it is, so nothing overlaps.
   virtual void crushed(const Contact&) {}
