@@ -317,6 +317,40 @@ TEST(Platforms, AShortMoveIsAlwaysACrushTheRulesHear) {
       ASSERT_EQ(world.countOverlaps(), 0u);
     }
   }
+  {  // A one-way platform moving (2, 7) lifts a box into a second platform moving (-3, 1).
+    World world;
+    CrushLog rules;
+    world.setRules(&rules);
+    MapPart& part = world.createMapPart(1);
+    part.line({-3000, 0}, {3000, 0});
+    part.setGravity({0, -kUnit / 2});
+    part.initialize();
+    const PlatformId lift =
+        world.createPlatform(1, std::vector<PlatformLine>{{{{-200, 150}, {200, 150}}, 0, LineKind::OneWay}});
+    const PlatformId roof =
+        world.createPlatform(1, std::vector<PlatformLine>{{{{300, 230}, {-300, 230}}, 0, LineKind::Solid}});
+    const EntityId box = world.createEntity(Convex::box(20, 20));
+    world.insert(box, 1, {0, 171}, 0);
+    for (int f = 0; f < 10; ++f) world.solve();
+    world.setPlatformMotion(lift, {2, 7});
+    world.setPlatformMotion(roof, {-3, 1});
+    int shortFrames = 0;
+    for (int f = 0; f < 30; ++f) {
+      const Vec2 liftWas = world.platform(lift).offset, roofWas = world.platform(roof).offset;
+      rules.platforms.clear();
+      world.solve();
+      const Vec2 liftNow = world.platform(lift).offset, roofNow = world.platform(roof).offset;
+      if (liftNow != Vec2{liftWas.x + 2, liftWas.y + 7}) {
+        ++shortFrames;
+        EXPECT_TRUE(rules.platforms.count(lift.index)) << "frame " << f << ": the lift moved silently short";
+      }
+      if (roofNow != Vec2{roofWas.x - 3, roofWas.y + 1}) {
+        EXPECT_TRUE(rules.platforms.count(roof.index)) << "frame " << f << ": the roof moved silently short";
+      }
+      ASSERT_EQ(world.countOverlaps(), 0u);
+    }
+    EXPECT_GT(shortFrames, 0) << "the box never jammed between them";
+  }
   std::string failure;
   int frames = 0, shortMoves = 0;
   for (uint64_t seed = 1; seed <= 150 && failure.empty(); ++seed)
