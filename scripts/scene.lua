@@ -672,6 +672,7 @@ end
 
 function scene.game() return game end
 function scene.levelView() return levelView end  -- the game's console hands it to what is typed
+function scene.levelSandbox() return Level.id end  -- and runs it in the level script's globals
 function scene.frame() return game.time end
 
 return scene

@@ -257,6 +257,19 @@ int LuaHost::loadString(std::string_view code, const std::string& chunkName, Tru
   return id;
 }
 
+int LuaHost::loadStringInGlobalsOf(std::string_view code, const std::string& chunkName, int envOf) {
+  if (envOf < 0 || static_cast<size_t>(envOf) >= shared_->sandboxes.size())
+    throw ScriptError("no sandbox " + std::to_string(envOf), "");
+  const int id = loadString(code, chunkName, Trust::Sandboxed);  // the chunk, in a new sandbox
+  shared_->sandboxes[static_cast<size_t>(envOf)].env.push();
+  lua_pushvalue(L_, -1);
+  shared_->sandboxes[static_cast<size_t>(id)].env = lua::Ref(L_, -1);
+  shared_->sandboxes[static_cast<size_t>(id)].borrowsEnv = true;
+  lua_pop(L_, 1);
+  lua_setfenv(L_, -2);
+  return id;
+}
+
 int LuaHost::loadFile(const std::string& path, Trust trust) {
   std::string code;
   try {
@@ -443,7 +456,9 @@ bool LuaHost::callSandboxed(int sandbox, int nargs, int nresults) {
 void LuaHost::disable(int sandbox) {
   Sandbox& gone = shared_->sandboxes[static_cast<size_t>(sandbox)];
   gone.disabled = true;
-  // Its globals go, so what it holds can be collected once the engine drops its functions.
+  // Its globals go, so what it holds can be collected once the engine drops its functions (not
+  // when they are another sandbox's: the console's line in the level's globals).
+  if (gone.borrowsEnv) return;
   gone.env.push();
   if (lua_istable(L_, -1)) {
     lua_pushnil(L_);

@@ -104,6 +104,10 @@ class LuaHost {
   int loadFile(const std::string& path, Trust trust);
   static constexpr size_t kMaxScriptBytes = size_t{16} << 20;  // a script file (a regular file)
   int loadString(std::string_view code, const std::string& chunkName, Trust trust);
+  // Compiles `code` as sandboxed code that sees sandbox `envOf`'s globals (reads and writes them),
+  // as a sandbox of its own: its budget, its errors, its being disabled are its own. Pushes the
+  // chunk; returns its id. The game's console, in the level script's globals.
+  int loadStringInGlobalsOf(std::string_view code, const std::string& chunkName, int envOf);
 
   // The table of functions trusted scripts see as `platon`. Pushes it.
   void pushApi();

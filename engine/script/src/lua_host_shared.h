@@ -19,7 +19,8 @@ struct Sandbox {
   std::string source;  // its chunk name ("@file"): the frames of its functions carry it
   lua::Ref env;
   bool disabled = false;
-  int64_t spent = 0;  // steps of this frame's budget
+  bool borrowsEnv = false;  // its globals are another sandbox's (loadStringInGlobalsOf): never wiped
+  int64_t spent = 0;        // steps of this frame's budget
 };
 
 // The allocator's, the hook's and the timer's view of the host: reached through lua_getallocf's

@@ -729,11 +729,20 @@ ScriptSystem::ConsoleAnswer ScriptSystem::console(const std::string& code) {
   ConsoleAnswer answer;
   try {
     state_->host.beginFrame();  // the line's own budget, as a frame's
+    // In the level script's globals when it is sandboxed (its own globals are the level's state a
+    // modder pokes at), else in a sandbox's fresh ones.
+    state_->callDriver("levelSandbox", 0, 1);
+    const int level = lua_isnumber(L, -1) ? static_cast<int>(lua_tointeger(L, -1)) : kNoSandbox;
+    lua_pop(L, 1);
+    auto compile = [&](const std::string& text) {
+      return level == kNoSandbox ? state_->host.loadString(text, "=console", Trust::Sandboxed)
+                                 : state_->host.loadStringInGlobalsOf(text, "=console", level);
+    };
     int sandbox = kNoSandbox;
     try {  // an expression shows its value; a statement runs as written
-      sandbox = state_->host.loadString("local game = ... return " + code, "=console", Trust::Sandboxed);
+      sandbox = compile("local game = ... return " + code);
     } catch (const ScriptError&) {
-      sandbox = state_->host.loadString("local game = ... " + code, "=console", Trust::Sandboxed);
+      sandbox = compile("local game = ... " + code);
     }
     state_->callDriver("levelView", 0, 1);
     if (!state_->host.callSandboxed(sandbox, 1, 1)) {

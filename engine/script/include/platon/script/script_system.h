@@ -58,8 +58,9 @@ class ScriptSystem final : public core::System {
   std::string evaluate(const std::string& code, const std::string& chunkName);
   size_t luaMemoryBytes() const;
   // Runs a line typed in the game's console (docs/scripting.md, "Console"), between frames: as
-  // sandboxed code in a sandbox of its own, with the level's `game` (what level scripts get) as
-  // `game`, under the sandboxes' budget and memory limit. An expression's value is returned as the
+  // sandboxed code in the level script's globals (when it is sandboxed) but a sandbox of its own,
+  // with the level's `game` (what level scripts get) as `game`, under the sandboxes' budget and
+  // memory limit. An expression's value is returned as the
   // sandboxes' tostring shows it. Never throws: an error is the answer.
   struct ConsoleAnswer {
     bool ok = false;

@@ -1,0 +1,65 @@
+// The game's console (docs/scripting.md, "Console"): a line of Lua runs between frames in the level
+// script's globals, with the level's `game`, as a sandbox of its own: what it changes is the
+// level's, and what stops it (an error, a loop past the budget) stops it alone.
+#include <gtest/gtest.h>
+
+#include "platon/core/live_scene.h"
+#include "platon/script/script_system.h"
+#include "platon/testing/temp_folder.h"
+
+namespace platon::script {
+namespace {
+
+struct ConsoleLevel {
+  testing::TempFolder folder{"console"};
+  core::SystemRegistry registry;
+  std::unique_ptr<core::LiveScene> live;
+  ConsoleLevel() {
+    registry.add("scripting", makeScriptSystem);
+    folder.write("level.lua",
+                 "counter = 5\n"
+                 "local level = { start = { face = 0, x = 600, y = 700 } }\n"
+                 "function level.build(game) game.world.line(game.world.face(1), 0, 512, 4096, 512) end\n"
+                 "function level.tick(game, frame) game.message('counter ' .. counter .. ' at ' .. frame) end\n"
+                 "return level\n");
+    live = std::make_unique<core::LiveScene>(
+        folder.write("scene.lua",
+                     "return { systems = { 'scripting' }, scripts = { preset = 'game', level = "
+                     "'level.lua' } }\n"),
+        registry, false);
+  }
+  ScriptSystem& scripts() { return dynamic_cast<ScriptSystem&>(*live->scene().findSystem("scripting")); }
+  std::string step() {
+    const std::optional<std::string> error = live->step({});
+    EXPECT_FALSE(error.has_value()) << *error;
+    return scripts().status().message;
+  }
+};
+
+TEST(Console, ALineRunsInTheLevelsGlobalsAndStopsAlone) {
+  ConsoleLevel c;
+  EXPECT_EQ(c.step(), "counter 5 at 1");
+  EXPECT_EQ(c.scripts().console("counter").text, "5");
+  EXPECT_EQ(c.scripts().console("6 * 7").text, "42");
+  const ScriptSystem::ConsoleAnswer set = c.scripts().console("counter = counter + 1");
+  EXPECT_TRUE(set.ok);
+  EXPECT_EQ(set.text, "");
+  EXPECT_EQ(c.step(), "counter 6 at 2") << "the level did not see what the console set";
+  EXPECT_EQ(c.scripts().console("game.frame()").text, "2");
+  // An error and a loop: the console's line stops, the level goes on.
+  const ScriptSystem::ConsoleAnswer wrong = c.scripts().console("game.nothing()");
+  EXPECT_FALSE(wrong.ok);
+  EXPECT_NE(wrong.text.find("console:1: attempt to call field 'nothing'"), std::string::npos) << wrong.text;
+  const ScriptSystem::ConsoleAnswer loop = c.scripts().console("while true do end");
+  EXPECT_FALSE(loop.ok);
+  EXPECT_NE(loop.text.find("script stopped"), std::string::npos) << loop.text;  // the budget, or the deadline
+  EXPECT_EQ(c.step(), "counter 6 at 3") << "the console's loop stopped the level";
+  EXPECT_EQ(c.scripts().console("counter").text, "6") << "the next line does not run";
+  // What a sandbox may not do, the console may not either.
+  EXPECT_FALSE(c.scripts().console("io.open('/etc/passwd')").ok);
+  EXPECT_FALSE(c.scripts().console("os.execute('true')").ok);
+  EXPECT_FALSE(c.scripts().console(")(").ok);  // a syntax error, said
+}
+
+}  // namespace
+}  // namespace platon::script
