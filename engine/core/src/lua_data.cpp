@@ -17,6 +17,23 @@ const DataValue* DataValue::field(std::string_view name) const {
   return nullptr;
 }
 
+std::string luaQuoted(std::string_view text) {
+  std::string out = "\"";
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == '"' || c == '\\') {
+      (out += '\\') += c;
+    } else if (byte < 0x20 || byte == 0x7f) {
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\%03u", byte);  // Lua's decimal escape
+      out += escaped;
+    } else {
+      out += c;
+    }
+  }
+  return out + "\"";
+}
+
 std::string describeData(const DataValue& d) {
   char number[64];
   switch (d.kind) {

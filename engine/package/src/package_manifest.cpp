@@ -10,23 +10,6 @@
 namespace platon::package {
 namespace {
 
-std::string quoted(const std::string& text) {
-  std::string out = "\"";
-  for (const char c : text) {
-    const auto byte = static_cast<unsigned char>(c);
-    if (c == '"' || c == '\\') {
-      (out += '\\') += c;
-    } else if (byte < 0x20 || byte == 0x7f) {
-      char escaped[8];
-      std::snprintf(escaped, sizeof escaped, "\\%03u", byte);
-      out += escaped;
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
-}
-
 [[noreturn]] void fail(const std::string& file, const core::DataValue& at, const std::string& why) {
   throw PackageError(file + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) + ": " + why);
 }
@@ -55,11 +38,11 @@ bool hex64(const std::string& s) {
 
 std::string manifestText(const PackageManifest& m) {
   std::string out = "-- A Platon level package's manifest (docs/packages.md), written by `platon pack`.\nreturn {\n";
-  out += "  format = " + std::to_string(m.format) + ",\n  name = " + quoted(m.name) +
-         ",\n  folder = " + quoted(m.folder) + ",\n  hash = " + quoted(m.hash) + ",\n  files = {\n";
+  out += "  format = " + std::to_string(m.format) + ",\n  name = " + core::luaQuoted(m.name) +
+         ",\n  folder = " + core::luaQuoted(m.folder) + ",\n  hash = " + core::luaQuoted(m.hash) + ",\n  files = {\n";
   for (const PackageFile& f : m.files)
-    out += "    { path = " + quoted(f.path) + ", bytes = " + std::to_string(f.bytes) +
-           ", sha256 = " + quoted(f.sha256) + " },\n";
+    out += "    { path = " + core::luaQuoted(f.path) + ", bytes = " + std::to_string(f.bytes) +
+           ", sha256 = " + core::luaQuoted(f.sha256) + " },\n";
   return out + "  },\n}\n";
 }
 
@@ -89,7 +72,7 @@ PackageManifest parseManifest(const std::string& text, const std::string& file) 
     PackageFile f;
     const core::DataValue& path = required(file, e.value, "path", core::DataValue::Kind::String);
     if (const std::string why = pathProblem(path.text); !why.empty())
-      fail(file, path, "path " + quoted(path.text) + ": " + why);
+      fail(file, path, "path " + core::luaQuoted(path.text) + ": " + why);
     f.path = path.text;
     const core::DataValue& bytes = required(file, e.value, "bytes", core::DataValue::Kind::Number);
     if (!(bytes.number >= 0 && bytes.number <= static_cast<double>(kMaxFileBytes)) ||

@@ -713,25 +713,6 @@ ScenarioResult runReplay(const std::string& path, const RunOptions& options) {
 
 namespace {
 
-// `text` as a Lua string literal, "..." with the quote, the backslash and control bytes escaped,
-// so that any path reads back as itself (other bytes, UTF-8 included, go in as they are).
-std::string luaQuoted(const std::string& text) {
-  std::string out = "\"";
-  for (const char c : text) {
-    const auto byte = static_cast<unsigned char>(c);
-    if (c == '"' || c == '\\') {
-      (out += '\\') += c;
-    } else if (byte < 0x20 || byte == 0x7f) {
-      char escaped[8];
-      std::snprintf(escaped, sizeof escaped, "\\%03u", byte);  // Lua's decimal escape
-      out += escaped;
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
-}
-
 // A name for the leading comment: one line.
 std::string oneLine(std::string text) {
   std::replace_if(
@@ -744,7 +725,7 @@ std::string oneLine(std::string text) {
 std::string scenarioFromReplay(const core::Replay& replay, const ScenarioResult& outcome, const std::string& name) {
   std::string out =
       "-- Made by `platon scenario` from " + oneLine(name) + ": the recorded input, and what that run reached.\n";
-  out += "return {\n  scene = " + luaQuoted(replay.scene) + ",\n  frames = " + std::to_string(replay.frames()) +
+  out += "return {\n  scene = " + core::luaQuoted(replay.scene) + ",\n  frames = " + std::to_string(replay.frames()) +
          ",\n  input = {\n";
   for (int b = 0; b < core::kButtonCount; ++b) {
     const std::string button(core::buttonName(static_cast<core::Button>(b)));

@@ -282,3 +282,23 @@ TEST(LuaData, RandomTextsAreReadAsLuaReadsThemOrRefusedAtTheirPlace) {
   EXPECT_GT(read, 2000);  // every unbroken text, and some broken ones that are still data
   EXPECT_GT(refused, 500);
 }
+
+// What the engine writes as a Lua string (luaQuoted) reads back as itself, for every byte and for
+// random strings of them: scenarios and package manifests name any path the same way.
+TEST(LuaData, AQuotedStringReadsBackAsItself) {
+  std::string every;
+  for (int b = 0; b < 256; ++b) every += static_cast<char>(b);
+  std::vector<std::string> texts = {"", every, "\"", "\\", "a\\\"b", "\n\r\t", "\0012", "]]", "--"};
+  uint64_t state = 7;
+  for (int i = 0; i < 500; ++i) {
+    std::string t;
+    const int n = static_cast<int>((state = state * 6364136223846793005ULL + 1) >> 58);
+    for (int k = 0; k < n; ++k) t += static_cast<char>((state = state * 6364136223846793005ULL + 1) >> 56);
+    texts.push_back(t);
+  }
+  for (const std::string& t : texts) {
+    const DataValue v = core::readLuaData("return " + core::luaQuoted(t), "q.lua");
+    ASSERT_TRUE(v.isString());
+    EXPECT_EQ(v.text, t);
+  }
+}

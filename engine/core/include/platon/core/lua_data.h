@@ -64,4 +64,9 @@ inline constexpr size_t kMaxDataValues = 250000;  // keys and values in one file
 // Reads `text` (the file's contents); throws DataError "file:line:column: reason".
 DataValue readLuaData(std::string_view text, const std::string& fileName);
 
+// `text` as a Lua string literal, "..." with the quote, the backslash and control bytes escaped,
+// that readLuaData (and Lua) read back as `text` byte for byte: for the data files the engine
+// writes (scenarios made from replays, package manifests).
+std::string luaQuoted(std::string_view text);
+
 }  // namespace platon::core
