@@ -445,7 +445,11 @@ bool LuaHost::callSandboxed(int sandbox, int nargs, int nresults) {
   s.memoryStop = kNoSandbox;
   s.hog = kNoSandbox;
   s.stopMessage.clear();
-  if (off != kNoSandbox) {
+  // A file's sandbox stays off until it is saved again; a line of code not from a file (the
+  // console's) is simply gone, and saving fixes nothing.
+  if (off != kNoSandbox && s.sandboxes[static_cast<size_t>(off)].source.rfind('@', 0) != 0) {
+    disable(off);
+  } else if (off != kNoSandbox) {
     disable(off);
     message += "; " + s.sandboxes[static_cast<size_t>(off)].name + " disabled: fix it and save to reload";
     if (s.stopNoted && off == sandbox) message += " (the frame's other sandboxed calls are skipped)";

@@ -757,8 +757,6 @@ ScriptSystem::ConsoleAnswer ScriptSystem::console(const std::string& code) {
     answer.text = lua_isstring(L, -1) ? lua_tostring(L, -1) : "";
   } catch (const ScriptError& e) {
     answer.text = e.what();
-    // Each line has a sandbox of its own: the next one runs whatever stopped this one.
-    if (const size_t cut = answer.text.find("; console disabled"); cut != std::string::npos) answer.text.resize(cut);
   }
   return answer;
 }

@@ -53,6 +53,7 @@ TEST(Console, ALineRunsInTheLevelsGlobalsAndStopsAlone) {
   const ScriptSystem::ConsoleAnswer loop = c.scripts().console("while true do end");
   EXPECT_FALSE(loop.ok);
   EXPECT_NE(loop.text.find("script stopped"), std::string::npos) << loop.text;  // the budget, or the deadline
+  EXPECT_EQ(loop.text.find("save to reload"), std::string::npos) << "a typed line is no file to save: " << loop.text;
   EXPECT_EQ(c.step(), "counter 6 at 3") << "the console's loop stopped the level";
   EXPECT_EQ(c.scripts().console("counter").text, "6") << "the next line does not run";
   // What a sandbox may not do, the console may not either.
