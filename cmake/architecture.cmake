@@ -25,6 +25,8 @@ set(PLATON_ARROWS_platon_audio platon_synth)
 set(PLATON_ARROWS_platon_mesh platon_files)
 # Level packages: the data reader (core) for their manifests, bounded reads (files).
 set(PLATON_ARROWS_platon_package platon_core platon_files)
+# The level editor: the level document (stage's format), the picture (core's draw lists), the camera.
+set(PLATON_ARROWS_platon_editor platon_core platon_stage platon_physics platon_camera platon_files)
 
 set(PLATON_MODULES "" CACHE INTERNAL "")
 

@@ -5,11 +5,12 @@
 #include <string>
 
 #include "platon/core/display.h"
+#include "platon/files/write_file.h"
 
 namespace platon::app {
 
-// "" when saved, else why not: "<path>: cannot write <what>" (what: "the progress file").
-std::string saveWhole(const std::string& path, const std::string& text, const std::string& what);
+using files::makeFolders;  // platon/files/write_file.h
+using files::saveWhole;
 
 // The player's own folder for the game, by the XDG base directories: $XDG_DATA_HOME/platon
 // (kind "data", else ~/.local/share/platon) or $XDG_CONFIG_HOME/platon ("config", else

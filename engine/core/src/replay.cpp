@@ -89,6 +89,14 @@ class LineReader {
     return v;
   }
 
+  // A signed whole number within -max..max (a point's coordinate).
+  int64_t signedNumber(const Word& w, uint64_t max, const char* what) const {
+    const bool negative = !w.text.empty() && w.text[0] == '-';
+    const Word magnitude{negative ? w.text.substr(1) : w.text, w.column, w.quoted};
+    const auto v = static_cast<int64_t>(number(magnitude, max, what));
+    return negative ? -v : v;
+  }
+
   void expect(const std::vector<Word>& words, const char* keyword, size_t count, const char* usage) const {
     if (words[0].text != keyword)
       fail(words[0].column, "expected '" + std::string(usage) + "', got '" + words[0].text + "'");
@@ -231,6 +239,13 @@ Replay parseReplay(const std::string& text, const std::string& fileName) {
     r.speed = static_cast<int>(speed);
     line("frames N");
   }
+  if (w[0].text == "start") {  // optional: the run starts here, not at the level's start
+    in.expect(w, "start", 4, "start FACE X Y");
+    r.start = ReplayStart{static_cast<int>(in.number(w[1], 1'000'000, "start face")),
+                          static_cast<int32_t>(in.signedNumber(w[2], kMaxStartCoordinate, "start x")),
+                          static_cast<int32_t>(in.signedNumber(w[3], kMaxStartCoordinate, "start y"))};
+    line("frames N");
+  }
   in.expect(w, "frames", 2, "frames N");
   const uint64_t frames = in.number(w[1], kMaxFrames, "frames");
   line("hash_every N");
@@ -272,6 +287,9 @@ std::string formatReplay(const Replay& r) {
   std::string out = "platon replay 1\nscene \"" + escaped(r.scene) + "\"\n";
   if (r.sceneFiles) out += "scene_files " + hex16(*r.sceneFiles) + "\n";
   if (r.speed != 100) out += "speed " + std::to_string(r.speed) + "\n";
+  if (r.start)
+    out += "start " + std::to_string(r.start->face) + " " + std::to_string(r.start->x) + " " +
+           std::to_string(r.start->y) + "\n";
   out += "frames " + std::to_string(r.frames()) + "\nhash_every " + std::to_string(r.hashEvery) + "\ninput\n";
   for (size_t i = 0; i < r.held.size();) {
     size_t j = i;

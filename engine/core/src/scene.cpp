@@ -207,7 +207,8 @@ std::shared_ptr<const stage::TagTable> sceneTags(const std::string& manifestPath
   return scene.tags();
 }
 
-std::unique_ptr<Scene> loadScene(const std::string& manifestPath, const SystemRegistry& registry, Scene* replacing) {
+std::unique_ptr<Scene> loadScene(const std::string& manifestPath, const SystemRegistry& registry, Scene* replacing,
+                                 const LevelOverride* override) {
   auto scene = std::make_unique<Scene>();
   scene->setManifest(loadManifest(manifestPath));
   const SceneManifest& manifest = scene->manifest();
@@ -217,12 +218,16 @@ std::unique_ptr<Scene> loadScene(const std::string& manifestPath, const SystemRe
     // Parsed and checked whole before anything enters the world: a bad file builds nothing.
     std::string text;
     try {
-      text = stage::readLevelFile(manifest.levelFile);
+      text = override && override->text ? *override->text : stage::readLevelFile(manifest.levelFile);
     } catch (const stage::StageError& e) {  // a file that is no level file is the naming line's error
       const auto place = manifest.placeOf.find(manifest.levelFile);
       throw std::runtime_error((place == manifest.placeOf.end() ? manifestPath : place->second) + ": " + e.what());
     }
     stage::Level level = stage::parseLevel(text, manifest.levelFile, scene->tags());
+    if (override && override->start) {  // the start's line stays the one errors about it name
+      level.start.face = override->start->face;
+      level.start.position = override->start->position;
+    }
     stage::Stage solid = level.solid ? stage::platonicStageOf(level) : meshStage(level, manifest, registry, *scene);
     stage::checkLevelOnStage(level, solid);
     stage::buildLevel(level, solid, scene->world(), 0, gravity);

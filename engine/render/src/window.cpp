@@ -190,6 +190,7 @@ uint8_t Window::padButtons(SDL_GameController* pad) const {
 
 core::WindowInput Window::pollEvents() {
   core::WindowInput input;
+  const float dpi = pixelsPerPoint();
   SDL_Event event;
   while (SDL_PollEvent(&event)) {
     switch (event.type) {
@@ -202,7 +203,23 @@ core::WindowInput Window::pollEvents() {
       case SDL_TEXTINPUT:
         input.text += event.text.text;
         break;
+      case SDL_MOUSEBUTTONDOWN:
+      case SDL_MOUSEBUTTONUP:
+        input.mouse.push_back({event.type == SDL_MOUSEBUTTONDOWN ? core::MouseEvent::Kind::Down : core::MouseEvent::Kind::Up,
+                               event.button.button, static_cast<float>(event.button.x) * dpi,
+                               static_cast<float>(event.button.y) * dpi, 0});
+        break;
+      case SDL_MOUSEWHEEL: {
+        int x = 0, y = 0;
+        SDL_GetMouseState(&x, &y);
+        const float notches = event.wheel.preciseY != 0 ? event.wheel.preciseY : static_cast<float>(event.wheel.y);
+        input.mouse.push_back({core::MouseEvent::Kind::Wheel, 0, static_cast<float>(x) * dpi,
+                               static_cast<float>(y) * dpi, notches});
+        break;
+      }
       case SDL_KEYDOWN:
+        input.keys.push_back({SDL_GetScancodeName(event.key.keysym.scancode), (event.key.keysym.mod & KMOD_CTRL) != 0,
+                              (event.key.keysym.mod & KMOD_SHIFT) != 0, (event.key.keysym.mod & KMOD_ALT) != 0});
         if (event.key.repeat && event.key.keysym.sym == SDLK_BACKSPACE) input.pressed.push_back(core::Key::Backspace);
         if (event.key.repeat) break;
         input.tapped |= buttonOf(event.key.keysym.scancode);
@@ -236,6 +253,13 @@ core::WindowInput Window::pollEvents() {
   }
   input.held = heldButtons();
   for (SDL_GameController* pad : pads_) input.held |= padButtons(pad);
+  int x = 0, y = 0;
+  const Uint32 buttons = SDL_GetMouseState(&x, &y);
+  input.mouseX = static_cast<float>(x) * dpi, input.mouseY = static_cast<float>(y) * dpi;
+  input.mouseHeld = static_cast<uint8_t>(buttons & 7);
+  const SDL_Keymod mods = SDL_GetModState();
+  input.shift = mods & KMOD_SHIFT, input.ctrl = mods & KMOD_CTRL, input.alt = mods & KMOD_ALT;
+  input.width = pixelWidth(), input.height = pixelHeight();
   return input;
 }
 

@@ -177,6 +177,8 @@ struct Plan {
   std::map<uint64_t, std::vector<uint32_t>> switchesAt;  // expect.switches: exactly these on (sorted)
   // expect.checkpoint: the last checkpoint touched, {face, x, y}; false: none yet.
   std::map<uint64_t, std::optional<std::array<int64_t, 3>>> checkpointAt;
+  std::optional<core::ReplayStart> start;    // where the run starts (none: the level's start)
+  std::string startWhere;                    // file:line:column: start, for the face check
   std::optional<uint64_t> sceneFilesHash;    // a replay's record of the scene's files
   std::vector<core::ReplayConsole> console;  // a replay's console lines, each run before its frame
   std::string passNote;                      // added to a passing run's summary
@@ -205,7 +207,7 @@ class PlanReader {
   Plan read(const DataValue& root) {
     if (root.kind != DataValue::Kind::Table)
       fail(root, "scenario", "a scenario returns a table, got " + core::describeData(root));
-    knownKeys(root, "scenario", {"scene", "frames", "input", "expect"});
+    knownKeys(root, "scenario", {"scene", "frames", "start", "input", "expect"});
     Plan plan;
     const DataValue* scene = field(root, "scene");
     if (!scene) fail(root, "scenario", "'scene' (the manifest's path) is missing");
@@ -224,6 +226,7 @@ class PlanReader {
     if (!frames) fail(root, "scenario", "'frames' (how many frames to run) is missing");
     plan.frames = wholeNumber(*frames, "frames", 1, kMaxFrames);
     plan.held.assign(plan.frames + 1, 0);
+    if (const DataValue* start = field(root, "start")) readStart(*start, plan);
     if (const DataValue* input = field(root, "input")) readInput(*input, plan);
     if (const DataValue* expect = field(root, "expect")) readExpect(*expect, plan);
     return plan;
@@ -293,6 +296,25 @@ class PlanReader {
       items.push_back(&value);
     }
     return items;
+  }
+  // start = { face = F, x = X, y = Y }: the run starts there (a play-test from the editor's cursor).
+  void readStart(const DataValue& d, Plan& plan) const {
+    if (d.kind != DataValue::Kind::Table)
+      fail(d, "start", "expected { face = F, x = X, y = Y }, got " + core::describeData(d));
+    knownKeys(d, "start", {"face", "x", "y"});
+    core::ReplayStart start;
+    for (const char* key : {"face", "x", "y"}) {
+      const DataValue* v = field(d, key);
+      if (!v) fail(d, "start", std::string("'") + key + "' is missing (start = { face = F, x = X, y = Y })");
+      const std::string where = std::string("start.") + key;
+      if (std::string_view(key) == "face")
+        start.face = static_cast<int>(wholeNumber(*v, where, 0, 1e6));
+      else
+        (std::string_view(key) == "x" ? start.x : start.y) = static_cast<int32_t>(
+            integer(*v, where, -double(core::kMaxStartCoordinate), double(core::kMaxStartCoordinate)));
+    }
+    plan.start = start;
+    plan.startWhere = at(d, "start");
   }
   uint64_t frameKey(const DataValue& key, const DataValue& value, const std::string& where, const Plan& plan) const {
     return wholeNumber(key.line ? key : value, where + " (a frame)", 1, static_cast<double>(plan.frames));
@@ -481,6 +503,7 @@ void checkFaces(const Plan& plan, const core::Scene& scene) {
                             std::to_string(faces == 0 ? 0 : faces - 1) + ")",
                         "");
   };
+  if (plan.start) check(static_cast<physics::MapPartId>(plan.start->face), plan.startWhere);
   for (const auto& [frame, face] : plan.faceAt) check(face, plan.faceWhere.at(frame));
   for (const Box& b : plan.inside) check(b.face, b.where);
   // Likewise a sound the scene's bank does not have.
@@ -621,7 +644,15 @@ ScenarioResult runPlan(const std::string& path, const std::function<Plan()>& mak
     } catch (const files::FileError& e) {
       return finish(false, plan.sceneAt + ": scene \"" + plan.scene + "\": " + e.reason());
     }
-    std::unique_ptr<core::Scene> scene = core::loadScene(scenePath, registry);
+    core::LevelOverride override;
+    if (plan.start) override.start = stage::LevelPoint{plan.start->face, {plan.start->x, plan.start->y}};
+    std::unique_ptr<core::Scene> scene;
+    try {
+      scene = core::loadScene(scenePath, registry, nullptr, &override);
+    } catch (const stage::StageError& e) {  // the start put off its face or into a wall: the start's own error
+      if (!plan.start) throw;
+      return finish(false, plan.startWhere + "the level does not start there: " + e.what());
+    }
     checkFaces(plan, *scene);
     const uint64_t filesHash = core::sceneFilesHash(core::sceneSourceFiles(*scene));
     const std::string filesNote = plan.sceneFilesHash && *plan.sceneFilesHash != filesHash
@@ -633,7 +664,10 @@ ScenarioResult runPlan(const std::string& path, const std::function<Plan()>& mak
       if (auto* s = dynamic_cast<ScriptSystem*>(&scene->system(i))) scripts = s;
     if ((plan.goalBy || plan.deaths || !plan.faceAt.empty() || !plan.inside.empty()) && !scripts)
       return finish(false, "the scene has no scripts, so no player to check");
-    if (options.record) recorder.emplace(plan.scene, options.hashEvery, filesHash);
+    if (options.record) {
+      recorder.emplace(plan.scene, options.hashEvery, filesHash);
+      recorder->setStart(plan.start);
+    }
     core::InputEdges edges;
     std::string failure;
     size_t nextLine = 0;
@@ -704,6 +738,8 @@ ScenarioResult runReplay(const std::string& path, const RunOptions& options) {
         plan.held.insert(plan.held.end(), replay.held.begin(), replay.held.end());
         for (const core::ReplayHash& h : replay.hashes) plan.hashAt[h.frame] = hex(h.hash);
         plan.sceneFilesHash = replay.sceneFiles;
+        plan.start = replay.start;
+        plan.startWhere = replay.sceneAt + ": start: ";
         plan.console = replay.console;
         if (replay.hashes.empty()) plan.passNote = " (the replay has no hashes: its input ran, nothing was compared)";
         return plan;
@@ -726,7 +762,11 @@ std::string scenarioFromReplay(const core::Replay& replay, const ScenarioResult&
   std::string out =
       "-- Made by `platon scenario` from " + oneLine(name) + ": the recorded input, and what that run reached.\n";
   out += "return {\n  scene = " + core::luaQuoted(replay.scene) + ",\n  frames = " + std::to_string(replay.frames()) +
-         ",\n  input = {\n";
+         ",\n";
+  if (replay.start)
+    out += "  start = { face = " + std::to_string(replay.start->face) + ", x = " + std::to_string(replay.start->x) +
+           ", y = " + std::to_string(replay.start->y) + " },\n";
+  out += "  input = {\n";
   for (int b = 0; b < core::kButtonCount; ++b) {
     const std::string button(core::buttonName(static_cast<core::Button>(b)));
     for (size_t i = 0; i < replay.held.size();) {

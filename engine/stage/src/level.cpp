@@ -1,4 +1,4 @@
-// Writing levels, checking them against their stage and building them into a world.
+// Checking levels against their stage and building them into a world.
 #include "platon/stage/level.h"
 
 #include <algorithm>
@@ -12,12 +12,6 @@
 
 namespace platon::stage {
 namespace {
-
-std::string decimal(double v) {
-  char text[40];
-  std::snprintf(text, sizeof text, "%.17g", v);
-  return text;
-}
 
 std::string pointText(physics::Vec2 p) { return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")"; }
 
@@ -109,27 +103,6 @@ bool operator==(const Level& a, const Level& b) {
 }
 
 int32_t goalHalfSide(const Level& level) { return std::min(kGoalHalfSide, level.size / 16); }
-
-std::string writeLevel(const Level& level) {
-  std::ostringstream out;
-  out << (level.solid ? std::string(solidName(*level.solid)) : "MESH " + level.mesh) << "\n";
-  out << level.start.face << " " << level.start.position.x << " " << level.start.position.y;
-  if (level.startMillidegrees != 0) out << " " << decimal(static_cast<double>(level.startMillidegrees) / 1000);
-  out << "\n" << level.goal.face << " " << level.goal.position.x << " " << level.goal.position.y << "\n";
-  out << level.size << "\n";
-  for (size_t f = 0; f < level.faces.size(); ++f) {
-    const LevelFace& face = level.faces[f];
-    out << "%";
-    if (face.gravityQ16)
-      out << " gravity " << decimal(static_cast<double>(face.gravityQ16->x) / 65536) << " "
-          << decimal(static_cast<double>(face.gravityQ16->y) / 65536);
-    out << "  # face " << f << "\n";
-    for (const LevelLine& l : face.lines)
-      out << l.a.x << " " << l.a.y << " " << l.b.x << " " << l.b.y << (l.oneWay ? " oneway" : "")
-          << level.tags->written(l.tag) << "\n";
-  }
-  return out.str();
-}
 
 void checkLevelOnStage(const Level& level, const Stage& stage) {
   if (level.faces.size() != stage.faceCount())

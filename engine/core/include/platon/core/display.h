@@ -112,7 +112,24 @@ struct KeyBindings {
       {{"dpleft"}, {"dpright"}, {"dpup"}, {"dpdown"}, {"a", "b"}, {"back"}}};
 };
 
-// What the window's devices (keyboard, gamepads) did since the last poll.
+// A key as SDL names it ("Z", "Delete", "Return", "F5"), with the modifiers held as it went down:
+// the editor's shortcuts (the game reads `pressed` and the held buttons).
+struct KeyPress {
+  std::string name;
+  bool ctrl = false, shift = false, alt = false;
+};
+
+// A mouse button pressed or released, or the wheel turned, where the pointer was (pixels from the
+// window's top left, as screen shapes are placed).
+struct MouseEvent {
+  enum class Kind : uint8_t { Down, Up, Wheel };
+  Kind kind = Kind::Down;
+  uint8_t button = 0;  // 1 left, 2 middle, 3 right (SDL's numbers)
+  float x = 0, y = 0;
+  float wheel = 0;  // notches, away from the user positive
+};
+
+// What the window's devices (keyboard, mouse, gamepads) did since the last poll.
 struct WindowInput {
   uint8_t held = 0;          // InputFrame bits of the buttons held now
   uint8_t tapped = 0;        // and of those pressed since the last call, held now or not (TapCarry)
@@ -121,6 +138,12 @@ struct WindowInput {
   bool focusLost = false;    // the window lost the keyboard (the game pauses)
   std::string lastKey;       // SDL's name of the last key pressed ("Space"), for binding one
   std::string text;          // the text typed since the last call (UTF-8), for the console
+  std::vector<KeyPress> keys;      // every key pressed, in order (repeats of a held key included)
+  std::vector<MouseEvent> mouse;   // in order
+  float mouseX = 0, mouseY = 0;    // the pointer now, in pixels from the top left
+  uint8_t mouseHeld = 0;           // buttons held now: bit (button - 1)
+  bool shift = false, ctrl = false, alt = false;  // modifiers held now
+  int width = 0, height = 0;       // the window's drawable, in pixels
 };
 
 class Display {

@@ -7,6 +7,7 @@
 //   scene "levels/cube_intro/scene.lua"
 //   scene_files 5d41402abc4b2a76   <- optional: a hash of the scene's files when it was recorded
 //   speed 75                   <- optional: the assist mode's game speed it was played at (50-100 %)
+//   start 2 1200 640           <- optional: where the run starts (face x y), if not at the level's start
 //   frames 336
 //   hash_every 60
 //   input
@@ -41,6 +42,15 @@ struct ReplayConsole {
   std::string code;
 };
 
+// Where a run starts when not at its level's start (a play-test from the editor's cursor): a face
+// and a point on it, in the level file's units.
+struct ReplayStart {
+  int face = 0;
+  int32_t x = 0, y = 0;
+  friend bool operator==(const ReplayStart&, const ReplayStart&) = default;
+};
+inline constexpr uint64_t kMaxStartCoordinate = (uint64_t{1} << 29);  // the level format's range
+
 struct Replay {
   std::string scene;    // the scene's manifest, as the run named it
   std::string sceneAt;  // "file:line:column" of that path in the replay read, for errors about the scene
@@ -51,6 +61,7 @@ struct Replay {
   // The game speed (percent) a player ran it at in the assist mode: pacing only, so the frames and
   // their hashes are the same at any speed; kept so a run can be watched as it was played.
   int speed = 100;
+  std::optional<ReplayStart> start;  // none: the level's own start
   std::vector<uint8_t> held;           // held[f - 1]: the buttons held on frame f (InputFrame::held bits)
   uint64_t hashEvery = 60;             // frames between recorded hashes (0: none)
   std::vector<ReplayHash> hashes;      // increasing frames
@@ -86,6 +97,8 @@ class ReplayRecorder {
   void console(const std::string& code);
   // The game speed the run is played at (Replay::speed).
   void setSpeed(int percent) { replay_.speed = percent; }
+  // Where the run started, when not at its level's start (Replay::start).
+  void setStart(std::optional<ReplayStart> start) { replay_.start = start; }
   // The replay so far, its last frame's hash included.
   Replay replay() const;
 

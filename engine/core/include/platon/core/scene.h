@@ -76,8 +76,15 @@ class Scene {
 // build the level, initializes the faces and starts the systems. Throws std::runtime_error with
 // file:line:column for a bad manifest and the systems' own errors for the rest. A hot reload names
 // the scene it replaces: each new system is given its predecessor before build (carryBeforeBuild).
+// What a scene is loaded with instead of what its files say: the level's text as an editor holds
+// it (not saved yet), and where the player starts (a play-test from the editor's cursor, a scenario
+// or a replay that starts there).
+struct LevelOverride {
+  std::optional<std::string> text;
+  std::optional<stage::LevelPoint> start;
+};
 std::unique_ptr<Scene> loadScene(const std::string& manifestPath, const SystemRegistry& registry,
-                                 Scene* replacing = nullptr);
+                                 Scene* replacing = nullptr, const LevelOverride* override = nullptr);
 
 // The line tags a scene's level file may write: the game's and those its mods declare (the mods
 // are run for it, in a scene of their own). For tools that read a level without playing it.

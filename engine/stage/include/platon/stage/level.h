@@ -65,9 +65,14 @@ struct Level {
 // a scene's mods' own). Throws StageError with file:line:column.
 Level parseLevel(std::string_view text, const std::string& file, std::shared_ptr<const TagTable> tags = gameTags());
 
-// The text of `level` as parseLevel reads it (comments are not kept; numbers are written as
-// parsed): parseLevel(writeLevel(l)) == l for every level parseLevel accepts.
-std::string writeLevel(const Level& level);
+// The text of `level` as parseLevel reads it: parseLevel(writeLevel(l, ...)) == l for every level
+// parseLevel accepts. With `original` (the text `level` was edited from, whose segments and points
+// still carry their sourceLine), that text is kept wherever it still says the same: comments,
+// blank lines and the order of lines stay; a line whose values changed is written again with its
+// comment after it; a deleted segment's line goes; a new segment (sourceLine 0) follows the last
+// segment of its face. Unchanged, the original comes back byte for byte. Without it (or when it
+// does not read as a level of the same faces), the level is written afresh, without comments.
+std::string writeLevel(const Level& level, std::string_view original = {});
 
 // The room the player needs around its start, and the goal around its point: no solid line may
 // come nearer (the default player is a circle of 96 units).
