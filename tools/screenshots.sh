@@ -22,3 +22,6 @@ printf 'cube_intro 1057 0\ntetra_around 988 1\n' > "$data/platon/progress.txt"
 XDG_DATA_HOME="$data" SDL_VIDEODRIVER=${SDL_VIDEODRIVER:-offscreen} build/apps/platon game --first-frame-shot docs/screenshots/title.png > /dev/null
 rm -rf "$data"
 echo "docs/screenshots/title.png: the title screen"
+# The editor (docs/editing.md): its window test on the cube, its pictures kept.
+tests/tools/with_xvfb.sh tests/tools/real_window_editor.sh "$root/build/apps/platon" HEXAHEDRON "$root/docs/screenshots" > /dev/null
+echo "docs/screenshots/editor_draw.png, editor_error.png, editor_play.png: the editor"

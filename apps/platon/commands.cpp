@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "defs_command.h"
+#include "edit_command.h"
 #include "game_command.h"
 #include "merge_command.h"
 #include "pack_command.h"
@@ -66,6 +67,18 @@ const Command kCommands[] = {
      "SIGINT or SIGTERM ends the play after the frame; if the frame does not end, a second signal, or\n"
      "3 s after the first ($PLATON_STOP_GRACE seconds if set), ends it at once, without writing the recording\n",
      playCommand},
+    {"edit", "the level editor: draw on the solid, check, play from the cursor, keep a run as a test",
+     "usage: platon edit LEVEL [--new SOLID|mesh-file]\n"
+     "  LEVEL            the level's folder, scene.lua, .level file or name\n"
+     "  --new S          make LEVEL (a new folder) first: a level on the solid S (TETRAHEDRON,\n"
+     "                   HEXAHEDRON, OCTAHEDRON, DODECAHEDRON, ICOSAHEDRON) or on a mesh file (copied in)\n"
+     "  --shot F         save the editor's first picture to F (PNG) and quit\n"
+     "in the window: left button draws (drag, or click and click), S selects (drag moves ends,\n"
+     "segments, the start and the goal), right button turns the solid, the wheel zooms; T tag,\n"
+     "[ ] number, O one-way, P start, G goal, V gravity, F face, Ctrl+Z/Y, Ctrl+C/V, Del,\n"
+     "Ctrl+S save, Enter plays from the cursor (K keeps a run that reached the goal as a test), Esc\n"
+     "(docs/editing.md)\n",
+     editCommand},
     {"shot", "a level's picture after N frames, as a PNG (offscreen)",
      "usage: platon shot LEVEL [--frame N] [--size WxH] [--input run.replay] [--debug] --out file.png\n"
      "  --frame N        the picture after N frames (default 0: the start)\n"

@@ -200,6 +200,10 @@ static std::unique_ptr<System> scriptsDeclaringTags(Scene& scene, const SystemRe
   return scripting;
 }
 
+stage::Stage levelStage(const stage::Level& level, const SystemRegistry& registry, Scene& scene) {
+  return level.solid ? stage::platonicStageOf(level) : meshStage(level, scene.manifest(), registry, scene);
+}
+
 std::shared_ptr<const stage::TagTable> sceneTags(const std::string& manifestPath, const SystemRegistry& registry) {
   Scene scene;
   scene.setManifest(loadManifest(manifestPath));
@@ -228,7 +232,7 @@ std::unique_ptr<Scene> loadScene(const std::string& manifestPath, const SystemRe
       level.start.face = override->start->face;
       level.start.position = override->start->position;
     }
-    stage::Stage solid = level.solid ? stage::platonicStageOf(level) : meshStage(level, manifest, registry, *scene);
+    stage::Stage solid = levelStage(level, registry, *scene);
     stage::checkLevelOnStage(level, solid);
     stage::buildLevel(level, solid, scene->world(), 0, gravity);
     scene->setStage(std::move(solid));

@@ -12,6 +12,7 @@ constexpr double kPickPixels = 10;   // a segment or an end this near the pointe
 constexpr double kMarkPixels = 24;   // the start's or the goal's marker
 constexpr float kClickPixels = 4;    // a press and release nearer than this is a click
 constexpr int kMinGrid = 8, kMaxGrid = 1024;
+constexpr float kPaletteTop = 150;  // below the heads-up lines
 
 const core::Color kCursor{90, 220, 255, 255}, kSelected{255, 214, 60, 255}, kError{255, 60, 60, 255},
     kWarning{255, 160, 40, 255}, kStart{80, 230, 120, 255}, kGoal{255, 235, 120, 255}, kPanel{20, 24, 32, 200},
@@ -53,7 +54,16 @@ Editor::Editor(LevelDocument document, stage::Stage solid, int64_t defaultGravit
   for (const stage::TagKind& kind : document_.tags()->kinds())
     palette_.push_back({kind.word, kind.number, kind.count > 0});
   rebuild();
-  lookAt(level.start.face, level.start.position.x, level.start.position.y);
+  faceHeadOn(level.start.face);
+}
+
+std::optional<FacePoint> Editor::pointAt(float x, float y) const { return pickFace(*view_, rayThrough(lens_, x, y)); }
+
+void Editor::faceHeadOn(int face) {
+  const auto& corners = solid_.faces[static_cast<size_t>(face)].corners;
+  double cx = 0, cy = 0;
+  for (const physics::Vec2 c : corners) cx += c.x, cy += c.y;
+  lookAt(face, cx / static_cast<double>(corners.size()), cy / static_cast<double>(corners.size()));
 }
 
 uint32_t Editor::currentTag() const {
@@ -238,12 +248,7 @@ void Editor::onKey(const core::KeyPress& key) {
     });
   }
   if (k == "V") cycleGravity();
-  if (k == "F" && cursor_) {
-    const auto& corners = solid_.faces[static_cast<size_t>(cursor_->point.face)].corners;
-    double cx = 0, cy = 0;
-    for (const physics::Vec2 c : corners) cx += c.x, cy += c.y;
-    lookAt(cursor_->point.face, cx / static_cast<double>(corners.size()), cy / static_cast<double>(corners.size()));
-  }
+  if (k == "F" && cursor_) faceHeadOn(cursor_->point.face);
   if (k == "Home") {
     const stage::LevelPoint& s = document_.level().start;
     lookAt(s.face, s.position.x, s.position.y);
@@ -549,7 +554,7 @@ void Editor::zoom(float notches) {
 
 // The palette is a column of words at the screen's right: a click on one takes it.
 bool Editor::clickPalette(float x, float y) {
-  const float right = static_cast<float>(lens_.width) - 12, left = right - 190, top = 60, row = 26;
+  const float right = static_cast<float>(lens_.width) - 12, left = right - 190, top = kPaletteTop, row = 26;
   if (x < left || x > right || y < top || y > top + row * static_cast<float>(palette_.size())) return false;
   paletteIndex_ = std::min(palette_.size() - 1, static_cast<size_t>((y - top) / row));
   applyTag();
@@ -658,7 +663,7 @@ void Editor::draw(core::DrawList& out) const {
     out.circle(place, {float(cursor_->point.x), float(cursor_->point.y)}, r, kCursor);
   }
   // The palette.
-  const float right = static_cast<float>(lens_.width) - 12, left = right - 190, top = 60, row = 26;
+  const float right = static_cast<float>(lens_.width) - 12, left = right - 190, top = kPaletteTop, row = 26;
   const core::Point2 panel[] = {{left - 6, top - 30},
                                 {right + 6, top - 30},
                                 {right + 6, top + row * static_cast<float>(palette_.size()) + 6},

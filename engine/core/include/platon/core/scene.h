@@ -93,6 +93,9 @@ std::shared_ptr<const stage::TagTable> sceneTags(const std::string& manifestPath
 // A mesh level's stage: its MESH file (relative to the level file) read by `source`, made a convex
 // solid with the level's size. Throws StageError naming the level file and what is wrong.
 stage::Stage meshStageOf(const stage::Level& level, MeshSource& source);
+// The stage a level is drawn on: its Platonic solid, or its mesh read by the meshes system (created
+// in `scene` when it has none; the scene's manifest must list "meshes"). Throws StageError.
+stage::Stage levelStage(const stage::Level& level, const SystemRegistry& registry, Scene& scene);
 // What the meshes plugin read, as the stage's mesh builder takes it.
 stage::MeshData meshDataOf(const MeshFile& file);
 

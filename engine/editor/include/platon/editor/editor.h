@@ -89,9 +89,14 @@ class Editor {
   Lens lens() const { return lens_; }
   // The camera at once where the game's would be for a player at (face, x, y).
   void lookAt(int face, double x, double y);
-  // The heads-up message line.
-  void say(std::string message) { message_ = std::move(message); }
+  // The heads-up message line; its serial grows with each message (the same words said twice too).
+  void say(std::string message) { message_ = std::move(message), ++said_; }
   const std::string& message() const { return message_; }
+  uint64_t messageSerial() const { return said_; }
+  // The face point under pixel (x, y), not snapped; none off the solid.
+  std::optional<FacePoint> pointAt(float x, float y) const;
+  // The camera head-on to face `face` (its centre in the middle, its down down the screen).
+  void faceHeadOn(int face);
 
   // Builds the world, the picture and the check from the document (after each edit, undo, redo).
   void rebuild();
@@ -152,6 +157,7 @@ class Editor {
   std::vector<SegmentRef> selection_;
   std::vector<stage::LevelLine> clipboard_;  // relative to the first one's a
   std::string message_;
+  uint64_t said_ = 0;
   bool quitAsked_ = false;
 };
 
