@@ -1,6 +1,7 @@
 #include "platon/editor/editor.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "platon/core/display.h"
@@ -84,6 +85,7 @@ void Editor::lookAt(int face, double x, double y) {
 }
 
 void Editor::rebuild() {
+  const auto began = std::chrono::steady_clock::now();
   const stage::Level& level = document_.level();
   // What the game would build: the segments inside their faces (one that is not is an error the
   // check draws), the goal's square moved onto its face if it hangs over an edge.
@@ -110,6 +112,7 @@ void Editor::rebuild() {
   for (size_t f = 0; f < solid.faceCount(); ++f) world->mapPart(solid.part(f)).initialize();
   view_ = core::stageView(solid, *world, *document_.tags());
   world_ = std::move(world);
+  buildMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - began).count();
 
   try {
     stage::checkLevelOnStage(level, solid_);

@@ -100,6 +100,9 @@ class Editor {
 
   // Builds the world, the picture and the check from the document (after each edit, undo, redo).
   void rebuild();
+  // How long the last rebuild took to make the level playable (the world and the picture's stage,
+  // not the check), in milliseconds: bench/stage/edit_latency.cpp.
+  double lastBuildMilliseconds() const { return buildMs_; }
 
  private:
   struct Drag {
@@ -141,6 +144,7 @@ class Editor {
   stage::CheckReport report_;
   std::vector<Marker> markers_;
   bool loads_ = true;
+  double buildMs_ = 0;
 
   Tool tool_ = Tool::Draw;
   bool oneWay_ = false;
