@@ -243,6 +243,11 @@ int editCommand(int argc, char** argv) {
                         level.levelFile.c_str()),
            2;
   core::SystemRegistry registry = engineRegistry(Presentation::Window);
+  return editLevel(level, registry, nullptr, shotPath);
+}
+
+int editLevel(const LevelArgument& level, core::SystemRegistry& registry, core::System* shown,
+              const std::string& shotPath) {
   const std::string scenePath = core::resolveDataPath(level.scene);
   core::Scene host;  // the editor's own scene: its window and, for a mesh, its meshes system
   std::optional<editor::Editor> editor;
@@ -258,7 +263,9 @@ int editCommand(int argc, char** argv) {
   } catch (const std::exception& e) {
     return std::fprintf(stderr, "platon edit: %s\n", core::visibleText(core::errorReport(e), true).c_str()), 1;
   }
-  std::unique_ptr<core::System> window = registry.create("rendering", host);
+  std::unique_ptr<core::System> own = registry.create("rendering", host);
+  if (own && shown) own->carryOver(host, *shown);  // the game's window, when the game opened the editor
+  core::System* window = own.get();
   core::Display* display = window ? window->display() : nullptr;
   try {
     if (!display) throw std::runtime_error("this program has no renderer");

@@ -1,8 +1,18 @@
 // `platon edit LEVEL [--new SOLID|mesh-file]`: the level editor in a window (docs/editing.md).
 #pragma once
+#include <string>
+
+#include "level_argument.h"
+#include "platon/core/system.h"
 
 namespace platon::app {
 
 int editCommand(int argc, char** argv);  // argv[0] is "edit"
+
+// The editor on `level` until Esc, in `shown`'s window when given (F4 in `platon play`: the same
+// window), else in a window of its own; `shotPath`: save its first picture there and return.
+// Returns 0, or 1 after saying why the level cannot be edited.
+int editLevel(const LevelArgument& level, core::SystemRegistry& registry, core::System* shown,
+              const std::string& shotPath = "");
 
 }  // namespace platon::app

@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "campaign.h"
+#include "edit_command.h"
 #include "commands.h"
 #include "engine_registry.h"
 #include "game_view.h"
@@ -160,6 +161,22 @@ class Game {
       finishRecording();  // the frames so far were played on the version before
     }
   }
+  // F4 while playing: the editor on this level in the same window; back here, the level reloaded
+  // (the game's hot reload, which keeps the player where it was when the level still allows it).
+  void editThisLevel() {
+    std::printf("editing %s (F4)\n", levels_[level_].folder.c_str());
+    std::fflush(stdout);
+    try {
+      editLevel(levelArgument(levels_[level_].scene), registry_, live_->scene().findSystem("rendering"));
+    } catch (const std::exception& e) {
+      notice_ = e.what();
+    }
+    afterReload(live_->reload({"the editor"}));
+    std::printf("back from the editor: %s\n", core::visibleText(notice_, true).c_str());
+    std::fflush(stdout);
+    edges_.reset();
+    taps_.reset();
+  }
   void stepSimulation(int due, uint8_t held);
   // The console (`): a line of Lua run in the level's sandbox between frames, recorded in the
   // replay; the level waits while it is open. True when the key was the console's.
@@ -299,6 +316,8 @@ void Game::handle(const core::WindowInput& input) {
   if (consoleOpen_)
     for (const char c : input.text)
       if (c != '`' && consoleLine_.size() < 400) consoleLine_ += c;
+  for (const core::KeyPress& key : input.keys)
+    if (key.name == "F4" && screen_ == Screen::Playing && live_ && !consoleOpen_) return editThisLevel();
   for (const core::Key key : input.pressed) {
     if (consoleKey(key)) continue;
     if (key == core::Key::ShowFps) showFps_ = !showFps_;

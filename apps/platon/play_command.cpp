@@ -20,6 +20,7 @@
 #include <unistd.h>
 
 #include "commands.h"
+#include "edit_command.h"
 #include "engine_registry.h"
 #include "game_view.h"
 #include "level_argument.h"
@@ -268,6 +269,26 @@ int playCommand(int argc, char** argv) {
       if (pressed(core::Key::ShowFps)) showFps = !showFps;
       if (pressed(core::Key::Debug)) gameView.setDebug(!gameView.debug());
       if (pressed(core::Key::Screenshot)) std::printf("%s\n", saveScreenshot(*display).c_str());
+      const bool edit = std::any_of(events.keys.begin(), events.keys.end(),
+                                    [](const core::KeyPress& k) { return k.name == "F4"; });
+      if (edit && inputPath.empty()) {  // the editor in this window; back here, the level reloaded
+        std::printf("editing %s (F4)\n", scenePath.c_str());
+        std::fflush(stdout);
+        try {
+          editLevel(levelArgument(scenePath), registry, live->scene().findSystem("rendering"));
+        } catch (const std::exception& e) {
+          std::printf("%s\n", e.what());
+        }
+        const core::ReloadReport r = live->reload({"the editor"});
+        if (recorder && r.ok) {  // as any reload: the run recorded so far is written, and recording stops
+          if (!writeRecording(recorder->replay(), recordPath)) recordFailed = true;
+          recorder.reset();
+        }
+        std::printf(r.ok ? "reloaded after the editor\n" : "reload refused, the last good version goes on:\n%s\n",
+                    core::visibleText(r.error, true).c_str());
+        previous = std::chrono::steady_clock::now();
+        continue;
+      }
       keys = events.held;
       taps.add(events.tapped);
     }
