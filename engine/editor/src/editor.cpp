@@ -140,6 +140,17 @@ void Editor::rebuild() {
   };
   for (const stage::Finding& f : report_.errors) mark(f, true);
   for (const stage::Finding& f : report_.warnings) mark(f, false);
+  // The check stops at the first segment off its face (the level would not load); every such
+  // segment (a file edited by hand) is marked, so all of them show at once.
+  for (size_t f = 0; f < level.faces.size(); ++f)
+    for (size_t i = 0; i < level.faces[f].lines.size(); ++i) {
+      const stage::LevelLine& l = level.faces[f].lines[i];
+      if (insideExactly(solid_.faces[f].corners, l.a) && insideExactly(solid_.faces[f].corners, l.b)) continue;
+      const SegmentRef ref{static_cast<int>(f), static_cast<int>(i)};
+      if (std::none_of(markers_.begin(), markers_.end(), [&](const Marker& m) { return m.segment == ref; }))
+        markers_.push_back({Marker::On::Segment, ref, static_cast<int>(f), true,
+                            "the segment leaves face " + std::to_string(f)});
+    }
   std::erase_if(selection_, [&](SegmentRef s) {
     return s.face < 0 || s.face >= static_cast<int>(level.faces.size()) || s.index < 0 ||
            s.index >= static_cast<int>(level.faces[static_cast<size_t>(s.face)].lines.size());

@@ -292,3 +292,36 @@ TEST(Editor, ABrokenEditIsShownAndItsSaveRefusedAndASaveKeepsComments) {
   }
   EXPECT_EQ(stage::parseLevel(saved, path), e.document().level());
 }
+
+// The palette is the scene's tag table: a mod's word is there, in its place, and a segment drawn
+// with it is written with the mod's word; segments a hand-edited file put off their face are each
+// marked as errors (the check itself stops at the first), and the level does not load.
+TEST(Editor, APaletteHoldsTheModsWordsAndEverySegmentOffItsFaceIsMarked) {
+  auto tags = std::make_shared<stage::TagTable>(*stage::gameTags());
+  tags->add({"spring", stage::kFirstModTag, 0, stage::Passage::Wall, {40, 200, 90, false, false}, "a mod"});
+  const std::string text =
+      "HEXAHEDRON\n0 600 700\n0 3000 700\n4096\n%\n100 500 4000 500  # floor\n"
+      "5000 100 5100 100  # off the face\n100 3000 200 -50  # off too\n%\n%\n%\n%\n%\n";
+  editor::LevelDocument document("t.level", text, tags);
+  stage::Stage solid = stage::platonicStageOf(document.level());
+  editor::Editor e(std::move(document), std::move(solid), kGravity);
+  size_t off = 0;
+  for (const editor::Marker& m : e.markers()) off += m.on == editor::Marker::On::Segment && m.error ? 1 : 0;
+  EXPECT_EQ(off, 2u);
+  EXPECT_FALSE(e.loads());
+  ASSERT_EQ(e.palette().back().word, "spring");
+  Driver d{e};
+  while (e.palette()[e.paletteIndex()].word != "spring") d.key("T");
+  d.alt = true;
+  d.drag(pixelOf(e, 0, 1000, 1500), pixelOf(e, 0, 2000, 1500));
+  EXPECT_EQ(lastLine(e, 0).tag, stage::kFirstModTag);
+  EXPECT_NE(e.document().text().find("spring\n"), std::string::npos) << e.document().text();
+  d.key("S");
+  d.click(pixelOf(e, 0, 1500, 1500));
+  d.key("Delete");  // the drawn one goes; the two off the face are still marked
+  EXPECT_EQ(e.document().level().faces[0].lines.size(), 3u);
+  off = 0;
+  for (const editor::Marker& m : e.markers()) off += m.on == editor::Marker::On::Segment && m.error ? 1 : 0;
+  EXPECT_EQ(off, 2u);
+  EXPECT_NE(e.document().text().find("# off too"), std::string::npos);
+}
