@@ -6,7 +6,7 @@ probe_face0() {
   xdotool key s
   xdotool mousemove --window "$window" 640 360 click 5 click 5 click 5
   before=$(grep -c "^press at pixel" "$log" || true)
-  for p in "440 360" "840 360" "640 520"; do
+  for p in "580 400" "700 400" "640 450"; do  # near the middle: inside the smallest face
     xdotool mousemove --window "$window" $p click 1
   done
   await "^press at pixel" $((before + 3))

@@ -19,14 +19,6 @@ const core::Color kCursor{90, 220, 255, 255}, kSelected{255, 214, 60, 255}, kErr
     kWarning{255, 160, 40, 255}, kStart{80, 230, 120, 255}, kGoal{255, 235, 120, 255}, kPanel{20, 24, 32, 200},
     kText{235, 235, 235, 255}, kDim{150, 155, 165, 255};
 
-bool insideExactly(const std::vector<physics::Vec2>& corners, physics::Vec2 p) {
-  for (size_t i = 0; i < corners.size(); ++i) {
-    const physics::Vec2 a = corners[i], b = corners[(i + 1) % corners.size()];
-    if ((int64_t{b.x} - a.x) * (int64_t{p.y} - a.y) - (int64_t{b.y} - a.y) * (int64_t{p.x} - a.x) < 0) return false;
-  }
-  return true;
-}
-
 physics::Vec2 whole(const FacePoint& p) {
   return {static_cast<int32_t>(std::llround(p.x)), static_cast<int32_t>(std::llround(p.y))};
 }

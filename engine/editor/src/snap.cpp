@@ -16,6 +16,10 @@ bool insideExactly(const std::vector<physics::Vec2>& corners, int64_t x, int64_t
 
 }  // namespace
 
+bool insideExactly(const std::vector<physics::Vec2>& corners, physics::Vec2 p) {
+  return insideExactly(corners, int64_t{p.x}, int64_t{p.y});
+}
+
 FacePoint wholeInside(const stage::Stage& solid, int face, double x, double y) {
   const std::vector<physics::Vec2>& corners = solid.faces.at(static_cast<size_t>(face)).corners;
   double cx = 0, cy = 0;

@@ -53,6 +53,10 @@ TEST(Replay, MalformedInputsNamePositionAndReason) {
       {"platon replay 1\nscene \"a\"\nspeed 49\n", "run.replay:3:7: speed: the game runs at 50 to 100 percent, not 49"},
       {"platon replay 1\nscene \"a\"\nspeed 101\n", "run.replay:3:7: speed 101 is more than 100"},
       {"platon replay 1\nscene \"a\"\nspeed\n", "run.replay:3:1: expected 'speed PERCENT'"},
+      {"platon replay 1\nscene \"a\"\nstart 0 5\n", "run.replay:3:9: expected 'start FACE X Y'"},
+      {"platon replay 1\nscene \"a\"\nstart -1 5 5\n", "run.replay:3:7: start face: expected a whole number"},
+      {"platon replay 1\nscene \"a\"\nstart 0 5 x\n", "run.replay:3:11: start y: expected a whole number, got 'x'"},
+      {"platon replay 1\nscene \"a\"\nstart 0 -999999999 5\n", "run.replay:3:9: start x 999999999 is more than"},
       {kHeader + "10 left left\nend\n", "run.replay:6:9: 'left' is given twice"},
       {kHeader + "10 -\nend\nhash 0 0123456789abcdef\n", "run.replay:8:6: hash frame 0: frames count from 1"},
       // The hashes hash_every implies are all there or none: a stripped or tampered file is refused.
@@ -131,6 +135,20 @@ TEST(Replay, TheSpeedIsOptionalAndSurvivesWriteAndRead) {
   const std::string text = formatReplay(recorder.replay());
   EXPECT_NE(text.find("scene_files 0123456789abcdef\nspeed 70\nframes 10\n"), std::string::npos) << text;
   EXPECT_EQ(parseReplay(text, "slow.replay").speed, 70);
+}
+
+// Where a run starts when not at its level's start (a play-test from the editor's cursor): optional,
+// signed, kept through a write, after the speed.
+TEST(Replay, TheStartIsOptionalAndSurvivesWriteAndRead) {
+  EXPECT_FALSE(parseReplay(kHeader + "10 -\nend\n", "old.replay").start);
+  ReplayRecorder recorder("levels/a/scene.lua", 5);
+  for (int f = 0; f < 10; ++f) recorder.frame(0, 7);
+  EXPECT_EQ(formatReplay(recorder.replay()).find("start"), std::string::npos);
+  recorder.setSpeed(80);
+  recorder.setStart(ReplayStart{4, -812, 3000});
+  const std::string text = formatReplay(recorder.replay());
+  EXPECT_NE(text.find("speed 80\nstart 4 -812 3000\nframes 10\n"), std::string::npos) << text;
+  EXPECT_EQ(parseReplay(text, "there.replay").start, (ReplayStart{4, -812, 3000}));
 }
 
 // The console's lines (docs/scripting.md, "Console"): any code, quotes, backslashes and line

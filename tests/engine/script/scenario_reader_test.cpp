@@ -62,7 +62,16 @@ TEST(ScenarioReader, EveryMalformedValueIsRefusedAtItsLineAndColumn) {
       {"  expect = { checkpoint = { [50] = { 0, 1.5, 2 } } },", "1.5",
        "expect.checkpoint[50][2]: expected a whole number in -1073741823..1073741823, got 1.5"},
       {"  expcet = { goal_by = 10 },", "expcet",
-       "scenario: unknown key 'expcet' (known: scene, frames, input, expect)"},
+       "scenario: unknown key 'expcet' (known: scene, frames, start, input, expect)"},
+      // The start: { face, x, y } where the run starts, on the stage and clear of walls.
+      {"  start = 5,", "5", "start: expected { face = F, x = X, y = Y }, got 5"},
+      {"  start = { face = 0, x = 600 },", "{ face", "start: 'y' is missing"},
+      {"  start = { face = 0, x = 600, y = 700, z = 1 },", "z =", "start: unknown key 'z' (known: face, x, y)"},
+      {"  start = { face = 0.5, x = 600, y = 700 },", "0.5", "start.face: expected a whole number"},
+      {"  start = { face = 0, x = 1e12, y = 700 },", "1e12", "start.x: 1000000000000 is outside -536870912..536870912"},
+      {"  start = { face = 9, x = 600, y = 700 },", "{ face",
+       "start: the level does not start there: "},  // then the level's own error (start face 9 does not exist)
+      {"  start = { face = 0, x = 600, y = 512 },", "{ face", "start: the level does not start there: "},
       {"  framez = 3,", "framez", "scenario: unknown key 'framez'"},
       {"  input = { { hold = 'right', from = 1, too = 5 } },", "too",
        "input[1]: unknown key 'too' (known: hold, from, to)"},

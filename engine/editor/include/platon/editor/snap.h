@@ -28,6 +28,10 @@ struct Snapped {
 Snapped snap(const FacePoint& raw, const stage::Level& level, const stage::Stage& solid, const core::StageView& view,
              const Lens& lens, const SnapSettings& settings, std::optional<FacePoint> from = std::nullopt);
 
+// Whether a whole-unit point lies inside a face's corners (counter-clockwise), exactly as the level
+// reader counts inside: on the border is inside.
+bool insideExactly(const std::vector<physics::Vec2>& corners, physics::Vec2 p);
+
 // The whole-unit point nearest (x, y) that lies inside face `face` (exactly, as the level
 // reader's check counts inside: on the border is inside).
 FacePoint wholeInside(const stage::Stage& solid, int face, double x, double y);
