@@ -37,7 +37,8 @@ int editUsage() { return usageError("edit"); }
 // Platonic solid's name, or a mesh file copied in), the start and the goal on face 0 (no floor yet).
 std::string makeNewLevel(const std::string& folder, const std::string& solid) {
   std::error_code error;
-  if (fs::exists(folder, error)) throw std::runtime_error(folder + ": already exists (platon edit " + folder + " edits it)");
+  if (fs::exists(folder, error))
+    throw std::runtime_error(folder + ": already exists (platon edit " + folder + " edits it)");
   const std::string name = fs::path(folder).filename().string();
   if (name.empty() || name.find_first_of("\"\\\n# ") != std::string::npos)
     throw std::runtime_error(folder + ": a level's folder name is a plain word (it names its .level file)");
@@ -49,8 +50,9 @@ std::string makeNewLevel(const std::string& folder, const std::string& solid) {
     header = solid;
   } else {
     if (!fs::is_regular_file(solid, error))
-      throw std::runtime_error(solid + ": neither a solid (TETRAHEDRON, HEXAHEDRON, OCTAHEDRON, DODECAHEDRON, "
-                                       "ICOSAHEDRON) nor a mesh file");
+      throw std::runtime_error(solid +
+                               ": neither a solid (TETRAHEDRON, HEXAHEDRON, OCTAHEDRON, DODECAHEDRON, "
+                               "ICOSAHEDRON) nor a mesh file");
     fs::create_directories(folder, error);
     fs::copy_file(solid, fs::path(folder) / fs::path(solid).filename(), error);
     if (error) throw std::runtime_error(solid + ": cannot copy it into " + folder + ": " + error.message());
@@ -71,9 +73,11 @@ std::string makeNewLevel(const std::string& folder, const std::string& solid) {
   for (size_t f = 1; f < count; ++f) faces += "%                    # face " + std::to_string(f) + "\n";
   if (!known) faces += "# (a mesh level: its faces' '%' lines are added by `platon edit` when it reads the mesh)\n";
   const std::string scene = "-- " + name + ": made by `platon edit --new`.\nreturn {\n  name = \"" + name +
-                            "\",\n  systems = { \"scripting\", \"rendering\", \"audio\"" + (known ? "" : ", \"meshes\"") +
-                            " },\n  stage = { level = \"" + name + ".level\" },\n  scripts = { preset = \"game\" },\n}\n";
-  for (const auto& [file, text] : {std::pair{name + ".level", level + faces}, std::pair{std::string("scene.lua"), scene}})
+                            "\",\n  systems = { \"scripting\", \"rendering\", \"audio\"" +
+                            (known ? "" : ", \"meshes\"") + " },\n  stage = { level = \"" + name +
+                            ".level\" },\n  scripts = { preset = \"game\" },\n}\n";
+  for (const auto& [file, text] :
+       {std::pair{name + ".level", level + faces}, std::pair{std::string("scene.lua"), scene}})
     if (const std::string why = files::saveWhole((fs::path(folder) / file).string(), text, "the new level");
         !why.empty())
       throw std::runtime_error(why);
@@ -123,8 +127,9 @@ std::string keepRun(Session& s, core::Scene& scene, const core::Replay& played, 
   script::RunOptions options;
   options.pluginFolders = pluginFolders();
   const script::ScenarioResult check = script::runScenario(path, options);
-  return "kept as " + path + (check.passed ? " (it passes headless: `platon run " + path + "`)"
-                                           : " but it does not pass headless: " + check.message);
+  return "kept as " + path +
+         (check.passed ? " (it passes headless: `platon run " + path + "`)"
+                       : " but it does not pass headless: " + check.message);
 }
 
 // Plays the level as edited from the editor's cursor in the same window until Esc.
@@ -203,14 +208,14 @@ void playFromCursor(Session& s) {
       std::fflush(stdout);
       saidWon = true;
     }
-    if (won)
-      v.hud.push_back(kept.empty() ? "goal reached: K keeps this run as a test beside the level" : kept);
+    if (won) v.hud.push_back(kept.empty() ? "goal reached: K keeps this run as a test beside the level" : kept);
     v.error = error;
     s.display.present(v, view.drawing(won ? 1.0 : clock.alpha()));
     if (due == 0) std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
-  s.editor.say(kept.empty() ? std::string(won ? "back from a run that reached the goal (not kept)" : "back from the play-test")
-                            : kept);
+  s.editor.say(kept.empty()
+                   ? std::string(won ? "back from a run that reached the goal (not kept)" : "back from the play-test")
+                   : kept);
 }
 
 }  // namespace
@@ -273,7 +278,8 @@ int editLevel(const LevelArgument& level, core::SystemRegistry& registry, core::
   } catch (const std::exception& e) {
     return std::fprintf(stderr, "platon edit: %s: the editor needs a window\n", e.what()), 1;
   }
-  std::printf("editing %s (the window lists the keys at its top; docs/editing.md tells more)\n", level.levelFile.c_str());
+  std::printf("editing %s (the window lists the keys at its top; docs/editing.md tells more)\n",
+              level.levelFile.c_str());
   std::fflush(stdout);
   Session session{scenePath, registry, *window, *display, *editor};
   int frames = 0;
@@ -305,7 +311,8 @@ int editLevel(const LevelArgument& level, core::SystemRegistry& registry, core::
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(4));
   }
-  if (editor->document().modified()) std::printf("quit with unsaved edits (not written to %s)\n", level.levelFile.c_str());
+  if (editor->document().modified())
+    std::printf("quit with unsaved edits (not written to %s)\n", level.levelFile.c_str());
   return 0;
 }
 

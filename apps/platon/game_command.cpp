@@ -14,8 +14,8 @@
 #include <thread>
 
 #include "campaign.h"
-#include "edit_command.h"
 #include "commands.h"
+#include "edit_command.h"
 #include "engine_registry.h"
 #include "game_view.h"
 #include "pack_command.h"

@@ -269,8 +269,8 @@ int playCommand(int argc, char** argv) {
       if (pressed(core::Key::ShowFps)) showFps = !showFps;
       if (pressed(core::Key::Debug)) gameView.setDebug(!gameView.debug());
       if (pressed(core::Key::Screenshot)) std::printf("%s\n", saveScreenshot(*display).c_str());
-      const bool edit = std::any_of(events.keys.begin(), events.keys.end(),
-                                    [](const core::KeyPress& k) { return k.name == "F4"; });
+      const bool edit =
+          std::any_of(events.keys.begin(), events.keys.end(), [](const core::KeyPress& k) { return k.name == "F4"; });
       if (edit && inputPath.empty()) {  // the editor in this window; back here, the level reloaded
         std::printf("editing %s (F4)\n", scenePath.c_str());
         std::fflush(stdout);

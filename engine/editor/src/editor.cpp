@@ -9,9 +9,9 @@
 namespace platon::editor {
 namespace {
 
-constexpr double kPickPixels = 10;   // a segment or an end this near the pointer is under it
-constexpr double kMarkPixels = 24;   // the start's or the goal's marker
-constexpr float kClickPixels = 4;    // a press and release nearer than this is a click
+constexpr double kPickPixels = 10;  // a segment or an end this near the pointer is under it
+constexpr double kMarkPixels = 24;  // the start's or the goal's marker
+constexpr float kClickPixels = 4;   // a press and release nearer than this is a click
 constexpr int kMinGrid = 8, kMaxGrid = 1024;
 constexpr float kPaletteTop = 150;  // below the heads-up lines
 
@@ -140,8 +140,8 @@ void Editor::rebuild() {
       if (insideExactly(solid_.faces[f].corners, l.a) && insideExactly(solid_.faces[f].corners, l.b)) continue;
       const SegmentRef ref{static_cast<int>(f), static_cast<int>(i)};
       if (std::none_of(markers_.begin(), markers_.end(), [&](const Marker& m) { return m.segment == ref; }))
-        markers_.push_back({Marker::On::Segment, ref, static_cast<int>(f), true,
-                            "the segment leaves face " + std::to_string(f)});
+        markers_.push_back(
+            {Marker::On::Segment, ref, static_cast<int>(f), true, "the segment leaves face " + std::to_string(f)});
     }
   std::erase_if(selection_, [&](SegmentRef s) {
     return s.face < 0 || s.face >= static_cast<int>(level.faces.size()) || s.index < 0 ||
@@ -280,14 +280,15 @@ void Editor::onMouse(const core::MouseEvent& event, bool shift) {
   if (event.kind == core::MouseEvent::Kind::Up) return endDrag(x, y);
   if (clickPalette(x, y)) return;
   if (tool_ == Tool::Draw) {
-    if (drag_.what == Drag::What::Draw && drag_.chain) return;  // the release ends the segment
+    if (drag_.what == Drag::What::Draw && drag_.chain) return;                 // the release ends the segment
     if (cursor_) drag_ = {Drag::What::Draw, cursor_->point, {}, false, x, y};  // onMove placed it
     return;
   }
   const stage::Level& level = document_.level();
   const std::optional<Snapped> at = cursor_;
   if (nearPoint(x, y, level.start, kMarkPixels)) {
-    drag_ = {Drag::What::MoveStart, {level.start.face, double(level.start.position.x), double(level.start.position.y)}, {}};
+    drag_ = {
+        Drag::What::MoveStart, {level.start.face, double(level.start.position.x), double(level.start.position.y)}, {}};
   } else if (nearPoint(x, y, level.goal, kMarkPixels)) {
     drag_ = {Drag::What::MoveGoal, {level.goal.face, double(level.goal.position.x), double(level.goal.position.y)}, {}};
   } else {
@@ -311,7 +312,8 @@ void Editor::onMouse(const core::MouseEvent& event, bool shift) {
       const physics::Vec2 end = endB ? l.b : l.a;
       drag_ = {Drag::What::MoveEnd, {hit->face, double(end.x), double(end.y)}, *hit, endB};
     } else {
-      const FacePoint from = at && at->point.face == hit->face ? at->point : FacePoint{hit->face, double(l.a.x), double(l.a.y)};
+      const FacePoint from =
+          at && at->point.face == hit->face ? at->point : FacePoint{hit->face, double(l.a.x), double(l.a.y)};
       drag_ = {Drag::What::MoveSegments, from, *hit};
     }
   }
@@ -356,7 +358,8 @@ void Editor::endDrag(float x, float y) {
     case Drag::What::MoveEnd:
       if (!moved) return;
       apply("move an end point", [&](stage::Level& l) {
-        stage::LevelLine& line = l.faces[static_cast<size_t>(drag.segment.face)].lines[static_cast<size_t>(drag.segment.index)];
+        stage::LevelLine& line =
+            l.faces[static_cast<size_t>(drag.segment.face)].lines[static_cast<size_t>(drag.segment.index)];
         (drag.endB ? line.b : line.a) = b;
         if (line.a == line.b) (drag.endB ? line.b : line.a) = a;  // no segment of no length
       });
@@ -413,7 +416,8 @@ bool Editor::nearPoint(float x, float y, const stage::LevelPoint& p, double pixe
   const Eigen::Vector3d n(view_->faces[static_cast<size_t>(p.face)].normal.x,
                           view_->faces[static_cast<size_t>(p.face)].normal.y,
                           view_->faces[static_cast<size_t>(p.face)].normal.z);
-  const bool front = n.dot(toSpace(*view_, {p.face, double(p.position.x), double(p.position.y)}) - lens_.pose.eye()) < 0;
+  const bool front =
+      n.dot(toSpace(*view_, {p.face, double(p.position.x), double(p.position.y)}) - lens_.pose.eye()) < 0;
   return at && front && (*at - Eigen::Vector2d(x, y)).norm() <= pixels;
 }
 
@@ -436,8 +440,7 @@ std::optional<SegmentRef> Editor::segmentNear(float x, float y, bool& nearEnd, b
       for (const auto& [end, isB] : {std::pair{*a, false}, std::pair{*b, true}})
         if (const double d = (end - mouse).norm(); d <= bestEnd) bestEnd = d, best = ref, nearEnd = true, endB = isB;
       if (bestEnd < kPickPixels) continue;
-      if (const double d = pointSegmentPixels(mouse, *a, *b); d <= bestLine && !nearEnd)
-        bestLine = d, best = ref;
+      if (const double d = pointSegmentPixels(mouse, *a, *b); d <= bestLine && !nearEnd) bestLine = d, best = ref;
     }
   }
   return best;
@@ -448,9 +451,8 @@ void Editor::deleteSelection() {
   std::vector<SegmentRef> gone = selection_;
   apply(gone.size() == 1 ? "delete a segment" : "delete " + std::to_string(gone.size()) + " segments",
         [&](stage::Level& l) {
-          std::sort(gone.begin(), gone.end(), [](SegmentRef p, SegmentRef q) {
-            return p.face != q.face ? p.face < q.face : p.index > q.index;
-          });
+          std::sort(gone.begin(), gone.end(),
+                    [](SegmentRef p, SegmentRef q) { return p.face != q.face ? p.face < q.face : p.index > q.index; });
           for (const SegmentRef s : gone) {
             auto& lines = l.faces[static_cast<size_t>(s.face)].lines;
             lines.erase(lines.begin() + s.index);
@@ -621,7 +623,8 @@ void Editor::draw(core::DrawList& out) const {
       drawSegment(out, m.face, l.a, l.b, 70 * unit, c);
     } else if (m.on == Marker::On::Face) {
       const auto& corners = solid_.faces[static_cast<size_t>(m.face)].corners;
-      for (size_t i = 0; i < corners.size(); ++i) drawSegment(out, m.face, corners[i], corners[(i + 1) % corners.size()], 60 * unit, c);
+      for (size_t i = 0; i < corners.size(); ++i)
+        drawSegment(out, m.face, corners[i], corners[(i + 1) % corners.size()], 60 * unit, c);
     } else if (m.on == Marker::On::Start || m.on == Marker::On::Goal) {
       const physics::Vec2 p = m.on == Marker::On::Start ? level.start.position : level.goal.position;
       out.circle(core::Place::overlayOnFace(solid_.part(static_cast<size_t>(m.face))), {float(p.x), float(p.y)},

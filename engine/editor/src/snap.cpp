@@ -27,9 +27,7 @@ FacePoint wholeInside(const stage::Stage& solid, int face, double x, double y) {
   cx /= static_cast<double>(corners.size()), cy /= static_cast<double>(corners.size());
   // Toward the face's centre until the rounded point is inside: the first such point on the way
   // (bisection on how far; the centre itself is inside a convex face).
-  auto rounded = [&](double t) {
-    return std::pair{std::llround(x + t * (cx - x)), std::llround(y + t * (cy - y))};
-  };
+  auto rounded = [&](double t) { return std::pair{std::llround(x + t * (cx - x)), std::llround(y + t * (cy - y))}; };
   auto [rx, ry] = rounded(0);
   if (insideExactly(corners, rx, ry)) return {face, double(rx), double(ry)};
   double lo = 0, hi = 1;

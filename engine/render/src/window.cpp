@@ -205,16 +205,17 @@ core::WindowInput Window::pollEvents() {
         break;
       case SDL_MOUSEBUTTONDOWN:
       case SDL_MOUSEBUTTONUP:
-        input.mouse.push_back({event.type == SDL_MOUSEBUTTONDOWN ? core::MouseEvent::Kind::Down : core::MouseEvent::Kind::Up,
-                               event.button.button, static_cast<float>(event.button.x) * dpi,
-                               static_cast<float>(event.button.y) * dpi, 0});
+        input.mouse.push_back(
+            {event.type == SDL_MOUSEBUTTONDOWN ? core::MouseEvent::Kind::Down : core::MouseEvent::Kind::Up,
+             event.button.button, static_cast<float>(event.button.x) * dpi, static_cast<float>(event.button.y) * dpi,
+             0});
         break;
       case SDL_MOUSEWHEEL: {
         int x = 0, y = 0;
         SDL_GetMouseState(&x, &y);
         const float notches = event.wheel.preciseY != 0 ? event.wheel.preciseY : static_cast<float>(event.wheel.y);
-        input.mouse.push_back({core::MouseEvent::Kind::Wheel, 0, static_cast<float>(x) * dpi,
-                               static_cast<float>(y) * dpi, notches});
+        input.mouse.push_back(
+            {core::MouseEvent::Kind::Wheel, 0, static_cast<float>(x) * dpi, static_cast<float>(y) * dpi, notches});
         break;
       }
       case SDL_KEYDOWN:

@@ -61,7 +61,8 @@ std::vector<TextLine> splitLines(std::string_view text) {
     const size_t newline = text.find('\n');
     const size_t stop = newline == std::string_view::npos ? text.size() : newline;
     const size_t cr = stop > 0 && text[stop - 1] == '\r' && newline != std::string_view::npos ? 1 : 0;
-    lines.push_back({text.substr(0, stop - cr), text.substr(stop - cr, newline == std::string_view::npos ? 0 : cr + 1)});
+    lines.push_back(
+        {text.substr(0, stop - cr), text.substr(stop - cr, newline == std::string_view::npos ? 0 : cr + 1)});
     text.remove_prefix(std::min(text.size(), stop + 1));
   }
   return lines;
@@ -179,8 +180,7 @@ std::string writeLevel(const Level& level, std::string_view original) {
         write(line, faceText(level.faces[f]), level.faces[f].gravityQ16 == before.faces[f].gravityQ16);
         break;
       case Role::Segment:
-        if (kept[i])
-          write(line, segmentText(level, *kept[i]), *kept[i] == before.faces[f].lines[roles.index[i]]);
+        if (kept[i]) write(line, segmentText(level, *kept[i]), *kept[i] == before.faces[f].lines[roles.index[i]]);
         break;
     }
     if (f < 0) continue;

@@ -213,7 +213,8 @@ TEST(Editor, EveryKindOfEditIsUndoneAndRedone) {
     d.drag(pixelOf(e, mid), pixelOf(e, {f, mid.x + 100, mid.y - 60}));  // the whole segment
     changed("move a segment");
   }
-  d.click(pixelOf(e, f, (lastLine(e, f).a.x + lastLine(e, f).b.x) / 2.0, (lastLine(e, f).a.y + lastLine(e, f).b.y) / 2.0));
+  d.click(
+      pixelOf(e, f, (lastLine(e, f).a.x + lastLine(e, f).b.x) / 2.0, (lastLine(e, f).a.y + lastLine(e, f).b.y) / 2.0));
   ASSERT_EQ(e.selection(), (std::vector<editor::SegmentRef>{{f, index}}));
   d.key("T");
   changed("tag");

@@ -72,9 +72,10 @@ TEST(LevelWrite, AnUneditedLevelComesBackByteForByte) {
     EXPECT_EQ(stage::writeLevel(stage::parseLevel(text, path), text), text);
   }
   // Line ends of either kind, and a last line without one.
-  for (const std::string& text : {std::string("HEXAHEDRON\r\n0 600 700\r\n3 2000 2000\r\n4096\r\n%  # one\r\n256 512 "
-                                             "2600 512 # floor\r\n%\r\n%\r\n%\r\n%\r\n%"),
-                                 std::string("# lead\nHEXAHEDRON\n0 600 700\n3 2000 2000\n4096\n%\n%\n%\n%\n%\n%\n1 2 3 4")})
+  for (const std::string& text :
+       {std::string("HEXAHEDRON\r\n0 600 700\r\n3 2000 2000\r\n4096\r\n%  # one\r\n256 512 "
+                    "2600 512 # floor\r\n%\r\n%\r\n%\r\n%\r\n%"),
+        std::string("# lead\nHEXAHEDRON\n0 600 700\n3 2000 2000\n4096\n%\n%\n%\n%\n%\n%\n1 2 3 4")})
     EXPECT_EQ(stage::writeLevel(stage::parseLevel(text, "t"), text), text);
 }
 
@@ -125,7 +126,8 @@ TEST(LevelWrite, EditsReadBackAndKeepEveryUntouchedLine) {
             break;
           case 5:
             touched.push_back(face.sourceLine);
-            face.gravityQ16 = rng.between(0, 1) ? std::nullopt : std::optional(physics::Vec2w{rng.between(-30000, 30000), 7});
+            face.gravityQ16 =
+                rng.between(0, 1) ? std::nullopt : std::optional(physics::Vec2w{rng.between(-30000, 30000), 7});
             break;
           default:  // a copy of a segment (its sourceLine copied too: the writer must see it is new)
             if (!face.lines.empty()) face.lines.push_back(face.lines.front());
@@ -135,13 +137,15 @@ TEST(LevelWrite, EditsReadBackAndKeepEveryUntouchedLine) {
       const std::string written = stage::writeLevel(level, text);
       stage::Level read;
       ASSERT_NO_THROW(read = stage::parseLevel(written, path)) << written;
-      ASSERT_EQ(read, level) << difference(read, level) << "\n" << written << "\nexpected face 1: " << [&] {
-        std::string o;
-        for (const auto& l : level.faces[1].lines)
-          o += std::to_string(l.a.x) + " " + std::to_string(l.a.y) + " " + std::to_string(l.b.x) + " " +
-               std::to_string(l.b.y) + " src " + std::to_string(l.sourceLine) + "; ";
-        return o;
-      }();
+      ASSERT_EQ(read, level) << difference(read, level) << "\n"
+                             << written << "\nexpected face 1: " <<
+          [&] {
+            std::string o;
+            for (const auto& l : level.faces[1].lines)
+              o += std::to_string(l.a.x) + " " + std::to_string(l.a.y) + " " + std::to_string(l.b.x) + " " +
+                   std::to_string(l.b.y) + " src " + std::to_string(l.sourceLine) + "; ";
+            return o;
+          }();
       const std::vector<std::string> after = linesOf(written);
       for (size_t i = 0; i < before.size(); ++i) {
         const std::string& line = before[i];

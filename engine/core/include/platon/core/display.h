@@ -131,19 +131,19 @@ struct MouseEvent {
 
 // What the window's devices (keyboard, mouse, gamepads) did since the last poll.
 struct WindowInput {
-  uint8_t held = 0;          // InputFrame bits of the buttons held now
-  uint8_t tapped = 0;        // and of those pressed since the last call, held now or not (TapCarry)
-  std::vector<Key> pressed;  // in order
-  bool closed = false;       // the window was closed
-  bool focusLost = false;    // the window lost the keyboard (the game pauses)
-  std::string lastKey;       // SDL's name of the last key pressed ("Space"), for binding one
-  std::string text;          // the text typed since the last call (UTF-8), for the console
-  std::vector<KeyPress> keys;      // every key pressed, in order (repeats of a held key included)
-  std::vector<MouseEvent> mouse;   // in order
-  float mouseX = 0, mouseY = 0;    // the pointer now, in pixels from the top left
-  uint8_t mouseHeld = 0;           // buttons held now: bit (button - 1)
+  uint8_t held = 0;               // InputFrame bits of the buttons held now
+  uint8_t tapped = 0;             // and of those pressed since the last call, held now or not (TapCarry)
+  std::vector<Key> pressed;       // in order
+  bool closed = false;            // the window was closed
+  bool focusLost = false;         // the window lost the keyboard (the game pauses)
+  std::string lastKey;            // SDL's name of the last key pressed ("Space"), for binding one
+  std::string text;               // the text typed since the last call (UTF-8), for the console
+  std::vector<KeyPress> keys;     // every key pressed, in order (repeats of a held key included)
+  std::vector<MouseEvent> mouse;  // in order
+  float mouseX = 0, mouseY = 0;   // the pointer now, in pixels from the top left
+  uint8_t mouseHeld = 0;          // buttons held now: bit (button - 1)
   bool shift = false, ctrl = false, alt = false;  // modifiers held now
-  int width = 0, height = 0;       // the window's drawable, in pixels
+  int width = 0, height = 0;                      // the window's drawable, in pixels
 };
 
 class Display {

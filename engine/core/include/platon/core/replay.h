@@ -61,7 +61,7 @@ struct Replay {
   // The game speed (percent) a player ran it at in the assist mode: pacing only, so the frames and
   // their hashes are the same at any speed; kept so a run can be watched as it was played.
   int speed = 100;
-  std::optional<ReplayStart> start;  // none: the level's own start
+  std::optional<ReplayStart> start;    // none: the level's own start
   std::vector<uint8_t> held;           // held[f - 1]: the buttons held on frame f (InputFrame::held bits)
   uint64_t hashEvery = 60;             // frames between recorded hashes (0: none)
   std::vector<ReplayHash> hashes;      // increasing frames

@@ -108,11 +108,11 @@ class Editor {
   struct Drag {
     enum class What : uint8_t { None, Draw, Orbit, MoveEnd, MoveSegments, MoveStart, MoveGoal };
     What what = What::None;
-    FacePoint from;            // where it began (snapped), on face from.face
-    SegmentRef segment;        // MoveEnd: the segment, and which end
+    FacePoint from;      // where it began (snapped), on face from.face
+    SegmentRef segment;  // MoveEnd: the segment, and which end
     bool endB = false;
     float mouseX = 0, mouseY = 0;  // the pointer when it began (a click is a drag that did not move)
-    bool chain = false;        // Draw: a click began it; the next click ends the segment
+    bool chain = false;            // Draw: a click began it; the next click ends the segment
   };
 
   void onKey(const core::KeyPress& key);

@@ -1,9 +1,8 @@
 // The mouse on the solid: the ray from the eye through a pixel, the face it meets first and the
 // point there in the face's own coordinates; and back, a face's point to the screen.
 #pragma once
-#include <optional>
-
 #include <Eigen/Core>
+#include <optional>
 
 #include "platon/camera/camera.h"
 #include "platon/core/display.h"

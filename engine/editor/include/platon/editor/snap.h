@@ -10,10 +10,10 @@
 namespace platon::editor {
 
 struct SnapSettings {
-  bool enabled = true;     // off while Alt is held
-  int grid = 64;           // units; 0: no grid
-  double endPixels = 12;   // an end point this near on screen takes the click
-  bool angles = false;     // Shift: the direction from `from` in steps of angleStep degrees
+  bool enabled = true;    // off while Alt is held
+  int grid = 64;          // units; 0: no grid
+  double endPixels = 12;  // an end point this near on screen takes the click
+  bool angles = false;    // Shift: the direction from `from` in steps of angleStep degrees
   double angleStep = 15;
 };
 
