@@ -95,7 +95,7 @@ std::string withFaces(std::string text, size_t faces) {
 // The next test_N.lua free in `folder`.
 std::string nextTestPath(const std::string& folder) {
   for (int n = 1;; ++n) {
-    const std::string path = (fs::path(folder) / ("test_" + std::to_string(n) + ".lua")).string();
+    std::string path = (fs::path(folder) / ("test_" + std::to_string(n) + ".lua")).string();
     std::error_code error;
     if (!fs::exists(path, error)) return path;
   }

@@ -48,21 +48,21 @@ struct Driver {
     in.mouseX = x, in.mouseY = y, in.alt = alt;
     return in;
   }
-  void moveTo(Eigen::Vector2d p) {
+  void moveTo(const Eigen::Vector2d& p) {
     x = float(p.x()), y = float(p.y());
     e.handle(input());
   }
-  void button(Eigen::Vector2d p, core::MouseEvent::Kind kind, uint8_t which = 1) {
+  void button(const Eigen::Vector2d& p, core::MouseEvent::Kind kind, uint8_t which = 1) {
     moveTo(p);
     core::WindowInput in = input();
     in.mouse.push_back({kind, which, x, y, 0});
     e.handle(in);
   }
-  void click(Eigen::Vector2d p) {
+  void click(const Eigen::Vector2d& p) {
     button(p, core::MouseEvent::Kind::Down);
     button(p, core::MouseEvent::Kind::Up);
   }
-  void drag(Eigen::Vector2d from, Eigen::Vector2d to, uint8_t which = 1) {
+  void drag(const Eigen::Vector2d& from, const Eigen::Vector2d& to, uint8_t which = 1) {
     button(from, core::MouseEvent::Kind::Down, which);
     moveTo((from + to) / 2);
     button(to, core::MouseEvent::Kind::Up, which);
