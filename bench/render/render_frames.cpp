@@ -9,6 +9,9 @@
 // process each time, from fork to exit: an upper bound) and the game's peak memory (that
 // process's maximum resident set).
 //
+// Also: the editor's frames (its picture of a level, steady and right after an edit), on a level of
+// the campaign and on cubes of 10^3 and 10^4 segments, against the same budget.
+//
 // usage: SDL_VIDEODRIVER=offscreen build/bench/render_frames [--frames N] [--runs R]
 #include <SDL2/SDL.h>
 #include <algorithm>
@@ -18,6 +21,8 @@
 #include <cstring>
 #include <epoxy/gl.h>
 #include <fstream>
+#include <iterator>
+#include <memory>
 #include <string>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -28,6 +33,8 @@
 #include "platon/core/display.h"
 #include "platon/core/live_scene.h"
 #include "platon/core/replay.h"
+#include "platon/editor/editor.h"
+#include "platon/testing/rng.h"
 #include "platon/script/script_system.h"
 #include "spread.h"
 #include "stage_mesh.h"
@@ -198,6 +205,60 @@ Frames measureLevel(const std::string& scenePath, const std::string& replayPath,
   return out;
 }
 
+// The editor's frames (`platon edit`): its picture of a level (the solid, its lines, the overlays and
+// the palette) drawn by the same renderer, steady and on the frame right after an edit (the stage
+// as drawn is made again, so the renderer builds its mesh anew). `busy` levels: a cube with
+// `segments` random short segments.
+struct EditorFrames {
+  std::vector<double> steady, afterEdit;
+};
+
+EditorFrames measureEditor(const std::string& name, const std::string& text, const core::SystemRegistry& registry,
+                           int frames) {
+  core::Scene host;
+  std::unique_ptr<core::System> window = registry.create("rendering", host);
+  core::Display& display = *window->display();
+  display.resize(1280, 720);
+  editor::LevelDocument document(name, text, stage::gameTags());
+  stage::Stage solid = stage::platonicStageOf(document.level());
+  editor::Editor e(std::move(document), std::move(solid), 22938);
+  core::WindowInput input;
+  input.width = 1280, input.height = 720, input.mouseX = 640, input.mouseY = 400;
+  EditorFrames out;
+  platon::testing::Rng rng{5};
+  for (int f = 0; f < frames; ++f) {
+    const bool edit = f % 10 == 9;
+    if (edit) {
+      const int x = rng.between(300, 3700), y = rng.between(2500, 3700);
+      e.document().edit("draw", [&](stage::Level& l) { l.faces[0].lines.push_back({{x, y}, {x + 128, y}, false, 0}); });
+      e.rebuild();
+    }
+    e.handle(input);
+    core::DrawList list(true);
+    e.draw(list);
+    const auto t0 = Clock::now();
+    display.present(e.view(), list);
+    glFinish();
+    (edit ? out.afterEdit : out.steady).push_back(msSince(t0));
+  }
+  return out;
+}
+
+std::string busyCube(int segments) {
+  platon::testing::Rng rng{7};
+  std::string text = "HEXAHEDRON\n0 600 400\n0 3400 400\n4096\n";
+  for (int f = 0; f < 6; ++f) {
+    text += "%\n";
+    if (f == 0) text += "100 200 3996 200\n";
+    for (int i = 0; i < segments / 6; ++i) {
+      const int x = rng.between(50, 3990), y = rng.between(f == 0 ? 800 : 50, 3990);
+      text += std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(x + rng.between(-40, 40)) + " " +
+              std::to_string(y + rng.between(1, 40)) + "\n";
+    }
+  }
+  return text;
+}
+
 // Runs `platon game --quit-after-first-frame` and returns its wall time in ms and peak RSS in MiB.
 std::pair<double, double> startUp(const std::string& platon) {
   const auto t0 = Clock::now();
@@ -263,6 +324,19 @@ int main(int argc, char** argv) {
   }
   std::printf("ratio to the floor: median %s; worst mean frame %.2f ms (goal: <= 1.5x, <= 7 ms)\n",
               bench::Spread::of(ratios).show("%.2f").c_str(), *std::max_element(worstMeans.begin(), worstMeans.end()));
+
+  std::printf("\nthe editor's frames (platon edit), 1280x720, an edit every 10th frame\n");
+  std::printf("%-34s %14s %14s %16s %16s\n", "level", "steady mean", "steady p99", "after edit mean", "after edit p99");
+  std::ifstream switches("levels/cube_switches/cube_switches.level");
+  const std::string switchesText{std::istreambuf_iterator<char>(switches), {}};
+  for (const auto& [name, text] : {std::pair{std::string("cube_switches"), switchesText},
+                                   std::pair{std::string("a cube of 1,000 segments"), busyCube(1000)},
+                                   std::pair{std::string("a cube of 10,000 segments"), busyCube(10000)}}) {
+    const EditorFrames f = measureEditor(name, text, registry, frames);
+    std::printf("%-34s %12.2fms %12.2fms %14.2fms %14.2fms\n", name.c_str(), mean(f.steady), p99(f.steady),
+                mean(f.afterEdit), p99(f.afterEdit));
+    std::fflush(stdout);
+  }
 
   std::vector<double> startMs, rssMiB;
   for (int r = 0; r < runs; ++r) {
