@@ -283,7 +283,6 @@ int editLevel(const LevelArgument& level, core::SystemRegistry& registry, core::
   std::fflush(stdout);
   Session session{scenePath, registry, *window, *display, *editor};
   int frames = 0;
-  uint64_t said = editor->messageSerial();
   for (;;) {
     const core::WindowInput input = display->pollEvents();
     const editor::Editor::Request request = editor->handle(input);
@@ -295,10 +294,8 @@ int editLevel(const LevelArgument& level, core::SystemRegistry& registry, core::
                       p->y);
     for (const core::KeyPress& key : input.keys)
       if (key.name == "F12") std::printf("%s\n", saveScreenshot(*display).c_str());  // after this frame is shown
-    if (editor->messageSerial() != said) {
-      said = editor->messageSerial();
-      std::printf("editor: %s\n", core::visibleText(editor->message()).c_str());
-    }
+    for (const std::string& message : editor->takeMessages())
+      std::printf("editor: %s\n", core::visibleText(message).c_str());
     std::fflush(stdout);
     if (request == editor::Editor::Request::Quit) break;
     if (request == editor::Editor::Request::Play) playFromCursor(session);

@@ -43,7 +43,12 @@ bool LevelDocument::edit(const std::string& name, const std::function<void(stage
   // the file says (a mismatch is the writer's bug; refused rather than saved).
   if (const std::string diff = levelDifference(read, next); !diff.empty())
     throw stage::StageError({path_, 0, 0}, "the edit does not read back as made (" + diff + "): not made");
+  undoBytes_ += text_.size();
   undo_.push_back({name, std::move(text_)});
+  while (undoBytes_ > kMaxUndoBytes && undo_.size() > 1) {  // the oldest steps go first
+    undoBytes_ -= undo_.front().text.size();
+    undo_.pop_front();
+  }
   redo_.clear();
   text_ = std::move(text);
   level_ = std::move(read);
@@ -54,6 +59,7 @@ bool LevelDocument::undo() {
   if (undo_.empty()) return false;
   Step step = std::move(undo_.back());
   undo_.pop_back();
+  undoBytes_ -= step.text.size();
   redo_.push_back({step.name, text_});
   setText(std::move(step.text));
   return true;
@@ -63,6 +69,7 @@ bool LevelDocument::redo() {
   if (redo_.empty()) return false;
   Step step = std::move(redo_.back());
   redo_.pop_back();
+  undoBytes_ += text_.size();
   undo_.push_back({step.name, text_});
   setText(std::move(step.text));
   return true;

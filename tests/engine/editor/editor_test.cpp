@@ -326,3 +326,24 @@ TEST(Editor, APaletteHoldsTheModsWordsAndEverySegmentOffItsFaceIsMarked) {
   EXPECT_EQ(off, 2u);
   EXPECT_NE(e.document().text().find("# off too"), std::string::npos);
 }
+
+// The undo history keeps the latest steps within its byte budget: a long session on a big level
+// does not grow without end, and what is kept still undoes exactly.
+TEST(LevelDocument, TheUndoHistoryKeepsTheLatestStepsWithinItsBudget) {
+  std::string text = "HEXAHEDRON\n0 600 700\n0 3000 700\n4096\n%\n";
+  for (int i = 0; i < 20000; ++i) text += "100 " + std::to_string(800 + i % 3000) + " 200 900\n";
+  text += "%\n%\n%\n%\n%\n";
+  editor::LevelDocument document("big.level", text, stage::gameTags());
+  const size_t perStep = text.size();
+  std::vector<std::string> texts{document.text()};
+  for (int i = 0; i < 200; ++i) {
+    ASSERT_TRUE(document.edit("move", [&](stage::Level& l) { l.start.position.x = 601 + i; }));
+    texts.push_back(document.text());
+  }
+  EXPECT_LE(document.undoSteps() * perStep, editor::LevelDocument::kMaxUndoBytes + perStep);
+  EXPECT_LT(document.undoSteps(), 200u);
+  const size_t kept = document.undoSteps();
+  for (size_t i = 0; i < kept; ++i) ASSERT_TRUE(document.undo());
+  EXPECT_FALSE(document.undo());
+  EXPECT_EQ(document.text(), texts[texts.size() - 1 - kept]);
+}

@@ -15,6 +15,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "platon/core/display.h"
@@ -89,10 +90,14 @@ class Editor {
   Lens lens() const { return lens_; }
   // The camera at once where the game's would be for a player at (face, x, y).
   void lookAt(int face, double x, double y);
-  // The heads-up message line; its serial grows with each message (the same words said twice too).
-  void say(std::string message) { message_ = std::move(message), ++said_; }
+  // The heads-up message line (the last one said).
+  void say(std::string message) {
+    said_.push_back(message);
+    message_ = std::move(message);
+  }
   const std::string& message() const { return message_; }
-  uint64_t messageSerial() const { return said_; }
+  // Every message said since the last call, in order (several edits may come in one poll).
+  std::vector<std::string> takeMessages() { return std::exchange(said_, {}); }
   // The face point under pixel (x, y), not snapped; none off the solid.
   std::optional<FacePoint> pointAt(float x, float y) const;
   // The camera head-on to face `face` (its centre in the middle, its down down the screen).
@@ -161,7 +166,7 @@ class Editor {
   std::vector<SegmentRef> selection_;
   std::vector<stage::LevelLine> clipboard_;  // relative to the first one's a
   std::string message_;
-  uint64_t said_ = 0;
+  std::vector<std::string> said_;
   bool quitAsked_ = false;
 };
 

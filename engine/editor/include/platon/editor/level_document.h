@@ -4,6 +4,7 @@
 // always what saving writes, the level is always what the game will read from it, and a segment's
 // sourceLine always points at its line (the check's findings find their segment by it).
 #pragma once
+#include <deque>
 #include <functional>
 #include <memory>
 #include <string>
@@ -33,8 +34,12 @@ class LevelDocument {
   // A change that does not read back as itself (a value out of the format's ranges) is refused:
   // throws stage::StageError, and the document is as it was.
   bool edit(const std::string& name, const std::function<void(stage::Level&)>& change);
+  // Undo and redo. The steps kept are the latest, up to kMaxUndoBytes of text in all (each step
+  // keeps the whole text before it: a level of 10^4 segments is about 300 KB a step).
+  static constexpr size_t kMaxUndoBytes = size_t{64} << 20;
   bool undo();
   bool redo();
+  size_t undoSteps() const { return undo_.size(); }
   // The name of the edit undo() or redo() would take back or make again ("" for none).
   std::string undoName() const { return undo_.empty() ? "" : undo_.back().name; }
   std::string redoName() const { return redo_.empty() ? "" : redo_.back().name; }
@@ -52,7 +57,9 @@ class LevelDocument {
   std::string path_, text_, saved_;
   std::shared_ptr<const stage::TagTable> tags_;
   stage::Level level_;
-  std::vector<Step> undo_, redo_;
+  std::deque<Step> undo_;
+  std::vector<Step> redo_;
+  size_t undoBytes_ = 0;
 };
 
 // How far a level's data differ from another's: the first difference in words ("" when equal).
