@@ -98,6 +98,15 @@ struct Entity {
   std::vector<WarpLink> links;
   std::vector<Contact> contacts;  // solid contacts of the latest solve(), in the order they happened
   uint32_t work = 0;              // lines and bodies its moves were tested against in the latest solve()
+  // At rest and undisturbed (world.h, "rest costs nothing"): its rest test's answer is known until
+  // something that could change it happens, so the frame keeps that answer instead of asking again.
+  // What it depends on: its own state (the calls that set it clear this), every entity and line
+  // near it (an entity moving near it clears this, world.cpp's wake), its anchor part's gravity and
+  // the platforms of its parts (compared below), the rules' answers (setRules, refreshPierce).
+  bool resting = false;
+  Vec2w restGravityQ16;              // the anchor part's gravity when the answer was found
+  uint64_t restPlatformEpoch = 0;    // the platforms of its parts had moved this often
+  std::vector<Contact> restContacts;  // the contacts that held it
 
   Instance* instanceIn(MapPartId part) {
     for (Instance& i : instances)

@@ -14,11 +14,30 @@ Box boxOf(std::span<const Vec2> verts, Vec2w step) { return sweptBox(verts, step
 
 // Every entity in a part is in the index, so that moving platforms find whom to push and carry;
 // the filters decide which entities meet which.
+// An entity that moved (or changed shape or filter) may change the rest of those near where it was
+// and where it is: they are woken on both sides of the update (nothing to do while none rests).
 void WorldImpl::reindex(const Entity& e) {
+  if (restingCount > 0) wakeAround(e);
   if (!e.instances.empty())
     entityIndex.update(e);
   else
     entityIndex.remove(e);
+  if (restingCount > 0) wakeAround(e);
+}
+
+void WorldImpl::wakeAround(const Entity& e) {
+  wake(*slots[e.id.index].entity);
+  entityIndex.forEachAround(e.id.index, [&](uint32_t slot) {
+    if (Entity* other = slots[slot].entity.get()) wake(*other);
+  });
+}
+
+uint64_t WorldImpl::platformEpochOf(const Entity& e) const {
+  if (platformEpochs.empty()) return 0;
+  uint64_t sum = 0;
+  for (const Instance& inst : e.instances)
+    if (auto it = platformEpochs.find(inst.part); it != platformEpochs.end()) sum += it->second;
+  return sum;
 }
 
 std::optional<EntityId> WorldImpl::entityOverlap(const Entity& e, const Instance& inst, std::span<const Vec2> verts) {

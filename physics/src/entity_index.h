@@ -22,6 +22,11 @@ class EntityIndex {
   // the closed box `box`.
   template <class Visit>
   void forEachNear(MapPartId part, const Box& box, Visit&& visit);
+  // Calls visit(slot) for each entity filed in the cells where `slot` is filed or next to them (a
+  // cell is at least 16 units wide: every entity within a few units of it); for an entity filed
+  // among the big ones, every entity of its parts. Possibly the same slot more than once.
+  template <class Visit>
+  void forEachAround(uint32_t slot, Visit&& visit) const;
   bool empty() const { return entities_ == 0; }
 
  private:
@@ -81,6 +86,25 @@ void EntityIndex::forEachNear(MapPartId part, const Box& box, Visit&& visit) {
     for (int64_t x = x0; x <= x1; ++x)
       if (auto it = cells_.find({part, x, y}); it != cells_.end())
         for (const uint32_t slot : it->second) once(slot);
+}
+
+template <class Visit>
+void EntityIndex::forEachAround(uint32_t slot, Visit&& visit) const {
+  if (slot >= filed_.size()) return;
+  for (const Filed& f : filed_[slot]) {
+    if (auto it = big_.find(f.part); it != big_.end())
+      for (const uint32_t other : it->second) visit(other);
+    if (f.big) {  // a big one reaches anything of its part
+      for (const auto& [key, slots] : cells_)
+        if (key.part == f.part)
+          for (const uint32_t other : slots) visit(other);
+      continue;
+    }
+    for (int64_t y = f.y0 - 1; y <= f.y1 + 1; ++y)
+      for (int64_t x = f.x0 - 1; x <= f.x1 + 1; ++x)
+        if (auto it = cells_.find({f.part, x, y}); it != cells_.end())
+          for (const uint32_t other : it->second) visit(other);
+  }
 }
 
 }  // namespace platon::physics

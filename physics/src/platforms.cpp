@@ -65,6 +65,7 @@ PlatformId World::createPlatform(MapPartId partId, std::span<const PlatformLine>
   pl.offset = pl.motion = {};
   pl.box = boxOf(pl.lines);
   pl.alive = true;
+  ++w.platformEpochs[pl.part];  // what rests in its part is looked at again
   return {index, pl.generation};
 }
 
@@ -81,6 +82,7 @@ Platform& live(WorldImpl& w, PlatformId id) {
 void World::destroyPlatform(PlatformId id) {
   impl_->checkUnlocked("destroyPlatform");
   Platform& pl = live(*impl_, id);
+  ++impl_->platformEpochs[pl.part];
   pl.alive = false;
   pl.lines.clear();
   ++pl.generation;
@@ -188,6 +190,7 @@ Vec2w WorldImpl::clearPlatformStep(uint32_t slot, Vec2w step, std::optional<uint
 
 void WorldImpl::shiftPlatform(uint32_t slot, Vec2w step) {
   Platform& pl = platforms[slot];
+  if (step != Vec2w{}) ++platformEpochs[pl.part];
   for (PlatformLine& l : pl.lines)
     l.segment = {{static_cast<int32_t>(l.segment.a.x + step.x), static_cast<int32_t>(l.segment.a.y + step.y)},
                  {static_cast<int32_t>(l.segment.b.x + step.x), static_cast<int32_t>(l.segment.b.y + step.y)}};

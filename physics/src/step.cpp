@@ -768,8 +768,45 @@ bool WorldImpl::restsAgainstLines(Entity& e, Vec2w w) {
   return false;
 }
 
+namespace {
+
+bool sameContacts(const std::vector<Contact>& a, const std::vector<Contact>& b) {
+  return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const Contact& p, const Contact& q) {
+    return p.entity == q.entity && p.part == q.part && p.line.part == q.line.part && p.line.index == q.line.index &&
+           p.line.tag == q.line.tag && p.line.kind == q.line.kind && p.line.platform == q.line.platform &&
+           p.other == q.other && p.normal == q.normal;
+  });
+}
+
+}  // namespace
+
+// Whether a resting entity's kept answer still stands: nothing that the calls and moves around it
+// cannot report has changed (its part's gravity, its parts' platforms).
+bool WorldImpl::keepsRest(const Entity& e) const {
+  return e.resting && e.angularVelocity == 0 && e.velocityQ16 == Vec2w{} && e.subunitQ17 == Vec2w{} &&
+         e.instances.size() == 1 && part(e.instances[0].part).gravity() == e.restGravityQ16 &&
+         platformEpochOf(e) == e.restPlatformEpoch;
+}
+
 void WorldImpl::stepEntity(Entity& e) {
   for (Instance& inst : e.instances) inst.blockedWarps.clear();
+  const bool kept = keepsRest(e);
+  if (e.resting && !kept) wake(e);
+  if (kept && !restCheck) {  // the rest test's answer, as it would give it again
+    e.velocityQ16 = {};
+    e.contacts = e.restContacts;
+    ++report.restsKept;
+    return;
+  }
+  stepEntityTested(e);
+  if (kept) {  // RestMode::Checked: the test's answer against the kept one
+    ++report.restsKept;
+    if (e.velocityQ16 != Vec2w{} || e.subunitQ17 != Vec2w{} || !sameContacts(e.contacts, e.restContacts))
+      ++report.restMismatches;
+  }
+}
+
+void WorldImpl::stepEntityTested(Entity& e) {
   if (e.angularVelocity != 0) rotateBy(e, e.angularVelocity);
   if (e.instances.empty()) return;
   const Vec2w before = e.velocityQ16;
@@ -794,6 +831,14 @@ void WorldImpl::stepEntity(Entity& e) {
         Move still{e, {}, scratch.normals, {}, {}};
         slide(still);
         reindex(e);
+      } else if (before == Vec2w{} && restCache && e.instances.size() == 1) {
+        // At rest from the frame's start to its end, no callback asked: the answer holds until
+        // something near it changes (keepsRest).
+        if (!e.resting) ++restingCount;
+        e.resting = true;
+        e.restGravityQ16 = part(e.instances[0].part).gravity();
+        e.restPlatformEpoch = platformEpochOf(e);
+        e.restContacts = e.contacts;
       }
     }
     if (arrival != Arrival::Bounces) return;

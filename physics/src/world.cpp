@@ -111,6 +111,8 @@ void World::destroyEntity(EntityId id) {
     for (const Instance& inst : e.instances) impl_->endEntityOverlaps(e, inst.part);
     scope.finish();
   }
+  if (impl_->restingCount > 0) impl_->wakeAround(e);  // what rested on it
+  impl_->wake(e);
   impl_->entityIndex.remove(e);
   WorldImpl::Slot& slot = impl_->slots[id.index];
   slot.entity.reset();
@@ -127,16 +129,28 @@ void World::setVelocity(EntityId id, Vec2w v) {
   if (v.x < -limit || v.x > limit || v.y < -limit || v.y > limit)
     throw Error("velocity (" + std::to_string(v.x) + ", " + std::to_string(v.y) +
                 ") / 65536 exceeds the largest move per frame, 2^30 units");
-  impl_->entity(id).velocityQ16 = v;
+  Entity& e = impl_->entity(id);
+  e.velocityQ16 = v;
+  impl_->wake(e);
 }
 void World::setSubunit(EntityId id, Vec2w s) {
   constexpr int64_t kUnitQ17 = 131072;
   if (s.x <= -kUnitQ17 || s.x >= kUnitQ17 || s.y <= -kUnitQ17 || s.y >= kUnitQ17)
     throw Error("subunit (" + std::to_string(s.x) + ", " + std::to_string(s.y) + ") / 131072 is a unit or more");
-  impl_->entity(id).subunitQ17 = s;
+  Entity& e = impl_->entity(id);
+  e.subunitQ17 = s;
+  impl_->wake(e);
 }
-void World::setAngularVelocity(EntityId id, int32_t a) { impl_->entity(id).angularVelocity = a; }
-void World::setGravityEnabled(EntityId id, bool on) { impl_->entity(id).gravity = on; }
+void World::setAngularVelocity(EntityId id, int32_t a) {
+  Entity& e = impl_->entity(id);
+  e.angularVelocity = a;
+  impl_->wake(e);
+}
+void World::setGravityEnabled(EntityId id, bool on) {
+  Entity& e = impl_->entity(id);
+  e.gravity = on;
+  impl_->wake(e);
+}
 void World::setUserData(EntityId id, uint64_t value) { impl_->entity(id).userData = value; }
 
 void World::setFilter(EntityId id, const EntityFilter& filter) {
@@ -163,6 +177,7 @@ void World::setFilter(EntityId id, const EntityFilter& filter) {
 void World::setRules(Rules* rules) {
   impl_->checkUnlocked("setRules");
   impl_->rules = rules ? rules : &impl_->defaultRules;
+  impl_->wakeAll();  // new rules may answer otherwise
   // Pierceability is cached per region line; ask the new rules afresh.
   for (WorldImpl::Slot& s : impl_->slots)
     if (s.entity)
@@ -172,6 +187,7 @@ void World::setRules(Rules* rules) {
 
 void World::refreshPierce(uint32_t tag) {
   impl_->checkUnlocked("refreshPierce");
+  impl_->wakeAll();  // a line it rests on may have opened
   for (WorldImpl::Slot& slot : impl_->slots) {
     if (!slot.entity) continue;
     for (Instance& inst : slot.entity->instances) {
@@ -349,6 +365,12 @@ size_t World::countOverlaps() const {
 // A body's step before any test (gravity, its contacts, whether it rests) costs about as much as
 // this many tests (measured on 10,000 bodies at rest): EntityView::work counts it too.
 constexpr uint32_t kBodyStepWork = 16;
+
+void World::setRestMode(RestMode mode) {
+  impl_->restCache = mode != RestMode::Tested;
+  impl_->restCheck = mode == RestMode::Checked;
+  if (!impl_->restCache) impl_->wakeAll();
+}
 
 SolveReport World::solve() {
   WorldImpl& w = *impl_;

@@ -9,6 +9,7 @@
 #include <optional>
 #include <span>
 #include <utility>
+#include <unordered_map>
 #include <vector>
 
 #include "contact_normal.h"
@@ -93,6 +94,22 @@ struct WorldImpl {
   int pushDepth = 0;  // entities pushing entities pushing entities: bounded
   std::vector<Platform> platforms;
   std::vector<uint32_t> freePlatforms;
+  // Rest that costs nothing (entity.h's `resting`): how many entities keep their rest answer, how
+  // often each part's platforms moved, and the mode that asks anyway and compares (World::checkRest).
+  size_t restingCount = 0;
+  std::unordered_map<MapPartId, uint64_t> platformEpochs;
+  bool restCache = true, restCheck = false;
+  void wake(Entity& e) {
+    if (e.resting) e.resting = false, --restingCount;
+  }
+  void wakeAll() {
+    for (Slot& s : slots)
+      if (s.entity) wake(*s.entity);
+  }
+  // Wakes every entity filed near `e` (within a cell of where the index has it), `e` too.
+  void wakeAround(const Entity& e);
+  bool keepsRest(const Entity& e) const;
+  uint64_t platformEpochOf(const Entity& e) const;
   // Per-frame buffers, kept to avoid allocating on every step (solve is not reentrant).
   struct Scratch {
     std::vector<std::vector<Vec2>> verts;
@@ -192,6 +209,7 @@ struct WorldImpl {
 
   // step.cpp
   void stepEntity(Entity& e);
+  void stepEntityTested(Entity& e);  // the step as it is without a kept rest answer
   void slide(Move& move);
   // Whether the entity, wanting to move along w (its velocity after gravity), presses into the
   // solid lines it is against (touching or within one unit) so that it cannot move at all. If so,

@@ -27,6 +27,8 @@ struct SolveReport {
   uint32_t instancesErased = 0;
   uint32_t copiesReplaced = 0;  // copies moved within two units to free them from a rounding snag
   uint32_t cornerReturns = 0;   // entities put back on a face after going through a vertex
+  uint32_t restsKept = 0;       // bodies at rest that nothing disturbed: their answer kept, no test
+  uint32_t restMismatches = 0;  // RestMode::Checked: kept answers the test contradicted (always 0)
   // The frame's work: every line, platform line and body a move was tested against. A frame's time
   // grows with it (EntityView::work has each entity's share), so a caller can bound what it costs.
   uint64_t tested = 0;
@@ -139,6 +141,18 @@ class World {
   // instance overlaps it stays passable for that instance until it is clear of it (its begin/end
   // pair completes, and nothing is ever inside a solid line); then it holds.
   void refreshPierce(uint32_t tag);
+
+  // Rest that costs nothing. A body at rest (its velocity and its fraction of a unit zero, pressed
+  // into what holds it) that nothing disturbs keeps its answer without testing again: it is looked
+  // at again once something that could move it changes (an entity moving, pushed, inserted or
+  // erased near it; its velocity, spin, gravity switch or filter set; its part's gravity; a
+  // platform of its part moving; the rules replaced or refreshPierce), so a switch, a platform or
+  // a script acts on it in the same frame as before, and states are bit for bit those of a world
+  // that tests every body every frame. Kept is the default; Tested tests every body every frame;
+  // Checked keeps and tests, and counts in SolveReport::restMismatches every kept answer the test
+  // contradicts (the proof, in tests).
+  enum class RestMode : uint8_t { Kept, Tested, Checked };
+  void setRestMode(RestMode mode);
 
   // Advances one frame. Deterministic: the same calls give bit-identical states.
   SolveReport solve();
