@@ -33,12 +33,25 @@ namespace fs = std::filesystem;
 
 int editUsage() { return usageError("edit"); }
 
+std::string makeLevelFolder(const std::string& folder, const std::string& solid);
+
 // A new level's folder: scene.lua (the game's rules and player) and NAME.level on `solid` (a
 // Platonic solid's name, or a mesh file copied in), the start and the goal on face 0 (no floor yet).
-std::string makeNewLevel(const std::string& folder, const std::string& solid) {
+std::string makeNewLevel(std::string folder, const std::string& solid) {
+  while (folder.size() > 1 && folder.back() == '/') folder.pop_back();  // levels/mine/ is levels/mine
   std::error_code error;
   if (fs::exists(folder, error))
     throw std::runtime_error(folder + ": already exists (platon edit " + folder + " edits it)");
+  try {
+    return makeLevelFolder(folder, solid);
+  } catch (...) {
+    fs::remove_all(folder, error);  // no half-made level left behind
+    throw;
+  }
+}
+
+std::string makeLevelFolder(const std::string& folder, const std::string& solid) {
+  std::error_code error;
   const std::string name = fs::path(folder).filename().string();
   if (name.empty() || name.find_first_of("\"\\\n# ") != std::string::npos)
     throw std::runtime_error(folder + ": a level's folder name is a plain word (it names its .level file)");
@@ -71,7 +84,7 @@ std::string makeNewLevel(const std::string& folder, const std::string& solid) {
                             " 400   # goal\n" + std::to_string(size) + "\n";
   faces = "%                    # face 0: draw a floor under the start and the goal\n";
   for (size_t f = 1; f < count; ++f) faces += "%                    # face " + std::to_string(f) + "\n";
-  if (!known) faces += "# (a mesh level: its faces' '%' lines are added by `platon edit` when it reads the mesh)\n";
+
   const std::string scene = "-- " + name + ": made by `platon edit --new`.\nreturn {\n  name = \"" + name +
                             "\",\n  systems = { \"scripting\", \"rendering\", \"audio\"" +
                             (known ? "" : ", \"meshes\"") + " },\n  stage = { level = \"" + name +
@@ -86,10 +99,30 @@ std::string makeNewLevel(const std::string& folder, const std::string& solid) {
 
 // A mesh level made by --new has one '%' line: the faces of its mesh, now that the mesh is read.
 std::string withFaces(std::string text, size_t faces) {
+  if (!text.empty() && text.back() != '\n') text += '\n';  // a last line without its line end
   size_t have = 0;
   for (size_t at = 0; (at = text.find("\n%", at)) != std::string::npos; ++at) ++have;
   for (size_t f = have; f < faces; ++f) text += "%                    # face " + std::to_string(f) + "\n";
   return text;
+}
+
+// A new mesh level's start and goal, inside its face 0 whatever its shape: between the face's
+// middle and its first two corners.
+void placeOnFaceZero(editor::Editor& editor) {
+  const auto& corners = editor.solid().faces[0].corners;
+  double cx = 0, cy = 0;
+  for (const physics::Vec2 c : corners) cx += c.x, cy += c.y;
+  cx /= static_cast<double>(corners.size()), cy /= static_cast<double>(corners.size());
+  auto toward = [&](size_t k) {
+    return physics::Vec2{static_cast<int32_t>(std::lround(cx + 0.4 * (corners[k].x - cx))),
+                         static_cast<int32_t>(std::lround(cy + 0.4 * (corners[k].y - cy)))};
+  };
+  editor.document().edit("place the start and the goal", [&](stage::Level& l) {
+    l.start.face = l.goal.face = 0;
+    l.start.position = toward(0);
+    l.goal.position = toward(1);
+  });
+  editor.rebuild();
 }
 
 // The next test_N.lua free in `folder`.
@@ -248,11 +281,14 @@ int editCommand(int argc, char** argv) {
                         level.levelFile.c_str()),
            2;
   core::SystemRegistry registry = engineRegistry(Presentation::Window);
-  return editLevel(level, registry, nullptr, shotPath);
+  const int result = editLevel(level, registry, nullptr, shotPath, !newSolid.empty());
+  std::error_code error;
+  if (result != 0 && !newSolid.empty()) fs::remove_all(argument, error);  // no half-made level left behind
+  return result;
 }
 
 int editLevel(const LevelArgument& level, core::SystemRegistry& registry, core::System* shown,
-              const std::string& shotPath) {
+              const std::string& shotPath, bool newLevel) {
   const std::string scenePath = core::resolveDataPath(level.scene);
   core::Scene host;  // the editor's own scene: its window and, for a mesh, its meshes system
   std::optional<editor::Editor> editor;
@@ -262,9 +298,15 @@ int editLevel(const LevelArgument& level, core::SystemRegistry& registry, core::
     auto tags = core::sceneTags(scenePath, engineRegistry(Presentation::Headless));
     stage::Level parsed = stage::parseLevel(text, level.levelFile, tags);
     stage::Stage solid = core::levelStage(parsed, registry, host);
+    // A mesh level without a '%' line for each face (a new one: its faces were not known before
+    // the mesh was read) gets them; the file says so once saved (unsaved until then).
+    const std::string onDisk = text;
     if (parsed.faces.size() < solid.faceCount() && !parsed.solid) text = withFaces(text, solid.faceCount());
     editor::LevelDocument document(level.levelFile, text, tags);
+    document.assumeSaved(onDisk);
     editor.emplace(std::move(document), std::move(solid), std::llround(host.manifest().gravity * 65536.0));
+    if (newLevel && !parsed.solid) placeOnFaceZero(*editor);
+    if (newLevel && editor->document().modified()) editor->document().save();  // a new level is valid from the start
   } catch (const std::exception& e) {
     return std::fprintf(stderr, "platon edit: %s\n", core::visibleText(core::errorReport(e), true).c_str()), 1;
   }

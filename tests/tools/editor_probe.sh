@@ -3,10 +3,7 @@
 # (a press on nothing selects nothing), and back: pixel X Y prints the window pixel of that face's
 # point (X, Y), or "off" when a press was on another face. probe_face0 zooms out three wheel
 # notches first (the whole face in view), then sets $map; probe_face N probes face N as it is.
-probe_face0() {
-  xdotool mousemove --window "$window" 640 360 click 5 click 5 click 5
-  probe_face 0
-}
+probe_face0() { probe_face 0; }
 
 probe_face() {
   face=$1

@@ -16,7 +16,7 @@ constexpr int kMinGrid = 8, kMaxGrid = 1024;
 constexpr float kPaletteTop = 150;  // below the heads-up lines
 
 const core::Color kCursor{90, 220, 255, 255}, kSelected{255, 214, 60, 255}, kError{255, 60, 60, 255},
-    kWarning{255, 160, 40, 255}, kStart{80, 230, 120, 255}, kGoal{255, 235, 120, 255}, kPanel{20, 24, 32, 200},
+    kWarning{255, 160, 40, 255}, kStart{80, 230, 120, 255}, kGoal{255, 235, 120, 255}, kPanel{20, 24, 32, 245},
     kText{235, 235, 235, 255}, kDim{150, 155, 165, 255};
 
 physics::Vec2 whole(const FacePoint& p) {
@@ -53,10 +53,17 @@ Editor::Editor(LevelDocument document, stage::Stage solid, int64_t defaultGravit
 std::optional<FacePoint> Editor::pointAt(float x, float y) const { return pickFace(*view_, rayThrough(lens_, x, y)); }
 
 void Editor::faceHeadOn(int face) {
-  const auto& corners = solid_.faces[static_cast<size_t>(face)].corners;
-  double cx = 0, cy = 0;
-  for (const physics::Vec2 c : corners) cx += c.x, cy += c.y;
-  lookAt(face, cx / static_cast<double>(corners.size()), cy / static_cast<double>(corners.size()));
+  const stage::StageFace& f = solid_.faces[static_cast<size_t>(face)];
+  double cx = 0, cy = 0, reach = 0;
+  for (const physics::Vec2 c : f.corners) cx += c.x, cy += c.y;
+  cx /= static_cast<double>(f.corners.size()), cy /= static_cast<double>(f.corners.size());
+  for (const physics::Vec2 c : f.corners) reach = std::max(reach, std::hypot(c.x - cx, c.y - cy));
+  lookAt(face, cx, cy);
+  // Far enough that the whole face shows, its farthest corner inside the window's height (the
+  // narrower way) with a margin for the heads-up lines.
+  const double plane = (f.toWorld(cx, cy) - solid_.centre).dot(f.normal);
+  const double fit = plane + 1.25 * reach / std::tan(lens_.verticalFov / 2);
+  lens_.pose.distance = wantedPose_.distance = std::max(lens_.pose.distance, fit);
 }
 
 uint32_t Editor::currentTag() const {
@@ -166,17 +173,19 @@ Editor::Request Editor::handle(const core::WindowInput& input) {
   Request request = Request::None;
   for (const core::MouseEvent& event : input.mouse) {
     if (event.kind != core::MouseEvent::Kind::Wheel) onMove(event.x, event.y, input.shift, input.alt);
-    onMouse(event, input.shift);
+    onMouse(event, input.shift, input.alt);
   }
   onMove(input.mouseX, input.mouseY, input.shift, input.alt);
-  for (const core::KeyPress& key : input.keys) {
+  std::vector<core::KeyPress> keys = input.keys;
+  if (input.closed) keys.push_back({"Escape"});  // the window's close button: as Esc, asking first
+  for (const core::KeyPress& key : keys) {
     if (key.name == "Escape") {
       if (drag_.what == Drag::What::Draw) {
         drag_ = {};
         say("drawing cancelled");
       } else if (document_.modified() && !quitAsked_) {
         quitAsked_ = true;
-        say("unsaved edits: Esc again quits without saving them, Ctrl+S saves");
+        say("unsaved edits: Esc (or closing the window) again quits without saving them, Ctrl+S saves");
       } else {
         request = Request::Quit;
       }
@@ -192,24 +201,26 @@ Editor::Request Editor::handle(const core::WindowInput& input) {
     }
     onKey(key);
   }
-  if (input.closed) request = Request::Quit;
   return request;
 }
 
 void Editor::onKey(const core::KeyPress& key) {
   const std::string& k = key.name;
   if (key.ctrl) {
-    if ((k == "Z" && !key.shift) && document_.undo()) {
+    if (k == "Z" && !key.shift) {
+      if (!document_.undo()) return say("nothing to undo");
+      selection_.clear();  // the indices it held may name other segments now
       rebuild();
       say("undone: " + (document_.redoName()));
-    } else if ((k == "Y" || (k == "Z" && key.shift)) && document_.redo()) {
+    } else if (k == "Y" || (k == "Z" && key.shift)) {
+      if (!document_.redo()) return say("nothing to redo");
+      selection_.clear();
       rebuild();
       say("redone: " + document_.undoName());
     } else if (k == "S") {
       if (!loads_ && !key.shift) {
-        say("not saved: the level would not load (" +
-            (report_.errors.empty() ? std::string("see the check") : report_.errors[0].message) +
-            "); Ctrl+Shift+S saves it anyway");
+        say("not saved: the level would not load (Ctrl+Shift+S saves it anyway): " +
+            (report_.errors.empty() ? std::string("see the check") : report_.errors[0].message));
         return;
       }
       try {
@@ -228,6 +239,7 @@ void Editor::onKey(const core::KeyPress& key) {
       for (size_t i = 0; i < document_.level().faces[static_cast<size_t>(f)].lines.size(); ++i)
         selection_.push_back({f, static_cast<int>(i)});
       tool_ = Tool::Select;
+      say("selected the " + std::to_string(selection_.size()) + " segments of face " + std::to_string(f));
     }
     return;
   }
@@ -266,7 +278,7 @@ void Editor::onKey(const core::KeyPress& key) {
   if (k == "Delete" || k == "Backspace") deleteSelection();
 }
 
-void Editor::onMouse(const core::MouseEvent& event, bool shift) {
+void Editor::onMouse(const core::MouseEvent& event, bool shift, bool alt) {
   const float x = event.x, y = event.y;
   if (event.kind == core::MouseEvent::Kind::Wheel) return zoom(event.wheel);
   if (event.button == 2 || event.button == 3) {
@@ -311,6 +323,7 @@ void Editor::onMouse(const core::MouseEvent& event, bool shift) {
     if (nearEnd) {
       const physics::Vec2 end = endB ? l.b : l.a;
       drag_ = {Drag::What::MoveEnd, {hit->face, double(end.x), double(end.y)}, *hit, endB};
+      drag_.alone = alt;
     } else {
       const FacePoint from =
           at && at->point.face == hit->face ? at->point : FacePoint{hit->face, double(l.a.x), double(l.a.y)};
@@ -357,11 +370,18 @@ void Editor::endDrag(float x, float y) {
     }
     case Drag::What::MoveEnd:
       if (!moved) return;
+      // Every end at that point on the face moves with it (a joint stays a joint); Alt moves the
+      // dragged end alone. An end that would meet its segment's other end stays.
       apply("move an end point", [&](stage::Level& l) {
-        stage::LevelLine& line =
-            l.faces[static_cast<size_t>(drag.segment.face)].lines[static_cast<size_t>(drag.segment.index)];
-        (drag.endB ? line.b : line.a) = b;
-        if (line.a == line.b) (drag.endB ? line.b : line.a) = a;  // no segment of no length
+        auto& lines = l.faces[static_cast<size_t>(drag.segment.face)].lines;
+        for (size_t i = 0; i < lines.size(); ++i) {
+          stage::LevelLine& line = lines[i];
+          const bool dragged = static_cast<int>(i) == drag.segment.index;
+          if (!dragged && drag.alone) continue;
+          const bool moveA = dragged ? !drag.endB : line.a == a, moveB = dragged ? drag.endB : line.b == a;
+          if (moveA && line.b != b) line.a = b;
+          if (moveB && line.a != b) line.b = b;
+        }
       });
       return;
     case Drag::What::MoveSegments: {
@@ -657,6 +677,10 @@ void Editor::draw(core::DrawList& out) const {
       const stage::LevelLine& l =
           level.faces[static_cast<size_t>(drag_.segment.face)].lines[static_cast<size_t>(drag_.segment.index)];
       drawSegment(out, drag_.segment.face, drag_.endB ? l.a : b, drag_.endB ? b : l.b, 30 * unit, kSelected);
+    } else if (drag_.what == Drag::What::MoveStart || drag_.what == Drag::What::MoveGoal) {
+      const core::Place at = core::Place::overlayOnFace(solid_.part(static_cast<size_t>(dragTo_->face)));
+      const float r = drag_.what == Drag::What::MoveStart ? 96 : static_cast<float>(stage::goalHalfSide(level));
+      out.circle(at, {float(b.x), float(b.y)}, r, drag_.what == Drag::What::MoveStart ? kStart : kGoal);
     } else if (drag_.what == Drag::What::MoveSegments) {
       for (const SegmentRef s : selection_) {
         if (s.face != drag_.from.face) continue;

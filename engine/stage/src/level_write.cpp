@@ -1,6 +1,8 @@
 // Writing levels: afresh, or over the text they were read from, keeping what did not change (the
 // editor saves this way, so a designer's comments and order survive an edit).
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <sstream>
 
 #include "platon/stage/level.h"
@@ -30,10 +32,23 @@ std::string goalText(const Level& level) {
          std::to_string(level.goal.position.y);
 }
 
+// The shortest decimal the reader turns back into this many 1/65,536 (it rounds to the nearest):
+// 22938 is "0.35", not "0.350006103515625".
+std::string q16Text(int64_t q16) {
+  const double exact = static_cast<double>(q16) / 65536;
+  for (int digits = 1; digits < 17; ++digits) {
+    char text[40];
+    std::snprintf(text, sizeof text, "%.*g", digits, exact);
+    const double back = std::strtod(text, nullptr) * 65536;
+    if (static_cast<int64_t>(std::llround(back)) == q16 && std::abs(back - static_cast<double>(q16)) < 0.5)
+      return text;
+  }
+  return decimal(exact);
+}
+
 std::string faceText(const LevelFace& face) {
   if (!face.gravityQ16) return "%";
-  return "% gravity " + decimal(static_cast<double>(face.gravityQ16->x) / 65536) + " " +
-         decimal(static_cast<double>(face.gravityQ16->y) / 65536);
+  return "% gravity " + q16Text(face.gravityQ16->x) + " " + q16Text(face.gravityQ16->y);
 }
 
 std::string segmentText(const Level& level, const LevelLine& l) {
@@ -73,6 +88,13 @@ size_t valuesEnd(std::string_view body) {
   size_t end = std::min(body.find('#'), body.size());
   while (end > 0 && (body[end - 1] == ' ' || body[end - 1] == '\t' || body[end - 1] == '\r')) --end;
   return end;
+}
+
+size_t wordCount(std::string_view values) {
+  size_t words = 0;
+  for (size_t i = 0; i < values.size(); ++i)
+    if (values[i] != ' ' && values[i] != '\t' && (i == 0 || values[i - 1] == ' ' || values[i - 1] == '\t')) ++words;
+  return words;
 }
 
 enum class Role : uint8_t { Other, Solid, Start, Goal, Size, Face, Segment };
@@ -170,9 +192,13 @@ std::string writeLevel(const Level& level, std::string_view original) {
         write(line, startText(level),
               level.start == before.start && level.startMillidegrees == before.startMillidegrees);
         break;
-      case Role::Goal:
-        write(line, goalText(level), level.goal == before.goal);
+      case Role::Goal: {
+        // "x y" (two values) names the start's face: kept only while the start's face is the same
+        const std::string_view values = line.body.substr(0, valuesEnd(line.body));
+        const bool namesFace = wordCount(values) == 3;
+        write(line, goalText(level), level.goal == before.goal && (namesFace || level.start.face == before.start.face));
         break;
+      }
       case Role::Size:
         write(line, std::to_string(level.size), level.size == before.size);
         break;

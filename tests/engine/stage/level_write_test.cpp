@@ -79,6 +79,21 @@ TEST(LevelWrite, AnUneditedLevelComesBackByteForByte) {
     EXPECT_EQ(stage::writeLevel(stage::parseLevel(text, "t"), text), text);
 }
 
+// A goal written "x y" is on the start's face: moving the start to another face writes the goal's
+// face out, so that it stays where it was. A face's gravity is written as briefly as reads back.
+TEST(LevelWrite, AGoalWithoutItsFaceStaysWhenTheStartMovesAndGravityIsShort) {
+  const std::string text = "HEXAHEDRON\n0 600 700  # start\n3600 1500  # goal, on the start's face\n4096\n%\n%\n%\n%\n%\n%\n";
+  stage::Level level = stage::parseLevel(text, "t");
+  level.start.face = 1;
+  const std::string written = stage::writeLevel(level, text);
+  EXPECT_EQ(stage::parseLevel(written, "t"), level) << written;
+  EXPECT_NE(written.find("0 3600 1500  # goal, on the start's face"), std::string::npos) << written;
+  level.faces[2].gravityQ16 = physics::Vec2w{22938, -7};
+  const std::string again = stage::writeLevel(level, written);
+  EXPECT_NE(again.find("% gravity 0.35 -0.0001"), std::string::npos) << again;
+  EXPECT_EQ(stage::parseLevel(again, "t"), level);
+}
+
 // Random edits of every kind on every shipped level: the written text reads back as the edit, every
 // comment line and every untouched segment's line is still there as it was, and a changed line
 // keeps its comment.

@@ -118,10 +118,11 @@ class Editor {
     bool endB = false;
     float mouseX = 0, mouseY = 0;  // the pointer when it began (a click is a drag that did not move)
     bool chain = false;            // Draw: a click began it; the next click ends the segment
+    bool alone = false;            // MoveEnd: Alt held: the dragged end only, not the ends joined to it
   };
 
   void onKey(const core::KeyPress& key);
-  void onMouse(const core::MouseEvent& event, bool shift);
+  void onMouse(const core::MouseEvent& event, bool shift, bool alt);
   void onMove(float x, float y, bool shift, bool alt);
   void endDrag(float x, float y);
   bool apply(const std::string& name, const std::function<void(stage::Level&)>& change);

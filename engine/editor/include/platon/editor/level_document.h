@@ -28,6 +28,9 @@ class LevelDocument {
   const std::shared_ptr<const stage::TagTable>& tags() const { return tags_; }
   // Whether the text differs from what was last read or saved.
   bool modified() const { return text_ != saved_; }
+  // What the file holds when the text given was completed on reading (a mesh level's missing face
+  // lines): the document counts as modified until saved.
+  void assumeSaved(std::string onDisk) { saved_ = std::move(onDisk); }
 
   // Makes one edit, named for the undo list ("draw a segment"): `change` edits a copy of the level;
   // the copy is written and read back. Returns false, changing nothing, when the change did nothing.
