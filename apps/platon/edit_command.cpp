@@ -283,8 +283,8 @@ int editCommand(int argc, char** argv) {
   core::SystemRegistry registry = engineRegistry(Presentation::Window);
   const int result = editLevel(level, registry, nullptr, shotPath, !newSolid.empty());
   std::error_code error;
-  if (result != 0 && !newSolid.empty()) fs::remove_all(argument, error);  // no half-made level left behind
-  return result;
+  if (result == 1 && !newSolid.empty()) fs::remove_all(argument, error);  // no half-made level left behind
+  return result == kWindowClosed ? 0 : result;
 }
 
 int editLevel(const LevelArgument& level, core::SystemRegistry& registry, core::System* shown,
@@ -325,6 +325,7 @@ int editLevel(const LevelArgument& level, core::SystemRegistry& registry, core::
   std::fflush(stdout);
   Session session{scenePath, registry, *window, *display, *editor};
   int frames = 0;
+  bool closed = false;
   for (;;) {
     const core::WindowInput input = display->pollEvents();
     const editor::Editor::Request request = editor->handle(input);
@@ -339,7 +340,10 @@ int editLevel(const LevelArgument& level, core::SystemRegistry& registry, core::
     for (const std::string& message : editor->takeMessages())
       std::printf("editor: %s\n", core::visibleText(message).c_str());
     std::fflush(stdout);
-    if (request == editor::Editor::Request::Quit) break;
+    if (request == editor::Editor::Request::Quit) {
+      closed = input.closed;  // the window closed (or SIGTERM, which SDL turns into the same): all quit
+      break;
+    }
     if (request == editor::Editor::Request::Play) playFromCursor(session);
     core::DrawList list(true);
     editor->draw(list);
@@ -352,7 +356,7 @@ int editLevel(const LevelArgument& level, core::SystemRegistry& registry, core::
   }
   if (editor->document().modified())
     std::printf("quit with unsaved edits (not written to %s)\n", level.levelFile.c_str());
-  return 0;
+  return closed ? kWindowClosed : 0;
 }
 
 }  // namespace platon::app

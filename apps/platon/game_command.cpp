@@ -167,7 +167,9 @@ class Game {
     std::printf("editing %s (F4)\n", levels_[level_].folder.c_str());
     std::fflush(stdout);
     try {
-      editLevel(levelArgument(levels_[level_].scene), registry_, live_->scene().findSystem("rendering"));
+      if (editLevel(levelArgument(levels_[level_].scene), registry_, live_->scene().findSystem("rendering")) ==
+          kWindowClosed)
+        quit_ = true;
     } catch (const std::exception& e) {
       notice_ = e.what();
     }

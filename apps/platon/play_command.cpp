@@ -275,7 +275,8 @@ int playCommand(int argc, char** argv) {
         std::printf("editing %s (F4)\n", scenePath.c_str());
         std::fflush(stdout);
         try {
-          editLevel(levelArgument(scenePath), registry, live->scene().findSystem("rendering"));
+          if (editLevel(levelArgument(scenePath), registry, live->scene().findSystem("rendering")) == kWindowClosed)
+            break;
         } catch (const std::exception& e) {
           std::printf("%s\n", e.what());
         }
