@@ -184,8 +184,9 @@ int main(int argc, char** argv) {
       std::printf("| %s | %d | %s | %s | %s | %s | %.2f | %.2f |\n", name(scene), n, p.show().c_str(), t.show().c_str(),
                   a.show().c_str(), b.show().c_str(), p.median / a.median, p.median / b.median);
     }
-  std::printf("\nPlaton keeps a resting body's answer (World::RestMode::Kept, the default); \"tested\" is the same world\n"
-              "testing every body every frame (RestMode::Tested): each run's final state hashes are equal.\n"
-              "Goals: resting and stacks at 100 and 1,000 <= 1.0x Box2D with sleeping on; walking 1,000 <= 0.5x.\n");
+  std::printf(
+      "\nPlaton keeps a resting body's answer (World::RestMode::Kept, the default); \"tested\" is the same world\n"
+      "testing every body every frame (RestMode::Tested): each run's final state hashes are equal.\n"
+      "Goals: resting and stacks at 100 and 1,000 <= 1.0x Box2D with sleeping on; walking 1,000 <= 0.5x.\n");
   return 0;
 }

@@ -104,8 +104,8 @@ struct Entity {
   // near it (an entity moving near it clears this, world.cpp's wake), its anchor part's gravity and
   // the platforms of its parts (compared below), the rules' answers (setRules, refreshPierce).
   bool resting = false;
-  Vec2w restGravityQ16;              // the anchor part's gravity when the answer was found
-  uint64_t restPlatformEpoch = 0;    // the platforms of its parts had moved this often
+  Vec2w restGravityQ16;               // the anchor part's gravity when the answer was found
+  uint64_t restPlatformEpoch = 0;     // the platforms of its parts had moved this often
   std::vector<Contact> restContacts;  // the contacts that held it
 
   Instance* instanceIn(MapPartId part) {

@@ -8,8 +8,8 @@
 #include <memory>
 #include <optional>
 #include <span>
-#include <utility>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "contact_normal.h"

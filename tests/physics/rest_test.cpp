@@ -25,7 +25,9 @@ constexpr uint32_t kDoor = 7;
 // Doors (lines tagged kDoor) pass while `open`.
 struct DoorRules : Rules {
   bool open = false;
-  bool pierce(EntityId, const LineRef& line) override { return line.kind == LineKind::Warp || (open && line.tag == kDoor); }
+  bool pierce(EntityId, const LineRef& line) override {
+    return line.kind == LineKind::Warp || (open && line.tag == kDoor);
+  }
 };
 
 struct Outcome {
@@ -69,8 +71,8 @@ Outcome runScene(uint64_t seed, World::RestMode mode, int frames) {
   const EntityFilter crate{1, 1, 0, true}, rock{1, 1, 0, false};
   std::vector<EntityId> ids;
   auto add = [&](MapPartId part, Vec2 at) {
-    const EntityId id = world.createEntity(platon::testing::randomConvex(r, between(r, 20, 90),
-                                                                          platon::testing::Turn::MaybeTurned));
+    const EntityId id =
+        world.createEntity(platon::testing::randomConvex(r, between(r, 20, 90), platon::testing::Turn::MaybeTurned));
     world.setFilter(id, r() % 2 ? crate : rock);
     try {
       world.insert(id, part, at, static_cast<Angle>(r() % 4 == 0 ? r() : 0));
@@ -87,14 +89,15 @@ Outcome runScene(uint64_t seed, World::RestMode mode, int frames) {
     const Vec2 c{between(r, -2500, 2500), between(r, 300, 3000)};
     const int32_t hw = between(r, 60, 300);
     try {
-      platforms.push_back(world.createPlatform(1 + i, std::vector<PlatformLine>{{{{c.x - hw, c.y}, {c.x + hw, c.y}}, 0, LineKind::Solid}}));
+      platforms.push_back(world.createPlatform(
+          1 + i, std::vector<PlatformLine>{{{{c.x - hw, c.y}, {c.x + hw, c.y}}, 0, LineKind::Solid}}));
     } catch (const Error&) {}
   }
   Outcome out;
   for (int f = 0; f < frames; ++f) {
     // The disturbances, each now and then (after a quiet start, so that bodies come to rest).
     const uint64_t roll = r() % 3000;  // about one disturbance in 50 frames
-    if (f % 90 == 0)  // platforms move in bursts
+    if (f % 90 == 0)                   // platforms move in bursts
       for (const PlatformId p : platforms) world.setPlatformMotion(p, {0, 0});
     auto anyBody = [&]() -> std::optional<EntityId> {
       if (ids.empty()) return std::nullopt;
@@ -163,7 +166,8 @@ TEST(Rest, AKeptAnswerIsNeverContradictedAndStatesMatchAWorldThatTestsEveryFrame
     EXPECT_EQ(tested.kept, 0u);
     ASSERT_EQ(keptRun.hashes.size(), tested.hashes.size());
     for (size_t f = 0; f < tested.hashes.size(); ++f)
-      ASSERT_EQ(keptRun.hashes[f], tested.hashes[f]) << "frame " << f + 1 << " differs from a world that tests every body";
+      ASSERT_EQ(keptRun.hashes[f], tested.hashes[f])
+          << "frame " << f + 1 << " differs from a world that tests every body";
     EXPECT_EQ(checked.hashes, tested.hashes);
     kept += keptRun.kept;
   }

@@ -40,8 +40,7 @@ std::string q16Text(int64_t q16) {
     char text[40];
     std::snprintf(text, sizeof text, "%.*g", digits, exact);
     const double back = std::strtod(text, nullptr) * 65536;
-    if (static_cast<int64_t>(std::llround(back)) == q16 && std::abs(back - static_cast<double>(q16)) < 0.5)
-      return text;
+    if (static_cast<int64_t>(std::llround(back)) == q16 && std::abs(back - static_cast<double>(q16)) < 0.5) return text;
   }
   return decimal(exact);
 }

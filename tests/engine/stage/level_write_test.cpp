@@ -82,7 +82,8 @@ TEST(LevelWrite, AnUneditedLevelComesBackByteForByte) {
 // A goal written "x y" is on the start's face: moving the start to another face writes the goal's
 // face out, so that it stays where it was. A face's gravity is written as briefly as reads back.
 TEST(LevelWrite, AGoalWithoutItsFaceStaysWhenTheStartMovesAndGravityIsShort) {
-  const std::string text = "HEXAHEDRON\n0 600 700  # start\n3600 1500  # goal, on the start's face\n4096\n%\n%\n%\n%\n%\n%\n";
+  const std::string text =
+      "HEXAHEDRON\n0 600 700  # start\n3600 1500  # goal, on the start's face\n4096\n%\n%\n%\n%\n%\n%\n";
   stage::Level level = stage::parseLevel(text, "t");
   level.start.face = 1;
   const std::string written = stage::writeLevel(level, text);
