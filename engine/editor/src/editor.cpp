@@ -139,6 +139,17 @@ void Editor::rebuild() {
   };
   for (const stage::Finding& f : report_.errors) mark(f, true);
   for (const stage::Finding& f : report_.warnings) mark(f, false);
+  // "faces 2, 3, 4 have no lines" is one finding at the first of them: each is outlined.
+  for (const stage::Finding& w : report_.warnings) {
+    if (w.message.find("no lines") == std::string::npos) continue;
+    for (size_t f = 0; f < level.faces.size(); ++f) {
+      const int face = static_cast<int>(f);
+      if (!level.faces[f].lines.empty() || face == level.start.face || face == level.goal.face) continue;
+      if (std::none_of(markers_.begin(), markers_.end(),
+                       [&](const Marker& m) { return m.on == Marker::On::Face && m.face == face; }))
+        markers_.push_back({Marker::On::Face, {}, face, false, w.message});
+    }
+  }
   // The check stops at the first segment off its face (the level would not load); every such
   // segment (a file edited by hand) is marked, so all of them show at once.
   for (size_t f = 0; f < level.faces.size(); ++f)

@@ -278,6 +278,9 @@ TEST(Editor, ABrokenEditIsShownAndItsSaveRefusedAndASaveKeepsComments) {
   EXPECT_NE(readFile(path), original);
   d.key("Z", true);  // the start back where it was
   EXPECT_TRUE(e.loads());
+  size_t empty = 0;  // "faces 2, 3, 4, 5 have no lines": one finding, each face outlined
+  for (const editor::Marker& m : e.markers()) empty += m.on == editor::Marker::On::Face ? 1 : 0;
+  EXPECT_EQ(empty, 4u);
   d.key("Home");
   d.drag(pixelOf(e, 0, 2400, 2000), pixelOf(e, 0, 3400, 2200));
   d.key("S", true);
