@@ -110,9 +110,7 @@ std::string withFaces(std::string text, size_t faces) {
 // middle and its first two corners.
 void placeOnFaceZero(editor::Editor& editor) {
   const auto& corners = editor.solid().faces[0].corners;
-  double cx = 0, cy = 0;
-  for (const physics::Vec2 c : corners) cx += c.x, cy += c.y;
-  cx /= static_cast<double>(corners.size()), cy /= static_cast<double>(corners.size());
+  const auto [_, cx, cy] = editor::faceCentre(editor.solid(), 0);
   auto toward = [&](size_t k) {
     return physics::Vec2{static_cast<int32_t>(std::lround(cx + 0.4 * (corners[k].x - cx))),
                          static_cast<int32_t>(std::lround(cy + 0.4 * (corners[k].y - cy)))};

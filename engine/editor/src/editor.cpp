@@ -54,9 +54,8 @@ std::optional<FacePoint> Editor::pointAt(float x, float y) const { return pickFa
 
 void Editor::faceHeadOn(int face) {
   const stage::StageFace& f = solid_.faces[static_cast<size_t>(face)];
-  double cx = 0, cy = 0, reach = 0;
-  for (const physics::Vec2 c : f.corners) cx += c.x, cy += c.y;
-  cx /= static_cast<double>(f.corners.size()), cy /= static_cast<double>(f.corners.size());
+  const auto [_, cx, cy] = faceCentre(solid_, face);
+  double reach = 0;
   for (const physics::Vec2 c : f.corners) reach = std::max(reach, std::hypot(c.x - cx, c.y - cy));
   lookAt(face, cx, cy);
   // Far enough that the whole face shows, its farthest corner inside the window's height (the

@@ -20,11 +20,16 @@ bool insideExactly(const std::vector<physics::Vec2>& corners, physics::Vec2 p) {
   return insideExactly(corners, int64_t{p.x}, int64_t{p.y});
 }
 
+FacePoint faceCentre(const stage::Stage& solid, int face) {
+  const std::vector<physics::Vec2>& corners = solid.faces.at(static_cast<size_t>(face)).corners;
+  double x = 0, y = 0;
+  for (const physics::Vec2 c : corners) x += c.x, y += c.y;
+  return {face, x / static_cast<double>(corners.size()), y / static_cast<double>(corners.size())};
+}
+
 FacePoint wholeInside(const stage::Stage& solid, int face, double x, double y) {
   const std::vector<physics::Vec2>& corners = solid.faces.at(static_cast<size_t>(face)).corners;
-  double cx = 0, cy = 0;
-  for (const physics::Vec2 c : corners) cx += c.x, cy += c.y;
-  cx /= static_cast<double>(corners.size()), cy /= static_cast<double>(corners.size());
+  const auto [_, cx, cy] = faceCentre(solid, face);
   // Toward the face's centre until the rounded point is inside: the first such point on the way
   // (bisection on how far; the centre itself is inside a convex face).
   auto rounded = [&](double t) { return std::pair{std::llround(x + t * (cx - x)), std::llround(y + t * (cy - y))}; };

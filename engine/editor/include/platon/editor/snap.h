@@ -32,6 +32,9 @@ Snapped snap(const FacePoint& raw, const stage::Level& level, const stage::Stage
 // reader counts inside: on the border is inside.
 bool insideExactly(const std::vector<physics::Vec2>& corners, physics::Vec2 p);
 
+// The mean of face `face`'s corners: a point inside it, whatever its shape.
+FacePoint faceCentre(const stage::Stage& solid, int face);
+
 // The whole-unit point nearest (x, y) that lies inside face `face` (exactly, as the level
 // reader's check counts inside: on the border is inside).
 FacePoint wholeInside(const stage::Stage& solid, int face, double x, double y);
