@@ -110,7 +110,8 @@ std::string withFaces(std::string text, size_t faces) {
 // middle and its first two corners.
 void placeOnFaceZero(editor::Editor& editor) {
   const auto& corners = editor.solid().faces[0].corners;
-  const auto [_, cx, cy] = editor::faceCentre(editor.solid(), 0);
+  const editor::FacePoint centre = editor::faceCentre(editor.solid(), 0);
+  const double cx = centre.x, cy = centre.y;
   auto toward = [&](size_t k) {
     return physics::Vec2{static_cast<int32_t>(std::lround(cx + 0.4 * (corners[k].x - cx))),
                          static_cast<int32_t>(std::lround(cy + 0.4 * (corners[k].y - cy)))};

@@ -54,7 +54,8 @@ std::optional<FacePoint> Editor::pointAt(float x, float y) const { return pickFa
 
 void Editor::faceHeadOn(int face) {
   const stage::StageFace& f = solid_.faces[static_cast<size_t>(face)];
-  const auto [_, cx, cy] = faceCentre(solid_, face);
+  const FacePoint centre = faceCentre(solid_, face);
+  const double cx = centre.x, cy = centre.y;
   double reach = 0;
   for (const physics::Vec2 c : f.corners) reach = std::max(reach, std::hypot(c.x - cx, c.y - cy));
   lookAt(face, cx, cy);

@@ -29,7 +29,8 @@ FacePoint faceCentre(const stage::Stage& solid, int face) {
 
 FacePoint wholeInside(const stage::Stage& solid, int face, double x, double y) {
   const std::vector<physics::Vec2>& corners = solid.faces.at(static_cast<size_t>(face)).corners;
-  const auto [_, cx, cy] = faceCentre(solid, face);
+  const FacePoint centre = faceCentre(solid, face);
+  const double cx = centre.x, cy = centre.y;
   // Toward the face's centre until the rounded point is inside: the first such point on the way
   // (bisection on how far; the centre itself is inside a convex face).
   auto rounded = [&](double t) { return std::pair{std::llround(x + t * (cx - x)), std::llround(y + t * (cy - y))}; };
