@@ -53,14 +53,12 @@ bool WorldImpl::blocks(const Entity& e, Instance& inst, size_t k, std::span<cons
 }
 
 void WorldImpl::coverMotion(Instance& inst, Vec2w motion, int64_t slack) {
-  Box b{INT64_MAX, INT64_MAX, INT64_MIN, INT64_MIN};
-  for (const Vec2 v : inst.shape) {
-    const int64_t x = int64_t{inst.position.x} + v.x, y = int64_t{inst.position.y} + v.y;
-    b.x0 = std::min({b.x0, x, x + motion.x});
-    b.x1 = std::max({b.x1, x, x + motion.x});
-    b.y0 = std::min({b.y0, y, y + motion.y});
-    b.y1 = std::max({b.y1, y, y + motion.y});
-  }
+  int32_t x0 = INT32_MAX, y0 = INT32_MAX, x1 = INT32_MIN, y1 = INT32_MIN;  // the shape's box
+  for (const Vec2 v : inst.shape)
+    x0 = std::min(x0, v.x), x1 = std::max(x1, v.x), y0 = std::min(y0, v.y), y1 = std::max(y1, v.y);
+  const int64_t px = inst.position.x, py = inst.position.y;
+  Box b{px + x0 + std::min<int64_t>(motion.x, 0), py + y0 + std::min<int64_t>(motion.y, 0),
+        px + x1 + std::max<int64_t>(motion.x, 0), py + y1 + std::max<int64_t>(motion.y, 0)};
   // One unit of margin: points on the box edge round into the next cell's range.
   b.x0 -= 1 + slack, b.y0 -= 1 + slack, b.x1 += 1 + slack, b.y1 += 1 + slack;
   const Grid& grid = part(inst.part).grid();

@@ -12,6 +12,9 @@ namespace platon::physics {
 inline Vec2w removeInto(Vec2w v, Vec2w n) {
   const i128 vn = dot128(v, n);
   if (vn >= 0) return v;
+  // A floor, ceiling or wall: the exact result is whole (what the search below finds, cheaply).
+  if (n.x == 0) return {v.x, 0};
+  if (n.y == 0) return {0, v.y};
   const i128 nn = dot128(n, n);  // the exact result is (v nn - vn n) / nn, component by component
   const i128 ex = i128{v.x} * nn - vn * n.x, ey = i128{v.y} * nn - vn * n.y;
   const i128 fx = floorDiv(ex, nn), fy = floorDiv(ey, nn);
@@ -37,6 +40,10 @@ inline Vec2w removeIntoCarrying(Vec2w v, Vec2w n, Vec2w& carryQ17) {
   const Vec2w kept = removeInto(v, n);
   const i128 vn = dot128(v, n);
   if (vn >= 0) return kept;
+  if (n.x == 0 || n.y == 0) {  // exact: nothing left out
+    carryQ17 = {};
+    return kept;
+  }
   const i128 nn = dot128(n, n);
   auto left = [&](int64_t vk, int64_t nk, int64_t keptk) {
     const i128 exactQ17 = i128{vk} * kQ17 - roundDiv(vn * nk * kQ17, nn);
@@ -48,6 +55,8 @@ inline Vec2w removeIntoCarrying(Vec2w v, Vec2w n, Vec2w& carryQ17) {
 
 // v minus its component along n, to the nearest unit of v's scale.
 inline Vec2w withoutComponent(Vec2w v, Vec2w n) {
+  if (n.x == 0 && n.y != 0) return {v.x, 0};  // exact, as below
+  if (n.y == 0 && n.x != 0) return {0, v.y};
   const i128 vn = dot128(v, n), nn = dot128(n, n);
   return {v.x - static_cast<int64_t>(roundDiv(vn * n.x, nn)), v.y - static_cast<int64_t>(roundDiv(vn * n.y, nn))};
 }

@@ -153,7 +153,7 @@ class SubMove {
       boundConstraints(verts_[i], bounds);
       for (const Constraint& c : bounds) {
         const int64_t rate = dot(c.c, moves_[i]);
-        if (rate <= 0) continue;
+        if (rate <= 0 || rate <= c.slack) continue;  // not reached within the frame (t = slack / rate >= 1)
         const Fraction when{c.slack, rate};
         if (hit_.improvedBy(when, HitKind::Bound, i, kWorldBoundLine))
           hit_ = {HitKind::Bound, when, i, kWorldBoundLine, {}, c};
@@ -191,48 +191,49 @@ class SubMove {
     const MapPart& part = w_.part(inst.part);
     const auto lines = inst.region.lines();
     const Box box = sweptBox(verts_[i], moves_[i]);
-    std::vector<LineIndex>& touchingLines = w_.scratch.touchingLines;
+    // Each touching line's normals, found once; then added in line index order, so the choice never
+    // depends on the region's order.
+    std::vector<WorldImpl::TouchingLine>& touchingLines = w_.scratch.touchingLines;
     std::vector<Vec2w>& normals = w_.scratch.lineNormals;
     touchingLines.clear();
+    normals.clear();
+    auto touches = [&](LineIndex line, const Segment& seg) {
+      const uint32_t begin = static_cast<uint32_t>(normals.size());
+      if (touchingNormals(verts_[i], moves_[i], hit_.t, seg, normals))
+        touchingLines.push_back({line, begin, static_cast<uint32_t>(normals.size())});
+    };
     for (size_t k = 0; k < lines.size(); ++k) {
       const Segment& seg = part.segments()[lines[k]];
-      if (outside(seg, box) || !w_.blocks(e_, inst, k, verts_[i])) continue;
-      normals.clear();
-      if (touchingNormals(verts_[i], moves_[i], hit_.t, seg, normals)) touchingLines.push_back(lines[k]);
+      if (!outside(seg, box) && w_.blocks(e_, inst, k, verts_[i])) touches(lines[k], seg);
     }
     w_.forEachPlatformLine(inst.part, box, [&](const PlatformLine& l, LineIndex key) {
-      if (l.kind == LineKind::OneWay && !wholyInFront(verts_[i], l.segment)) return;
-      normals.clear();
-      if (touchingNormals(verts_[i], moves_[i], hit_.t, l.segment, normals)) touchingLines.push_back(key);
+      if (l.kind != LineKind::OneWay || wholyInFront(verts_[i], l.segment)) touches(key, l.segment);
     });
-    // The lines in index order, so the choice never depends on the region's order.
-    std::sort(touchingLines.begin(), touchingLines.end());
+    std::sort(touchingLines.begin(), touchingLines.end(),
+              [](const WorldImpl::TouchingLine& a, const WorldImpl::TouchingLine& b) { return a.key < b.key; });
     OpenDirections& open = w_.scratch.open;
     open.clear();
-    for (const LineIndex line : touchingLines) {
-      normals.clear();
-      touchingNormals(verts_[i], moves_[i], hit_.t, w_.segmentOf(part, line), normals);
+    for (const WorldImpl::TouchingLine& t : touchingLines) {
       open.beginLine();
-      for (const Vec2w n : normals) open.addNormal(n);
+      for (uint32_t k = t.begin; k < t.end; ++k) open.addNormal(normals[k]);
     }
     // Entities touched at that instant are obstacles too (in slot order: the index's order is not
     // part of the result).
-    std::vector<uint32_t> touchingEntities;
     std::vector<Vec2>& other = w_.scratch.probe;
+    touchingLines.clear();  // now the entities' slots
     // One that can be pushed closes nothing unless it is the one met: sliding into it pushes it.
     w_.forEachSolidNear(e_, inst.part, box, [&](const Entity& o, const Instance& oi) {
       if (o.filter.pushable && !(hit_.kind == HitKind::Entity && hit_.otherSlot == o.id.index)) return;
       worldVertices(oi, other);
-      normals.clear();
-      if (touchingNormals(verts_[i], moves_[i], hit_.t, other, normals)) touchingEntities.push_back(o.id.index);
+      const uint32_t begin = static_cast<uint32_t>(normals.size());
+      if (touchingNormals(verts_[i], moves_[i], hit_.t, other, normals))
+        touchingLines.push_back({o.id.index, begin, static_cast<uint32_t>(normals.size())});
     });
-    std::sort(touchingEntities.begin(), touchingEntities.end());
-    for (const uint32_t slot : touchingEntities) {
-      worldVertices(*w_.slots[slot].entity->instanceIn(inst.part), other);
-      normals.clear();
-      touchingNormals(verts_[i], moves_[i], hit_.t, other, normals);
+    std::sort(touchingLines.begin(), touchingLines.end(),
+              [](const WorldImpl::TouchingLine& a, const WorldImpl::TouchingLine& b) { return a.key < b.key; });
+    for (const WorldImpl::TouchingLine& t : touchingLines) {
       open.beginLine();
-      for (const Vec2w n : normals) open.addNormal(n);
+      for (uint32_t k = t.begin; k < t.end; ++k) open.addNormal(normals[k]);
     }
     // Which way it wants to go: its exact motion (a copy's integer step is the anchor's turned and
     // rounded, and may point straight into a floor the exact motion slides along).
@@ -370,7 +371,10 @@ class SubMove {
       if (i > 0) closeGap(i);
     }
     move_.motion = move_.motion - steps_[0];
-    move_.timeLeftQ30 -= static_cast<int64_t>(floorDiv(i128{move_.timeLeftQ30} * t_.num, t_.den));
+    if (t_.num == t_.den)  // the whole rest of the frame (as the division below, without it)
+      move_.timeLeftQ30 = 0;
+    else if (t_.num != 0)
+      move_.timeLeftQ30 -= static_cast<int64_t>(floorDiv(i128{move_.timeLeftQ30} * t_.num, t_.den));
   }
 
   // 5. Pierce events along the way; a warp reached creates the instance on the other side; the warp
@@ -436,8 +440,8 @@ class SubMove {
       // then acts as the line lets it (a body that slides off a floor onto a rise slows on the rise
       // for the part of the frame it spends there, not for the whole frame nor not at all).
       auto forTimeLeft = [&](Vec2w g) {
-        return Vec2w{static_cast<int64_t>(floorDiv(i128{g.x} * move_.timeLeftQ30, i128{1} << kQ30Bits)),
-                     static_cast<int64_t>(floorDiv(i128{g.y} * move_.timeLeftQ30, i128{1} << kQ30Bits))};
+        return Vec2w{static_cast<int64_t>((i128{g.x} * move_.timeLeftQ30) >> kQ30Bits),  // floor division
+                     static_cast<int64_t>((i128{g.y} * move_.timeLeftQ30) >> kQ30Bits)};
       };
       const Vec2w atContact = e_.velocityQ16 - forTimeLeft(move_.actingGravityQ16);
       move_.actingGravityQ16 = removeInto(move_.gravityQ16, normal);
@@ -678,8 +682,8 @@ bool WorldImpl::restOnPartLines(Entity& e, Instance& inst, const std::vector<Vec
     // A copy sits where rounding put it, and may meet a line's end edge-on where the original
     // glides along it; so may any instance at a seam, the end of a line cut by a face edge. The
     // slide lifts them off (liftAtSeam); for rest, such a line counts by its own side only.
-    bool ownSide = false;
-    for (const Vec2w n : normals) ownSide = ownSide || dot128(n, seg.b - seg.a) == 0;
+    const bool ownSide =
+        std::any_of(normals.begin(), normals.end(), [&](Vec2w n) { return dot128(n, seg.b - seg.a) == 0; });
     if (&inst != &e.instances[0] ||
         (!ownSide && (nearWarpLine(*this, e, inst, seg.a) || nearWarpLine(*this, e, inst, seg.b)))) {
       const Vec2w d = seg.b - seg.a;

@@ -61,6 +61,7 @@ bool overlapsInterior(std::span<const Vec2> poly, std::span<const Vec2> other) {
 
 Vec2w roundedStep(Vec2w m, Fraction t, const Constraint* keep) {
   if (t == Fraction::one()) return m;
+  if (t.num == 0) return {};  // as below, without dividing (a hit where it stands is common)
   auto one = [&](int64_t mk, int64_t ck) {
     const i128 q = i128{t.num} * mk;
     const bool down = keep && ck != 0 ? ck > 0 : mk >= 0;
@@ -99,6 +100,7 @@ struct KeyedPoint {
 };
 
 Vec2 movedVertex(Vec2 w, Vec2w motion, Fraction t) {
+  if (t.num == 0) return w;  // a contact where it stands (as below, without dividing)
   return {static_cast<int32_t>(w.x + roundDiv(i128{t.num} * motion.x, t.den)),
           static_cast<int32_t>(w.y + roundDiv(i128{t.num} * motion.y, t.den))};
 }

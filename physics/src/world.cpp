@@ -13,17 +13,7 @@ namespace platon::physics {
 
 // --- WorldImpl: lookups and checks ---
 
-const MapPart* WorldImpl::findPart(MapPartId id) const {
-  auto it = std::lower_bound(partIndex.begin(), partIndex.end(), id,
-                             [](const MapPart* p, MapPartId v) { return p->id() < v; });
-  return it != partIndex.end() && (*it)->id() == id ? *it : nullptr;
-}
-
-const MapPart& WorldImpl::part(MapPartId id) const {
-  const MapPart* p = findPart(id);
-  if (!p) throw Error("map part " + std::to_string(id) + " does not exist");
-  return *p;
-}
+void WorldImpl::throwNoPart(MapPartId id) { throw Error("map part " + std::to_string(id) + " does not exist"); }
 
 const Entity& WorldImpl::entity(EntityId id) const {
   if (id.index >= slots.size() || !slots[id.index].entity || slots[id.index].generation != id.generation)

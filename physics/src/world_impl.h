@@ -3,6 +3,7 @@
 // (regions, free places, first blocking line), step.cpp (one entity's frame: the slide),
 // rotation.cpp, warps.cpp (instances across warp edges), pierce_events.cpp, state_hash.cpp.
 #pragma once
+#include <algorithm>
 #include <deque>
 #include <exception>
 #include <memory>
@@ -110,6 +111,12 @@ struct WorldImpl {
   void wakeAround(const Entity& e);
   bool keepsRest(const Entity& e) const;
   uint64_t platformEpochOf(const Entity& e) const;
+  // A line (or an entity, by its slot) that a sub-move's hit touches, and its normals' range in
+  // Scratch::lineNormals.
+  struct TouchingLine {
+    uint32_t key;
+    uint32_t begin, end;
+  };
   // Per-frame buffers, kept to avoid allocating on every step (solve is not reentrant).
   struct Scratch {
     std::vector<std::vector<Vec2>> verts;
@@ -117,15 +124,26 @@ struct WorldImpl {
     std::vector<uint8_t> pierceNear;
     std::vector<Vec2> now, probe;
     std::vector<Vec2> other;  // another entity's vertices, in the innermost loops (never held across calls)
-    std::vector<LineIndex> touchingLines;
+    std::vector<TouchingLine> touchingLines;
     std::vector<Vec2w> lineNormals;
     std::vector<Contact> arrived;
     OpenDirections open;
   } scratch;
 
   // world.cpp
-  const MapPart* findPart(MapPartId id) const;
-  const MapPart& part(MapPartId id) const;
+  // Inline: the slide asks for an instance's part many times a sub-move.
+  const MapPart* findPart(MapPartId id) const {
+    auto it = std::lower_bound(partIndex.begin(), partIndex.end(), id,
+                               [](const MapPart* p, MapPartId v) { return p->id() < v; });
+    return it != partIndex.end() && (*it)->id() == id ? *it : nullptr;
+  }
+  const MapPart& part(MapPartId id) const {
+    const MapPart* p = findPart(id);
+    if (!p) [[unlikely]]
+      throwNoPart(id);
+    return *p;
+  }
+  [[noreturn]] static void throwNoPart(MapPartId id);
   Entity& entity(EntityId id);
   const Entity& entity(EntityId id) const;
   void checkUnlocked(const char* what) const;
