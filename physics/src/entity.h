@@ -98,6 +98,7 @@ struct Entity {
   std::vector<WarpLink> links;
   std::vector<Contact> contacts;  // solid contacts of the latest solve(), in the order they happened
   uint32_t work = 0;              // lines and bodies its moves were tested against in the latest solve()
+  uint64_t steppedFrame = 0;      // the world frame it last stepped in (or began to)
   // At rest and undisturbed (world.h, "rest costs nothing"): its rest test's answer is known until
   // something that could change it happens, so the frame keeps that answer instead of asking again.
   // What it depends on: its own state (the calls that set it clear this), every entity and line

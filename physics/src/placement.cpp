@@ -53,14 +53,16 @@ bool WorldImpl::blocks(const Entity& e, Instance& inst, size_t k, std::span<cons
 }
 
 void WorldImpl::coverMotion(Instance& inst, Vec2w motion, int64_t slack) {
-  int32_t x0 = INT32_MAX, y0 = INT32_MAX, x1 = INT32_MIN, y1 = INT32_MIN;  // the shape's box
-  for (const Vec2 v : inst.shape)
-    x0 = std::min(x0, v.x), x1 = std::max(x1, v.x), y0 = std::min(y0, v.y), y1 = std::max(y1, v.y);
   const int64_t px = inst.position.x, py = inst.position.y;
-  Box b{px + x0 + std::min<int64_t>(motion.x, 0), py + y0 + std::min<int64_t>(motion.y, 0),
-        px + x1 + std::max<int64_t>(motion.x, 0), py + y1 + std::max<int64_t>(motion.y, 0)};
+  coverBox(inst, {px + inst.low.x + std::min<int64_t>(motion.x, 0) - slack,
+                  py + inst.low.y + std::min<int64_t>(motion.y, 0) - slack,
+                  px + inst.high.x + std::max<int64_t>(motion.x, 0) + slack,
+                  py + inst.high.y + std::max<int64_t>(motion.y, 0) + slack});
+}
+
+void WorldImpl::coverBox(Instance& inst, Box b) {
   // One unit of margin: points on the box edge round into the next cell's range.
-  b.x0 -= 1 + slack, b.y0 -= 1 + slack, b.x1 += 1 + slack, b.y1 += 1 + slack;
+  b.x0 -= 1, b.y0 -= 1, b.x1 += 1, b.y1 += 1;
   const Grid& grid = part(inst.part).grid();
   inst.region.update(grid, grid.cellsCovering(b, inst.region.rect()));
 }

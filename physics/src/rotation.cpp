@@ -53,11 +53,7 @@ bool WorldImpl::rotateBy(Entity& e, int64_t delta) {
       for (const Vec2 v : hull)
         if (!inRange(v)) blocked = true;
       if (blocked) break;
-      const std::vector<Vec2> saved = inst.shape;
-      inst.shape = hull;  // cover the swept hull (relative to an origin at 0)
-      for (Vec2& v : inst.shape) v = {v.x - inst.position.x, v.y - inst.position.y};
-      coverMotion(inst, {});
-      inst.shape = saved;
+      coverBox(inst, sweptBox(hull, {}));  // the lines near the swept hull
       const MapPart& p = part(inst.part);
       const auto lines = inst.region.lines();
       const std::vector<Vec2> before = worldVertices(inst);

@@ -172,6 +172,7 @@ class SubMove {
         worldVertices(oi, other);
         const Sweep s = sweep(verts_[i], moves_[i], other);
         if (!s.hitsWithinFrame()) return;
+        if (o.steppedFrame != w_.frame) unsteppedMet_ = std::min(unsteppedMet_, o.id.index);
         const LineIndex key = kEntityKey | o.id.index;
         if (hit_.improvedBy(s.enter, HitKind::Entity, i, key))
           hit_ = {HitKind::Entity, s.enter, i, key, s, s.enterAxis, o.id.index};
@@ -388,6 +389,10 @@ class SubMove {
     if (hit_.kind == HitKind::Warp && !pulledBack()) crossWarp();
     if (!e_.links.empty()) w_.updateLinks(move_);
   }
+
+  // The lowest slot of the entities this sub-move meets within its motion that have not stepped
+  // this frame (UINT32_MAX: none).
+  uint32_t unsteppedMet() const { return unsteppedMet_; }
 
   // What the slide does next, once the instances have moved.
   enum class Next { Stop, Again, Respond };
@@ -636,6 +641,7 @@ class SubMove {
   std::vector<Vec2w>& steps_;
   std::vector<uint8_t>& pierceNear_;
   Hit hit_;
+  uint32_t unsteppedMet_ = UINT32_MAX;
   Vec2w subMotion_;  // the anchor's motion at the start of this sub-move, entity frame
   Fraction t_;
   MapPartId hitPart_ = 0;
@@ -811,6 +817,8 @@ void WorldImpl::stepEntity(Entity& e) {
 }
 
 void WorldImpl::stepEntityTested(Entity& e) {
+  std::vector<Vec2w> nestedNormals;  // a neighbour's step inside another's leaves the outer one's alone
+  std::vector<Vec2w>& normals = neighbourDepth == 0 ? scratch.normals : nestedNormals;
   if (e.angularVelocity != 0) rotateBy(e, e.angularVelocity);
   if (e.instances.empty()) return;
   const Vec2w before = e.velocityQ16;
@@ -831,8 +839,8 @@ void WorldImpl::stepEntityTested(Entity& e) {
       e.velocityQ16 = {};
       e.subunitQ17 = {};
       if (!copiesSettled(e)) {  // a copy lagging more than a lift closes its gap where it is free
-        scratch.normals.clear();
-        Move still{e, {}, scratch.normals, {}, {}};
+        normals.clear();
+        Move still{e, {}, normals, {}, {}};
         slide(still);
         reindex(e);
       } else if (before == Vec2w{} && restCache && e.instances.size() == 1) {
@@ -849,8 +857,8 @@ void WorldImpl::stepEntityTested(Entity& e) {
   }
   const Vec2w whole{frameQ17.x >> 17, frameQ17.y >> 17};
   e.subunitQ17 = {frameQ17.x - whole.x * kQ17, frameQ17.y - whole.y * kQ17};
-  scratch.normals.clear();
-  Move move{e, whole, scratch.normals, whole, e.velocityQ16};
+  normals.clear();
+  Move move{e, whole, normals, whole, e.velocityQ16};
   move.exactQ17 = frameQ17;
   if (e.gravity) move.gravityQ16 = move.actingGravityQ16 = part(e.instances[0].part).gravity();
   slide(move);
@@ -884,6 +892,24 @@ WorldImpl::Arrival WorldImpl::reportArrival(Entity& e, Vec2w& frameQ17) {
   return keepVelocity && !restsAgainstLines(e, e.velocityQ16) ? Arrival::Stays : Arrival::Rests;
 }
 
+// Handle order decides who steps first, but not where a move meets another entity: one it meets
+// that has not stepped this frame steps first (seeing the mover where it is now: the index is told
+// first), and the mover's sub-move is planned again. So a move, and a chain it pushes (each link a
+// slide of its own), meets every entity where it is this frame. Nested steps are bounded; beyond
+// that, an entity is met where it is.
+bool WorldImpl::stepMetEntityFirst(Entity& mover, uint32_t slot) {
+  Entity* o = slots[slot].entity.get();
+  if (!steppingEntities || !o || o->steppedFrame == frame || neighbourDepth >= kMaxNeighbourDepth) return false;
+  reindex(mover);
+  const int pushesBefore = pushDepth;
+  pushDepth = 0;  // its own step pushes as far as any step may
+  ++neighbourDepth;
+  stepInFrame(*o);
+  --neighbourDepth;
+  pushDepth = pushesBefore;
+  return true;
+}
+
 void WorldImpl::slide(Move& move) {
   Entity& e = move.entity;
   int pushes = 0;
@@ -894,6 +920,10 @@ void WorldImpl::slide(Move& move) {
     SubMove sub(*this, move);
     sub.planMotions();
     sub.findFirstEvent();
+    if (sub.unsteppedMet() != UINT32_MAX && stepMetEntityFirst(e, sub.unsteppedMet())) {
+      --iteration;  // the same sub-move again: each time, one more entity has stepped (finite)
+      continue;
+    }
     if (sub.liftAtSeam()) continue;
     sub.resolveContactNormal();
     sub.roundSteps();

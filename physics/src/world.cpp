@@ -362,6 +362,15 @@ void World::setRestMode(RestMode mode) {
   if (!impl_->restCache) impl_->wakeAll();
 }
 
+void WorldImpl::stepInFrame(Entity& e) {
+  e.steppedFrame = frame;
+  e.contacts.clear();
+  e.work = 0;
+  if (e.instances.empty()) return;
+  e.work = kBodyStepWork;
+  stepEntity(e);
+}
+
 SolveReport World::solve() {
   WorldImpl& w = *impl_;
   w.checkUnlocked("solve");
@@ -369,16 +378,14 @@ SolveReport World::solve() {
   CallbackScope scope(w);
   w.report = {};
   w.report.frame = ++w.frame;
+  w.steppingEntities = false;
   w.movePlatforms();
+  w.steppingEntities = true;
   for (WorldImpl::Slot& slot : w.slots) {
     Entity* e = slot.entity.get();
-    if (!e) continue;
-    e->contacts.clear();
-    e->work = 0;
-    if (e->instances.empty()) continue;
-    e->work = kBodyStepWork;
-    w.stepEntity(*e);
+    if (e && e->steppedFrame != w.frame) w.stepInFrame(*e);
   }
+  w.steppingEntities = false;
   w.fireOverContacts();
   scope.finish();
   return w.report;

@@ -93,6 +93,11 @@ struct WorldImpl {
   };
   std::vector<OverlapPair> entityOverlaps;
   int pushDepth = 0;  // entities pushing entities pushing entities: bounded
+  // Entities step in handle order, but one that another's move meets steps first, so that a move
+  // (a push chain too) meets it where it is this frame (stepMetEntityFirst).
+  bool steppingEntities = false;  // solve() is stepping the entities (not moving platforms)
+  int neighbourDepth = 0;         // steps begun for a neighbour inside another's step: bounded
+  static constexpr int kMaxNeighbourDepth = 32;
   std::vector<Platform> platforms;
   std::vector<uint32_t> freePlatforms;
   // Rest that costs nothing (entity.h's `resting`): how many entities keep their rest answer, how
@@ -216,6 +221,8 @@ struct WorldImpl {
   // Makes the instance's region hold every line near its shape moved by anything from 0 to
   // `motion`, and within `slack` more units around that.
   void coverMotion(Instance& inst, Vec2w motion, int64_t slack = 0);
+  // The same for any box of the part's coordinates (a rotation covers the hull it sweeps).
+  void coverBox(Instance& inst, Box box);
   // The first solid line (in region order) whose interior the vertices overlap, if any. The
   // region must already cover them.
   std::optional<LineIndex> solidOverlap(const Entity& e, Instance& inst, std::span<const Vec2> verts);
@@ -226,6 +233,11 @@ struct WorldImpl {
   Fraction firstBlock(const Entity& e, Instance& inst, std::span<const Vec2> verts, Vec2w step);
 
   // step.cpp
+  // The entity's frame, once per solve(): its contacts and work start afresh.
+  void stepInFrame(Entity& e);
+  // A sub-move of `mover` met the entity in `slot`: if that one has not stepped this frame, it steps
+  // now (returns true, and the sub-move is planned again).
+  bool stepMetEntityFirst(Entity& mover, uint32_t slot);
   void stepEntity(Entity& e);
   void stepEntityTested(Entity& e);  // the step as it is without a kept rest answer
   void slide(Move& move);
