@@ -270,6 +270,10 @@ class SubMove {
   bool liftAtSeam() {
     if (hit_.kind != HitKind::Solid || isPlatformLine(hit_.line)) return false;
     const size_t i = hit_.instance;
+    // The last lift left this instance meeting this line no later: lifting again would only repeat
+    // it (one unit a sub-move until the frame's sub-moves run out, the body stalled with no
+    // contact), so the line is met as a line.
+    if (move_.lastLift.instance == i) return false;
     Instance& inst = e_.instances[i];
     Vec2w liftAlong;  // the instance's frame
     if (i > 0 && hit_.t == Fraction::zero() && !move_.normals.empty()) {
@@ -291,6 +295,7 @@ class SubMove {
       if (along < 0 && along * along * 4096 > dot128(a, a) * dot128(b, b)) return false;
     }
     const bool lifted = i > 0 ? w_.liftCopy(e_, inst, liftAlong, moves_[i]) : liftEntity(liftAlong);
+    if (lifted) move_.lastLift = {i, hit_.line, hit_.t};
     if (lifted) ++w_.report.copiesReplaced;
     if (!lifted && i == 0) replan();
     return lifted;
@@ -317,13 +322,24 @@ class SubMove {
       if (attempt == 3) t_ = Fraction::zero();
       if (tryStepsAt(attempt)) break;
     }
-    const bool nothingMoved = std::all_of(steps_.begin(), steps_.end(), [](Vec2w s) { return s == Vec2w{}; });
-    if (pulledBack() && nothingMoved && (hit_.kind == HitKind::None || hit_.kind == HitKind::Warp)) {
+    // The anchor's step is the frame's progress (the motion left is the anchor's): a copy that
+    // still moves a unit, closing on its ideal place, makes none, and going again from there
+    // meets the same hit in the same place.
+    const bool anchorStill = steps_[0] == Vec2w{};
+    if (pulledBack() && anchorStill && (hit_.kind == HitKind::None || hit_.kind == HitKind::Warp)) {
       const Fraction pulled = t_;
       t_ = hit_.t;
       if (tryOtherRoundings()) return;
       t_ = pulled;
       steps_.assign(n_, Vec2w{});
+      // A warp no whole-unit step can reach (a wall within a unit of where the path meets it): it
+      // holds like a wall for the rest of the frame, so the next sub-move meets it as one (a
+      // contact where the body stands, then the slide along it) instead of going again from the
+      // same place with the same result until the frame's sub-moves run out, frame after frame.
+      if (hit_.kind == HitKind::Warp) {
+        e_.instances[hit_.instance].blockedWarps.push_back(hit_.line);
+        ++w_.report.warpsHeld;
+      }
     }
   }
 

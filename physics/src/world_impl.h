@@ -42,6 +42,13 @@ struct Move {
   // body means to go, where its whole-unit motion (rounded down) points a unit off it.
   Vec2w exactQ17{};
   int64_t timeLeftQ30 = int64_t{1} << kQ30Bits;
+  // The latest lift at a seam (SubMove::liftAtSeam): a lift that leaves the same instance meeting
+  // the same line no later is no help, and the line is then met as a line.
+  struct Lift {
+    size_t instance = SIZE_MAX;
+    LineIndex line = 0;
+    Fraction t;
+  } lastLift{};
 };
 
 // Where each instance went during one sub-move, for the pierce events along the way. Empty: the

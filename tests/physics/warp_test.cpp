@@ -270,3 +270,87 @@ TEST(Warp, WalkingAcrossTurnedEdgesOntoAContinuingFloor) {
             << degrees << " degrees, " << upm << " u/m, " << hz << " Hz: stopped at the edge";
       }
 }
+
+// A warp edge that no whole-unit step can reach: a body driven along a tight sloped tunnel that
+// crosses the edge (its clearance across the slope below 0.3 units), so every whole-unit step
+// around the exact one at the moment its path meets the edge touches the floor or the ceiling. Such
+// a warp is held like a wall for the frame (SolveReport::warpsHeld): the next sub-move meets it
+// where the body stands and slides on, and a later frame crosses. Without that, the same sub-move
+// came again from the same place until the frame's sub-moves ran out: the frame ended with the body
+// where it was, no contact, its velocity saying it moves, and so did the next. Random families:
+// slopes, shapes, tunnels, upright and leaning edges, speeds, across and back; no frame of a moving
+// body ends where it began with no contact.
+TEST(Warp, AnEdgeNoWholeStepReachesNeverFreezesTheBody) {
+  std::mt19937_64 r(2026);
+  auto between = [&](int lo, int hi) { return lo + static_cast<int>(r() % static_cast<uint64_t>(hi - lo + 1)); };
+  int held = 0, crossings = 0, scenes = 0;
+  for (int trial = 0; trial < 4000 && scenes < 400; ++trial) {
+    World world;
+    MapPart& a = world.createMapPart(1);
+    MapPart& b = world.createMapPart(2);
+    const int32_t dx = between(4, 24), dy = between(-12, 12);
+    const double len = std::hypot(dx, dy);
+    const Convex shape =
+        r() % 2 ? Convex::box(between(6, 30), between(6, 30)) : Convex::regular(between(3, 9), between(8, 30));
+    double lo = 1e18, hi = -1e18;  // the shape's extent across the slope
+    for (const Vec2 v : shape.vertices()) {
+      const double across = (double(dx) * v.y - double(dy) * v.x) / len;
+      lo = std::min(lo, across), hi = std::max(hi, across);
+    }
+    const int32_t rise = static_cast<int32_t>(std::ceil((hi - lo) * len / dx));  // the tunnel's height, upright
+    const double clearance = rise * dx / len - (hi - lo);                        // across the slope
+    if (clearance > 0.3) continue;  // tight tunnels only: a unit's rounding touches a side
+    const Vec2 edge{1000, 300};
+    const int32_t k = 40;
+    a.line({edge.x - k * dx, edge.y - k * dy}, edge);
+    a.line({edge.x, edge.y + rise}, {edge.x - k * dx, edge.y - k * dy + rise});
+    b.line(edge, {edge.x + k * dx, edge.y + k * dy});
+    b.line({edge.x + k * dx, edge.y + k * dy + rise}, {edge.x, edge.y + rise});
+    // The edge through `edge`, upright or leaning either way.
+    const int32_t lean = between(-3, 3);
+    const Vec2 e0{edge.x - lean * 700, edge.y - 2100}, e1{edge.x + lean * 700, edge.y + 2100};
+    a.warp(e0, e1, 2, e0, e1);
+    b.warp(e1, e0, 1, e1, e0);
+    const int64_t g = between(2000, 30000);
+    for (MapPart* p : {&a, &b}) {
+      p->setGravity({std::llround(double(g) * dy / len), -std::llround(double(g) * dx / len)});
+      p->initialize();
+    }
+    const EntityId body = world.createEntity(shape);
+    bool placed = false;
+    const int32_t back = between(40, 200);
+    for (int32_t y = -40; y <= 80 && !placed; ++y) {
+      const Vec2 at{edge.x - back, edge.y - static_cast<int32_t>(std::lround(double(back) * dy / dx)) + y};
+      try {
+        world.insert(body, 1, at, 0);
+        placed = true;
+      } catch (const Error&) {}
+    }
+    if (!placed) continue;
+    ++scenes;
+    const double speed = between(1, 8) + between(0, 1000) / 1000.0;
+    MapPartId lastPart = 1;
+    Vec2 last = world.entity(body).position();
+    for (int frame = 0; frame < 240; ++frame) {
+      const double way = frame < 120 ? 1 : -1;  // across, then back
+      world.setVelocity(body,
+                        {std::llround(way * speed * dx / len * kUnit), std::llround(way * speed * dy / len * kUnit)});
+      const SolveReport report = world.solve();
+      ASSERT_EQ(world.countOverlaps(), 0u) << "trial " << trial << ", frame " << frame;
+      held += static_cast<int>(report.warpsHeld);
+      const EntityView e = world.entity(body);
+      const bool moving = std::hypot(double(e.velocity().x), double(e.velocity().y)) >= 2.0 * kUnit;
+      ASSERT_FALSE(moving && e.part() == lastPart && e.position() == last && e.contacts().empty())
+          << "trial " << trial << ", frame " << frame
+          << ": a moving body ended the frame where it was, with no contact";
+      crossings += e.part() != lastPart;
+      lastPart = e.part();
+      last = e.position();
+    }
+  }
+  EXPECT_GE(scenes, 300);
+  EXPECT_GT(crossings, 100);
+  EXPECT_GT(held, 20) << "the family rarely reached an edge no whole step could reach";
+  RecordProperty("held", held);
+  std::printf("%d tunnels, %d crossings, %d warps held\n", scenes, crossings, held);
+}

@@ -27,6 +27,7 @@ struct SolveReport {
   uint32_t instancesErased = 0;
   uint32_t copiesReplaced = 0;  // copies moved within two units to free them from a rounding snag
   uint32_t cornerReturns = 0;   // entities put back on a face after going through a vertex
+  uint32_t warpsHeld = 0;       // warp edges no whole-unit step could reach: held like a wall for the frame
   uint32_t restsKept = 0;       // bodies at rest that nothing disturbed: their answer kept, no test
   uint32_t restMismatches = 0;  // RestMode::Checked: kept answers the test contradicted (always 0)
   // The frame's work: every line, platform line and body a move was tested against. A frame's time
