@@ -3,6 +3,8 @@
 #include <algorithm>
 
 #include "bounds.h"
+#include "fixed_point.h"
+#include "projection.h"
 #include "world_impl.h"
 
 namespace platon::physics {
@@ -61,8 +63,11 @@ PlatformId World::createPlatform(MapPartId partId, std::span<const PlatformLine>
   }
   Platform& pl = w.platforms[index];
   pl.part = part.id();
-  pl.lines.assign(lines.begin(), lines.end());
-  pl.offset = pl.motion = {};
+  pl.base.assign(lines.begin(), lines.end());
+  pl.lines = pl.base;
+  pl.offset = pl.motion = pl.pivot = {};
+  pl.angle = 0;
+  pl.spin = 0;
   pl.box = boxOf(pl.lines);
   pl.alive = true;
   ++w.platformEpochs[pl.part];  // what rests in its part is looked at again
@@ -85,6 +90,7 @@ void World::destroyPlatform(PlatformId id) {
   ++impl_->platformEpochs[pl.part];
   pl.alive = false;
   pl.lines.clear();
+  pl.base.clear();
   ++pl.generation;
   impl_->freePlatforms.push_back(id.index);
 }
@@ -95,9 +101,29 @@ void World::setPlatformMotion(PlatformId id, Vec2 perFrame) {
   live(*impl_, id).motion = perFrame;
 }
 
+void World::setPlatformSpin(PlatformId id, Vec2 pivot, int32_t anglePerFrame) {
+  if (anglePerFrame > kMaxPlatformSpin || anglePerFrame < -kMaxPlatformSpin)
+    throw Error("setPlatformSpin: " + std::to_string(anglePerFrame) +
+                " exceeds the largest turn per frame, 2^28 binary-angle units (1/16 of a turn)");
+  if (!inRange(pivot)) throw Error("setPlatformSpin: pivot " + toString(pivot) + " is outside the coordinate range");
+  Platform& pl = live(*impl_, id);
+  const Vec2 pivotBase{pivot.x - pl.offset.x, pivot.y - pl.offset.y};
+  if (pivotBase != pl.pivot && pl.angle != 0) {
+    // A new pivot for a turned platform: its lines where they are now become its lines as created,
+    // so nothing jumps (the turn so far is kept in them, rounded once).
+    for (size_t k = 0; k < pl.base.size(); ++k)
+      pl.base[k].segment = {{pl.lines[k].segment.a.x - pl.offset.x, pl.lines[k].segment.a.y - pl.offset.y},
+                            {pl.lines[k].segment.b.x - pl.offset.x, pl.lines[k].segment.b.y - pl.offset.y}};
+    pl.angle = 0;
+  }
+  pl.pivot = pivotBase;
+  pl.spin = anglePerFrame;
+}
+
 PlatformView World::platform(PlatformId id) const {
   const Platform& pl = live(*impl_, id);
-  return {pl.part, pl.offset, pl.motion, pl.lines};
+  return {pl.part,  pl.offset, pl.motion, pl.lines, {pl.pivot.x + pl.offset.x, pl.pivot.y + pl.offset.y},
+          pl.angle, pl.spin};
 }
 
 std::vector<PlatformId> World::platforms() const {
@@ -112,17 +138,24 @@ std::vector<PlatformId> World::platforms() const {
 std::vector<WorldImpl::Rider> WorldImpl::ridersOf(uint32_t slot) {
   const MapPartId partId = platforms[slot].part;
   const Vec2w gravity = part(partId).gravity();
+  const bool turning = platforms[slot].spin != 0 || platforms[slot].angle != 0;
   std::vector<Rider> riders;
   std::vector<Vec2> verts;
   Box near = platforms[slot].box;
-  near.x0 -= 1, near.y0 -= 1, near.x1 += 1, near.y1 += 1;
+  near.x0 -= 2, near.y0 -= 2, near.x1 += 2, near.y1 += 2;
   entityIndex.forEachNear(partId, near, [&](uint32_t s) {
     const Entity& e = *slots[s].entity;
     const Instance* inst = e.instanceIn(partId);
     if (!inst) return;
     worldVertices(*inst, verts);
     for (const PlatformLine& l : platforms[slot].lines) {
-      if (!stops(l, verts) || !touchesOrOverlaps(verts, l.segment)) continue;
+      if (!stops(l, verts)) continue;
+      // A turned line is tilted at any angle, where whole-unit positions leave a body up to a unit
+      // and a half off it (the rest test's reach): it stands on it all the same.
+      std::vector<Vec2w>& normals = scratch.lineNormals;
+      normals.clear();
+      if (turning ? nearNormals(verts, l.segment, normals) == Nearness::Apart : !touchesOrOverlaps(verts, l.segment))
+        continue;
       const Vec2w d = l.segment.b - l.segment.a;
       i128 side = 0;
       for (const Vec2 v : verts) side += cross(d, v - l.segment.a);
@@ -244,27 +277,199 @@ void WorldImpl::crushed(uint32_t slot, uint32_t entity, uint32_t line) {
   callRules([&](Rules& r) { r.crushed(c); });
 }
 
-// Carries the riders by what their platform moved, less what it pushed them already.
-void WorldImpl::carryRiders(MapPartId partId, const std::vector<Rider>& riders, Vec2w moved) {
+// Carries the riders as if fixed to their platform: by what it moved, then turned about its pivot
+// by what it turned, less what it pushed them already.
+void WorldImpl::carryRiders(uint32_t slot, const std::vector<Rider>& riders, Vec2w moved, Angle turned) {
+  const Platform& pl = platforms[slot];
+  const Vec2w pivot{int64_t{pl.pivot.x} + pl.offset.x, int64_t{pl.pivot.y} + pl.offset.y};
+  const Rotation rotation = rotationOf(turned);
   for (const Rider& r : riders) {
     Entity& e = *slots[r.entity].entity;
-    const Instance* inst = e.instanceIn(partId);
+    const Instance* inst = e.instanceIn(pl.part);
     if (!inst) continue;
-    const Vec2w already = inst->position - r.start;
-    const Vec2w carry = moved - already;
-    if (carry == Vec2w{}) continue;
-    push(e, inst->frame == 0 ? carry : rotateWideInverse(inst->rotation, carry));
+    const Vec2w moved0 = wide(r.start) + moved;
+    const Vec2w to = turned == 0 ? moved0 : pivot + rotateWide(rotation, moved0 - pivot);
+    const Vec2w carry = to - wide(inst->position);
+    if (carry != Vec2w{}) push(e, inst->frame == 0 ? carry : rotateWideInverse(inst->rotation, carry));
+    if (turned != 0) settleOn(slot, e);
   }
 }
 
+// A rider carried by a turn ends where rounding put it, up to two units off the turned line: it is
+// let down along its part's gravity (a slide, so it stops on the first thing it meets) to stand on
+// it again, as a body fixed to the platform would.
+void WorldImpl::settleOn(uint32_t slot, Entity& e) {
+  const Platform& pl = platforms[slot];
+  const Instance* inst = e.instanceIn(pl.part);
+  const Vec2w g = part(pl.part).gravity();
+  if (!inst || g == Vec2w{}) return;
+  std::vector<Vec2> verts;
+  worldVertices(*inst, verts);
+  for (const PlatformLine& l : pl.lines)
+    if (stops(l, verts) && touchesOrOverlaps(verts, l.segment)) return;  // standing on it
+  const Vec2w n = shortDirection(g);
+  const int64_t length = static_cast<int64_t>(isqrt(static_cast<u128>(dot128(n, n))));
+  if (length == 0) return;
+  const Vec2w down{static_cast<int64_t>(roundDiv(i128{n.x} * 2, length)),
+                   static_cast<int64_t>(roundDiv(i128{n.y} * 2, length))};
+  if (down != Vec2w{}) push(e, inst->frame == 0 ? down : rotateWideInverse(inst->rotation, down));
+}
+
+void WorldImpl::placePlatformLines(const Platform& pl, Angle angle, std::vector<PlatformLine>& out) const {
+  out = pl.base;
+  const Rotation rotation = rotationOf(angle);
+  auto place = [&](Vec2 p) {
+    const Vec2w turned = wide(pl.pivot) + rotateWide(rotation, wide(p) - wide(pl.pivot));
+    return Vec2w{turned.x + pl.offset.x, turned.y + pl.offset.y};
+  };
+  for (PlatformLine& l : out) {
+    const Vec2w a = place(l.segment.a), b = place(l.segment.b);
+    l.segment = {{static_cast<int32_t>(std::clamp<int64_t>(a.x, INT32_MIN, INT32_MAX)),
+                  static_cast<int32_t>(std::clamp<int64_t>(a.y, INT32_MIN, INT32_MAX))},
+                 {static_cast<int32_t>(std::clamp<int64_t>(b.x, INT32_MIN, INT32_MAX)),
+                  static_cast<int32_t>(std::clamp<int64_t>(b.y, INT32_MIN, INT32_MAX))}};
+  }
+}
+
+namespace {
+
+// Whether turning `from` to `to` about `pivot` sweeps over the vertices: they overlap the line's
+// new place, or what a part of it passed over in between. A line turning about a point moves
+// across itself one way on one side of the point nearest the pivot and the other way on the other
+// side, so each side is taken on its own (the hull of its old and new place), and only for a body
+// on the side that side moves towards: a plank turning about its middle sweeps the body its rising
+// end lifts, not the one its sinking end leaves.
+bool sweptOver(const Segment& from, const Segment& to, Vec2w pivot, std::span<const Vec2> verts) {
+  if (overlapsInterior(verts, to)) return true;
+  const Vec2w d = from.b - from.a, dn = to.b - to.a;
+  const i128 dd = dot128(d, d);
+  if (dd == 0) return false;
+  const i128 u = std::clamp<i128>(dot128(pivot - wide(from.a), d), 0, dd);  // the foot, as u / dd along
+  auto at = [&](const Segment& s, Vec2w dir) {
+    return Vec2{static_cast<int32_t>(s.a.x + roundDiv(u * dir.x, dd)),
+                static_cast<int32_t>(s.a.y + roundDiv(u * dir.y, dd))};
+  };
+  const Vec2 foot = at(from, d), footNew = at(to, dn);
+  i128 side = 0;  // which side of the line the body is on (the sum over its vertices)
+  for (const Vec2 v : verts) side += cross(d, v - from.a);
+  const Vec2w left{-d.y, d.x};
+  for (const auto& [end, endNew] : {std::pair{from.a, to.a}, std::pair{from.b, to.b}}) {
+    if (end == foot) continue;
+    const i128 towards = dot128(endNew - end, left);  // how that side's far end moves across the line
+    if ((towards > 0 && side < 0) || (towards < 0 && side > 0) || towards == 0) continue;
+    const std::vector<Vec2> hull = convexHull({end, foot, endNew, footNew});
+    if (hull.size() >= 3 && overlapsInterior(verts, hull)) return true;
+  }
+  return false;
+}
+
+// How far the point of `from` nearest to `p` goes when `from` turns to `to` (the same fraction
+// along both), each component rounded away from zero.
+Vec2w sweepAt(const Segment& from, const Segment& to, Vec2w p) {
+  const Vec2w d = from.b - from.a, da = to.a - from.a, db = to.b - from.b;
+  const i128 dd = dot128(d, d);
+  const i128 along = dd == 0 ? 0 : std::clamp<i128>(dot128(p - wide(from.a), d), 0, dd);
+  auto away = [&](int64_t start, int64_t end) {
+    if (dd == 0) return start;
+    const i128 q = i128{start} * dd + along * (end - start);
+    return static_cast<int64_t>(q >= 0 ? ceilDiv(q, dd) : floorDiv(q, dd));
+  };
+  return {away(da.x, db.x), away(da.y, db.y)};
+}
+
+}  // namespace
+
+bool WorldImpl::clearTurn(uint32_t slot, const std::vector<PlatformLine>& next, uint32_t& blocker) {
+  const Platform& pl = platforms[slot];
+  Box area = pl.box;
+  for (const PlatformLine& l : next)
+    for (const Vec2 p : {l.segment.a, l.segment.b})
+      area = {std::min<int64_t>(area.x0, p.x), std::min<int64_t>(area.y0, p.y), std::max<int64_t>(area.x1, p.x),
+              std::max<int64_t>(area.y1, p.y)};
+  std::vector<uint32_t> near;
+  entityIndex.forEachNear(pl.part, area, [&](uint32_t s) { near.push_back(s); });
+  std::sort(near.begin(), near.end());  // slot order: the index's order is not part of the result
+  near.erase(std::unique(near.begin(), near.end()), near.end());
+  std::vector<Vec2> verts;
+  const Vec2w pivot{int64_t{pl.pivot.x} + pl.offset.x, int64_t{pl.pivot.y} + pl.offset.y};
+  for (const uint32_t s : near) {
+    Entity& e = *slots[s].entity;
+    // A few pushes: the sweep where the nearest line meets it, then what rounding left.
+    for (int attempt = 0;; ++attempt) {
+      const Instance* inst = e.instanceIn(pl.part);
+      if (!inst) break;
+      worldVertices(*inst, verts);
+      size_t k = 0;
+      while (k < next.size() &&
+             !(stops(pl.lines[k], verts) && sweptOver(pl.lines[k].segment, next[k].segment, pivot, verts)))
+        ++k;
+      if (k == next.size()) break;
+      if (attempt == 3) {
+        blocker = s;
+        return false;
+      }
+      const Vec2w centre = wide(inst->position) + wide(inst->centre);
+      Vec2w by = sweepAt(pl.lines[k].segment, next[k].segment, centre);
+      if (attempt > 0 || by == Vec2w{}) {  // and a unit off the line's new place, on the entity's side
+        const Segment& to = next[k].segment;
+        const Vec2w d = to.b - to.a;
+        i128 side = 0;
+        for (const Vec2 v : verts) side += cross(d, v - to.a);
+        const Vec2w out = side >= 0 ? Vec2w{-d.y, d.x} : Vec2w{d.y, -d.x};
+        by = by + Vec2w{out.x > 0 ? 1 : out.x < 0 ? -1 : 0, out.y > 0 ? 1 : out.y < 0 ? -1 : 0};
+      }
+      if (!push(e, inst->frame == 0 ? by : rotateWideInverse(inst->rotation, by))) {
+        blocker = s;
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+Angle WorldImpl::turnPlatform(uint32_t slot) {
+  Platform& pl = platforms[slot];
+  const int64_t delta = pl.spin;
+  int64_t radius2 = 1;
+  for (const PlatformLine& l : pl.base)
+    for (const Vec2 p : {l.segment.a, l.segment.b}) {
+      const Vec2w r = wide(p) - wide(pl.pivot);
+      radius2 = std::max<int64_t>(radius2, static_cast<int64_t>(std::min<i128>(dot128(r, r), INT64_MAX)));
+    }
+  const int64_t steps = rotationSubSteps(radius2, delta);
+  std::vector<PlatformLine> next;
+  Angle turned = 0;
+  for (int64_t j = 1; j <= steps; ++j) {
+    const Angle by = static_cast<Angle>(delta * j / steps - delta * (j - 1) / steps);
+    placePlatformLines(platforms[slot], static_cast<Angle>(platforms[slot].angle + by), next);
+    const bool inside = std::all_of(next.begin(), next.end(),
+                                    [](const PlatformLine& l) { return inRange(l.segment.a) && inRange(l.segment.b); });
+    uint32_t blocker = 0;
+    if (!inside) break;  // the coordinate range's edge: no entity can be beyond it to hear of it
+    if (!clearTurn(slot, next, blocker)) {
+      crushed(slot, blocker, 0);
+      break;
+    }
+    Platform& p = platforms[slot];
+    p.angle = static_cast<Angle>(p.angle + by);
+    p.lines = next;
+    p.box = boxOf(p.lines);
+    ++platformEpochs[p.part];
+    turned = static_cast<Angle>(turned + by);
+  }
+  return turned;
+}
+
 // One platform's frame: find who stands on it, move it as far as its motion goes or until a push
-// is impossible, then carry those standing on it by what it moved (less what it pushed them).
+// is impossible, turn it as far as its spin goes or until a push is impossible, then carry those
+// standing on it as if fixed to it (less what it pushed them).
 void WorldImpl::movePlatforms() {
   for (uint32_t slot = 0; slot < platforms.size(); ++slot) {
-    if (!platforms[slot].alive || platforms[slot].motion == Vec2{}) continue;
+    if (!platforms[slot].alive || (platforms[slot].motion == Vec2{} && platforms[slot].spin == 0)) continue;
     const std::vector<Rider> riders = ridersOf(slot);
-    const Vec2w moved = advancePlatform(slot);
-    carryRiders(platforms[slot].part, riders, moved);
+    const Vec2w moved = platforms[slot].motion == Vec2{} ? Vec2w{} : advancePlatform(slot);
+    const Angle turned = platforms[slot].spin == 0 ? 0 : turnPlatform(slot);
+    carryRiders(slot, riders, moved, turned);
   }
 }
 

@@ -7,7 +7,6 @@
 #include "world_impl.h"
 
 namespace platon::physics {
-namespace {
 
 // Sub-steps for turning a shape of squared radius `radius2` by `delta` binary-angle units: small
 // enough that a vertex's arc leaves its chord by under half a unit. The arc of radius r through
@@ -24,8 +23,6 @@ int64_t rotationSubSteps(int64_t radius2, int64_t delta) {
   const int64_t steps = static_cast<int64_t>((scaled + unit - 1) / unit);
   return std::max<int64_t>(steps, 1);
 }
-
-}  // namespace
 
 bool WorldImpl::rotateBy(Entity& e, int64_t delta) {
   if (delta == 0 || e.instances.empty()) return true;

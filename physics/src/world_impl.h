@@ -62,12 +62,23 @@ struct Path {
 // A moving platform (see World::createPlatform). Its lines are kept where they are now.
 struct Platform {
   MapPartId part = 0;
+  // Its lines as created; where they are now is those turned by `angle` about `pivot` (both in the
+  // created lines' coordinates), each end rounded to the nearest unit, then moved by `offset`. Every
+  // frame recomputes them from these, so turns and moves never drift.
+  std::vector<PlatformLine> base;
   std::vector<PlatformLine> lines;
   Vec2 offset, motion;
+  Vec2 pivot;
+  Angle angle = 0;
+  int32_t spin = 0;       // binary-angle units a frame
   Box box{0, 0, -1, -1};  // around its lines, where they are now
   uint32_t generation = 0;
   bool alive = false;
 };
+
+// Sub-steps that turn a shape of squared radius `radius2` (about the turning point) by `delta`
+// binary-angle units with every point's arc within half a unit of its chord (rotation.cpp).
+int64_t rotationSubSteps(int64_t radius2, int64_t delta);
 
 // A platform's line as the solver names it: this bit, the platform's slot << 16, the line.
 inline constexpr LineIndex kPlatformLineBit = 0x40000000u;
@@ -206,7 +217,16 @@ struct WorldImpl {
   void crushed(uint32_t slot, uint32_t entity, uint32_t line);
   void shiftPlatform(uint32_t slot, Vec2w step);
   Vec2w advancePlatform(uint32_t slot);
-  void carryRiders(MapPartId partId, const std::vector<Rider>& riders, Vec2w moved);
+  void carryRiders(uint32_t slot, const std::vector<Rider>& riders, Vec2w moved, Angle turned);
+  void settleOn(uint32_t slot, Entity& e);
+  // Where platform `slot`'s lines are at `angle` (its offset as it is).
+  void placePlatformLines(const Platform& pl, Angle angle, std::vector<PlatformLine>& out) const;
+  // Turns platform `slot` by its spin in sub-steps, pushing what each sub-step's lines sweep over;
+  // stops (Rules::crushed) at the first sub-step whose room cannot be made. Returns the angle turned.
+  Angle turnPlatform(uint32_t slot);
+  // Pushes every entity that turning platform `slot` from its lines to `next` sweeps over; false
+  // (and `blocker`, its slot) when one cannot be cleared of the lines' new place.
+  bool clearTurn(uint32_t slot, const std::vector<PlatformLine>& next, uint32_t& blocker);
   // Calls visit(line, key) for each line of a live platform in `part` whose platform box meets
   // `box` (the caller tests the line itself).
   template <class Visit>

@@ -400,3 +400,208 @@ TEST(Platforms, BadPlatformsAreRefused) {
   expectError([&] { world.platform(p); }, "does not exist");
   expectError([&] { world.setPlatformMotion(p, {1, 0}); }, "does not exist");
 }
+
+// --- Turning platforms ---
+
+namespace {
+
+// The platform's lines as created, turned by `angle` about `pivot`, by the definition in world.h
+// (each end rounded to the nearest unit by the same rotation entities use).
+std::vector<Segment> turnedLines(const std::vector<PlatformLine>& base, Vec2 pivot, Angle angle) {
+  std::vector<Segment> out;
+  const Rotation r = rotationOf(angle);
+  for (const PlatformLine& l : base) {
+    auto at = [&](Vec2 p) {
+      const Vec2w t = wide(pivot) + rotateWide(r, wide(p) - wide(pivot));
+      return Vec2{static_cast<int32_t>(t.x), static_cast<int32_t>(t.y)};
+    };
+    out.push_back({at(l.segment.a), at(l.segment.b)});
+  }
+  return out;
+}
+
+}  // namespace
+
+// A turning platform is exactly its lines turned about the pivot, frame after frame: angles add
+// exactly (a full turn in 64 frames comes back to the lines as created, quarter turns are exact),
+// for random line groups, pivots and spins, with nothing in the way.
+TEST(Platforms, ATurningPlatformIsExactlyItsLinesTurned) {
+  std::mt19937_64 r(404);
+  for (int trial = 0; trial < 50; ++trial) {
+    World world;
+    MapPart& part = world.createMapPart(1);
+    part.line({-30000, -30000}, {30000, -30000});
+    part.initialize();
+    std::vector<PlatformLine> base;
+    const Vec2 pivot{in(r, -5000, 5000), in(r, -5000, 5000)};
+    for (int k = in(r, 1, 5); k > 0; --k) {
+      const Vec2 a{pivot.x + in(r, -3000, 3000), pivot.y + in(r, -3000, 3000)};
+      const Vec2 b{a.x + in(r, -800, 800), a.y + in(r, -800, 800)};
+      if (a != b) base.push_back({{a, b}, 0, r() % 2 ? LineKind::Solid : LineKind::OneWay});
+    }
+    if (base.empty()) continue;
+    const PlatformId id = world.createPlatform(1, base);
+    const int32_t spin = trial % 2 ? static_cast<int32_t>(int64_t{1} << 26) : -static_cast<int32_t>(int64_t{1} << 26);
+    world.setPlatformSpin(id, pivot, spin);  // 1/64 of a turn a frame
+    for (int f = 1; f <= 64; ++f) {
+      world.solve();
+      const PlatformView v = world.platform(id);
+      ASSERT_EQ(v.angle, static_cast<Angle>(int64_t{spin} * f));
+      const std::vector<Segment> want = turnedLines(base, pivot, v.angle);
+      for (size_t k = 0; k < want.size(); ++k) {
+        ASSERT_EQ(v.lines[k].segment.a, want[k].a) << "trial " << trial << ", frame " << f << ", line " << k;
+        ASSERT_EQ(v.lines[k].segment.b, want[k].b) << "trial " << trial << ", frame " << f << ", line " << k;
+      }
+      if (f % 16 == 0) {  // a quarter turn: exact
+        for (size_t k = 0; k < base.size(); ++k) {
+          const Vec2 a = base[k].segment.a;
+          const Vec2w d = wide(a) - wide(pivot);
+          const Vec2w q = f / 16 == 1   ? (spin > 0 ? Vec2w{-d.y, d.x} : Vec2w{d.y, -d.x})
+                          : f / 16 == 2 ? Vec2w{-d.x, -d.y}
+                          : f / 16 == 3 ? (spin > 0 ? Vec2w{d.y, -d.x} : Vec2w{-d.y, d.x})
+                                        : d;
+          ASSERT_EQ(wide(v.lines[k].segment.a), wide(pivot) + q) << "trial " << trial << ", quarter " << f / 16;
+        }
+      }
+    }
+  }
+}
+
+// Random families: gears (boxes of four lines), seesaws and bridges (one line, solid or one-way)
+// turning about random points at random speeds (both ways, up to 1/16 of a turn a frame), among
+// random bodies falling onto them, resting on them and swept by them, with walls about. No body
+// ever overlaps a line, every frame a platform turns less than its spin the rules hear why
+// (crushed), and two runs are the same bits.
+TEST(Platforms, TurningPlatformsNeverOverlapAndEveryShortTurnIsACrush) {
+  std::mt19937_64 rng(505);
+  int shortTurns = 0, frames = 0, carried = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    const uint64_t seed = rng();
+    auto run = [&](bool check) {
+      std::mt19937_64 r(seed);
+      World world;
+      CrushLog rules;
+      world.setRules(&rules);
+      MapPart& part = world.createMapPart(1);
+      part.line({-3000, 0}, {3000, 0});
+      part.line({-3000, 3000}, {-3000, 0});
+      part.line({3000, 0}, {3000, 3000});
+      part.line({3000, 3000}, {-3000, 3000});
+      for (int i = 0; i < 6; ++i) {
+        const Vec2 a{in(r, -2800, 2800), in(r, 100, 2800)};
+        const Vec2 b{a.x + in(r, -400, 400), a.y + in(r, -100, 100)};
+        if (a != b) part.line(a, b);
+      }
+      part.setGravity({in(r, -2000, 2000), -in(r, 4000, 40000)});
+      part.initialize();
+      std::vector<PlatformId> platforms;
+      for (int i = 0; i < 3; ++i) {
+        const Vec2 c{in(r, -2000, 2000), in(r, 400, 2400)};
+        const int32_t hw = in(r, 60, 500), hh = in(r, 5, 60);
+        std::vector<PlatformLine> lines;
+        const int kind = in(r, 0, 2);
+        if (kind == 0) {  // a gear: a turning box
+          const Vec2 a{c.x - hw, c.y - hh}, b{c.x + hw, c.y - hh}, d{c.x + hw, c.y + hh}, e{c.x - hw, c.y + hh};
+          lines = {{{a, b}, 0, LineKind::Solid},
+                   {{b, d}, 0, LineKind::Solid},
+                   {{d, e}, 0, LineKind::Solid},
+                   {{e, a}, 0, LineKind::Solid}};
+        } else {  // a seesaw or bridge: one line
+          lines = {{{{c.x - hw, c.y}, {c.x + hw, c.y}}, 0, kind == 1 ? LineKind::Solid : LineKind::OneWay}};
+        }
+        try {
+          platforms.push_back(world.createPlatform(1, lines));
+          const Vec2 pivot{c.x + in(r, -hw, hw), c.y + in(r, -hh, hh)};
+          world.setPlatformSpin(platforms.back(), pivot, in(r, -(1 << 28), 1 << 28) >> in(r, 0, 8));
+        } catch (const Error&) {}
+      }
+      std::vector<EntityId> ids;
+      for (int i = 0; i < 20; ++i) {
+        const int kind = in(r, 0, 2);
+        const Convex shape = kind == 0   ? Convex::box(in(r, 8, 60), in(r, 8, 60))
+                             : kind == 1 ? Convex::regular(in(r, 3, 9), in(r, 8, 60))
+                                         : Convex::regular(3, in(r, 10, 50));
+        const EntityId id = world.createEntity(shape);
+        for (int tries = 0; tries < 30; ++tries) try {
+            world.insert(id, 1, {in(r, -2800, 2800), in(r, 100, 2900)}, static_cast<Angle>(r()));
+            ids.push_back(id);
+            break;
+          } catch (const Error&) {}
+      }
+      for (int f = 0; f < 400; ++f) {
+        if (f % 100 == 99)
+          for (const PlatformId p : platforms) {
+            const PlatformView v = world.platform(p);
+            world.setPlatformSpin(p, v.pivot, in(r, -(1 << 28), 1 << 28) >> in(r, 0, 8));
+          }
+        std::vector<Angle> before;
+        for (const PlatformId p : platforms) before.push_back(world.platform(p).angle);
+        rules.platforms.clear();
+        world.solve();
+        if (!check) continue;
+        ++frames;
+        for (size_t k = 0; k < platforms.size(); ++k) {
+          const PlatformView v = world.platform(platforms[k]);
+          if (static_cast<Angle>(v.angle - before[k]) == static_cast<Angle>(v.spin)) continue;
+          ++shortTurns;
+          if (!rules.platforms.count(platforms[k].index)) {
+            ADD_FAILURE() << "trial " << trial << ", frame " << f << ": platform " << k << " turned "
+                          << static_cast<int32_t>(v.angle - before[k]) << " of " << v.spin << ", silently";
+            return uint64_t{0};
+          }
+        }
+        for (const EntityId id : ids)
+          for (const Contact& c : world.entity(id).contacts()) carried += c.line.platform.isSet();
+        if (world.countOverlaps() != 0) {
+          ADD_FAILURE() << "trial " << trial << ", frame " << f << ": overlap";
+          return uint64_t{0};
+        }
+      }
+      return world.stateHash();
+    };
+    EXPECT_EQ(run(true), run(false)) << "trial " << trial;
+  }
+  EXPECT_GT(shortTurns, 20) << "the family must meet turns that could not be made";
+  EXPECT_GT(carried, 1000) << "the family must have bodies on the turning lines";
+  std::printf("%d frames, %d short turns (each a crush the rules heard), %d contacts with turning lines\n", frames,
+              shortTurns, carried);
+}
+
+// A seesaw: a plank turning slowly about its middle carries a box standing on each end, one up and
+// one down (faster than this gravity would let it fall), and neither leaves it nor sinks into it
+// while it turns.
+TEST(Platforms, ASeesawCarriesWhatStandsOnIt) {
+  World world;
+  MapPart& part = world.createMapPart(1);
+  part.line({-3000, 0}, {3000, 0});
+  part.setGravity({0, -kUnit / 2});
+  part.initialize();
+  const PlatformId plank =
+      world.createPlatform(1, std::vector<PlatformLine>{{{{-600, 500}, {600, 500}}, 0, LineKind::Solid}});
+  const EntityId left = world.createEntity(Convex::box(30, 30)), right = world.createEntity(Convex::box(30, 30));
+  world.insert(left, 1, {-450, 530}, 0);
+  world.insert(right, 1, {450, 530}, 0);
+  for (int f = 0; f < 10; ++f) world.solve();
+  world.setPlatformSpin(plank, {0, 500}, static_cast<int32_t>(angleFromDegrees(1, 4)));  // 0.25 degree a frame
+  for (int f = 0; f < 60; ++f) {                                                         // 15 degrees
+    world.solve();
+    ASSERT_EQ(world.countOverlaps(), 0u);
+    const Segment line = world.platform(plank).lines[0].segment;
+    const Vec2w d = line.b - line.a;
+    for (const EntityId id : {left, right}) {
+      // The gap between the box and the plank, across the plank: whole-unit positions on a tilted
+      // line leave up to a unit and a half (the rest test's reach), never less than none.
+      double gap = 1e9;
+      const EntityView e = world.entity(id);
+      for (const Vec2 v : e.instance(0).shape) {
+        const Vec2 p{e.position().x + v.x, e.position().y + v.y};
+        gap = std::min(gap, double(cross(d, p - line.a)) / std::hypot(double(d.x), double(d.y)));
+      }
+      EXPECT_GE(gap, 0) << "frame " << f;
+      EXPECT_LE(gap, 1.5) << "frame " << f << ": the " << (id == left ? "left" : "right") << " box left the plank";
+    }
+  }
+  // The right end rose about 450 sin 15 = 116 units, the left fell as far.
+  EXPECT_NEAR(world.entity(right).position().y, 530 + 116, 20);
+  EXPECT_NEAR(world.entity(left).position().y, 530 - 116, 20);
+}

@@ -236,6 +236,11 @@ function platon.world.lineCount(part) end
 ---@param tag? integer
 function platon.world.oneWay(part, x0, y0, x1, y1, tag) end
 
+--- How far it has turned about its pivot.
+---@param platform integer
+---@return number degrees
+function platon.world.platformAngle(platform) end
+
 --- How far it has moved since it was made.
 ---@param platform integer
 ---@return integer dx
@@ -279,6 +284,13 @@ function platon.world.setGravityEnabled(entity, on) end
 ---@param dx integer
 ---@param dy integer
 function platon.world.setPlatformMotion(platform, dx, dy) end
+
+--- Turns it about (px, py) by that much every frame from the next on.
+---@param platform integer
+---@param px integer
+---@param py integer
+---@param degreesPerFrame number
+function platon.world.setPlatformSpin(platform, px, py, degreesPerFrame) end
 
 --- Sets it (each within +-131071): to copy a body exactly.
 ---@param entity integer

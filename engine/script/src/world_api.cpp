@@ -442,6 +442,22 @@ int setPlatformMotion(lua_State* L) {
   return 0;
 }
 
+// setPlatformSpin(p, px, py, degreesPerFrame): turns it about (px, py) every frame.
+int setPlatformSpin(lua_State* L) {
+  const physics::PlatformId id = checkPlatform(L, 1);
+  const physics::Vec2 pivot{checkInt32(L, 2, -physics::kCoordLimit, physics::kCoordLimit),
+                            checkInt32(L, 3, -physics::kCoordLimit, physics::kCoordLimit)};
+  const double perFrame = checkNumber(L, 4);
+  if (std::fabs(perFrame) > 22.5) lua::argError(L, 4, "degrees per frame within +-22.5");
+  worldOf(L).setPlatformSpin(id, pivot, static_cast<int32_t>(std::llround(perFrame / 360.0 * 4294967296.0)));
+  return 0;
+}
+
+int platformAngle(lua_State* L) {
+  lua_pushnumber(L, degrees(worldOf(L).platform(checkPlatform(L, 1)).angle));
+  return 1;
+}
+
 int platformOffset(lua_State* L) {
   const physics::PlatformView p = worldOf(L).platform(checkPlatform(L, 1));
   lua_pushnumber(L, p.offset.x);
@@ -538,6 +554,8 @@ constexpr luaL_Reg kWorld[] = {
     {"refreshPierce", lua::bound<refreshPierce>},
     {"createPlatform", lua::bound<createPlatform>},
     {"setPlatformMotion", lua::bound<setPlatformMotion>},
+    {"setPlatformSpin", lua::bound<setPlatformSpin>},
+    {"platformAngle", lua::bound<platformAngle>},
     {"platformOffset", lua::bound<platformOffset>},
     {"destroyPlatform", lua::bound<destroyPlatform>},
     {"frame", lua::bound<frame>},

@@ -48,7 +48,13 @@ struct PlatformView {
   Vec2 offset;  // how far it has moved since it was created
   Vec2 motion;  // whole units per frame
   std::span<const PlatformLine> lines;
+  Vec2 pivot;        // the point it turns about, where it is now
+  Angle angle = 0;   // how far it has turned about the pivot (since the pivot was last changed)
+  int32_t spin = 0;  // binary-angle units per frame, counter-clockwise
 };
+
+// The largest turn a platform makes in a frame: 1/16 of a turn.
+inline constexpr int32_t kMaxPlatformSpin = int32_t{1} << 28;
 
 // The live entities, in handle order: for (EntityId id : world.entities()). No allocation.
 class EntityRange {
@@ -130,6 +136,16 @@ class World {
   PlatformId createPlatform(MapPartId part, std::span<const PlatformLine> lines);
   void destroyPlatform(PlatformId id);
   void setPlatformMotion(PlatformId id, Vec2 perFrame);
+  // Turns the platform about `pivot` (the part's coordinates; the pivot moves with the platform) by
+  // `anglePerFrame` binary-angle units a frame (up to kMaxPlatformSpin), after its motion: gears,
+  // seesaws, turning bridges. Its lines at angle a are its lines as created turned by a about the
+  // pivot, each end rounded to the nearest unit (the CORDIC rotation entities use): angles add
+  // exactly, so a full turn comes back exactly and quarter turns are exact. Each frame's turn goes
+  // in sub-steps in which no point strays half a unit from its chord; what a sub-step's lines sweep
+  // over is pushed along (a slide of the entity's own), riders are carried as if fixed to it, and
+  // where room cannot be made it stops for the frame and calls Rules::crushed. A new pivot for a
+  // turned platform takes its lines where they are as its lines as created (nothing jumps).
+  void setPlatformSpin(PlatformId id, Vec2 pivot, int32_t anglePerFrame);
   PlatformView platform(PlatformId id) const;
   // The live platforms, oldest slot first (what a renderer draws each frame).
   std::vector<PlatformId> platforms() const;
