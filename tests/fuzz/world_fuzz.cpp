@@ -306,7 +306,8 @@ struct Scene {
       const PlatformId p = platforms[in.range(0, static_cast<int64_t>(platforms.size()) - 1)];
       if (in.flag()) {  // a turn about a point, up to the largest a frame (and past it: refused)
         const Vec2 pivot = in.point();
-        const int32_t spin = static_cast<int32_t>(in.range(-(int64_t{1} << 28) - 1, (int64_t{1} << 28) + 1) >> in.shift(20));
+        const int32_t spin =
+            static_cast<int32_t>(in.range(-(int64_t{1} << 28) - 1, (int64_t{1} << 28) + 1) >> in.shift(20));
         trace("world.setPlatformSpin(p", p.index, ", ", pivot, ", ", spin, ");");
         attempt("setPlatformSpin", [&] { world.setPlatformSpin(p, pivot, spin); });
         return;

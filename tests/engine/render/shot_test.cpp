@@ -80,6 +80,7 @@ const Case kCases[] = {
     {"prism", "prism_walk", 500},
     {"soccer_ball", "soccer_ball_walk", 500},
     {"cube_lift", "cube_lift_ride", 300},       // the lift, a platform a script made, with the player on it
+    {"cube_bridge", "cube_bridge_cross", 200},  // the bridge, a platform a script turns, half way round
     {"tetra_around", "tetra_around_run", 366},  // the player over a sharp edge
 };
 
