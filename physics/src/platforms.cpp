@@ -101,6 +101,16 @@ void World::setPlatformMotion(PlatformId id, Vec2 perFrame) {
   live(*impl_, id).motion = perFrame;
 }
 
+int64_t turnRadius2(const std::vector<PlatformLine>& lines, Vec2 pivot) {
+  int64_t radius2 = 1;
+  for (const PlatformLine& l : lines)
+    for (const Vec2 p : {l.segment.a, l.segment.b}) {
+      const Vec2w r = wide(p) - wide(pivot);
+      radius2 = std::max<int64_t>(radius2, static_cast<int64_t>(std::min<i128>(dot128(r, r), INT64_MAX)));
+    }
+  return radius2;
+}
+
 void World::setPlatformSpin(PlatformId id, Vec2 pivot, int32_t anglePerFrame) {
   if (anglePerFrame > kMaxPlatformSpin || anglePerFrame < -kMaxPlatformSpin)
     throw Error("setPlatformSpin: " + std::to_string(anglePerFrame) +
@@ -108,12 +118,25 @@ void World::setPlatformSpin(PlatformId id, Vec2 pivot, int32_t anglePerFrame) {
   if (!inRange(pivot)) throw Error("setPlatformSpin: pivot " + toString(pivot) + " is outside the coordinate range");
   Platform& pl = live(*impl_, id);
   const Vec2 pivotBase{pivot.x - pl.offset.x, pivot.y - pl.offset.y};
-  if (pivotBase != pl.pivot && pl.angle != 0) {
-    // A new pivot for a turned platform: its lines where they are now become its lines as created,
-    // so nothing jumps (the turn so far is kept in them, rounded once).
-    for (size_t k = 0; k < pl.base.size(); ++k)
-      pl.base[k].segment = {{pl.lines[k].segment.a.x - pl.offset.x, pl.lines[k].segment.a.y - pl.offset.y},
-                            {pl.lines[k].segment.b.x - pl.offset.x, pl.lines[k].segment.b.y - pl.offset.y}};
+  // A new pivot for a turned platform: its lines where they are now become its lines as created,
+  // so nothing jumps (the turn so far is kept in them, rounded once).
+  const bool rebase = pivotBase != pl.pivot && pl.angle != 0;
+  std::vector<PlatformLine> base = pl.base;
+  if (rebase)
+    for (size_t k = 0; k < base.size(); ++k)
+      base[k].segment = {{pl.lines[k].segment.a.x - pl.offset.x, pl.lines[k].segment.a.y - pl.offset.y},
+                         {pl.lines[k].segment.b.x - pl.offset.x, pl.lines[k].segment.b.y - pl.offset.y}};
+  // What a frame of it costs, bounded (a far pivot and a fast turn make many sub-steps).
+  const int64_t steps = anglePerFrame == 0 ? 0 : rotationSubSteps(turnRadius2(base, pivotBase), anglePerFrame);
+  const int64_t lineSteps = steps * static_cast<int64_t>(base.size());
+  if (steps > kMaxPlatformTurnSubSteps || lineSteps > kMaxPlatformTurnLineSteps)
+    throw Error("setPlatformSpin: turning its " + std::to_string(base.size()) + " lines about " + toString(pivot) +
+                " by " + std::to_string(anglePerFrame) + " a frame takes " + std::to_string(steps) +
+                " sub-steps a frame (at most " + std::to_string(kMaxPlatformTurnSubSteps) + ", and " +
+                std::to_string(kMaxPlatformTurnLineSteps) +
+                " sub-steps times lines): turn it slower, or about a nearer point");
+  if (rebase) {
+    pl.base = std::move(base);
     pl.angle = 0;
   }
   pl.pivot = pivotBase;
@@ -122,8 +145,8 @@ void World::setPlatformSpin(PlatformId id, Vec2 pivot, int32_t anglePerFrame) {
 
 PlatformView World::platform(PlatformId id) const {
   const Platform& pl = live(*impl_, id);
-  return {pl.part,  pl.offset, pl.motion, pl.lines, {pl.pivot.x + pl.offset.x, pl.pivot.y + pl.offset.y},
-          pl.angle, pl.spin};
+  const Vec2 pivot{pl.pivot.x + pl.offset.x, pl.pivot.y + pl.offset.y};
+  return {pl.part, pl.offset, pl.motion, pl.lines, pivot, pl.angle, pl.spin, pl.work};
 }
 
 std::vector<PlatformId> World::platforms() const {
@@ -179,9 +202,11 @@ WorldImpl::PlatformHit WorldImpl::firstPlatformHit(uint32_t slot, Vec2w motion) 
   (motion.y < 0 ? swept.y0 : swept.y1) += motion.y;
   PlatformHit hit;
   std::vector<Vec2> verts;
+  uint64_t work = pl.lines.size();
   entityIndex.forEachNear(pl.part, swept, [&](uint32_t s) {
     const Instance* inst = slots[s].entity->instanceIn(pl.part);
     if (!inst) return;
+    work += pl.lines.size();
     worldVertices(*inst, verts);
     for (uint32_t k = 0; k < pl.lines.size(); ++k) {
       if (!stops(pl.lines[k], verts)) continue;
@@ -191,6 +216,7 @@ WorldImpl::PlatformHit WorldImpl::firstPlatformHit(uint32_t slot, Vec2w motion) 
         hit = {sw.enter, s, k};
     }
   });
+  platforms[slot].work += work;
   return hit;
 }
 
@@ -208,6 +234,7 @@ Vec2w WorldImpl::clearPlatformStep(uint32_t slot, Vec2w step, std::optional<uint
     entityIndex.forEachNear(pl.part, at, [&](uint32_t s) {
       const Instance* inst = slots[s].entity->instanceIn(pl.part);
       if (!clear || !inst) return;
+      platforms[slot].work += pl.lines.size();
       worldVertices(*inst, verts);
       for (const PlatformLine& l : pl.lines) {
         if (!stops(l, verts)) continue;
@@ -390,6 +417,7 @@ bool WorldImpl::clearTurn(uint32_t slot, const std::vector<PlatformLine>& next, 
   entityIndex.forEachNear(pl.part, area, [&](uint32_t s) { near.push_back(s); });
   std::sort(near.begin(), near.end());  // slot order: the index's order is not part of the result
   near.erase(std::unique(near.begin(), near.end()), near.end());
+  platforms[slot].work += near.size() * next.size();
   std::vector<Vec2> verts;
   const Vec2w pivot{int64_t{pl.pivot.x} + pl.offset.x, int64_t{pl.pivot.y} + pl.offset.y};
   for (const uint32_t s : near) {
@@ -430,13 +458,7 @@ bool WorldImpl::clearTurn(uint32_t slot, const std::vector<PlatformLine>& next, 
 Angle WorldImpl::turnPlatform(uint32_t slot) {
   Platform& pl = platforms[slot];
   const int64_t delta = pl.spin;
-  int64_t radius2 = 1;
-  for (const PlatformLine& l : pl.base)
-    for (const Vec2 p : {l.segment.a, l.segment.b}) {
-      const Vec2w r = wide(p) - wide(pl.pivot);
-      radius2 = std::max<int64_t>(radius2, static_cast<int64_t>(std::min<i128>(dot128(r, r), INT64_MAX)));
-    }
-  const int64_t steps = rotationSubSteps(radius2, delta);
+  const int64_t steps = rotationSubSteps(turnRadius2(pl.base, pl.pivot), delta);
   std::vector<PlatformLine> next;
   Angle turned = 0;
   for (int64_t j = 1; j <= steps; ++j) {
@@ -445,6 +467,7 @@ Angle WorldImpl::turnPlatform(uint32_t slot) {
     const bool inside = std::all_of(next.begin(), next.end(),
                                     [](const PlatformLine& l) { return inRange(l.segment.a) && inRange(l.segment.b); });
     uint32_t blocker = 0;
+    platforms[slot].work += next.size();
     if (!inside) break;  // the coordinate range's edge: no entity can be beyond it to hear of it
     if (!clearTurn(slot, next, blocker)) {
       crushed(slot, blocker, 0);
@@ -465,6 +488,7 @@ Angle WorldImpl::turnPlatform(uint32_t slot) {
 // standing on it as if fixed to it (less what it pushed them).
 void WorldImpl::movePlatforms() {
   for (uint32_t slot = 0; slot < platforms.size(); ++slot) {
+    platforms[slot].work = 0;
     if (!platforms[slot].alive || (platforms[slot].motion == Vec2{} && platforms[slot].spin == 0)) continue;
     const std::vector<Rider> riders = ridersOf(slot);
     const Vec2w moved = platforms[slot].motion == Vec2{} ? Vec2w{} : advancePlatform(slot);

@@ -71,6 +71,7 @@ struct Platform {
   Vec2 pivot;
   Angle angle = 0;
   int32_t spin = 0;       // binary-angle units a frame
+  uint64_t work = 0;      // the latest frame's (PlatformView::work)
   Box box{0, 0, -1, -1};  // around its lines, where they are now
   uint32_t generation = 0;
   bool alive = false;
@@ -79,6 +80,8 @@ struct Platform {
 // Sub-steps that turn a shape of squared radius `radius2` (about the turning point) by `delta`
 // binary-angle units with every point's arc within half a unit of its chord (rotation.cpp).
 int64_t rotationSubSteps(int64_t radius2, int64_t delta);
+// The squared distance of a platform's farthest line end from `pivot` (capped at INT64_MAX).
+int64_t turnRadius2(const std::vector<PlatformLine>& lines, Vec2 pivot);
 
 // A platform's line as the solver names it: this bit, the platform's slot << 16, the line.
 inline constexpr LineIndex kPlatformLineBit = 0x40000000u;

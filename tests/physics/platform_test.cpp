@@ -399,6 +399,27 @@ TEST(Platforms, BadPlatformsAreRefused) {
   world.destroyPlatform(p);
   expectError([&] { world.platform(p); }, "does not exist");
   expectError([&] { world.setPlatformMotion(p, {1, 0}); }, "does not exist");
+  expectError([&] { world.setPlatformSpin(p, {0, 0}, 1); }, "does not exist");
+  // Turns: too fast, a pivot out of range, and too costly a frame (the refused call changes nothing).
+  const PlatformId q = world.createPlatform(1, std::vector<PlatformLine>{{{{0, 50}, {4000, 50}}, 0, LineKind::Solid}});
+  expectError([&] { world.setPlatformSpin(q, {0, 0}, kMaxPlatformSpin + 1); }, "exceeds the largest turn per frame");
+  expectError([&] { world.setPlatformSpin(q, {kCoordLimit, kCoordLimit + 1}, 1); }, "outside the coordinate range");
+  expectError(
+      [&] {
+        world.setPlatformSpin(q, {-1'000'000'000, 0}, kMaxPlatformSpin);
+      },
+      "sub-steps a frame (at most 1024");
+  EXPECT_EQ(world.platform(q).spin, 0);
+  world.setPlatformSpin(q, {2000, 50}, kMaxPlatformSpin);  // a face's width at the fastest: taken
+  EXPECT_EQ(world.platform(q).spin, kMaxPlatformSpin);
+  std::vector<PlatformLine> many;
+  for (int32_t k = 0; k < 2000; ++k) many.push_back({{{k, 300}, {k, 400}}, 0, LineKind::Solid});
+  const PlatformId comb = world.createPlatform(1, many);
+  expectError(
+      [&] {
+        world.setPlatformSpin(comb, {-1'000'000, 350}, kMaxPlatformSpin);
+      },
+      "262144 sub-steps times lines");
 }
 
 // --- Turning platforms ---

@@ -51,11 +51,11 @@ struct ScriptSystem::State {
   // past the budget it is stopped, and what it made is removed (else the next frames would cost the
   // same). A body's work is the lines and bodies its moves were tested against.
   void chargePhysics() {
-    if (context.madeBy.empty()) return;
+    if (context.madeBy.empty() && context.platforms.empty()) return;
     physics::World& world = scene->world();
     struct Cost {
       uint64_t tested = 0;
-      size_t bodies = 0;
+      size_t bodies = 0, platforms = 0;
     };
     std::map<int, Cost> costs;
     for (auto it = context.madeBy.begin(); it != context.madeBy.end();) {
@@ -69,9 +69,16 @@ struct ScriptSystem::State {
       ++cost.bodies;
       ++it;
     }
+    // Platforms too: moving and turning one tests its lines against the bodies near it.
+    for (const auto& [number, sandbox] : context.platforms) {
+      const lua::HandleBits bits = lua::platformBits(number);
+      Cost& cost = costs[sandbox];
+      cost.tested += world.platform({bits.index, bits.generation}).work;
+      ++cost.platforms;
+    }
     for (const auto& [sandbox, cost] : costs) {
-      const std::string what = "the physics of the " + std::to_string(cost.bodies) + " bodies it made (" +
-                               std::to_string(cost.tested) +
+      const std::string what = "the physics of the " + std::to_string(cost.bodies) + " bodies and " +
+                               std::to_string(cost.platforms) + " platforms it made (" + std::to_string(cost.tested) +
                                " tests of a line or a body, a body's step counting as 16; " +
                                std::to_string(kStepsPerTest) + " steps a test)";
       if (std::optional<ScriptError> stop =

@@ -1216,7 +1216,8 @@ TEST(MadeBodies, ThePhysicsOfWhatASandboxMakesIsChargedToItAndOverTheBudgetItSto
       const std::string file = maker == "mod" ? "mod.lua" : "level.lua";
       bool stopped = false;
       for (const std::string& e : p.errors)
-        stopped = stopped || (e.find(file + ": stopped: the physics of the 400 bodies it made") != std::string::npos &&
+        stopped = stopped || (e.find(file + ": stopped: the physics of the 400 bodies and 0 platforms it made") !=
+                                  std::string::npos &&
                               e.find("past the frame's script budget of 100000 steps") != std::string::npos &&
                               e.find(file + " disabled: fix it and save to reload") != std::string::npos);
       EXPECT_TRUE(stopped) << joined(p.errors);
@@ -1233,6 +1234,62 @@ TEST(MadeBodies, ThePhysicsOfWhatASandboxMakesIsChargedToItAndOverTheBudgetItSto
       EXPECT_TRUE(q.errors.empty()) << joined(q.errors);
       EXPECT_EQ(fine.scene().world().entityCount(), 401u);
     }
+}
+
+// Platforms are charged as bodies are: a level turning a comb of 1,000 lines high over the floor
+// pays for the lines placed each sub-step (two a frame: 2,000 lines, 40,000 steps), and past the
+// budget it is stopped and the platform removed; under the budget it turns on. A turn too costly for one frame (a far
+// pivot, the fastest spin) is an error at the script's line.
+TEST(MadeBodies, APlatformsMovesAndTurnsAreChargedToTheSandboxThatMadeIt) {
+  const std::string comb =
+      "local p\n"
+      "local function make(game)\n"
+      "  local lines = {}\n"
+      "  for i = 0, 999 do lines[#lines + 1] = 1500 + i; lines[#lines + 1] = 3000; "
+      "lines[#lines + 1] = 1500 + i; lines[#lines + 1] = 3100 end\n"
+      "  p = game.world.createPlatform(0, lines)\n"
+      "  game.world.setPlatformSpin(p, 2000, 3050, 10)\n"
+      "end\n"
+      "return { tick = function(game, frame)\n"
+      "  if not p then make(game) end\n"
+      "  game.message('turned ' .. math.floor(game.world.platformAngle(p) + 0.5))\n"
+      "end }\n";
+  const core::SystemRegistry registry = scripting();
+  {
+    Level over("comb_over", comb, "", "", ", limits = { steps = 2e4 }");
+    core::LiveScene live(over.scene, registry, false);
+    const Played p = play(live, 10, 0);
+    bool stopped = false;
+    for (const std::string& e : p.errors)
+      stopped = stopped ||
+                e.find("level.lua: stopped: the physics of the 0 bodies and 1 platforms it made") != std::string::npos;
+    EXPECT_TRUE(stopped) << joined(p.errors);
+    EXPECT_TRUE(live.scene().world().platforms().empty()) << "what it made is removed";
+  }
+  {
+    Level under("comb_under", comb, "", "", ", limits = { steps = 1e8 }");
+    core::LiveScene live(under.scene, registry, false);
+    const Played p = play(live, 10, 0);
+    EXPECT_TRUE(p.errors.empty()) << joined(p.errors);
+    EXPECT_EQ(p.status.message, "turned 90");  // made at the first tick: the tenth reads nine turns
+  }
+  {
+    Level far("far_pivot",
+              "return { build = function(game)\n"
+              "  local p = game.world.createPlatform(0, { 100, 900, 4000, 900 })\n"
+              "  game.world.setPlatformSpin(p, -1000000000, 950, 22.5)\n"
+              "end }\n");
+    // The level does not load: its build fails at the call, which says why.
+    try {
+      core::LiveScene live(far.scene, registry, false);
+      ADD_FAILURE() << "a turn of 6,210 sub-steps a frame was taken";
+    } catch (const std::exception& e) {
+      const std::string m = e.what();
+      EXPECT_NE(m.find("level.lua:3: setPlatformSpin: turning its 1 lines about (-1000000000, 950)"), std::string::npos)
+          << m;
+      EXPECT_NE(m.find("takes 6210 sub-steps a frame (at most 1024"), std::string::npos) << m;
+    }
+  }
 }
 
 // A level's own player may write into `game`, but every field the engine reads is checked after

@@ -51,10 +51,18 @@ struct PlatformView {
   Vec2 pivot;        // the point it turns about, where it is now
   Angle angle = 0;   // how far it has turned about the pivot (since the pivot was last changed)
   int32_t spin = 0;  // binary-angle units per frame, counter-clockwise
+  // The latest solve()'s work for it: its lines placed and checked and the bodies they were checked
+  // against (as EntityView::work counts an entity's), so a caller can bound what it costs.
+  uint64_t work = 0;
 };
 
-// The largest turn a platform makes in a frame: 1/16 of a turn.
+// The largest turn a platform makes in a frame (1/16 of a turn), and the most a frame's turn may
+// cost: sub-steps (which grow with the turn and the square root of the farthest end's distance
+// from the pivot), and sub-steps times lines. A 4096-unit face's width turns at the largest spin
+// in 130 sub-steps.
 inline constexpr int32_t kMaxPlatformSpin = int32_t{1} << 28;
+inline constexpr int64_t kMaxPlatformTurnSubSteps = 1024;
+inline constexpr int64_t kMaxPlatformTurnLineSteps = int64_t{1} << 18;
 
 // The live entities, in handle order: for (EntityId id : world.entities()). No allocation.
 class EntityRange {
@@ -144,7 +152,9 @@ class World {
   // in sub-steps in which no point strays half a unit from its chord; what a sub-step's lines sweep
   // over is pushed along (a slide of the entity's own), riders are carried as if fixed to it, and
   // where room cannot be made it stops for the frame and calls Rules::crushed. A new pivot for a
-  // turned platform takes its lines where they are as its lines as created (nothing jumps).
+  // turned platform takes its lines where they are as its lines as created (nothing jumps). A turn
+  // that would cost a frame more than kMaxPlatformTurnSubSteps sub-steps or kMaxPlatformTurnLineSteps
+  // sub-steps times lines is refused (Error): turn it slower, or about a nearer point.
   void setPlatformSpin(PlatformId id, Vec2 pivot, int32_t anglePerFrame);
   PlatformView platform(PlatformId id) const;
   // The live platforms, oldest slot first (what a renderer draws each frame).
