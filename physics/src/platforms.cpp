@@ -406,53 +406,118 @@ Vec2w sweepAt(const Segment& from, const Segment& to, Vec2w p) {
 
 }  // namespace
 
+namespace {
+
+Box boxOfSegments(const Segment& a, const Segment& b) {
+  Box box{INT64_MAX, INT64_MAX, INT64_MIN, INT64_MIN};
+  for (const Vec2 p : {a.a, a.b, b.a, b.b}) {
+    box.x0 = std::min<int64_t>(box.x0, p.x), box.x1 = std::max<int64_t>(box.x1, p.x);
+    box.y0 = std::min<int64_t>(box.y0, p.y), box.y1 = std::max<int64_t>(box.y1, p.y);
+  }
+  return box;
+}
+
+bool boxesMeet(const Box& a, const Box& b) { return a.x0 <= b.x1 && a.x1 >= b.x0 && a.y0 <= b.y1 && a.y1 >= b.y0; }
+
+// The ring about the pivot that a turn's lines sweep: from the nearest any line comes to the pivot
+// to the farthest end (squared). A body wholly inside or outside it is met by none of them.
+struct Ring {
+  i128 near2 = -1, far2 = 0;
+  void add(const Segment& s, Vec2w pivot) {
+    const Vec2w d = s.b - s.a, pa = pivot - wide(s.a);
+    const i128 dd = dot128(d, d), along = dd == 0 ? 0 : std::clamp<i128>(dot128(pa, d), 0, dd);
+    // The squared distance from the pivot to the segment, rounded down (a unit's margin below).
+    const i128 cx = i128{pa.x} * dd - along * d.x, cy = i128{pa.y} * dd - along * d.y;
+    const i128 toLine = dd == 0 ? dot128(pa, pa) : (cx / dd) * (cx / dd) + (cy / dd) * (cy / dd);
+    near2 = near2 < 0 ? toLine : std::min(near2, toLine);
+    for (const Vec2 p : {s.a, s.b}) far2 = std::max(far2, dot128(wide(p) - pivot, wide(p) - pivot));
+  }
+  // Whether the box can meet the ring (with a few units of margin for rounding).
+  bool meets(const Box& b, Vec2w pivot) const {
+    const i128 dx = std::max<i128>({0, i128{b.x0} - pivot.x, i128{pivot.x} - b.x1});
+    const i128 dy = std::max<i128>({0, i128{b.y0} - pivot.y, i128{pivot.y} - b.y1});
+    const i128 fx = std::max<i128>(i128{b.x1} - pivot.x, i128{pivot.x} - b.x0);
+    const i128 fy = std::max<i128>(i128{b.y1} - pivot.y, i128{pivot.y} - b.y0);
+    const i128 nearest2 = dx * dx + dy * dy, farthest2 = fx * fx + fy * fy;
+    const i128 margin = 4 * (isqrtWide(far2) + 4);  // (r + 2)^2 - r^2 > 4r: a couple of units either way
+    return nearest2 <= far2 + margin && farthest2 + margin >= near2;
+  }
+  static i128 isqrtWide(i128 v) { return static_cast<i128>(isqrt(static_cast<u128>(v))); }
+};
+
+}  // namespace
+
 bool WorldImpl::clearTurn(uint32_t slot, const std::vector<PlatformLine>& next, uint32_t& blocker) {
   const Platform& pl = platforms[slot];
-  Box area = pl.box;
-  for (const PlatformLine& l : next)
-    for (const Vec2 p : {l.segment.a, l.segment.b})
-      area = {std::min<int64_t>(area.x0, p.x), std::min<int64_t>(area.y0, p.y), std::max<int64_t>(area.x1, p.x),
-              std::max<int64_t>(area.y1, p.y)};
-  std::vector<uint32_t> near;
-  entityIndex.forEachNear(pl.part, area, [&](uint32_t s) { near.push_back(s); });
-  std::sort(near.begin(), near.end());  // slot order: the index's order is not part of the result
-  near.erase(std::unique(near.begin(), near.end()), near.end());
-  platforms[slot].work += near.size() * next.size();
-  std::vector<Vec2> verts;
   const Vec2w pivot{int64_t{pl.pivot.x} + pl.offset.x, int64_t{pl.pivot.y} + pl.offset.y};
-  for (const uint32_t s : near) {
-    Entity& e = *slots[s].entity;
-    // A few pushes: the sweep where the nearest line meets it, then what rounding left.
-    for (int attempt = 0;; ++attempt) {
-      const Instance* inst = e.instanceIn(pl.part);
-      if (!inst) break;
-      worldVertices(*inst, verts);
-      size_t k = 0;
-      while (k < next.size() &&
-             !(stops(pl.lines[k], verts) && sweptOver(pl.lines[k].segment, next[k].segment, pivot, verts)))
-        ++k;
-      if (k == next.size()) break;
-      if (attempt == 3) {
-        blocker = s;
-        return false;
-      }
-      const Vec2w centre = wide(inst->position) + wide(inst->centre);
-      Vec2w by = sweepAt(pl.lines[k].segment, next[k].segment, centre);
-      if (attempt > 0 || by == Vec2w{}) {  // and a unit off the line's new place, on the entity's side
-        const Segment& to = next[k].segment;
-        const Vec2w d = to.b - to.a;
-        i128 side = 0;
-        for (const Vec2 v : verts) side += cross(d, v - to.a);
-        const Vec2w out = side >= 0 ? Vec2w{-d.y, d.x} : Vec2w{d.y, -d.x};
-        by = by + Vec2w{out.x > 0 ? 1 : out.x < 0 ? -1 : 0, out.y > 0 ? 1 : out.y < 0 ? -1 : 0};
-      }
-      if (!push(e, inst->frame == 0 ? by : rotateWideInverse(inst->rotation, by))) {
-        blocker = s;
-        return false;
+  // What each line passes over in this sub-step, boxed; the ring they all sweep about the pivot.
+  std::vector<Box> swept(next.size());
+  Box area{INT64_MAX, INT64_MAX, INT64_MIN, INT64_MIN};
+  Ring ring;
+  for (size_t k = 0; k < next.size(); ++k) {
+    swept[k] = boxOfSegments(pl.lines[k].segment, next[k].segment);
+    swept[k] = {swept[k].x0 - 1, swept[k].y0 - 1, swept[k].x1 + 1, swept[k].y1 + 1};
+    area = {std::min(area.x0, swept[k].x0), std::min(area.y0, swept[k].y0), std::max(area.x1, swept[k].x1),
+            std::max(area.y1, swept[k].y1)};
+    ring.add(pl.lines[k].segment, pivot);
+    ring.add(next[k].segment, pivot);
+  }
+  std::vector<Vec2> verts;
+  // The first line (in order) that sweeps over the body in slot s, or next.size().
+  auto sweptBy = [&](const Instance& inst) {
+    worldVertices(inst, verts);
+    const Box b = sweptBox(verts, {});
+    if (!ring.meets(b, pivot)) return next.size();
+    size_t k = 0;
+    for (; k < next.size(); ++k) {
+      ++platforms[slot].work;
+      if (boxesMeet(b, swept[k]) && stops(pl.lines[k], verts) &&
+          sweptOver(pl.lines[k].segment, next[k].segment, pivot, verts))
+        break;
+    }
+    return k;
+  };
+  // Passes over the bodies near, in slot order, pushing each the lines sweep over; a push can move
+  // a body already passed (a chain), so passes go on until one pushes nothing: then every body is
+  // clear. A body that cannot be cleared stops the sub-step.
+  for (int pass = 0; pass < 4; ++pass) {
+    std::vector<uint32_t> near;
+    entityIndex.forEachNear(pl.part, area, [&](uint32_t s) { near.push_back(s); });
+    std::sort(near.begin(), near.end());  // slot order: the index's order is not part of the result
+    platforms[slot].work += near.size();
+    bool pushed = false;
+    for (const uint32_t s : near) {
+      Entity& e = *slots[s].entity;
+      // A few pushes: the sweep where the nearest line meets it, then what rounding left.
+      for (int attempt = 0;; ++attempt) {
+        const Instance* inst = e.instanceIn(pl.part);
+        if (!inst) break;
+        const size_t k = sweptBy(*inst);
+        if (k == next.size()) break;
+        if (attempt == 3 || pass == 3) {
+          blocker = s;
+          return false;
+        }
+        const Vec2w centre = wide(inst->position) + wide(inst->centre);
+        Vec2w by = sweepAt(pl.lines[k].segment, next[k].segment, centre);
+        if (attempt > 0 || by == Vec2w{}) {  // and a unit off the line's new place, on the entity's side
+          const Segment& to = next[k].segment;
+          const Vec2w d = to.b - to.a;
+          i128 side = 0;
+          for (const Vec2 v : verts) side += cross(d, v - to.a);
+          const Vec2w out = side >= 0 ? Vec2w{-d.y, d.x} : Vec2w{d.y, -d.x};
+          by = by + Vec2w{out.x > 0 ? 1 : out.x < 0 ? -1 : 0, out.y > 0 ? 1 : out.y < 0 ? -1 : 0};
+        }
+        if (!push(e, inst->frame == 0 ? by : rotateWideInverse(inst->rotation, by))) {
+          blocker = s;
+          return false;
+        }
+        pushed = true;
       }
     }
+    if (!pushed) return true;
   }
-  return true;
+  return true;  // not reached: the last pass returns at its first body still swept over
 }
 
 Angle WorldImpl::turnPlatform(uint32_t slot) {
