@@ -447,68 +447,88 @@ struct Ring {
 
 }  // namespace
 
-bool WorldImpl::clearTurn(uint32_t slot, const std::vector<PlatformLine>& next, uint32_t& blocker) {
-  const Platform& pl = platforms[slot];
-  const Vec2w pivot{int64_t{pl.pivot.x} + pl.offset.x, int64_t{pl.pivot.y} + pl.offset.y};
-  // What each line passes over in this sub-step, boxed; the ring they all sweep about the pivot.
-  std::vector<Box> swept(next.size());
+namespace {
+
+// What one sub-step of a turn sweeps: each line's box (its old and new place, a unit wider), all
+// of them together, and the ring about the pivot they sweep.
+struct TurnSweep {
+  Vec2w pivot;
+  std::vector<Box> lineBoxes;
   Box area{INT64_MAX, INT64_MAX, INT64_MIN, INT64_MIN};
   Ring ring;
+};
+
+TurnSweep sweepOfTurn(const Platform& pl, const std::vector<PlatformLine>& next) {
+  TurnSweep t;
+  t.pivot = {int64_t{pl.pivot.x} + pl.offset.x, int64_t{pl.pivot.y} + pl.offset.y};
   for (size_t k = 0; k < next.size(); ++k) {
-    swept[k] = boxOfSegments(pl.lines[k].segment, next[k].segment);
-    swept[k] = {swept[k].x0 - 1, swept[k].y0 - 1, swept[k].x1 + 1, swept[k].y1 + 1};
-    area = {std::min(area.x0, swept[k].x0), std::min(area.y0, swept[k].y0), std::max(area.x1, swept[k].x1),
-            std::max(area.y1, swept[k].y1)};
-    ring.add(pl.lines[k].segment, pivot);
-    ring.add(next[k].segment, pivot);
+    const Box b = boxOfSegments(pl.lines[k].segment, next[k].segment);
+    t.lineBoxes.push_back({b.x0 - 1, b.y0 - 1, b.x1 + 1, b.y1 + 1});
+    const Box& w = t.lineBoxes.back();
+    t.area = {std::min(t.area.x0, w.x0), std::min(t.area.y0, w.y0), std::max(t.area.x1, w.x1),
+              std::max(t.area.y1, w.y1)};
+    t.ring.add(pl.lines[k].segment, t.pivot);
+    t.ring.add(next[k].segment, t.pivot);
   }
+  return t;
+}
+
+// The first line (in order) whose sweep passes over the vertices, or next.size(); `work` counts the
+// lines tested.
+size_t lineSweepingOver(const Platform& pl, const std::vector<PlatformLine>& next, const TurnSweep& t,
+                        std::span<const Vec2> verts, uint64_t& work) {
+  const Box b = sweptBox(verts, {});
+  if (!t.ring.meets(b, t.pivot)) return next.size();
+  size_t k = 0;
+  for (; k < next.size(); ++k) {
+    ++work;
+    if (boxesMeet(b, t.lineBoxes[k]) && stops(pl.lines[k], verts) &&
+        sweptOver(pl.lines[k].segment, next[k].segment, t.pivot, verts))
+      break;
+  }
+  return k;
+}
+
+// The push that clears a body of a line's sweep from `from` to `to`: where the line's point
+// nearest the body's centre goes; on a retry (or when that is nothing), a unit more off the line's
+// new place, on the body's side.
+Vec2w turnPush(const Segment& from, const Segment& to, Vec2w centre, std::span<const Vec2> verts, bool retry) {
+  Vec2w by = sweepAt(from, to, centre);
+  if (!retry && by != Vec2w{}) return by;
+  const Vec2w d = to.b - to.a;
+  i128 side = 0;
+  for (const Vec2 v : verts) side += cross(d, v - to.a);
+  const Vec2w out = side >= 0 ? Vec2w{-d.y, d.x} : Vec2w{d.y, -d.x};
+  return by + Vec2w{out.x > 0 ? 1 : out.x < 0 ? -1 : 0, out.y > 0 ? 1 : out.y < 0 ? -1 : 0};
+}
+
+}  // namespace
+
+// Passes over the bodies near, in slot order, pushing each one the lines sweep over (a few times:
+// the sweep, then what rounding left). A push can move a body already passed (a chain of pushable
+// bodies), so passes go on until one pushes nothing: then every body is clear. A body that cannot
+// be cleared stops the sub-step.
+bool WorldImpl::clearTurn(uint32_t slot, const std::vector<PlatformLine>& next, uint32_t& blocker) {
+  const TurnSweep sweep = sweepOfTurn(platforms[slot], next);
+  const MapPartId partId = platforms[slot].part;
   std::vector<Vec2> verts;
-  // The first line (in order) that sweeps over the body in slot s, or next.size().
-  auto sweptBy = [&](const Instance& inst) {
-    worldVertices(inst, verts);
-    const Box b = sweptBox(verts, {});
-    if (!ring.meets(b, pivot)) return next.size();
-    size_t k = 0;
-    for (; k < next.size(); ++k) {
-      ++platforms[slot].work;
-      if (boxesMeet(b, swept[k]) && stops(pl.lines[k], verts) &&
-          sweptOver(pl.lines[k].segment, next[k].segment, pivot, verts))
-        break;
-    }
-    return k;
-  };
-  // Passes over the bodies near, in slot order, pushing each the lines sweep over; a push can move
-  // a body already passed (a chain), so passes go on until one pushes nothing: then every body is
-  // clear. A body that cannot be cleared stops the sub-step.
   for (int pass = 0; pass < 4; ++pass) {
     std::vector<uint32_t> near;
-    entityIndex.forEachNear(pl.part, area, [&](uint32_t s) { near.push_back(s); });
+    entityIndex.forEachNear(partId, sweep.area, [&](uint32_t s) { near.push_back(s); });
     std::sort(near.begin(), near.end());  // slot order: the index's order is not part of the result
     platforms[slot].work += near.size();
     bool pushed = false;
     for (const uint32_t s : near) {
       Entity& e = *slots[s].entity;
-      // A few pushes: the sweep where the nearest line meets it, then what rounding left.
       for (int attempt = 0;; ++attempt) {
-        const Instance* inst = e.instanceIn(pl.part);
+        const Instance* inst = e.instanceIn(partId);
         if (!inst) break;
-        const size_t k = sweptBy(*inst);
+        worldVertices(*inst, verts);
+        const size_t k = lineSweepingOver(platforms[slot], next, sweep, verts, platforms[slot].work);
         if (k == next.size()) break;
-        if (attempt == 3 || pass == 3) {
-          blocker = s;
-          return false;
-        }
-        const Vec2w centre = wide(inst->position) + wide(inst->centre);
-        Vec2w by = sweepAt(pl.lines[k].segment, next[k].segment, centre);
-        if (attempt > 0 || by == Vec2w{}) {  // and a unit off the line's new place, on the entity's side
-          const Segment& to = next[k].segment;
-          const Vec2w d = to.b - to.a;
-          i128 side = 0;
-          for (const Vec2 v : verts) side += cross(d, v - to.a);
-          const Vec2w out = side >= 0 ? Vec2w{-d.y, d.x} : Vec2w{d.y, -d.x};
-          by = by + Vec2w{out.x > 0 ? 1 : out.x < 0 ? -1 : 0, out.y > 0 ? 1 : out.y < 0 ? -1 : 0};
-        }
-        if (!push(e, inst->frame == 0 ? by : rotateWideInverse(inst->rotation, by))) {
+        const Vec2w by = turnPush(platforms[slot].lines[k].segment, next[k].segment,
+                                  wide(inst->position) + wide(inst->centre), verts, attempt > 0);
+        if (attempt == 3 || pass == 3 || !push(e, inst->frame == 0 ? by : rotateWideInverse(inst->rotation, by))) {
           blocker = s;
           return false;
         }

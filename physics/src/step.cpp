@@ -846,7 +846,12 @@ void WorldImpl::stepEntityTested(Entity& e) {
   Vec2w frameQ17 = e.subunitQ17 + before + e.velocityQ16;
   // At rest: pressed into the lines it is against, it cannot move. It stays exactly where it is,
   // with no velocity and no fraction of a unit left over, so it stays at rest.
-  if (e.angularVelocity == 0 && restsAgainstLines(e, e.velocityQ16)) {
+  bool rests = e.angularVelocity == 0 && restsAgainstLines(e, e.velocityQ16);
+  // Held by an entity that has not stepped this frame (a guard it walks behind): that one steps
+  // first, as a sweep meeting it would have it, and the test is asked again. Only for a body that
+  // was moving (one at rest from the frame's start keeps its answer: World::RestMode).
+  if (rests && before != Vec2w{} && stepHoldersFirst(e)) rests = restsAgainstLines(e, e.velocityQ16);
+  if (rests) {
     // It was moving and stops here: a landing (a rounded step can end touching a line that the
     // exact motion reaches just after the frame) is a contact, whichever path finds it.
     const Arrival arrival = before != Vec2w{} ? reportArrival(e, frameQ17) : Arrival::Rests;
@@ -924,6 +929,15 @@ bool WorldImpl::stepMetEntityFirst(Entity& mover, uint32_t slot) {
   --neighbourDepth;
   pushDepth = pushesBefore;
   return true;
+}
+
+bool WorldImpl::stepHoldersFirst(Entity& e) {
+  std::vector<uint32_t> holders;
+  for (const Contact& c : e.contacts)
+    if (c.other.isSet()) holders.push_back(c.other.index);
+  bool stepped = false;
+  for (const uint32_t slot : holders) stepped = stepMetEntityFirst(e, slot) || stepped;
+  return stepped;
 }
 
 void WorldImpl::slide(Move& move) {

@@ -268,6 +268,8 @@ struct WorldImpl {
   // A sub-move of `mover` met the entity in `slot`: if that one has not stepped this frame, it steps
   // now (returns true, and the sub-move is planned again).
   bool stepMetEntityFirst(Entity& mover, uint32_t slot);
+  // The same for the entities among e's contacts (its rest test's): whether any stepped.
+  bool stepHoldersFirst(Entity& e);
   void stepEntity(Entity& e);
   void stepEntityTested(Entity& e);  // the step as it is without a kept rest answer
   void slide(Move& move);

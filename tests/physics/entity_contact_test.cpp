@@ -282,8 +282,9 @@ Convex uprightCrate(std::mt19937_64& r) {
 }
 
 // A push chain meets every entity where that entity is this frame, whatever the handles' order: an
-// entity a move meets that has not stepped yet steps first. Random families: a player walking into
-// a row of one to four crates (boxes and random convex shapes, touching or a few units apart), the
+// entity a move meets (or a moving body's rest test finds holding it) that has not stepped yet steps
+// first. Random families: a player walking into a row of none to four crates (boxes and random
+// convex shapes, touching or a few units apart; none: the player right behind the guard), the
 // row led by a guard that walks away (or stands) at its own speed, either way along the floor; the
 // same scene made in three handle orders moves identically, frame by frame. (Without the rule, a
 // later guard is met at its start-of-frame place: the chain stops short every other frame.)
@@ -308,7 +309,7 @@ TEST(EntitySolids, AChainSeesItsNeighboursWhereTheyAreThisFrameWhateverTheirHand
                       {kPlayer, kCrate | kEnemy, 0, false},
                       dir * int64_t{between(r, kUnit, 30 * kUnit)}});
     int32_t front = -1500 * dir + dir * pw;  // where the row so far ends
-    const int crates = between(r, 1, 4);
+    const int crates = between(r, 0, 4);     // none: the player walks right behind the guard
     for (int i = 0; i <= crates; ++i) {
       const bool guard = i == crates;
       const Convex shape = r() % 2 ? Convex::box(between(r, 8, 40), between(r, 8, 40)) : uprightCrate(r);
