@@ -1,6 +1,7 @@
 // Moving platforms: groups of lines of one map part that move by whole units once a frame, before
 // the entities step, pushing what is in their way and carrying what stands on them.
 #include <algorithm>
+#include <array>
 
 #include "bounds.h"
 #include "fixed_point.h"
@@ -409,12 +410,8 @@ Vec2w sweepAt(const Segment& from, const Segment& to, Vec2w p) {
 namespace {
 
 Box boxOfSegments(const Segment& a, const Segment& b) {
-  Box box{INT64_MAX, INT64_MAX, INT64_MIN, INT64_MIN};
-  for (const Vec2 p : {a.a, a.b, b.a, b.b}) {
-    box.x0 = std::min<int64_t>(box.x0, p.x), box.x1 = std::max<int64_t>(box.x1, p.x);
-    box.y0 = std::min<int64_t>(box.y0, p.y), box.y1 = std::max<int64_t>(box.y1, p.y);
-  }
-  return box;
+  const std::array<Vec2, 4> ends{a.a, a.b, b.a, b.b};
+  return sweptBox(ends, {});
 }
 
 bool boxesMeet(const Box& a, const Box& b) { return a.x0 <= b.x1 && a.x1 >= b.x0 && a.y0 <= b.y1 && a.y1 >= b.y0; }

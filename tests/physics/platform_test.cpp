@@ -18,6 +18,16 @@ int32_t in(std::mt19937_64& rng, int32_t lo, int32_t hi) {
   return lo + static_cast<int32_t>(rng() % static_cast<uint64_t>(hi - lo + 1));
 }
 
+// Part 1 of `world`: a room 6,000 wide and 3,000 high (floor, walls, ceiling), not yet initialized.
+MapPart& room(World& world) {
+  MapPart& part = world.createMapPart(1);
+  part.line({-3000, 0}, {3000, 0});
+  part.line({-3000, 3000}, {-3000, 0});
+  part.line({3000, 0}, {3000, 3000});
+  part.line({3000, 3000}, {-3000, 3000});
+  return part;
+}
+
 struct Crushes : Rules {
   int count = 0;
   EntityId last;
@@ -153,11 +163,7 @@ TEST(Platforms, RandomPlatformsNeverOverlapAnything) {
       World world;
       Crushes rules;
       world.setRules(&rules);
-      MapPart& part = world.createMapPart(1);
-      part.line({-3000, 0}, {3000, 0});
-      part.line({-3000, 3000}, {-3000, 0});
-      part.line({3000, 0}, {3000, 3000});
-      part.line({3000, 3000}, {-3000, 3000});
+      MapPart& part = room(world);
       for (int i = 0; i < 10; ++i) {
         const Vec2 a{in(r, -2800, 2800), in(r, 100, 2800)};
         const Vec2 b{a.x + in(r, -400, 400), a.y + in(r, -100, 100)};
@@ -227,11 +233,7 @@ void checkShortMovesAreCrushes(uint64_t seed, std::string& failure, int& frames,
   World world;
   CrushLog rules;
   world.setRules(&rules);
-  MapPart& part = world.createMapPart(1);
-  part.line({-3000, 0}, {3000, 0});
-  part.line({-3000, 3000}, {-3000, 0});
-  part.line({3000, 0}, {3000, 3000});
-  part.line({3000, 3000}, {-3000, 3000});
+  MapPart& part = room(world);
   part.setGravity({0, -in(r, 4000, 40000)});
   part.initialize();
   for (int i = 0; i < 6; ++i) {
@@ -504,11 +506,7 @@ TEST(Platforms, TurningPlatformsNeverOverlapAndEveryShortTurnIsACrush) {
       World world;
       CrushLog rules;
       world.setRules(&rules);
-      MapPart& part = world.createMapPart(1);
-      part.line({-3000, 0}, {3000, 0});
-      part.line({-3000, 3000}, {-3000, 0});
-      part.line({3000, 0}, {3000, 3000});
-      part.line({3000, 3000}, {-3000, 3000});
+      MapPart& part = room(world);
       for (int i = 0; i < 6; ++i) {
         const Vec2 a{in(r, -2800, 2800), in(r, 100, 2800)};
         const Vec2 b{a.x + in(r, -400, 400), a.y + in(r, -100, 100)};
@@ -703,11 +701,7 @@ uint64_t auditScene(uint64_t seed, bool check, int mode, std::string& failure) {
   World world;
   AuditLog rules;
   world.setRules(&rules);
-  MapPart& part = world.createMapPart(1);
-  part.line({-3000, 0}, {3000, 0});
-  part.line({-3000, 3000}, {-3000, 0});
-  part.line({3000, 0}, {3000, 3000});
-  part.line({3000, 3000}, {-3000, 3000});
+  MapPart& part = room(world);
   for (int i = 0; i < 8; ++i) {
     const Vec2 a{in(r, -2800, 2800), in(r, 100, 2800)};
     const Vec2 b{a.x + in(r, -600, 600), a.y + in(r, -600, 600)};
