@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "platon/physics/angle.h"
 #include "platon/physics/convex.h"
 #include "platon/physics/ids.h"
 #include "platon/physics/rules.h"
@@ -23,29 +24,42 @@ struct Instance {
   Vec2w idealQ30;
   std::vector<Vec2> shape;  // vertices relative to position: the entity shape turned by angle + frame
   Vec2 low, high;           // the shape's bounding box, relative to position (setShape keeps it)
-  // A point inside the shape, relative to position: the mean of its vertices, rounded. Which face
-  // an instance is on is decided by this point, not by the origin, which a shape need not contain.
+  // A point inside the shape, relative to position: the mean of the created shape's vertices,
+  // turned with it (turnedCentre). Which face an instance is on is decided by this point, not by
+  // the origin, which a shape need not contain.
   Vec2 centre;
   std::vector<LineIndex> overlapping;   // pierceable lines whose interior this instance overlaps
   std::vector<LineIndex> blockedWarps;  // warps that could not be crossed this frame (act solid)
   Region region;
 };
 
-// Sets an instance's shape and its bounding box.
-inline void setShape(Instance& inst, std::vector<Vec2> shape) {
+// A point inside the entity's shape turned by `turn`: the mean of the created (unturned) shape's
+// vertices, turned and rounded. Turning the mean, not taking the mean of the turned vertices,
+// keeps it the same point of the body in every copy: a turned shape is a new convex hull of
+// rounded points, which can lose a vertex that rounding put in line with its neighbours (a copy's
+// mean then moved by a tenth of the body's size from its anchor's, and the two could both sit
+// off their faces while straddling one edge).
+inline Vec2 turnedCentre(const Convex& shape, Angle turn) {
+  const auto vertices = shape.vertices();
+  const auto n = static_cast<i128>(vertices.size());
+  i128 sx = 0, sy = 0;
+  for (const Vec2 v : vertices) sx += v.x, sy += v.y;
+  const Vec2w meanQ16{static_cast<int64_t>(roundDiv(sx << 16, n)), static_cast<int64_t>(roundDiv(sy << 16, n))};
+  const Vec2w turned = turn == 0 ? meanQ16 : rotateWide(rotationOf(turn), meanQ16);
+  return {static_cast<int32_t>(roundDiv(turned.x, i128{1} << 16)),
+          static_cast<int32_t>(roundDiv(turned.y, i128{1} << 16))};
+}
+
+// Sets an instance's shape (the entity's turned by `turn`, its angle and the instance's frame)
+// and its bounding box and centre.
+inline void setShape(Instance& inst, std::vector<Vec2> shape, const Convex& created, Angle turn) {
   inst.shape = std::move(shape);
   inst.low = inst.high = inst.shape.front();
   for (const Vec2 v : inst.shape) {
     inst.low = {std::min(inst.low.x, v.x), std::min(inst.low.y, v.y)};
     inst.high = {std::max(inst.high.x, v.x), std::max(inst.high.y, v.y)};
   }
-  int64_t sx = 0, sy = 0;
-  for (const Vec2 v : inst.shape) sx += v.x, sy += v.y;
-  const auto n = static_cast<int64_t>(inst.shape.size());
-  auto meanOf = [n](int64_t sum) {  // rounded to nearest, halves away from zero
-    return static_cast<int32_t>(sum >= 0 ? (2 * sum + n) / (2 * n) : -((-2 * sum + n) / (2 * n)));
-  };
-  inst.centre = {meanOf(sx), meanOf(sy)};
+  inst.centre = turnedCentre(created, turn);
 }
 
 // The instance's centre in its part's coordinates (see Instance::centre).

@@ -16,7 +16,7 @@ Instance WorldImpl::makeInstance(const Entity& e, MapPartId partId, Vec2 positio
   inst.rotation = rotationOf(turn);
   inst.idealQ30 = q30FromPoint(position);
   const Convex turned = e.shape.rotated(static_cast<Angle>(e.angle + turn));
-  setShape(inst, {turned.vertices().begin(), turned.vertices().end()});
+  setShape(inst, {turned.vertices().begin(), turned.vertices().end()}, e.shape, static_cast<Angle>(e.angle + turn));
   for (const Vec2 v : inst.shape)
     if (std::abs(int64_t{position.x} + v.x) > kCoordLimit || std::abs(int64_t{position.y} + v.y) > kCoordLimit)
       throw Error("instance at " + toString(position) + " would reach outside the coordinate range (vertex " +

@@ -90,7 +90,8 @@ bool WorldImpl::rotateBy(Entity& e, int64_t delta) {
       shapes.push_back(std::move(next));
     }
     if (blocked) break;
-    for (size_t i = 0; i < e.instances.size(); ++i) setShape(e.instances[i], std::move(shapes[i]));
+    for (size_t i = 0; i < e.instances.size(); ++i)
+      setShape(e.instances[i], std::move(shapes[i]), e.shape, static_cast<Angle>(angle + e.instances[i].frame));
     e.angle = angle;
   }
   updatePierceState(e, {});

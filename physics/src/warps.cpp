@@ -4,17 +4,13 @@
 #include <algorithm>
 #include <array>
 
+#include "faces.h"
 #include "fixed_point.h"
 #include "projection.h"
 #include "world_impl.h"
 
 namespace platon::physics {
 namespace {
-
-Vec2w mapThroughWarp(const Warp& w, Segment from, Vec2w pointQ30) {
-  const Vec2w rel = pointQ30 - q30FromPoint(from.a);
-  return q30FromPoint(w.targetSegment.a) + rotateWide(w.rotation, rel);
-}
 
 uint8_t edgeState(const std::vector<Vec2>& verts, Segment s) {
   return overlapsInterior(verts, s) ? 2 : (touchesOrOverlaps(verts, s) ? 1 : 0);
@@ -246,52 +242,6 @@ void WorldImpl::updateLinks(Move& move) {
   }
 }
 
-namespace {
-
-// Whether `p` is inside the face, on its border, or beyond it by no more than rounding: the two
-// copies of an entity crossing an edge both have their origin on it to within a unit or two.
-bool insideFace(const MapPart& part, Vec2 p) {
-  constexpr int64_t kRounding = 4;  // units
-  for (const LineIndex line : part.faceLoop()) {
-    const Segment s = part.segments()[line];
-    const Vec2w d = s.b - s.a;
-    const i128 side = i128{d.x} * (i128{p.y} - s.a.y) - i128{d.y} * (i128{p.x} - s.a.x);
-    if (side < 0 && side * side > i128{kRounding} * kRounding * (i128{d.x} * d.x + i128{d.y} * d.y)) return false;
-  }
-  return true;
-}
-
-// The loop index of the face's corner nearest `p`: the corner where loop[k] starts.
-size_t nearestCorner(const MapPart& face, Vec2 p) {
-  const auto loop = face.faceLoop();
-  size_t corner = 0;
-  i128 best = -1;
-  for (size_t k = 0; k < loop.size(); ++k) {
-    const Vec2w d = face.segments()[loop[k]].a - p;
-    const i128 d2 = i128{d.x} * d.x + i128{d.y} * d.y;
-    if (best < 0 || d2 < best) best = d2, corner = k;
-  }
-  return corner;
-}
-
-// How far from corner k along either of its edges a point must lie to be `clearance` units from
-// the other edge's line: clearance / sin(angle), or just clearance where the corner is obtuse
-// (the vertex itself is then the nearest point of the other edge).
-int64_t alongForClearance(const MapPart& face, size_t k, int64_t clearance) {
-  const auto loop = face.faceLoop();
-  const Segment out = face.segments()[loop[k]];
-  const Segment in = face.segments()[loop[(k + loop.size() - 1) % loop.size()]];
-  const Vec2w a = in.b - in.a, b = out.b - out.a;
-  const i128 dot = i128{a.x} * b.x + i128{a.y} * b.y;
-  const i128 cross = i128{a.x} * b.y - i128{a.y} * b.x;
-  if (dot >= 0 || cross <= 0) return clearance;
-  const i128 lengths = static_cast<i128>(isqrt(static_cast<u128>(i128{a.x} * a.x + i128{a.y} * a.y))) *
-                       static_cast<i128>(isqrt(static_cast<u128>(i128{b.x} * b.x + i128{b.y} * b.y)));
-  return static_cast<int64_t>(std::min<i128>((i128{clearance} * lengths + cross - 1) / cross, INT64_MAX));
-}
-
-}  // namespace
-
 // Copies hold together through warp links; near a vertex a copy can be linked only to a copy
 // that has since been erased, and then nothing would ever erase it (it drifts off its face). The
 // copies linked, directly or not, to the anchor stay; on faces, if none of those has its origin on
@@ -342,137 +292,6 @@ void WorldImpl::eraseUnlinkedCopies(Move& move) {
         eraseInstance(move, i);
         break;
       }
-}
-
-// The way back onto a face from past one of its corners: beside the edge the velocity crosses
-// most (`byOut`: the edge that starts at the corner), `away` along that edge from the vertex,
-// `inward` into the face; `meet`, how far along the velocity meets the edge before it passes the
-// vertex; `clear`, how far the next frame's motion stays clear of the other edges at the vertex.
-struct WorldImpl::CornerReturn {
-  size_t corner = 0;
-  Vec2 vertex;
-  bool byOut = false;
-  Vec2w away, inward;
-  int64_t length = 0;  // of the chosen edge
-  int64_t meet = 0, clear = 0;
-};
-
-WorldImpl::CornerReturn WorldImpl::cornerReturn(const Entity& e) const {
-  const MapPart& face = part(e.instances[0].part);
-  const Vec2 at = centreOf(e.instances[0]);
-  const auto loop = face.faceLoop();
-  CornerReturn r;
-  // The corner nearest the centre, and its two edges: `in` ends there, `out` starts there.
-  r.corner = nearestCorner(face, at);
-  const Segment out = face.segments()[loop[r.corner]];
-  const Segment in = face.segments()[loop[(r.corner + loop.size() - 1) % loop.size()]];
-  r.vertex = out.a;
-  // Outward normals (right of each counter-clockwise edge); the edge the velocity leaves by most.
-  const Vec2w outDir = out.b - out.a, inDir = in.b - in.a;
-  const Vec2w outNormal{outDir.y, -outDir.x}, inNormal{inDir.y, -inDir.x};
-  const Vec2w v = e.velocityQ16;
-  const int64_t outLength =
-      static_cast<int64_t>(isqrt(static_cast<u128>(i128{outDir.x} * outDir.x + i128{outDir.y} * outDir.y)));
-  const int64_t inLength =
-      static_cast<int64_t>(isqrt(static_cast<u128>(i128{inDir.x} * inDir.x + i128{inDir.y} * inDir.y)));
-  const i128 leaveOut = (i128{v.x} * outNormal.x + i128{v.y} * outNormal.y) * inLength;
-  const i128 leaveIn = (i128{v.x} * inNormal.x + i128{v.y} * inNormal.y) * outLength;
-  r.byOut = leaveOut >= leaveIn;
-  // Along the chosen edge away from the vertex, and inward (left of the edge).
-  r.away = r.byOut ? outDir : Vec2w{-inDir.x, -inDir.y};
-  r.inward = r.byOut ? Vec2w{-outDir.y, outDir.x} : Vec2w{-inDir.y, inDir.x};
-  r.length = r.byOut ? outLength : inLength;
-  if (r.length == 0) return r;
-  // Two units in; far enough along that the velocity meets the edge before passing the vertex:
-  // along >= 4 + 2 * (velocity toward the vertex) / (velocity out across the edge).
-  const i128 towardVertex = -(i128{v.x} * r.away.x + i128{v.y} * r.away.y);
-  const i128 across = -(i128{v.x} * r.inward.x + i128{v.y} * r.inward.y);
-  r.meet = 4;
-  if (towardVertex > 0 && across > 0)
-    r.meet += static_cast<int64_t>(std::min<i128>(towardVertex * 2 / across + 1, r.length / 4));
-  // And far enough that the next frame's motion (at most this speed and its gravity) ends within
-  // this face or the neighbour across the edge, clear of their other edges at the vertex: a body
-  // put back closer goes through the same vertex again and is put back at the same place every
-  // frame, frozen while its velocity grows.
-  const Vec2w g = face.gravity();
-  const int64_t reach = static_cast<int64_t>((isqrt(static_cast<u128>(i128{v.x} * v.x + i128{v.y} * v.y)) +
-                                              isqrt(static_cast<u128>(i128{g.x} * g.x + i128{g.y} * g.y))) /
-                                             kQ16) +
-                        8;
-  r.clear = alongForClearance(face, r.corner, reach);
-  const Line& crossed = face.lines()[loop[r.byOut ? r.corner : (r.corner + loop.size() - 1) % loop.size()]];
-  if (crossed.kind == LineKind::Warp) {
-    const Warp& w = face.warps()[crossed.warp];
-    const MapPart& neighbour = part(w.target);
-    if (!neighbour.faceLoop().empty()) {
-      const Vec2 image = r.byOut ? w.targetSegment.a : w.targetSegment.b;
-      r.clear = std::max(r.clear, alongForClearance(neighbour, nearestCorner(neighbour, image), reach));
-    }
-  }
-  return r;
-}
-
-// Puts the anchor by the corner as `r` says: as far along as `clear`, or where a wall stands
-// there nearer (half, a quarter of the way, then as near as the edge is met), on the face and free.
-// Returns how far along it went, or -1 (left where it was) when no place is free.
-int64_t WorldImpl::placeByCorner(Entity& e, const CornerReturn& r) {
-  const MapPart& face = part(e.instances[0].part);
-  Instance& anchor = e.instances[0];
-  const Vec2 was = anchor.position;
-  std::vector<Vec2>& verts = scratch.probe;
-  const int64_t far = std::max(r.meet, r.clear);
-  const std::array<int64_t, 4> candidates{far, std::max(r.meet, far / 2), std::max(r.meet, far / 4), r.meet};
-  for (size_t k = 0; k < candidates.size(); ++k) {
-    if (k > 0 && candidates[k] == candidates[k - 1]) continue;
-    const int64_t along = std::min<int64_t>(candidates[k], r.length / 2);
-    // The centre goes there (the origin may lie outside the shape).
-    anchor.position = {r.vertex.x - anchor.centre.x +
-                           static_cast<int32_t>(roundDiv(i128{r.away.x} * along + i128{r.inward.x} * 2, r.length)),
-                       r.vertex.y - anchor.centre.y +
-                           static_cast<int32_t>(roundDiv(i128{r.away.y} * along + i128{r.inward.y} * 2, r.length))};
-    worldVertices(anchor, verts);
-    coverMotion(anchor, {});  // the lines around the new place, for the walls there and the warps to cross
-    if (insideFace(face, centreOf(anchor)) && isFree(e, anchor, verts)) return along;
-  }
-  anchor.position = was;  // a wall right at the corner: leave it (it cannot go far that way)
-  coverMotion(anchor, {});
-  return -1;
-}
-
-// The faces meeting at a vertex of a solid leave less than a full turn around it, so a path
-// through the vertex (or close enough that the copies' rounding agrees) comes out beyond the
-// corner of every face at once: no warp edge is crossed and nothing would ever bring the entity
-// back. It is put just inside the anchor's face by that corner, beside the edge its velocity
-// crosses most, far enough along that edge that it goes on over it as over any other edge.
-void WorldImpl::keepOnFace(Move& move) {
-  Entity& e = move.entity;
-  if (e.instances.empty()) return;
-  if (e.instances.size() > 1) eraseUnlinkedCopies(move);
-  for (const Instance& inst : e.instances) {
-    const MapPart& p = part(inst.part);
-    if (p.faceLoop().empty() || insideFace(p, centreOf(inst))) return;  // on a face: the warp links decide
-  }
-  const CornerReturn r = cornerReturn(e);
-  if (r.length == 0) return;
-  const int64_t along = placeByCorner(e, r);
-  if (along < 0) return;
-  // Nearer than the next frame's motion (walls about the vertex leave no room further off), it
-  // would go out past the same vertex again and be put back here frame after frame with its
-  // velocity unchanged: the vertex stops it there, as a wall would, and gravity or its own push
-  // takes it on from rest.
-  if (along < std::min<int64_t>(r.clear, r.length / 2)) {
-    e.velocityQ16 = {};
-    e.subunitQ17 = {};
-  }
-  while (e.instances.size() > 1) eraseInstance(move, e.instances.size() - 1);
-  Instance& anchor = e.instances[0];
-  anchor.idealQ30 = q30FromPoint(anchor.position);
-  // What it overlaps where it now is, as at insert: the lines it left end, the lines it now
-  // overlaps begin, and the warp edges it straddles get their copies now. (With the overlaps of
-  // the place it left, it went over the next edge with no copy and out past the face again.)
-  updatePierceState(e, {});
-  createOverlappedWarps(e);
-  ++report.cornerReturns;
 }
 
 }  // namespace platon::physics

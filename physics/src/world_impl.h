@@ -308,15 +308,19 @@ struct WorldImpl {
   // Turns what is left of a frame's move into a frame turned by theta (the anchor changed).
   void turnMove(Move& move, Angle theta);
   void updateLinks(Move& move);
-  // After a slide: an entity whose every copy is beyond its face's corners (it went through a
-  // vertex) is put back on the anchor's face by that corner (faces: MapPart::faceLoop).
-  void keepOnFace(Move& move);
-  // Its steps: where and how to come back by the corner, and the anchor put there.
-  struct CornerReturn;
-  CornerReturn cornerReturn(const Entity& e) const;
-  int64_t placeByCorner(Entity& e, const CornerReturn& r);
   void eraseUnlinkedCopies(Move& move);
   void eraseInstance(Move& move, size_t index);
+
+  // vertices.cpp. After a slide: an entity whose every copy is beyond its face's corners (it went
+  // through a vertex) goes on over the faces round the vertex (faces: MapPart::faceLoop).
+  void keepOnFace(Move& move);
+  // Its steps: places on a face for the body, and the body put at one.
+  struct FacePlace;
+  FacePlace continuePastVertex(const Entity& e, size_t from, bool otherSide) const;
+  FacePlace inwardOnFace(const Entity& e, size_t from, int64_t inset) const;
+  FacePlace backOnFace(const Entity& e, size_t from, int64_t inset) const;
+  bool placeOnFace(Move& move, const FacePlace& c);
+  void stopAtFaceEdges(Entity& e);
 
   // pierce_events.cpp
   void updatePierceState(Entity& e, const Path& path);

@@ -26,7 +26,8 @@ struct SolveReport {
   uint32_t warpsCreated = 0;
   uint32_t instancesErased = 0;
   uint32_t copiesReplaced = 0;  // copies moved within two units to free them from a rounding snag
-  uint32_t cornerReturns = 0;   // entities put back on a face after going through a vertex
+  uint32_t cornerReturns = 0;   // entities gone on over the faces round a vertex they went through
+  uint32_t vertexHolds = 0;     // entities a walled vertex held on a face, as a wall would
   uint32_t warpsHeld = 0;       // warp edges no whole-unit step could reach: held like a wall for the frame
   uint32_t restsKept = 0;       // bodies at rest that nothing disturbed: their answer kept, no test
   uint32_t restMismatches = 0;  // RestMode::Checked: kept answers the test contradicted (always 0)

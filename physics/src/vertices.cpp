@@ -1,0 +1,226 @@
+// A body that goes through a vertex of a solid. The faces meeting at a vertex leave less than a
+// full turn around it, so a path through the vertex (or near enough that every copy's centre
+// comes out beyond its face's corner) crosses no warp edge: nothing would ever bring the body back
+// onto a face. Its path goes on over the faces around the vertex instead, as if they were laid
+// flat beside the face it left (a geodesic), from where it is, as far as it went: no jump.
+#include <array>
+
+#include "faces.h"
+#include "world_impl.h"
+
+namespace platon::physics {
+namespace {
+
+// Whether velocity `v` leaves the face at corner k across the edge that starts there (`out`) by
+// more than across the edge that ends there (`in`): the larger outward speed, ties to `out`.
+bool leavesByOut(const MapPart& face, size_t k, Vec2w v) {
+  const auto loop = face.faceLoop();
+  const Segment out = face.segments()[loop[k]];
+  const Segment in = face.segments()[loop[(k + loop.size() - 1) % loop.size()]];
+  const Vec2w outDir = out.b - out.a, inDir = in.b - in.a;
+  // Outward normals: right of each counter-clockwise edge.
+  const i128 leaveOut = (i128{v.x} * outDir.y - i128{v.y} * outDir.x) * lengthOf(inDir);
+  const i128 leaveIn = (i128{v.x} * inDir.y - i128{v.y} * inDir.x) * lengthOf(outDir);
+  return leaveOut >= leaveIn;
+}
+
+bool sameEdge(Segment a, Segment b) { return (a.a == b.a && a.b == b.b) || (a.a == b.b && a.b == b.a); }
+
+}  // namespace
+
+// A place on a face for the body: its centre there, and the turn from the anchor's frame into
+// that face's.
+struct WorldImpl::FacePlace {
+  bool found = false;
+  MapPartId part = 0;
+  Vec2w centreQ30;
+  Angle turn = 0;
+};
+
+// The path past the vertex, from copy `from`: the same distance from the vertex, the same heading,
+// only turned by the warps crossed, face after face round the vertex until one holds the point.
+// It goes round on the side of the vertex the path passed: across the one edge it is past, or,
+// past both edges at the corner, the one its heading passes the vertex beside (through the vertex
+// itself, the one it leaves by most). `otherSide`: round the other way (past both edges only).
+WorldImpl::FacePlace WorldImpl::continuePastVertex(const Entity& e, size_t from, bool otherSide) const {
+  const Instance& start = e.instances[from];
+  const MapPart* face = &part(start.part);
+  const Vec2 centre = centreOf(start);
+  auto loop = face->faceLoop();
+  size_t k = nearestCorner(*face, centre);
+  const Segment out = face->segments()[loop[k]];
+  const Segment in = face->segments()[loop[(k + loop.size() - 1) % loop.size()]];
+  FacePlace c;
+  c.turn = start.frame;
+  c.centreQ30 = q30FromPoint(centre);
+  Vec2 vertex = out.a;
+  const bool pastOut = insideEdge(out, centre) < 0, pastIn = insideEdge(in, centre) < 0;
+  if (!pastOut && !pastIn) return c;  // beyond an edge of another corner: not this vertex
+  if (otherSide && !(pastOut && pastIn)) return c;
+  bool byOut = pastOut;
+  if (pastOut && pastIn) {
+    const Vec2w v = rotateWide(start.rotation, e.velocityQ16), rel = c.centreQ30 - q30FromPoint(vertex);
+    const i128 side = i128{v.x} * rel.y - i128{v.y} * rel.x;  // > 0: it passed the vertex on `out`'s side
+    byOut = (side != 0 ? side > 0 : leavesByOut(*face, k, v)) != otherSide;
+  }
+  LineIndex edge = loop[byOut ? k : (k + loop.size() - 1) % loop.size()];
+  // Each face turns the point by its corner's angle; the faces leave less than a full turn, so a
+  // round or two finds one that holds it (a bound, not a count: faces of a mesh may be many).
+  for (int step = 0; step < 64; ++step) {
+    const Line& line = face->lines()[edge];
+    if (line.kind != LineKind::Warp) return c;
+    const Warp& w = face->warps()[line.warp];
+    const Segment seg = face->segments()[edge];
+    c.centreQ30 = mapThroughWarp(w, seg, c.centreQ30);
+    c.turn = static_cast<Angle>(c.turn + w.turn);
+    vertex = vertex == seg.a ? w.targetSegment.a : w.targetSegment.b;
+    face = &part(w.target);
+    loop = face->faceLoop();
+    if (loop.empty()) return c;
+    if (insideFace(*face, pointFromQ30(c.centreQ30))) {
+      c.found = true;
+      c.part = w.target;
+      return c;
+    }
+    // On over this face's other edge at the vertex.
+    k = nearestCorner(*face, vertex);
+    const LineIndex outEdge = loop[k], inEdge = loop[(k + loop.size() - 1) % loop.size()];
+    if (face->segments()[outEdge].a != vertex) return c;
+    edge = sameEdge(face->segments()[outEdge], w.targetSegment) ? inEdge : outEdge;
+  }
+  return c;
+}
+
+// Where the way on is walled (a wall on the face beyond stands where the path goes on), the
+// vertex holds like a wall: copy `from` goes back onto its own face, `inset` units inside every
+// edge it is past (alternate projections onto those edges, which meet in the face's corner).
+WorldImpl::FacePlace WorldImpl::inwardOnFace(const Entity& e, size_t from, int64_t inset) const {
+  const Instance& inst = e.instances[from];
+  const MapPart& face = part(inst.part);
+  Vec2 p = centreOf(inst);
+  for (int round = 0; round < 8; ++round) {
+    bool moved = false;
+    for (const LineIndex line : face.faceLoop()) {
+      const Segment s = face.segments()[line];
+      const Vec2w d = s.b - s.a;
+      const i128 by = inset * i128{lengthOf(d)} - insideEdge(s, p);  // times the length
+      if (by <= 0) continue;
+      const i128 len2 = i128{d.x} * d.x + i128{d.y} * d.y;
+      p = {static_cast<int32_t>(p.x + roundDiv(-i128{d.y} * by, len2)),
+           static_cast<int32_t>(p.y + roundDiv(i128{d.x} * by, len2))};
+      moved = true;
+    }
+    if (!moved) break;
+  }
+  return {insideFace(face, p), inst.part, q30FromPoint(p), inst.frame};
+}
+
+// The same back along the way it came (against its velocity): where a pocket's walls at the
+// vertex leave no room straight in, the way it came is free.
+WorldImpl::FacePlace WorldImpl::backOnFace(const Entity& e, size_t from, int64_t inset) const {
+  const Instance& inst = e.instances[from];
+  const MapPart& face = part(inst.part);
+  const Vec2 p = centreOf(inst);
+  const Vec2w u = rotateWide(inst.rotation, e.velocityQ16);  // its way, Q16 a frame
+  if (u == Vec2w{}) return {};
+  i128 back = 0;  // how far back, in frames, Q48: enough for every edge it is past
+  for (const LineIndex line : face.faceLoop()) {
+    const Segment s = face.segments()[line];
+    const Vec2w d = s.b - s.a;
+    const i128 short_ = inset * i128{lengthOf(d)} - insideEdge(s, p);
+    if (short_ <= 0) continue;
+    const i128 rate = i128{d.y} * u.x - i128{d.x} * u.y;  // gained inside a frame back, Q16
+    if (rate <= 0) return {};                             // going back does not bring it in
+    back = std::max(back, (short_ << 48) / rate + 1);
+  }
+  const Vec2 q{static_cast<int32_t>(p.x - roundDiv(u.x * back, i128{1} << 48)),
+               static_cast<int32_t>(p.y - roundDiv(u.y * back, i128{1} << 48))};
+  return {insideFace(face, q), inst.part, q30FromPoint(q), inst.frame};
+}
+
+// Puts the entity at `c` as its one instance (the others erased; turned with the new anchor's
+// frame, velocity included, so it keeps its heading over the faces) if that place, or one within
+// two units, is free and on the face; false, and nothing changed, if not. What it overlaps there
+// is found as at insert: the lines it left end, the lines it overlaps begin, and the warp edges
+// it straddles get their copies at once (without them it went over the next edge with none).
+bool WorldImpl::placeOnFace(Move& move, const FacePlace& c) {
+  Entity& e = move.entity;
+  Instance inst;
+  Vec2w originQ30;
+  try {
+    inst = makeInstance(e, c.part, {}, c.turn);  // its centre, turned as it will be there
+    originQ30 = c.centreQ30 - q30FromPoint(inst.centre);
+    inst = makeInstance(e, c.part, pointFromQ30(originQ30), c.turn);
+  } catch (const Error&) {
+    return false;  // out of range, or the shape cannot take that rotation
+  }
+  const Vec2w perFrame = rotateWide(rotationOf(c.turn), Vec2w{e.velocityQ16.x >> 16, e.velocityQ16.y >> 16});
+  if (!placeNear(e, inst, originQ30, nullptr, perFrame) || !insideFace(part(c.part), centreOf(inst))) return false;
+  inst.idealQ30 = originQ30;
+  while (e.instances.size() > 1) eraseInstance(move, e.instances.size() - 1);
+  e.instances.push_back(std::move(inst));
+  eraseInstance(move, 0);  // the new instance becomes the anchor
+  updatePierceState(e, {});
+  createOverlappedWarps(e);
+  return true;
+}
+
+// The anchor's velocity without what takes it out across the face's edges its centre is within
+// 4 units of, or beyond (it was just held there, as by a wall).
+void WorldImpl::stopAtFaceEdges(Entity& e) {
+  const Instance& anchor = e.instances[0];
+  const MapPart& face = part(anchor.part);
+  for (const LineIndex line : face.faceLoop()) {
+    const Segment s = face.segments()[line];
+    const Vec2w d = s.b - s.a, v = e.velocityQ16;
+    if (insideEdge(s, centreOf(anchor)) > 4 * i128{lengthOf(d)}) continue;
+    const i128 out = i128{v.x} * d.y - i128{v.y} * d.x;  // along the outward normal, times the length
+    if (out <= 0) continue;
+    const i128 len2 = i128{d.x} * d.x + i128{d.y} * d.y;
+    e.velocityQ16 = {v.x - static_cast<int64_t>(roundDiv(out * d.y, len2)),
+                     v.y + static_cast<int64_t>(roundDiv(out * d.x, len2))};
+  }
+}
+
+void WorldImpl::keepOnFace(Move& move) {
+  Entity& e = move.entity;
+  if (e.instances.empty()) return;
+  const bool onAFace = std::any_of(e.instances.begin(), e.instances.end(), [&](const Instance& inst) {
+    const MapPart& p = part(inst.part);
+    return p.faceLoop().empty() || insideFace(p, centreOf(inst));
+  });
+  if (onAFace) {  // the warp links decide
+    if (e.instances.size() > 1) eraseUnlinkedCopies(move);
+    return;
+  }
+  // Every copy is past its face's corner. The path goes on from the copy least off its face: the
+  // others are where the body would be had it gone round the vertex further than it did (whatever
+  // links are left: they may go round either way).
+  size_t from = 0;
+  int64_t leastOff = INT64_MAX;
+  for (size_t i = 0; i < e.instances.size(); ++i) {
+    const int64_t off = unitsOutside(part(e.instances[i].part), centreOf(e.instances[i]));
+    if (off < leastOff) leastOff = off, from = i;
+  }
+  for (const bool otherSide : {false, true})
+    if (const FacePlace c = continuePastVertex(e, from, otherSide); c.found && placeOnFace(move, c)) {
+      ++report.cornerReturns;
+      return;
+    }
+  // Walled: held as by a wall, straight in or back the way it came, 2 units in, on the edge, or
+  // within the rounding allowed beyond it, whichever is free first.
+  for (int k = 0; k < 6; ++k) {
+    const int64_t inset = std::array<int64_t, 3>{2, 0, -3}[k % 3];
+    const FacePlace c = k < 3 ? inwardOnFace(e, from, inset) : backOnFace(e, from, inset);
+    if (c.found && placeOnFace(move, c)) {
+      stopAtFaceEdges(e);
+      ++report.vertexHolds;
+      return;
+    }
+  }
+  // No room anywhere near: it stays where it is, held as by a wall.
+  if (e.instances.size() > 1) eraseUnlinkedCopies(move);
+  stopAtFaceEdges(e);
+}
+
+}  // namespace platon::physics
