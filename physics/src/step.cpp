@@ -52,13 +52,17 @@ bool exactMove(Vec2w m, Fraction t) {
 // gap is closed as soon as the way is free.
 constexpr int64_t kCopyLift = 3;
 
+// How far a copy stands off its ideal position, in whole units (the larger coordinate).
+int64_t offIdeal(const Instance& copy) {
+  const Vec2 ideal = pointFromQ30(copy.idealQ30), at = copy.position;
+  return std::max(std::abs(int64_t{ideal.x} - at.x), std::abs(int64_t{ideal.y} - at.y));
+}
+
 // Whether every copy is where it may stay: within kCopyLift units of its ideal position. Otherwise
 // it still owes a correction when the motion is spent.
 bool copiesSettled(const Entity& e) {
-  for (size_t i = 1; i < e.instances.size(); ++i) {
-    const Vec2 ideal = pointFromQ30(e.instances[i].idealQ30), at = e.instances[i].position;
-    if (std::max(std::abs(int64_t{ideal.x} - at.x), std::abs(int64_t{ideal.y} - at.y)) > kCopyLift) return false;
-  }
+  for (size_t i = 1; i < e.instances.size(); ++i)
+    if (offIdeal(e.instances[i]) > kCopyLift) return false;
   return true;
 }
 
@@ -277,6 +281,11 @@ class SubMove {
     Instance& inst = e_.instances[i];
     Vec2w liftAlong;  // the instance's frame
     if (i > 0 && hit_.t == Fraction::zero() && !move_.normals.empty()) {
+      // Off the line along the frame's last contact normal, up to kCopyLift units off its exact
+      // place: one already that far off meets the line as a line. (Lifted again frame after frame
+      // off a wall it was pushed into, a copy slid along the wall while its exact place went into
+      // it, tens of units off, and the body's pieces on the two faces no longer met.)
+      if (offIdeal(inst) >= kCopyLift) return false;
       liftAlong = rotateWide(inst.rotation, move_.normals.back());
     } else {
       const Segment seg = w_.part(inst.part).segments()[hit_.line];
@@ -597,10 +606,17 @@ class SubMove {
     std::vector<Vec2>& at = w_.scratch.probe;
     worldVertices(inst, at);
     w_.coverMotion(inst, gap);
-    if (w_.firstBlock(e_, inst, at, gap) < Fraction::one()) return;
-    inst.position.x += static_cast<int32_t>(gap.x);
-    inst.position.y += static_cast<int32_t>(gap.y);
-    steps_[i] = steps_[i] + gap;  // pierce events see the whole way it went
+    Vec2w close = gap;
+    if (const Fraction free = w_.firstBlock(e_, inst, at, gap); free < Fraction::one()) {
+      // As far as the way is free, in whole units (rounded toward the copy): a copy that keeps
+      // meeting a wall is rounded off it a unit a sub-move, and closing nothing unless the whole
+      // gap was free, it drifted tens of units off its place while the body slid along.
+      close = roundedStep(gap, free, nullptr);
+      if (close == Vec2w{} || w_.firstBlock(e_, inst, at, close) < Fraction::one()) return;
+    }
+    inst.position.x += static_cast<int32_t>(close.x);
+    inst.position.y += static_cast<int32_t>(close.y);
+    steps_[i] = steps_[i] + close;  // pierce events see the whole way it went
   }
 
   // The warp the sub-move stopped at: the exact touching position, in Q30, maps to where the new
@@ -942,6 +958,7 @@ bool WorldImpl::stepHoldersFirst(Entity& e) {
 
 void WorldImpl::slide(Move& move) {
   Entity& e = move.entity;
+  if (!e.instances.empty()) move.startFace = e.instances[startCopy(e, std::nullopt)].part;
   int pushes = 0;
   for (int iteration = 0; iteration < kMaxSubMoves && !e.instances.empty(); ++iteration) {
     createOverlappedWarps(e);

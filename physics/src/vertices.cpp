@@ -64,8 +64,8 @@ WorldImpl::FacePlace WorldImpl::continuePastVertex(const Entity& e, size_t from,
     byOut = (side != 0 ? side > 0 : leavesByOut(*face, k, v)) != otherSide;
   }
   LineIndex edge = loop[byOut ? k : (k + loop.size() - 1) % loop.size()];
-  // Each face turns the point by its corner's angle; the faces leave less than a full turn, so a
-  // round or two finds one that holds it (a bound, not a count: faces of a mesh may be many).
+  // Each face turns the point by its corner's angle; the faces leave less than a full turn, so
+  // within a round one holds it (64: a bound, not a count; faces of a mesh at a vertex may be many).
   for (int step = 0; step < 64; ++step) {
     const Line& line = face->lines()[edge];
     if (line.kind != LineKind::Warp) return c;
@@ -182,6 +182,20 @@ void WorldImpl::stopAtFaceEdges(Entity& e) {
   }
 }
 
+// The copy whose centre is least off its face (the first such, so the anchor on a tie); with
+// `inPart`, the copy in that part if there is one.
+size_t WorldImpl::startCopy(const Entity& e, std::optional<MapPartId> inPart) const {
+  size_t best = 0;
+  int64_t leastOff = INT64_MAX;
+  for (size_t i = 0; i < e.instances.size(); ++i) {
+    if (inPart && e.instances[i].part == *inPart) return i;
+    const MapPart& p = part(e.instances[i].part);
+    const int64_t off = p.faceLoop().empty() ? INT64_MAX : unitsOutside(p, centreOf(e.instances[i]));
+    if (off < leastOff) leastOff = off, best = i;
+  }
+  return best;
+}
+
 void WorldImpl::keepOnFace(Move& move) {
   Entity& e = move.entity;
   if (e.instances.empty()) return;
@@ -193,15 +207,11 @@ void WorldImpl::keepOnFace(Move& move) {
     if (e.instances.size() > 1) eraseUnlinkedCopies(move);
     return;
   }
-  // Every copy is past its face's corner. The path goes on from the copy least off its face: the
-  // others are where the body would be had it gone round the vertex further than it did (whatever
-  // links are left: they may go round either way).
-  size_t from = 0;
-  int64_t leastOff = INT64_MAX;
-  for (size_t i = 0; i < e.instances.size(); ++i) {
-    const int64_t off = unitsOutside(part(e.instances[i].part), centreOf(e.instances[i]));
-    if (off < leastOff) leastOff = off, from = i;
-  }
+  // Every copy is past its face's corner. The path goes on from the copy that was on its face (or
+  // least off it) when the frame's slide began, where the body was: the others are where it would
+  // be had it gone round the vertex another way (near a vertex, copies linked round either way
+  // disagree by the angle the faces leave). If that copy is gone, from the one least off now.
+  const size_t from = startCopy(e, move.startFace);
   for (const bool otherSide : {false, true})
     if (const FacePlace c = continuePastVertex(e, from, otherSide); c.found && placeOnFace(move, c)) {
       ++report.cornerReturns;

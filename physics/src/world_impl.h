@@ -49,6 +49,9 @@ struct Move {
     LineIndex line = 0;
     Fraction t;
   } lastLift{};
+  // The part of the copy whose centre stood least off its face when the slide began (where the
+  // body was, on the solid): a path through a vertex goes on from that copy (keepOnFace).
+  std::optional<MapPartId> startFace{};
 };
 
 // Where each instance went during one sub-move, for the pierce events along the way. Empty: the
@@ -314,6 +317,7 @@ struct WorldImpl {
   // vertices.cpp. After a slide: an entity whose every copy is beyond its face's corners (it went
   // through a vertex) goes on over the faces round the vertex (faces: MapPart::faceLoop).
   void keepOnFace(Move& move);
+  size_t startCopy(const Entity& e, std::optional<MapPartId> inPart) const;
   // Its steps: places on a face for the body, and the body put at one.
   struct FacePlace;
   FacePlace continuePastVertex(const Entity& e, size_t from, bool otherSide) const;

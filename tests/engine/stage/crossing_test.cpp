@@ -716,7 +716,11 @@ VertexRuns driveBodiesIntoVertices(uint64_t seed, int layouts) {
           }
           // Moving: faster than one frame's push and gravity can make a body from rest.
           const bool moving = std::hypot(double(e.velocity().x), double(e.velocity().y)) >= 2.0 * kQ16;
-          const bool still = moving && e.position() == last && e.contacts().empty();
+          // Still: where it was, with no contact, going the same way. (A path straight into a
+          // vertex whose faces leave half a turn, a tetrahedron's, goes on straight back out: a frame
+          // later it is where it was, going the other way.)
+          const bool sameWay = double(e.velocity().x) * double(v0.x) + double(e.velocity().y) * double(v0.y) > 0;
+          const bool still = moving && e.position() == last && e.contacts().empty() && sameWay;
           stuck.frame(still, moving && report.cornerReturns > 0);
           out.deadFrames += still;
           if (still)
