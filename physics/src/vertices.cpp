@@ -3,6 +3,7 @@
 // comes out beyond its face's corner) crosses no warp edge: nothing would ever bring the body back
 // onto a face. Its path goes on over the faces around the vertex instead, as if they were laid
 // flat beside the face it left (a geodesic), from where it is, as far as it went: no jump.
+#include <algorithm>
 #include <array>
 
 #include "faces.h"
@@ -138,9 +139,9 @@ WorldImpl::FacePlace WorldImpl::backOnFace(const Entity& e, size_t from, int64_t
   return {insideFace(face, q), inst.part, q30FromPoint(q), inst.frame};
 }
 
-// Puts the entity at `c` as its one instance (the others erased; turned with the new anchor's
-// frame, velocity included, so it keeps its heading over the faces) if that place, or one within
-// two units, is free and on the face; false, and nothing changed, if not. What it overlaps there
+// Puts the entity at `c` as its one instance (turned with the new anchor's frame, velocity
+// included, so it keeps its heading over the faces) if that place, or one within two units, is
+// free and on the face; false, and nothing changed, if not. What it overlaps there
 // is found as at insert: the lines it left end, the lines it overlaps begin, and the warp edges
 // it straddles get their copies at once (without them it went over the next edge with none).
 bool WorldImpl::placeOnFace(Move& move, const FacePlace& c) {
@@ -157,9 +158,19 @@ bool WorldImpl::placeOnFace(Move& move, const FacePlace& c) {
   const Vec2w perFrame = rotateWide(rotationOf(c.turn), Vec2w{e.velocityQ16.x >> 16, e.velocityQ16.y >> 16});
   if (!placeNear(e, inst, originQ30, nullptr, perFrame) || !insideFace(part(c.part), centreOf(inst))) return false;
   inst.idealQ30 = originQ30;
+  // The copy already on that face (one a part) goes there: the lines it overlaps and still
+  // overlaps stay overlapped, with no end and begin again. It becomes the anchor (turned with it),
+  // and the others go.
+  size_t k = 0;
+  while (k < e.instances.size() && e.instances[k].part != c.part) ++k;
+  if (k == e.instances.size()) {
+    e.instances.push_back(std::move(inst));
+  } else {
+    inst.overlapping = std::move(e.instances[k].overlapping);
+    e.instances[k] = std::move(inst);
+  }
+  rebase(move, k);
   while (e.instances.size() > 1) eraseInstance(move, e.instances.size() - 1);
-  e.instances.push_back(std::move(inst));
-  eraseInstance(move, 0);  // the new instance becomes the anchor
   updatePierceState(e, {});
   createOverlappedWarps(e);
   return true;
@@ -182,9 +193,16 @@ void WorldImpl::stopAtFaceEdges(Entity& e) {
   }
 }
 
-// The copy whose centre is least off its face (the first such, so the anchor on a tie); with
-// `inPart`, the copy in that part if there is one.
+// The anchor if its centre is on its face (or not on a face at all), else the copy whose centre
+// is least off its face (the first such); with `inPart`, the copy in that part if there is one.
 size_t WorldImpl::startCopy(const Entity& e, std::optional<MapPartId> inPart) const {
+  if (!inPart) {  // the common case first: the anchor's centre on its face (0 off: none is less)
+    const MapPart& face = part(e.instances[0].part);
+    const Vec2 c = centreOf(e.instances[0]);
+    const auto loop = face.faceLoop();
+    if (std::all_of(loop.begin(), loop.end(), [&](LineIndex l) { return insideEdge(face.segments()[l], c) >= 0; }))
+      return 0;
+  }
   size_t best = 0;
   int64_t leastOff = INT64_MAX;
   for (size_t i = 0; i < e.instances.size(); ++i) {
