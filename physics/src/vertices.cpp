@@ -25,6 +25,22 @@ bool leavesByOut(const MapPart& face, size_t k, Vec2w v) {
   return leaveOut >= leaveIn;
 }
 
+// How far from corner k along either of its edges a point must lie to be `clearance` units from
+// the other edge's line: clearance / sin(angle), or just clearance where the corner is obtuse
+// (the vertex itself is then the nearest point of the other edge).
+int64_t alongForClearance(const MapPart& face, size_t k, int64_t clearance) {
+  const auto loop = face.faceLoop();
+  const Segment out = face.segments()[loop[k]];
+  const Segment in = face.segments()[loop[(k + loop.size() - 1) % loop.size()]];
+  const Vec2w a = in.b - in.a, b = out.b - out.a;
+  const i128 dot = i128{a.x} * b.x + i128{a.y} * b.y;
+  const i128 cross = i128{a.x} * b.y - i128{a.y} * b.x;
+  if (dot >= 0 || cross <= 0) return clearance;
+  const i128 lengths = static_cast<i128>(isqrt(static_cast<u128>(i128{a.x} * a.x + i128{a.y} * a.y))) *
+                       static_cast<i128>(isqrt(static_cast<u128>(i128{b.x} * b.x + i128{b.y} * b.y)));
+  return static_cast<int64_t>(std::min<i128>((i128{clearance} * lengths + cross - 1) / cross, INT64_MAX));
+}
+
 bool sameEdge(Segment a, Segment b) { return (a.a == b.a && a.b == b.b) || (a.a == b.b && a.b == b.a); }
 
 }  // namespace
@@ -193,6 +209,95 @@ void WorldImpl::stopAtFaceEdges(Entity& e) {
   }
 }
 
+// The way back onto a face from past one of its corners: beside the edge the velocity crosses
+// most (`byOut`: the edge that starts at the corner), `away` along that edge from the vertex,
+// `inward` into the face; `meet`, how far along the velocity meets the edge before it passes the
+// vertex; `clear`, how far the next frame's motion stays clear of the other edges at the vertex.
+struct WorldImpl::CornerReturn {
+  size_t corner = 0;
+  Vec2 vertex;
+  bool byOut = false;
+  Vec2w away, inward;
+  int64_t length = 0;  // of the chosen edge
+  int64_t meet = 0, clear = 0;
+};
+
+WorldImpl::CornerReturn WorldImpl::cornerReturn(const Entity& e) const {
+  const MapPart& face = part(e.instances[0].part);
+  const Vec2 at = centreOf(e.instances[0]);
+  const auto loop = face.faceLoop();
+  CornerReturn r;
+  // The corner nearest the centre, and its two edges: `in` ends there, `out` starts there.
+  r.corner = nearestCorner(face, at);
+  const Segment out = face.segments()[loop[r.corner]];
+  const Segment in = face.segments()[loop[(r.corner + loop.size() - 1) % loop.size()]];
+  r.vertex = out.a;
+  // The edge the velocity leaves by most.
+  const Vec2w outDir = out.b - out.a, inDir = in.b - in.a;
+  const Vec2w v = e.velocityQ16;
+  const int64_t outLength = lengthOf(outDir), inLength = lengthOf(inDir);
+  r.byOut = leavesByOut(face, r.corner, v);
+  // Along the chosen edge away from the vertex, and inward (left of the edge).
+  r.away = r.byOut ? outDir : Vec2w{-inDir.x, -inDir.y};
+  r.inward = r.byOut ? Vec2w{-outDir.y, outDir.x} : Vec2w{-inDir.y, inDir.x};
+  r.length = r.byOut ? outLength : inLength;
+  if (r.length == 0) return r;
+  // Two units in; far enough along that the velocity meets the edge before passing the vertex:
+  // along >= 4 + 2 * (velocity toward the vertex) / (velocity out across the edge).
+  const i128 towardVertex = -(i128{v.x} * r.away.x + i128{v.y} * r.away.y);
+  const i128 across = -(i128{v.x} * r.inward.x + i128{v.y} * r.inward.y);
+  r.meet = 4;
+  if (towardVertex > 0 && across > 0)
+    r.meet += static_cast<int64_t>(std::min<i128>(towardVertex * 2 / across + 1, r.length / 4));
+  // And far enough that the next frame's motion (at most this speed and its gravity) ends within
+  // this face or the neighbour across the edge, clear of their other edges at the vertex: a body
+  // put back closer goes through the same vertex again and is put back at the same place every
+  // frame, frozen while its velocity grows.
+  const Vec2w g = face.gravity();
+  const int64_t reach = static_cast<int64_t>((isqrt(static_cast<u128>(i128{v.x} * v.x + i128{v.y} * v.y)) +
+                                              isqrt(static_cast<u128>(i128{g.x} * g.x + i128{g.y} * g.y))) /
+                                             kQ16) +
+                        8;
+  r.clear = alongForClearance(face, r.corner, reach);
+  const Line& crossed = face.lines()[loop[r.byOut ? r.corner : (r.corner + loop.size() - 1) % loop.size()]];
+  if (crossed.kind == LineKind::Warp) {
+    const Warp& w = face.warps()[crossed.warp];
+    const MapPart& neighbour = part(w.target);
+    if (!neighbour.faceLoop().empty()) {
+      const Vec2 image = r.byOut ? w.targetSegment.a : w.targetSegment.b;
+      r.clear = std::max(r.clear, alongForClearance(neighbour, nearestCorner(neighbour, image), reach));
+    }
+  }
+  return r;
+}
+
+// Puts the anchor by the corner as `r` says: as far along as `clear`, or where a wall stands
+// there nearer (half, a quarter of the way, then as near as the edge is met), on the face and free.
+// Returns how far along it went, or -1 (left where it was) when no place is free.
+int64_t WorldImpl::placeByCorner(Entity& e, const CornerReturn& r) {
+  const MapPart& face = part(e.instances[0].part);
+  Instance& anchor = e.instances[0];
+  const Vec2 was = anchor.position;
+  std::vector<Vec2>& verts = scratch.probe;
+  const int64_t far = std::max(r.meet, r.clear);
+  const std::array<int64_t, 4> candidates{far, std::max(r.meet, far / 2), std::max(r.meet, far / 4), r.meet};
+  for (size_t k = 0; k < candidates.size(); ++k) {
+    if (k > 0 && candidates[k] == candidates[k - 1]) continue;
+    const int64_t along = std::min<int64_t>(candidates[k], r.length / 2);
+    // The centre goes there (the origin may lie outside the shape).
+    anchor.position = {r.vertex.x - anchor.centre.x +
+                           static_cast<int32_t>(roundDiv(i128{r.away.x} * along + i128{r.inward.x} * 2, r.length)),
+                       r.vertex.y - anchor.centre.y +
+                           static_cast<int32_t>(roundDiv(i128{r.away.y} * along + i128{r.inward.y} * 2, r.length))};
+    worldVertices(anchor, verts);
+    coverMotion(anchor, {});  // the lines around the new place, for the walls there and the warps to cross
+    if (insideFace(face, centreOf(anchor)) && isFree(e, anchor, verts)) return along;
+  }
+  anchor.position = was;  // a wall right at the corner: leave it (it cannot go far that way)
+  coverMotion(anchor, {});
+  return -1;
+}
+
 // The anchor if its centre is on its face (or not on a face at all), else the copy whose centre
 // is least off its face (the first such); with `inPart`, the copy in that part if there is one.
 size_t WorldImpl::startCopy(const Entity& e, std::optional<MapPartId> inPart) const {
@@ -246,9 +351,22 @@ void WorldImpl::keepOnFace(Move& move) {
       return;
     }
   }
-  // No room anywhere near: it stays where it is, held as by a wall.
+  // No room near where it went out: the last resort (the rule before paths went on) puts it back on
+  // the anchor's face beside the corner, as far along the edge its velocity leaves by as the walls
+  // allow, a jump, but on the faces: left where it was, off them, a body with a pocket's walls on
+  // every side drifted on, thousands of units off the solid.
   if (e.instances.size() > 1) eraseUnlinkedCopies(move);
+  const CornerReturn r = cornerReturn(e);
+  if (r.length == 0 || placeByCorner(e, r) < 0) {
+    stopAtFaceEdges(e);  // no room at all: it stays, held as by a wall
+    return;
+  }
+  while (e.instances.size() > 1) eraseInstance(move, e.instances.size() - 1);
+  e.instances[0].idealQ30 = q30FromPoint(e.instances[0].position);
   stopAtFaceEdges(e);
+  updatePierceState(e, {});
+  createOverlappedWarps(e);
+  ++report.vertexHolds;
 }
 
 }  // namespace platon::physics

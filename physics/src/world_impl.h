@@ -325,6 +325,9 @@ struct WorldImpl {
   FacePlace backOnFace(const Entity& e, size_t from, int64_t inset) const;
   bool placeOnFace(Move& move, const FacePlace& c);
   void stopAtFaceEdges(Entity& e);
+  struct CornerReturn;
+  CornerReturn cornerReturn(const Entity& e) const;
+  int64_t placeByCorner(Entity& e, const CornerReturn& r);
 
   // pierce_events.cpp
   void updatePierceState(Entity& e, const Path& path);
