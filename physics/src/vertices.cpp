@@ -36,8 +36,7 @@ int64_t alongForClearance(const MapPart& face, size_t k, int64_t clearance) {
   const i128 dot = i128{a.x} * b.x + i128{a.y} * b.y;
   const i128 cross = i128{a.x} * b.y - i128{a.y} * b.x;
   if (dot >= 0 || cross <= 0) return clearance;
-  const i128 lengths = static_cast<i128>(isqrt(static_cast<u128>(i128{a.x} * a.x + i128{a.y} * a.y))) *
-                       static_cast<i128>(isqrt(static_cast<u128>(i128{b.x} * b.x + i128{b.y} * b.y)));
+  const i128 lengths = i128{lengthOf(a)} * lengthOf(b);
   return static_cast<int64_t>(std::min<i128>((i128{clearance} * lengths + cross - 1) / cross, INT64_MAX));
 }
 
