@@ -9,9 +9,8 @@
 #include "world_impl.h"
 
 namespace platon::physics {
-namespace {
 
-Box boxOf(const std::vector<PlatformLine>& lines) {
+Box boxOfLines(const std::vector<PlatformLine>& lines) {
   Box b{INT64_MAX, INT64_MAX, INT64_MIN, INT64_MIN};
   for (const PlatformLine& l : lines)
     for (const Vec2 p : {l.segment.a, l.segment.b}) {
@@ -20,6 +19,8 @@ Box boxOf(const std::vector<PlatformLine>& lines) {
     }
   return b;
 }
+
+namespace {
 
 // Whether the line stops an instance with these vertices (a one-way line only from its front).
 bool stops(const PlatformLine& line, std::span<const Vec2> verts) {
@@ -67,12 +68,21 @@ PlatformId World::createPlatform(MapPartId partId, std::span<const PlatformLine>
   pl.base.assign(lines.begin(), lines.end());
   pl.lines = pl.base;
   pl.offset = pl.motion = pl.pivot = {};
+  pl.motionQ30 = pl.motionLeftQ30 = {};
   pl.angle = 0;
   pl.spin = 0;
-  pl.box = boxOf(pl.lines);
+  pl.box = boxOfLines(pl.lines);
+  pl.copies.clear();
   pl.alive = true;
   ++w.platformEpochs[pl.part];  // what rests in its part is looked at again
-  return {index, pl.generation};
+  const PlatformId id{index, pl.generation};
+  if (const std::optional<WorldImpl::PlatformHit> over = w.updatePlatformCopies(index, {})) {
+    destroyPlatform(id);
+    throw Error("createPlatform: line " + std::to_string(over->line) + " would overlap entity " +
+                std::to_string(over->entity) + " in map part " + std::to_string(over->part) +
+                ", beyond a warp edge its lines reach");
+  }
+  return id;
 }
 
 namespace {
@@ -89,6 +99,8 @@ void World::destroyPlatform(PlatformId id) {
   impl_->checkUnlocked("destroyPlatform");
   Platform& pl = live(*impl_, id);
   ++impl_->platformEpochs[pl.part];
+  for (const PlatformCopy& c : pl.copies) ++impl_->platformEpochs[c.part];
+  pl.copies.clear();
   pl.alive = false;
   pl.lines.clear();
   pl.base.clear();
@@ -99,7 +111,10 @@ void World::destroyPlatform(PlatformId id) {
 void World::setPlatformMotion(PlatformId id, Vec2 perFrame) {
   if (std::max(std::abs(int64_t{perFrame.x}), std::abs(int64_t{perFrame.y})) > kMaxMove)
     throw Error("setPlatformMotion: " + toString(perFrame) + " exceeds the largest move per frame, 2^30 units");
-  live(*impl_, id).motion = perFrame;
+  Platform& pl = live(*impl_, id);
+  pl.motion = perFrame;
+  pl.motionQ30 = q30FromPoint(perFrame);
+  pl.motionLeftQ30 = {};
 }
 
 int64_t turnRadius2(const std::vector<PlatformLine>& lines, Vec2 pivot) {
@@ -147,7 +162,9 @@ void World::setPlatformSpin(PlatformId id, Vec2 pivot, int32_t anglePerFrame) {
 PlatformView World::platform(PlatformId id) const {
   const Platform& pl = live(*impl_, id);
   const Vec2 pivot{pl.pivot.x + pl.offset.x, pl.pivot.y + pl.offset.y};
-  return {pl.part, pl.offset, pl.motion, pl.lines, pivot, pl.angle, pl.spin, pl.work};
+  PlatformView view{pl.part, pl.offset, pl.motion, pl.lines, pivot, pl.angle, pl.spin, pl.work, {}};
+  for (const PlatformCopy& c : pl.copies) view.copies.push_back({c.part, c.lines});
+  return view;
 }
 
 std::vector<PlatformId> World::platforms() const {
@@ -157,93 +174,130 @@ std::vector<PlatformId> World::platforms() const {
   return ids;
 }
 
-// The entities standing on platform `slot`: touching one of its lines from the side its face's
-// gravity presses them onto, with where they stood, in handle order.
+namespace {
+
+// A step of about one unit along `v` (none for none).
+Vec2w unitStep(Vec2w v) {
+  const Vec2w n = shortDirection(v);
+  const int64_t length = static_cast<int64_t>(isqrt(static_cast<u128>(dot128(n, n))));
+  if (length == 0) return {};
+  return {static_cast<int64_t>(roundDiv(i128{n.x}, length)), static_cast<int64_t>(roundDiv(i128{n.y}, length))};
+}
+
+void shift(std::vector<Vec2>& verts, Vec2w by) {
+  for (Vec2& v : verts) v = {static_cast<int32_t>(v.x + by.x), static_cast<int32_t>(v.y + by.y)};
+}
+
+}  // namespace
+
+// The entities standing on platform `slot`, in its part or a copy's (where it meets them:
+// platformMeets): touching one of its lines from the side that part's gravity presses them onto,
+// with where they stood, in handle order.
 std::vector<WorldImpl::Rider> WorldImpl::ridersOf(uint32_t slot) {
-  const MapPartId partId = platforms[slot].part;
-  const Vec2w gravity = part(partId).gravity();
-  const bool turning = platforms[slot].spin != 0 || platforms[slot].angle != 0;
+  const Platform& pl = platforms[slot];
+  const bool turning = pl.spin != 0 || pl.angle != 0;
   std::vector<Rider> riders;
   std::vector<Vec2> verts;
-  Box near = platforms[slot].box;
-  near.x0 -= 2, near.y0 -= 2, near.x1 += 2, near.y1 += 2;
-  entityIndex.forEachNear(partId, near, [&](uint32_t s) {
-    const Entity& e = *slots[s].entity;
-    const Instance* inst = e.instanceIn(partId);
-    if (!inst) return;
-    worldVertices(*inst, verts);
-    for (const PlatformLine& l : platforms[slot].lines) {
-      if (!stops(l, verts)) continue;
-      // A turned line is tilted at any angle, where whole-unit positions leave a body up to a unit
-      // and a half off it (the rest test's reach): it stands on it all the same.
-      std::vector<Vec2w>& normals = scratch.lineNormals;
-      normals.clear();
-      if (turning ? nearNormals(verts, l.segment, normals) == Nearness::Apart : !touchesOrOverlaps(verts, l.segment))
-        continue;
-      const Vec2w d = l.segment.b - l.segment.a;
-      i128 side = 0;
-      for (const Vec2 v : verts) side += cross(d, v - l.segment.a);
-      const Vec2w up = side >= 0 ? Vec2w{-d.y, d.x} : Vec2w{d.y, -d.x};
-      if (dot128(up, gravity) < 0) {
-        riders.push_back({s, inst->position});
-        return;
+  forEachPlatformPlace(pl, {}, [&](MapPartId partId, const std::vector<PlatformLine>& lines, const Box& box, Vec2w) {
+    const Vec2w gravity = part(partId).gravity();
+    const PlatformCopy* copy = platformCopyIn(pl, partId);
+    const Vec2 origin = copy ? pointFromQ30(copy->originQ30) : pl.offset;
+    // A tilted line (turned, or a copy's, or sloped as made) is where whole-unit positions leave a
+    // body that came to rest on it up to a unit and a half off it (the rest test's reach), and its
+    // slide along it a unit more now and then (each step rounded to whole units): it stands on it
+    // all the same. A copy's lines and the body's copy are also each rounded in their own frame.
+    auto tilted = [&](const Segment& s) { return turning || copy || (s.a.x != s.b.x && s.a.y != s.b.y); };
+    const Vec2w down = unitStep(gravity);
+    std::vector<Vec2> lower;
+    const Box near{box.x0 - 2, box.y0 - 2, box.x1 + 2, box.y1 + 2};
+    entityIndex.forEachNear(partId, near, [&](uint32_t s) {
+      const Entity& e = *slots[s].entity;
+      const Instance* inst = e.instanceIn(partId);
+      if (!inst || platformMeets(pl, e) != partId) return;
+      worldVertices(*inst, verts);
+      for (const PlatformLine& l : lines) {
+        if (!stops(l, verts)) continue;
+        std::vector<Vec2w>& normals = scratch.lineNormals;
+        normals.clear();
+        if (!tilted(l.segment)
+                ? !touchesOrOverlaps(verts, l.segment)
+                : nearNormals(verts, l.segment, normals) == Nearness::Apart &&
+                      (lower = verts, shift(lower, down), nearNormals(lower, l.segment, normals)) == Nearness::Apart)
+          continue;
+        const Vec2w d = l.segment.b - l.segment.a;
+        i128 side = 0;
+        for (const Vec2 v : verts) side += cross(d, v - l.segment.a);
+        const Vec2w up = side >= 0 ? Vec2w{-d.y, d.x} : Vec2w{d.y, -d.x};
+        if (dot128(up, gravity) < 0) {
+          riders.push_back({s, partId, inst->position, origin});
+          return;
+        }
       }
-    }
+    });
   });
   std::sort(riders.begin(), riders.end(), [](const Rider& a, const Rider& b) { return a.entity < b.entity; });
   return riders;
 }
 
-// The first entity the platform's lines meet moving by `motion`: each entity seen from the lines,
-// moving by -motion. `at` is one (no hit) when none is met; ties go to the lower slot, then line.
+// The first entity the platform's lines meet moving by `motion`, in its part or a copy's (there by
+// the copy's step; each entity where platformMeets it): each entity seen from the lines, moving by
+// -motion. `at` is one (no hit) when none is met; ties go to the lower slot, then line.
 WorldImpl::PlatformHit WorldImpl::firstPlatformHit(uint32_t slot, Vec2w motion) {
   const Platform& pl = platforms[slot];
-  Box swept = pl.box;
-  (motion.x < 0 ? swept.x0 : swept.x1) += motion.x;
-  (motion.y < 0 ? swept.y0 : swept.y1) += motion.y;
   PlatformHit hit;
   std::vector<Vec2> verts;
-  uint64_t work = pl.lines.size();
-  entityIndex.forEachNear(pl.part, swept, [&](uint32_t s) {
-    const Instance* inst = slots[s].entity->instanceIn(pl.part);
-    if (!inst) return;
-    work += pl.lines.size();
-    worldVertices(*inst, verts);
-    for (uint32_t k = 0; k < pl.lines.size(); ++k) {
-      if (!stops(pl.lines[k], verts)) continue;
-      const Sweep sw = sweep(verts, -motion, pl.lines[k].segment);
-      if (!sw.hitsWithinFrame()) continue;
-      if (sw.enter < hit.at || (sw.enter == hit.at && (s < hit.entity || (s == hit.entity && k < hit.line))))
-        hit = {sw.enter, s, k};
-    }
-  });
+  uint64_t work = 0;
+  forEachPlatformPlace(
+      pl, motion, [&](MapPartId partId, const std::vector<PlatformLine>& lines, const Box& box, Vec2w m) {
+        work += lines.size();
+        Box swept = box;
+        (m.x < 0 ? swept.x0 : swept.x1) += m.x;
+        (m.y < 0 ? swept.y0 : swept.y1) += m.y;
+        entityIndex.forEachNear(partId, swept, [&](uint32_t s) {
+          const Instance* inst = slots[s].entity->instanceIn(partId);
+          if (!inst || platformMeets(pl, *slots[s].entity) != partId) return;
+          work += lines.size();
+          worldVertices(*inst, verts);
+          for (uint32_t k = 0; k < lines.size(); ++k) {
+            if (!stops(lines[k], verts)) continue;
+            const Sweep sw = sweep(verts, -m, lines[k].segment);
+            if (!sw.hitsWithinFrame()) continue;
+            if (sw.enter < hit.at || (sw.enter == hit.at && (s < hit.entity || (s == hit.entity && k < hit.line))))
+              hit = {sw.enter, s, k, partId};
+          }
+        });
+      });
   platforms[slot].work += work;
   return hit;
 }
 
-// `step`, or the longest step a unit at a time shorter, that the platform's lines make without
-// meeting or entering any entity near them (a one-way line may start inside one). `blocker` gets
-// the last entity (its slot) that made a step shorter.
-Vec2w WorldImpl::clearPlatformStep(uint32_t slot, Vec2w step, std::optional<uint32_t>& blocker) {
+// `step`, or the longest step a unit at a time shorter, that the platform's lines make (in its part
+// and its copies') without meeting or entering any entity near them (a one-way line may start inside
+// one). `blocker` gets the last entity that made a step shorter, and where.
+Vec2w WorldImpl::clearPlatformStep(uint32_t slot, Vec2w step, std::optional<PlatformHit>& blocker) {
   const Platform& pl = platforms[slot];
   std::vector<Vec2> verts;
   for (;;) {
     bool clear = true;
-    Box at = pl.box;
-    at.x0 += std::min<int64_t>(0, step.x), at.x1 += std::max<int64_t>(0, step.x);
-    at.y0 += std::min<int64_t>(0, step.y), at.y1 += std::max<int64_t>(0, step.y);
-    entityIndex.forEachNear(pl.part, at, [&](uint32_t s) {
-      const Instance* inst = slots[s].entity->instanceIn(pl.part);
-      if (!clear || !inst) return;
-      platforms[slot].work += pl.lines.size();
-      worldVertices(*inst, verts);
-      for (const PlatformLine& l : pl.lines) {
-        if (!stops(l, verts)) continue;
-        const Sweep sw = sweep(verts, -step, l.segment);
-        if (sw.hitsWithinFrame() || (sw.startsInside() && l.kind != LineKind::OneWay)) clear = false;
-      }
-      if (!clear) blocker = s;
-    });
+    forEachPlatformPlace(pl, step,
+                         [&](MapPartId partId, const std::vector<PlatformLine>& lines, const Box& box, Vec2w m) {
+                           Box at = box;
+                           at.x0 += std::min<int64_t>(0, m.x), at.x1 += std::max<int64_t>(0, m.x);
+                           at.y0 += std::min<int64_t>(0, m.y), at.y1 += std::max<int64_t>(0, m.y);
+                           entityIndex.forEachNear(partId, at, [&](uint32_t s) {
+                             const Instance* inst = slots[s].entity->instanceIn(partId);
+                             if (!clear || !inst || platformMeets(pl, *slots[s].entity) != partId) return;
+                             platforms[slot].work += lines.size();
+                             worldVertices(*inst, verts);
+                             for (const PlatformLine& l : lines) {
+                               if (!stops(l, verts)) continue;
+                               const Sweep sw = sweep(verts, -m, l.segment);
+                               if (sw.hitsWithinFrame() || (sw.startsInside() && l.kind != LineKind::OneWay))
+                                 clear = false;
+                             }
+                             if (!clear) blocker = PlatformHit{Fraction::zero(), s, 0, partId};
+                           });
+                         });
     if (clear || step == Vec2w{}) return step;
     step = {step.x - (step.x > 0) + (step.x < 0), step.y - (step.y > 0) + (step.y < 0)};  // a unit back
   }
@@ -251,57 +305,75 @@ Vec2w WorldImpl::clearPlatformStep(uint32_t slot, Vec2w step, std::optional<uint
 
 void WorldImpl::shiftPlatform(uint32_t slot, Vec2w step) {
   Platform& pl = platforms[slot];
+  auto shift = [](std::vector<PlatformLine>& lines, Vec2w by) {
+    for (PlatformLine& l : lines)
+      l.segment = {{static_cast<int32_t>(l.segment.a.x + by.x), static_cast<int32_t>(l.segment.a.y + by.y)},
+                   {static_cast<int32_t>(l.segment.b.x + by.x), static_cast<int32_t>(l.segment.b.y + by.y)}};
+  };
   if (step != Vec2w{}) ++platformEpochs[pl.part];
-  for (PlatformLine& l : pl.lines)
-    l.segment = {{static_cast<int32_t>(l.segment.a.x + step.x), static_cast<int32_t>(l.segment.a.y + step.y)},
-                 {static_cast<int32_t>(l.segment.b.x + step.x), static_cast<int32_t>(l.segment.b.y + step.y)}};
+  shift(pl.lines, step);
   pl.offset = {static_cast<int32_t>(pl.offset.x + step.x), static_cast<int32_t>(pl.offset.y + step.y)};
-  pl.box = boxOf(pl.lines);
+  pl.box = boxOfLines(pl.lines);
+  for (PlatformCopy& c : pl.copies) {
+    const Vec2w by = c.stepFor(step);
+    c.originQ30 = c.originQ30 + rotateQ30(c.rotation, step);
+    if (by == Vec2w{}) continue;
+    ++platformEpochs[c.part];
+    shift(c.lines, by);
+    c.box = boxOfLines(c.lines);
+  }
 }
 
 // Moves platform `slot` by its motion, or until a push is impossible. A platform never moves less
 // than its motion without saying why: a frame it ends short of it calls Rules::crushed with the
 // entity that stopped it (once). Returns how far it moved.
-Vec2w WorldImpl::advancePlatform(uint32_t slot) {
+Vec2w WorldImpl::frameMotion(Platform& pl) {
+  const Vec2w exact = pl.motionLeftQ30 + pl.motionQ30;
+  const Vec2w whole{exact.x >> kQ30Bits, exact.y >> kQ30Bits};  // rounded down: what is left is below a unit
+  pl.motionLeftQ30 = exact - q30FromPoint({static_cast<int32_t>(whole.x), static_cast<int32_t>(whole.y)});
+  return whole;
+}
+
+Vec2w WorldImpl::advancePlatform(uint32_t slot, Vec2w motion) {
   const MapPartId partId = platforms[slot].part;
-  Vec2w remaining = wide(platforms[slot].motion);
+  Vec2w remaining = motion;
   Vec2w moved{};
-  std::optional<uint32_t> blocker;  // the last entity in its way
+  std::optional<PlatformHit> blocker;  // the last entity in its way
   bool crushedSaid = false;
   for (int attempt = 0; attempt < 8 && remaining != Vec2w{}; ++attempt) {
     // Move to the first contact (all the way if none), rounded towards the start, and proved
     // free of every entity near it.
     const PlatformHit hit = firstPlatformHit(slot, remaining);
-    if (hit.at != Fraction::one()) blocker = hit.entity;
+    if (hit.at != Fraction::one()) blocker = hit;
     const Vec2w step = clearPlatformStep(slot, roundedStep(remaining, hit.at), blocker);
     shiftPlatform(slot, step);
     moved = moved + step;
     remaining = remaining - step;
     if (remaining == Vec2w{} || hit.at == Fraction::one()) break;
-    // Push the entity met by all the platform still has to go; if it cannot make room, the
-    // platform stops here.
+    // Push the entity met by all the platform still has to go (in the part it was met in, by the
+    // lines' step there); if it cannot make room, the platform stops here.
     Entity& pushed = *slots[hit.entity].entity;
-    const Instance& inst = *pushed.instanceIn(partId);
-    const Vec2w inFrame = inst.frame == 0 ? remaining : rotateWideInverse(inst.rotation, remaining);
+    const Instance& inst = *pushed.instanceIn(hit.part);
+    const Vec2w there = hit.part == partId ? remaining : platformCopyIn(platforms[slot], hit.part)->stepFor(remaining);
+    const Vec2w inFrame = inst.frame == 0 ? there : rotateWideInverse(inst.rotation, there);
     const bool made = push(pushed, inFrame);
     if (!made && step == Vec2w{}) {
-      crushed(slot, hit.entity, hit.line);
+      crushed(slot, hit.entity, hit.line, hit.part);
       crushedSaid = true;
       break;
     }
   }
   // Short of its motion, whatever stopped it (a push that made only part of the room, the
   // attempts running out, an entity it could not clear): the rules hear of it, as of a crush.
-  if (remaining != Vec2w{} && !crushedSaid && blocker && slots[*blocker].entity &&
-      slots[*blocker].entity->instanceIn(partId))
-    crushed(slot, *blocker, 0);
+  if (remaining != Vec2w{} && !crushedSaid && blocker && slots[blocker->entity].entity &&
+      slots[blocker->entity].entity->instanceIn(blocker->part))
+    crushed(slot, blocker->entity, 0, blocker->part);
   return moved;
 }
 
-void WorldImpl::crushed(uint32_t slot, uint32_t entity, uint32_t line) {
+void WorldImpl::crushed(uint32_t slot, uint32_t entity, uint32_t line, MapPartId part) {
   Entity& e = *slots[entity].entity;
-  Contact c = makeContact(e, *e.instanceIn(platforms[slot].part), kPlatformLineBit | (slot << 16) | line,
-                          Fraction::zero(), {}, {});
+  Contact c = makeContact(e, *e.instanceIn(part), kPlatformLineBit | (slot << 16) | line, Fraction::zero(), {}, {});
   callRules([&](Rules& r) { r.crushed(c); });
 }
 
@@ -313,10 +385,17 @@ void WorldImpl::carryRiders(uint32_t slot, const std::vector<Rider>& riders, Vec
   const Rotation rotation = rotationOf(turned);
   for (const Rider& r : riders) {
     Entity& e = *slots[r.entity].entity;
-    const Instance* inst = e.instanceIn(pl.part);
+    const Instance* inst = e.instanceIn(r.part);
     if (!inst) continue;
-    const Vec2w moved0 = wide(r.start) + moved;
-    const Vec2w to = turned == 0 ? moved0 : pivot + rotateWide(rotation, moved0 - pivot);
+    Vec2w to;
+    if (r.part == pl.part) {
+      const Vec2w moved0 = wide(r.start) + moved;
+      to = turned == 0 ? moved0 : pivot + rotateWide(rotation, moved0 - pivot);
+    } else {  // on a copy (a platform that does not turn): by what the copy moved
+      const PlatformCopy* copy = platformCopyIn(pl, r.part);
+      if (!copy) continue;
+      to = wide(r.start) + (pointFromQ30(copy->originQ30) - r.origin);
+    }
     const Vec2w carry = to - wide(inst->position);
     if (carry != Vec2w{}) push(e, inst->frame == 0 ? carry : rotateWideInverse(inst->rotation, carry));
     if (turned != 0) settleOn(slot, e);
@@ -552,30 +631,37 @@ Angle WorldImpl::turnPlatform(uint32_t slot) {
     platforms[slot].work += next.size();
     if (!inside) break;  // the coordinate range's edge: no entity can be beyond it to hear of it
     if (!clearTurn(slot, next, blocker)) {
-      crushed(slot, blocker, 0);
+      crushed(slot, blocker, 0, platforms[slot].part);
       break;
     }
     Platform& p = platforms[slot];
     p.angle = static_cast<Angle>(p.angle + by);
     p.lines = next;
-    p.box = boxOf(p.lines);
+    p.box = boxOfLines(p.lines);
     ++platformEpochs[p.part];
     turned = static_cast<Angle>(turned + by);
   }
   return turned;
 }
 
-// One platform's frame: find who stands on it, move it as far as its motion goes or until a push
-// is impossible, turn it as far as its spin goes or until a push is impossible, then carry those
-// standing on it as if fixed to it (less what it pushed them).
+// One platform's frame: its copies on the faces beside it that this frame's motion reaches (one
+// that cannot be placed stops it), then who stands on it; move it as far as its motion goes or until
+// a push is impossible, turn it as far as its spin goes or until a push is impossible, then carry
+// those standing on it as if fixed to it (less what it pushed them); wholly beyond an edge, it
+// belongs to the face beyond.
 void WorldImpl::movePlatforms() {
   for (uint32_t slot = 0; slot < platforms.size(); ++slot) {
     platforms[slot].work = 0;
-    if (!platforms[slot].alive || (platforms[slot].motion == Vec2{} && platforms[slot].spin == 0)) continue;
+    if (!platforms[slot].alive || (platforms[slot].motionQ30 == Vec2w{} && platforms[slot].spin == 0)) continue;
+    const Vec2w motion = frameMotion(platforms[slot]);
+    const std::optional<PlatformHit> unplaced = updatePlatformCopies(slot, motion);
+    if (unplaced) crushed(slot, unplaced->entity, unplaced->line, unplaced->part);
     const std::vector<Rider> riders = ridersOf(slot);
-    const Vec2w moved = platforms[slot].motion == Vec2{} ? Vec2w{} : advancePlatform(slot);
+    const Vec2w moved = motion == Vec2w{} || unplaced ? Vec2w{} : advancePlatform(slot, motion);
     const Angle turned = platforms[slot].spin == 0 ? 0 : turnPlatform(slot);
+    clearPlatformCopies(slot);
     carryRiders(slot, riders, moved, turned);
+    crossPlatform(slot);
   }
 }
 

@@ -62,6 +62,21 @@ struct Path {
   std::span<const uint8_t> pierceNear;       // whether any pierceable line was near its path
 };
 
+// A platform's lines on a face beside its own (World::createPlatform): placed once through the
+// warp, rounded, then moved rigidly, each frame by the whole-unit step that follows `originQ30`,
+// the exact image of the platform's moves, as an entity's copy follows its anchor.
+struct PlatformCopy {
+  MapPartId part = 0;
+  std::vector<PlatformLine> lines;
+  Box box{0, 0, -1, -1};
+  Rotation rotation;  // the platform's frame into this part's
+  Vec2w originQ30;    // where the platform's moves so far take a point that started at 0
+  // The step of the copy's lines when the platform steps by `step`.
+  Vec2w stepFor(Vec2w step) const {
+    return pointFromQ30(originQ30 + rotateQ30(rotation, step)) - pointFromQ30(originQ30);
+  }
+};
+
 // A moving platform (see World::createPlatform). Its lines are kept where they are now.
 struct Platform {
   MapPartId part = 0;
@@ -71,14 +86,22 @@ struct Platform {
   std::vector<PlatformLine> base;
   std::vector<PlatformLine> lines;
   Vec2 offset, motion;
+  // Its motion exactly, in Q30, and what whole-unit frames have left of it: as set, `motion`
+  // itself and nothing; turned into another part's frame when it crosses a warp edge, whole units a
+  // frame that add up to it exactly (`motion` is then its nearest whole units).
+  Vec2w motionQ30, motionLeftQ30;
   Vec2 pivot;
   Angle angle = 0;
-  int32_t spin = 0;       // binary-angle units a frame
-  uint64_t work = 0;      // the latest frame's (PlatformView::work)
-  Box box{0, 0, -1, -1};  // around its lines, where they are now
+  int32_t spin = 0;                  // binary-angle units a frame
+  uint64_t work = 0;                 // the latest frame's (PlatformView::work)
+  Box box{0, 0, -1, -1};             // around its lines, where they are now
+  std::vector<PlatformCopy> copies;  // one a part at most
   uint32_t generation = 0;
   bool alive = false;
 };
+
+// The box around a platform's lines.
+Box boxOfLines(const std::vector<PlatformLine>& lines);
 
 // Sub-steps that turn a shape of squared radius `radius2` (about the turning point) by `delta`
 // binary-angle units with every point's arc within half a unit of its chord (rotation.cpp).
@@ -210,19 +233,50 @@ struct WorldImpl {
   // movePlatforms' steps, for one platform (its slot).
   struct Rider {
     uint32_t entity;  // its slot
-    Vec2 start;       // where it stood in the platform's part before the platform moved
+    MapPartId part;   // where it stands on the platform: its part, or a copy's
+    Vec2 start;       // where it stood there before the platform moved
+    Vec2 origin;      // where the lines it stands on were (the platform's offset, a copy's origin)
   };
   struct PlatformHit {
     Fraction at = Fraction::one();  // of the motion; one: nothing met
     uint32_t entity = 0, line = 0;
+    MapPartId part = 0;  // where: the platform's part or a copy's
   };
   std::vector<Rider> ridersOf(uint32_t slot);
   PlatformHit firstPlatformHit(uint32_t slot, Vec2w motion);
-  Vec2w clearPlatformStep(uint32_t slot, Vec2w step, std::optional<uint32_t>& blocker);
-  // Rules::crushed for the entity (its slot) that platform `slot`'s line `line` stopped.
-  void crushed(uint32_t slot, uint32_t entity, uint32_t line);
+  Vec2w clearPlatformStep(uint32_t slot, Vec2w step, std::optional<PlatformHit>& blocker);
+  // Rules::crushed for the entity (its slot) that platform `slot`'s line `line` stopped in `part`.
+  void crushed(uint32_t slot, uint32_t entity, uint32_t line, MapPartId part);
+  // platform_copies.cpp: the copies platform `slot` needs moving by `motion` (made where its lines
+  // come within reach of a warp edge, dropped where they no longer do). A copy that cannot be placed
+  // (a body is where its lines would be) is not made: its blocker is returned.
+  std::optional<PlatformHit> updatePlatformCopies(uint32_t slot, Vec2w motion);
+  // Once every line of platform `slot` is beyond one warp edge, it belongs to the face beyond.
+  void crossPlatform(uint32_t slot);
+  // Lifts the copies of bodies met elsewhere (platformMeets) off the platform's copy lines they
+  // overlap by rounding.
+  void clearPlatformCopies(uint32_t slot);
+  // Where a platform meets an entity: the first of its parts (its own, then its copies') the entity
+  // has an instance in. The entity's instances and the platform's lines in other parts are the same
+  // things again, each rounded in its own frame: met there as well, a unit's disagreement between
+  // the two roundings would be a collision of its own.
+  static std::optional<MapPartId> platformMeets(const Platform& pl, const Entity& e) {
+    if (e.instanceIn(pl.part)) return pl.part;
+    for (const PlatformCopy& c : pl.copies)
+      if (e.instanceIn(c.part)) return c.part;
+    return std::nullopt;
+  }
+  // Where the lines of the platform are in each of its parts, with the step each takes when the
+  // platform steps by `step`: visit(part, lines, box, stepThere).
+  template <class Visit>
+  void forEachPlatformPlace(const Platform& pl, Vec2w step, Visit&& visit) const {
+    visit(pl.part, pl.lines, pl.box, step);
+    for (const PlatformCopy& c : pl.copies) visit(c.part, c.lines, c.box, c.stepFor(step));
+  }
   void shiftPlatform(uint32_t slot, Vec2w step);
-  Vec2w advancePlatform(uint32_t slot);
+  // This frame's whole-unit motion (Platform::motionQ30 and what earlier frames left of it).
+  static Vec2w frameMotion(Platform& pl);
+  Vec2w advancePlatform(uint32_t slot, Vec2w motion);
   void carryRiders(uint32_t slot, const std::vector<Rider>& riders, Vec2w moved, Angle turned);
   void settleOn(uint32_t slot, Entity& e);
   // Where platform `slot`'s lines are at `angle` (its offset as it is).
@@ -237,12 +291,27 @@ struct WorldImpl {
   // `box` (the caller tests the line itself).
   template <class Visit>
   void forEachPlatformLine(MapPartId part, const Box& box, Visit&& visit) const;
+  // A platform line by its key: as created (its tag and kind), or where it is in a part.
   const PlatformLine& platformLine(LineIndex key) const {
     return platforms[(key & ~kPlatformLineBit) >> 16].lines[key & 0xffff];
   }
-  // A line's segment where it is now: the part's own, or a platform's.
+  const PlatformLine& platformLine(MapPartId part, LineIndex key) const {
+    return (*platformLinesIn(platforms[(key & ~kPlatformLineBit) >> 16], part))[key & 0xffff];
+  }
+  // A platform's lines in `part`: its own, or its copy's there; nullptr: none there.
+  static const std::vector<PlatformLine>* platformLinesIn(const Platform& pl, MapPartId part) {
+    if (pl.part == part) return &pl.lines;
+    const PlatformCopy* c = platformCopyIn(pl, part);
+    return c ? &c->lines : nullptr;
+  }
+  static const PlatformCopy* platformCopyIn(const Platform& pl, MapPartId part) {
+    for (const PlatformCopy& c : pl.copies)
+      if (c.part == part) return &c;
+    return nullptr;
+  }
+  // A line's segment where it is now: the part's own, or a platform's there.
   const Segment& segmentOf(const MapPart& p, LineIndex line) const {
-    return isPlatformLine(line) ? platformLine(line).segment : p.segments()[line];
+    return isPlatformLine(line) ? platformLine(p.id(), line).segment : p.segments()[line];
   }
 
   // placement.cpp
@@ -363,10 +432,12 @@ template <class Visit>
 void WorldImpl::forEachPlatformLine(MapPartId part, const Box& box, Visit&& visit) const {
   for (uint32_t slot = 0; slot < platforms.size(); ++slot) {
     const Platform& pl = platforms[slot];
-    if (!pl.alive || pl.part != part || pl.box.x0 > box.x1 || pl.box.x1 < box.x0 || pl.box.y0 > box.y1 ||
-        pl.box.y1 < box.y0)
-      continue;
-    for (uint32_t k = 0; k < pl.lines.size(); ++k) visit(pl.lines[k], kPlatformLineBit | (slot << 16) | k);
+    if (!pl.alive) continue;
+    const std::vector<PlatformLine>* lines = platformLinesIn(pl, part);
+    if (!lines) continue;
+    const Box& b = lines == &pl.lines ? pl.box : platformCopyIn(pl, part)->box;
+    if (b.x0 > box.x1 || b.x1 < box.x0 || b.y0 > box.y1 || b.y1 < box.y0) continue;
+    for (uint32_t k = 0; k < lines->size(); ++k) visit((*lines)[k], kPlatformLineBit | (slot << 16) | k);
   }
 }
 

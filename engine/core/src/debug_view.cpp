@@ -99,6 +99,9 @@ void drawDebug(const Scene& scene, DrawList& out) {
                        (point(l.segment.a).y + point(l.segment.b).y) / 2};
       arrow(out, place, mid, static_cast<float>(p.motion.x) * 8, static_cast<float>(p.motion.y) * 8, unit, kPlatform);
     }
+    for (const physics::PlatformCopyView& c : p.copies)  // over an edge: its lines on the face beyond
+      for (const physics::PlatformLine& l : c.lines)
+        line(out, Place::overlayOnFace(c.part), point(l.segment.a), point(l.segment.b), 3 * unit, kPlatform, false, 0);
   }
   for (const physics::EntityId id : world.entities()) {
     const physics::EntityView e = world.entity(id);

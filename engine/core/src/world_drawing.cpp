@@ -40,12 +40,18 @@ void drawWorld(const physics::World& world, const Looks& looks, const stage::Tag
   std::vector<Point2> scratch;
   for (const physics::PlatformId id : world.platforms()) {
     const physics::PlatformView p = world.platform(id);
-    for (const physics::PlatformLine& line : p.lines) {
-      const physics::Segment& s = line.segment;
-      out.wall(Place::onFace(p.part), {static_cast<float>(s.a.x), static_cast<float>(s.a.y)},
-               {static_cast<float>(s.b.x), static_cast<float>(s.b.y)}, line.tag,
-               line.kind == physics::LineKind::OneWay ? 2 : 0, tags.style(line.tag));
-    }
+    // Its own lines, and over a face's edge its copy's on the face beyond (the renderer cuts each
+    // at its face's edges).
+    auto draw = [&](physics::MapPartId part, std::span<const physics::PlatformLine> lines) {
+      for (const physics::PlatformLine& line : lines) {
+        const physics::Segment& s = line.segment;
+        out.wall(Place::onFace(part), {static_cast<float>(s.a.x), static_cast<float>(s.a.y)},
+                 {static_cast<float>(s.b.x), static_cast<float>(s.b.y)}, line.tag,
+                 line.kind == physics::LineKind::OneWay ? 2 : 0, tags.style(line.tag));
+      }
+    };
+    draw(p.part, p.lines);
+    for (const physics::PlatformCopyView& c : p.copies) draw(c.part, c.lines);
   }
   for (const physics::EntityId id : world.entities()) {
     const physics::EntityView e = world.entity(id);

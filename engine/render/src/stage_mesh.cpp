@@ -91,6 +91,22 @@ std::vector<core::Point2> clipped(std::vector<core::Point2> shape, std::span<con
   return shape;
 }
 
+// The part of the segment a-b inside the convex polygon `window` (counter-clockwise), as the
+// fractions of the way [t0, t1] along it; t0 > t1 when none of it is.
+std::pair<float, float> insideOf(core::Point2 a, core::Point2 b, std::span<const core::Point2> window) {
+  float t0 = 0, t1 = 1;
+  const size_t n = window.size();
+  for (size_t k = 0; k < n && t0 <= t1; ++k) {
+    const core::Point2 p = window[k], q = window[(k + 1) % n];
+    auto side = [&](core::Point2 v) { return (q.x - p.x) * (v.y - p.y) - (q.y - p.y) * (v.x - p.x); };
+    const float sa = side(a), sb = side(b);
+    if (sa < 0 && sb < 0) return {1, 0};
+    if (sa < 0) t0 = std::max(t0, sa / (sa - sb));
+    if (sb < 0) t1 = std::min(t1, sa / (sa - sb));
+  }
+  return {t0, t1};
+}
+
 }  // namespace
 
 void addTriangle(std::vector<LitVertex>& out, const Vector3f& a, const Vector3f& b, const Vector3f& c,
@@ -364,7 +380,13 @@ void StageMesh::addShapes(const core::DrawList& draw, physics::MapPartId onlyFac
     const Frame* f = frameOf(s.place.face);
     if (!f) continue;
     if (s.kind == core::ShapeKind::Wall) {
-      addWall(*f, {points[s.first], points[s.first + 1], s.tag, s.lineKind, s.style}, into, 1, true);
+      // Cut at the face's edges: a platform over an edge is drawn on each face by its own lines
+      // there (its copy's on the face beyond), never off the solid.
+      const core::Point2 a = points[s.first], b = points[s.first + 1];
+      const auto [t0, t1] = insideOf(a, b, f->corners);
+      if (t0 >= t1) continue;
+      auto at = [&](float t) { return core::Point2{a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t}; };
+      addWall(*f, {at(t0), at(t1), s.tag, s.lineKind, s.style}, into, 1, true);
       continue;
     }
     if (s.kind == core::ShapeKind::Polygon && s.body != 0) {

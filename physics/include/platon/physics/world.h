@@ -43,10 +43,17 @@ struct PlatformLine {
   LineKind kind = LineKind::Solid;
 };
 
+// A platform's lines on a face beside its own, where they reach over one of its part's warp edges:
+// the same lines through the warp, in that part's coordinates (World::createPlatform).
+struct PlatformCopyView {
+  MapPartId part = 0;
+  std::span<const PlatformLine> lines;
+};
+
 // A moving platform as callers see it: its lines where they are now.
 struct PlatformView {
   MapPartId part = 0;
-  Vec2 offset;  // how far it has moved since it was created
+  Vec2 offset;  // how far it has moved since it was created, or since it last crossed a warp edge
   Vec2 motion;  // whole units per frame
   std::span<const PlatformLine> lines;
   Vec2 pivot;        // the point it turns about, where it is now
@@ -55,6 +62,7 @@ struct PlatformView {
   // The latest solve()'s work for it: its lines placed and checked and the bodies they were checked
   // against (as EntityView::work counts an entity's), so a caller can bound what it costs.
   uint64_t work = 0;
+  std::vector<PlatformCopyView> copies;  // on the faces beside it its lines reach (a renderer draws them)
 };
 
 // The largest turn a platform makes in a frame (1/16 of a turn), and the most a frame's turn may
@@ -139,8 +147,16 @@ class World {
   // Moving platforms: lines of one map part that move together by whole units, once a frame before
   // the entities step. A platform pushes every entity in its way (as a slide of the entity's own,
   // so walls stop it), carries the entities standing on it, and stops where a push is impossible
-  // (Rules::crushed). It passes through the part's fixed lines and other platforms, and stays in
-  // its part: at a warp edge it goes on beyond the face, where no entity of that part can be.
+  // (Rules::crushed). It passes through the part's fixed lines and other platforms.
+  // On a face of a solid (a part whose warp lines close into a loop: MapPart::faceLoop), a platform
+  // that does not turn crosses the face's edges: where its lines come within reach of a warp edge
+  // they are also on the face beyond (a copy, PlatformView::copies, placed through the warp and
+  // moved with it, a whole unit at a time after its exact place), and that face's entities meet,
+  // ride and are pushed by them as by its own; once every line is beyond one edge, the platform
+  // belongs to the face beyond (its part, lines, pivot and motion turned into that part's frame,
+  // its offset counted from there). A copy that would be placed over a body there stops the
+  // platform for the frame (Rules::crushed). A turning platform stays in its part, as a platform
+  // on a face that is not part of a solid does: beyond an edge, no entity of that part can be.
   // Up to 65,536 lines a platform and 16,384 platforms; lines must be Solid or OneWay.
   PlatformId createPlatform(MapPartId part, std::span<const PlatformLine> lines);
   void destroyPlatform(PlatformId id);
