@@ -17,22 +17,26 @@ constexpr int64_t kCopyReach = 4;
 
 bool boxesMeet(const Box& a, const Box& b) { return a.x0 <= b.x1 && a.x1 >= b.x0 && a.y0 <= b.y1 && a.y1 >= b.y0; }
 
-// Whether the lines, moved by up to `motion`, come within reach of the warp edge `seg` (its face to
-// its left): the box they sweep meets the edge's, and an end is beyond the edge's line or within
-// reach of it.
-bool reachesEdge(const Platform& pl, const Segment& seg, Vec2w motion) {
+// How far the lines come over the warp edge `seg` (its face to its left), moved by up to `motion`:
+// the least cross(d, p - a) over their ends, against |d| rounded up (an end within `reach` units of
+// the edge's line, or beyond it, has cross <= reach |d|). Nothing when the box they sweep is not
+// near the edge's.
+struct EdgeReach {
+  i128 cross = 0, length = 1;
+  bool before(const EdgeReach& o) const { return cross * o.length < o.cross * length; }  // further over
+};
+std::optional<EdgeReach> reachOver(const Platform& pl, const Segment& seg, Vec2w motion) {
   const int64_t reach = std::max(std::abs(motion.x), std::abs(motion.y)) + kCopyReach;
   const Box near{pl.box.x0 - reach, pl.box.y0 - reach, pl.box.x1 + reach, pl.box.y1 + reach};
   const Box edge{std::min(seg.a.x, seg.b.x), std::min(seg.a.y, seg.b.y), std::max(seg.a.x, seg.b.x),
                  std::max(seg.a.y, seg.b.y)};
-  if (!boxesMeet(near, edge)) return false;
+  if (!boxesMeet(near, edge)) return std::nullopt;
   const Vec2w d = seg.b - seg.a;
-  // |d| rounded up: an end within `reach` of the line has cross(d, p - a) <= reach |d|.
-  const i128 length = static_cast<i128>(isqrt(static_cast<u128>(dot128(d, d)))) + 1;
+  EdgeReach r{INT64_MAX, static_cast<i128>(isqrt(static_cast<u128>(dot128(d, d)))) + 1};
   for (const PlatformLine& l : pl.lines)
-    for (const Vec2 p : {l.segment.a, l.segment.b})
-      if (cross128(d, p - seg.a) <= reach * length) return true;
-  return false;
+    for (const Vec2 p : {l.segment.a, l.segment.b}) r.cross = std::min(r.cross, cross128(d, p - seg.a));
+  if (r.cross > reach * r.length) return std::nullopt;
+  return r;
 }
 
 // Whether every line is wholly beyond the warp edge `seg`.
@@ -57,12 +61,23 @@ const Warp* warpInto(const MapPart& from, MapPartId to) {
 std::optional<WorldImpl::PlatformHit> WorldImpl::updatePlatformCopies(uint32_t slot, Vec2w motion) {
   Platform& pl = platforms[slot];
   const MapPart& home = part(pl.part);
-  // A turning platform stays in its part (World::createPlatform): it has no copies.
-  std::vector<LineIndex> reached;
-  if (pl.spin == 0)
-    for (const LineIndex line : home.faceLoop())
-      if (reachesEdge(pl, home.segments()[line], motion)) reached.push_back(line);
+  // One copy at most: across the edge its lines come furthest over, or the one it has while its
+  // lines still reach it. Over two edges at once (beside a vertex) the faces beyond each would hold
+  // copies carried over different edges, which disagree by the angle the faces leave there; the
+  // bodies there would meet two platforms a few units apart. A turning platform stays in its part
+  // (World::createPlatform): it has none.
   auto targetOf = [&](LineIndex line) { return home.warps()[home.lines()[line].warp].target; };
+  std::optional<LineIndex> chosen;
+  std::optional<EdgeReach> furthest;
+  bool chosenHeld = false;
+  if (pl.spin == 0)
+    for (const LineIndex line : home.faceLoop()) {
+      const std::optional<EdgeReach> r = reachOver(pl, home.segments()[line], motion);
+      if (!r || chosenHeld) continue;
+      const bool held = platformCopyIn(pl, targetOf(line)) != nullptr;
+      if (held || !chosen || r->before(*furthest)) chosen = line, furthest = r, chosenHeld = held;
+    }
+  const std::vector<LineIndex> reached = chosen ? std::vector<LineIndex>{*chosen} : std::vector<LineIndex>{};
   std::erase_if(pl.copies, [&](const PlatformCopy& c) {
     const bool kept = std::any_of(reached.begin(), reached.end(), [&](LineIndex l) { return targetOf(l) == c.part; });
     if (!kept) ++platformEpochs[c.part];
@@ -142,6 +157,24 @@ void WorldImpl::clearPlatformCopies(uint32_t slot) {
   }
 }
 
+// Whether a body's instance in the copy's part overlaps one of its lines. Until it crosses, the
+// platform meets the bodies that are also in its own part there (platformMeets); their copies beyond
+// the edge, rounded in their own frame, can be a unit or so into the copy's lines, and the platform
+// goes over only once it would meet none of them so.
+bool WorldImpl::copyOverlapsABody(const PlatformCopy& c) {
+  bool over = false;
+  std::vector<Vec2> verts;
+  entityIndex.forEachNear(c.part, c.box, [&](uint32_t s) {
+    const Instance* inst = slots[s].entity->instanceIn(c.part);
+    if (over || !inst) return;
+    worldVertices(*inst, verts);
+    for (const PlatformLine& l : c.lines)
+      if ((l.kind != LineKind::OneWay || wholyInFront(verts, l.segment)) && overlapsInterior(verts, l.segment))
+        over = true;
+  });
+  return over;
+}
+
 void WorldImpl::crossPlatform(uint32_t slot) {
   Platform& pl = platforms[slot];
   if (pl.copies.empty() || pl.spin != 0) return;
@@ -153,7 +186,7 @@ void WorldImpl::crossPlatform(uint32_t slot) {
     if (!beyond || !whollyBeyond(pl, seg)) continue;
     const MapPart& there = part(w.target);
     const Warp* back = warpInto(there, pl.part);
-    if (!back) continue;
+    if (!back || copyOverlapsABody(*beyond)) continue;
     // Its lines stay where they are in every part: the copy's become its own, its own a copy of the
     // new part's (following it back through the warp), and a copy on a face the new part has a warp
     // into follows it through that warp; any other copy is dropped (made again next frame if reached).

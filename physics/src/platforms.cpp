@@ -197,44 +197,45 @@ std::vector<WorldImpl::Rider> WorldImpl::ridersOf(uint32_t slot) {
   const Platform& pl = platforms[slot];
   const bool turning = pl.spin != 0 || pl.angle != 0;
   std::vector<Rider> riders;
-  std::vector<Vec2> verts;
-  forEachPlatformPlace(pl, {}, [&](MapPartId partId, const std::vector<PlatformLine>& lines, const Box& box, Vec2w) {
-    const Vec2w gravity = part(partId).gravity();
-    const PlatformCopy* copy = platformCopyIn(pl, partId);
+  std::vector<Vec2> verts, lower;
+  auto ridersIn = [&](const PlatformPlace& at) {
+    const Vec2w gravity = part(at.part).gravity();
+    const PlatformCopy* copy = platformCopyIn(pl, at.part);
     const Vec2 origin = copy ? pointFromQ30(copy->originQ30) : pl.offset;
     // A tilted line (turned, or a copy's, or sloped as made) is where whole-unit positions leave a
     // body that came to rest on it up to a unit and a half off it (the rest test's reach), and its
     // slide along it a unit more now and then (each step rounded to whole units): it stands on it
     // all the same. A copy's lines and the body's copy are also each rounded in their own frame.
-    auto tilted = [&](const Segment& s) { return turning || copy || (s.a.x != s.b.x && s.a.y != s.b.y); };
     const Vec2w down = unitStep(gravity);
-    std::vector<Vec2> lower;
-    const Box near{box.x0 - 2, box.y0 - 2, box.x1 + 2, box.y1 + 2};
-    entityIndex.forEachNear(partId, near, [&](uint32_t s) {
+    auto standsOn = [&](const Segment& s) {
+      if (!turning && !copy && (s.a.x == s.b.x || s.a.y == s.b.y)) return touchesOrOverlaps(verts, s);
+      std::vector<Vec2w>& normals = scratch.lineNormals;
+      normals.clear();
+      if (nearNormals(verts, s, normals) != Nearness::Apart) return true;
+      lower = verts;
+      shift(lower, down);
+      return nearNormals(lower, s, normals) != Nearness::Apart;
+    };
+    const Box near{at.box.x0 - 2, at.box.y0 - 2, at.box.x1 + 2, at.box.y1 + 2};
+    entityIndex.forEachNear(at.part, near, [&](uint32_t s) {
       const Entity& e = *slots[s].entity;
-      const Instance* inst = e.instanceIn(partId);
-      if (!inst || platformMeets(pl, e) != partId) return;
+      const Instance* inst = e.instanceIn(at.part);
+      if (!inst || platformMeets(pl, e) != at.part) return;
       worldVertices(*inst, verts);
-      for (const PlatformLine& l : lines) {
-        if (!stops(l, verts)) continue;
-        std::vector<Vec2w>& normals = scratch.lineNormals;
-        normals.clear();
-        if (!tilted(l.segment)
-                ? !touchesOrOverlaps(verts, l.segment)
-                : nearNormals(verts, l.segment, normals) == Nearness::Apart &&
-                      (lower = verts, shift(lower, down), nearNormals(lower, l.segment, normals)) == Nearness::Apart)
-          continue;
+      for (const PlatformLine& l : at.lines) {
+        if (!stops(l, verts) || !standsOn(l.segment)) continue;
         const Vec2w d = l.segment.b - l.segment.a;
         i128 side = 0;
         for (const Vec2 v : verts) side += cross(d, v - l.segment.a);
         const Vec2w up = side >= 0 ? Vec2w{-d.y, d.x} : Vec2w{d.y, -d.x};
         if (dot128(up, gravity) < 0) {
-          riders.push_back({s, partId, inst->position, origin});
+          riders.push_back({s, at.part, inst->position, origin});
           return;
         }
       }
     });
-  });
+  };
+  forEachPlatformPlace(pl, {}, ridersIn);
   std::sort(riders.begin(), riders.end(), [](const Rider& a, const Rider& b) { return a.entity < b.entity; });
   return riders;
 }
@@ -247,26 +248,27 @@ WorldImpl::PlatformHit WorldImpl::firstPlatformHit(uint32_t slot, Vec2w motion) 
   PlatformHit hit;
   std::vector<Vec2> verts;
   uint64_t work = 0;
-  forEachPlatformPlace(
-      pl, motion, [&](MapPartId partId, const std::vector<PlatformLine>& lines, const Box& box, Vec2w m) {
-        work += lines.size();
-        Box swept = box;
-        (m.x < 0 ? swept.x0 : swept.x1) += m.x;
-        (m.y < 0 ? swept.y0 : swept.y1) += m.y;
-        entityIndex.forEachNear(partId, swept, [&](uint32_t s) {
-          const Instance* inst = slots[s].entity->instanceIn(partId);
-          if (!inst || platformMeets(pl, *slots[s].entity) != partId) return;
-          work += lines.size();
-          worldVertices(*inst, verts);
-          for (uint32_t k = 0; k < lines.size(); ++k) {
-            if (!stops(lines[k], verts)) continue;
-            const Sweep sw = sweep(verts, -m, lines[k].segment);
-            if (!sw.hitsWithinFrame()) continue;
-            if (sw.enter < hit.at || (sw.enter == hit.at && (s < hit.entity || (s == hit.entity && k < hit.line))))
-              hit = {sw.enter, s, k, partId};
-          }
-        });
-      });
+  auto firstIn = [&](const PlatformPlace& at) {
+    const Vec2w m = at.step;
+    work += at.lines.size();
+    Box swept = at.box;
+    (m.x < 0 ? swept.x0 : swept.x1) += m.x;
+    (m.y < 0 ? swept.y0 : swept.y1) += m.y;
+    entityIndex.forEachNear(at.part, swept, [&](uint32_t s) {
+      const Instance* inst = slots[s].entity->instanceIn(at.part);
+      if (!inst || platformMeets(pl, *slots[s].entity) != at.part) return;
+      work += at.lines.size();
+      worldVertices(*inst, verts);
+      for (uint32_t k = 0; k < at.lines.size(); ++k) {
+        if (!stops(at.lines[k], verts)) continue;
+        const Sweep sw = sweep(verts, -m, at.lines[k].segment);
+        if (!sw.hitsWithinFrame()) continue;
+        if (sw.enter < hit.at || (sw.enter == hit.at && (s < hit.entity || (s == hit.entity && k < hit.line))))
+          hit = {sw.enter, s, k, at.part};
+      }
+    });
+  };
+  forEachPlatformPlace(pl, motion, firstIn);
   platforms[slot].work += work;
   return hit;
 }
@@ -277,27 +279,32 @@ WorldImpl::PlatformHit WorldImpl::firstPlatformHit(uint32_t slot, Vec2w motion) 
 Vec2w WorldImpl::clearPlatformStep(uint32_t slot, Vec2w step, std::optional<PlatformHit>& blocker) {
   const Platform& pl = platforms[slot];
   std::vector<Vec2> verts;
+  bool clear = true;
+  auto clearIn = [&](const PlatformPlace& at) {
+    const Vec2w m = at.step;
+    Box swept = at.box;
+    swept.x0 += std::min<int64_t>(0, m.x), swept.x1 += std::max<int64_t>(0, m.x);
+    swept.y0 += std::min<int64_t>(0, m.y), swept.y1 += std::max<int64_t>(0, m.y);
+    entityIndex.forEachNear(at.part, swept, [&](uint32_t s) {
+      const Instance* inst = slots[s].entity->instanceIn(at.part);
+      if (!clear || !inst || platformMeets(pl, *slots[s].entity) != at.part) return;
+      platforms[slot].work += at.lines.size();
+      worldVertices(*inst, verts);
+      for (const PlatformLine& l : at.lines) {
+        if (!stops(l, verts)) continue;
+        const Sweep sw = sweep(verts, -m, l.segment);
+        // A body already in a copy's line (its own copy was there, rounded in its frame, when the
+        // platform came to meet it there: platformMeets) is passed through, as a one-way line passes
+        // what is behind it, not crushed.
+        const bool inside = sw.startsInside() && l.kind != LineKind::OneWay && at.part == pl.part;
+        if (sw.hitsWithinFrame() || inside) clear = false;
+      }
+      if (!clear) blocker = PlatformHit{Fraction::zero(), s, 0, at.part};
+    });
+  };
   for (;;) {
-    bool clear = true;
-    forEachPlatformPlace(pl, step,
-                         [&](MapPartId partId, const std::vector<PlatformLine>& lines, const Box& box, Vec2w m) {
-                           Box at = box;
-                           at.x0 += std::min<int64_t>(0, m.x), at.x1 += std::max<int64_t>(0, m.x);
-                           at.y0 += std::min<int64_t>(0, m.y), at.y1 += std::max<int64_t>(0, m.y);
-                           entityIndex.forEachNear(partId, at, [&](uint32_t s) {
-                             const Instance* inst = slots[s].entity->instanceIn(partId);
-                             if (!clear || !inst || platformMeets(pl, *slots[s].entity) != partId) return;
-                             platforms[slot].work += lines.size();
-                             worldVertices(*inst, verts);
-                             for (const PlatformLine& l : lines) {
-                               if (!stops(l, verts)) continue;
-                               const Sweep sw = sweep(verts, -m, l.segment);
-                               if (sw.hitsWithinFrame() || (sw.startsInside() && l.kind != LineKind::OneWay))
-                                 clear = false;
-                             }
-                             if (!clear) blocker = PlatformHit{Fraction::zero(), s, 0, partId};
-                           });
-                         });
+    clear = true;
+    forEachPlatformPlace(pl, step, clearIn);
     if (clear || step == Vec2w{}) return step;
     step = {step.x - (step.x > 0) + (step.x < 0), step.y - (step.y > 0) + (step.y < 0)};  // a unit back
   }

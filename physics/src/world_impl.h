@@ -253,6 +253,7 @@ struct WorldImpl {
   std::optional<PlatformHit> updatePlatformCopies(uint32_t slot, Vec2w motion);
   // Once every line of platform `slot` is beyond one warp edge, it belongs to the face beyond.
   void crossPlatform(uint32_t slot);
+  bool copyOverlapsABody(const PlatformCopy& c);
   // Lifts the copies of bodies met elsewhere (platformMeets) off the platform's copy lines they
   // overlap by rounding.
   void clearPlatformCopies(uint32_t slot);
@@ -266,12 +267,18 @@ struct WorldImpl {
       if (e.instanceIn(c.part)) return c.part;
     return std::nullopt;
   }
-  // Where the lines of the platform are in each of its parts, with the step each takes when the
-  // platform steps by `step`: visit(part, lines, box, stepThere).
+  // Where the lines of a platform are in one of its parts (its own, or its copy's), with the step
+  // they take there when the platform steps by some step.
+  struct PlatformPlace {
+    MapPartId part;
+    const std::vector<PlatformLine>& lines;
+    const Box& box;
+    Vec2w step;
+  };
   template <class Visit>
   void forEachPlatformPlace(const Platform& pl, Vec2w step, Visit&& visit) const {
-    visit(pl.part, pl.lines, pl.box, step);
-    for (const PlatformCopy& c : pl.copies) visit(c.part, c.lines, c.box, c.stepFor(step));
+    visit(PlatformPlace{pl.part, pl.lines, pl.box, step});
+    for (const PlatformCopy& c : pl.copies) visit(PlatformPlace{c.part, c.lines, c.box, c.stepFor(step)});
   }
   void shiftPlatform(uint32_t slot, Vec2w step);
   // This frame's whole-unit motion (Platform::motionQ30 and what earlier frames left of it).

@@ -10,6 +10,7 @@
 #include "platon/stage/stage.h"
 #include "platon/stage/stage_error.h"
 #include "platon/testing/rng.h"
+#include "random_mesh.h"
 
 using namespace platon;
 using physics::Vec2;
@@ -329,41 +330,6 @@ TEST(Crossing, RandomBodiesOverRandomEdgesComeBack) {
     }
 }
 
-namespace {
-
-// A convex solid that is not Platonic, as a mesh file would give it: an n-sided prism or
-// bipyramid of random proportions, turned at random.
-stage::MeshData randomConvexMesh(platon::testing::Rng& rng) {
-  stage::MeshData m;
-  const int n = rng.between(3, 10);
-  const bool prism = rng.between(0, 1) == 1;
-  const double h = rng.uniform(0.3, 3.0);
-  for (int i = 0; i < n; ++i) {
-    const double a = 2 * M_PI * i / n;
-    m.positions.push_back({std::cos(a), prism ? -h / 2 : 0.0, std::sin(a)});
-    if (prism) m.positions.push_back({std::cos(a), h / 2, std::sin(a)});
-  }
-  const int low = static_cast<int>(m.positions.size()), high = low + 1;
-  m.positions.push_back({0, prism ? -h / 2 : -h, 0});
-  m.positions.push_back({0, prism ? h / 2 : h, 0});
-  auto ring = [&](int i, int level) { return prism ? 2 * (i % n) + level : i % n; };
-  for (int i = 0; i < n; ++i) {
-    m.triangles.push_back({low, ring(i, 0), ring(i + 1, 0)});
-    m.triangles.push_back({high, ring(i + 1, 1), ring(i, 1)});
-    if (prism) {
-      m.triangles.push_back({ring(i, 0), ring(i, 1), ring(i + 1, 1)});
-      m.triangles.push_back({ring(i, 0), ring(i + 1, 1), ring(i + 1, 0)});
-    }
-  }
-  // The winding above may run either way: the builder turns a mesh wound clockwise throughout over.
-  Eigen::Quaterniond q(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
-  q.normalize();
-  for (Eigen::Vector3d& p : m.positions) p = q.toRotationMatrix() * p;
-  return m;
-}
-
-}  // namespace
-
 // The same over stages that are not Platonic: random prisms and bipyramids (faces of 3 to 10
 // sides meeting at many angles), built from meshes as a mesh file would give them.
 TEST(Crossing, RandomBodiesOverRandomMeshStagesComeBack) {
@@ -372,7 +338,7 @@ TEST(Crossing, RandomBodiesOverRandomMeshStagesComeBack) {
   for (int k = 0; k < 12; ++k) {
     auto b = std::make_unique<Built>();
     try {
-      b->stage = stage::stageFromPolyhedron(stage::polyhedronFromMesh(randomConvexMesh(rng), 4096));
+      b->stage = stage::stageFromPolyhedron(stage::polyhedronFromMesh(stage::test::randomConvexMesh(rng), 4096));
     } catch (const stage::StageError& e) {
       ADD_FAILURE() << "a convex mesh was refused: " << e.what();
       continue;
@@ -523,7 +489,7 @@ TEST(Crossing, WalkingAndFallingAcrossEveryShapeStaysOnTheFaces) {
   }
   for (int k = 0; k < 12; ++k) {  // and random prisms and bipyramids
     auto b = std::make_unique<Built>();
-    b->stage = stage::stageFromPolyhedron(stage::polyhedronFromMesh(randomConvexMesh(rng), 4096));
+    b->stage = stage::stageFromPolyhedron(stage::polyhedronFromMesh(stage::test::randomConvexMesh(rng), 4096));
     stage::addStageToWorld(b->stage, b->world, 0);
     walkAcross(*b, rng, "mesh stage " + std::to_string(k));
   }
