@@ -270,6 +270,7 @@ struct Swept {
   LineIndex line = 0;       // a map line's index (kPlatformLine: a platform's)
   LineKind kind = LineKind::Solid;
   uint32_t tag = 0;
+  const Platform* platform = nullptr;  // a platform's line's
 };
 constexpr LineIndex kPlatformLine = UINT32_MAX;  // Swept::line of a platform's line
 
@@ -311,10 +312,11 @@ size_t World::countOverlaps() const {
           items.push_back(boxed(std::move(ls), std::array<Vec2, 2>{seg.a, seg.b}));
         }
         impl_->forEachPlatformLine(
-            inst.part, Box{INT64_MIN, INT64_MIN, INT64_MAX, INT64_MAX}, [&](const PlatformLine& l, LineIndex) {
+            inst.part, Box{INT64_MIN, INT64_MIN, INT64_MAX, INT64_MAX}, [&](const PlatformLine& l, LineIndex key) {
               if (l.kind == LineKind::OneWay) return;
               Swept ps{};
               ps.segment = l.segment, ps.line = kPlatformLine, ps.kind = l.kind, ps.tag = l.tag;
+              ps.platform = &impl_->platforms[(key & ~kPlatformLineBit) >> 16];
               items.push_back(boxed(std::move(ps), std::array<Vec2, 2>{l.segment.a, l.segment.b}));
             });
       }
@@ -339,8 +341,8 @@ size_t World::countOverlaps() const {
         const Swept& body = a.entity ? a : b;
         const Swept& line = a.entity ? b : a;
         if (!overlapsInterior(body.verts, line.segment)) continue;
-        if (line.line == kPlatformLine) {  // a platform's line: always solid
-          ++count;
+        if (line.line == kPlatformLine) {  // a platform's line: solid where the platform meets the body
+          if (WorldImpl::platformMeets(*line.platform, *body.entity) == partId) ++count;
           continue;
         }
         const std::vector<LineIndex>& kept = body.instance->overlapping;

@@ -241,11 +241,16 @@ function platon.world.oneWay(part, x0, y0, x1, y1, tag) end
 ---@return number degrees
 function platon.world.platformAngle(platform) end
 
---- How far it has moved since it was made.
+--- How far it has moved since it was made, or last crossed a face's edge.
 ---@param platform integer
 ---@return integer dx
 ---@return integer dy
 function platon.world.platformOffset(platform) end
+
+--- The face it is on: it changes when it crosses a face's edge.
+---@param platform integer
+---@return integer part
+function platon.world.platformPart(platform) end
 
 --- The body's anchor: its face and place, in units.
 ---@param entity integer

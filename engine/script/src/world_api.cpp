@@ -465,6 +465,11 @@ int platformOffset(lua_State* L) {
   return 2;
 }
 
+int platformPart(lua_State* L) {
+  lua_pushnumber(L, worldOf(L).platform(checkPlatform(L, 1)).part);
+  return 1;
+}
+
 int destroyPlatform(lua_State* L) {
   const physics::PlatformId id = checkPlatform(L, 1);
   worldOf(L).destroyPlatform(id);
@@ -557,6 +562,7 @@ constexpr luaL_Reg kWorld[] = {
     {"setPlatformSpin", lua::bound<setPlatformSpin>},
     {"platformAngle", lua::bound<platformAngle>},
     {"platformOffset", lua::bound<platformOffset>},
+    {"platformPart", lua::bound<platformPart>},
     {"destroyPlatform", lua::bound<destroyPlatform>},
     {"frame", lua::bound<frame>},
     {"stateHash", lua::bound<stateHash>},

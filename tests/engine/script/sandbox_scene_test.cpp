@@ -611,6 +611,26 @@ TEST(Handles, EntityAndPlatformHandlesNeverMix) {
   EXPECT_NE(m.find("| true"), std::string::npos) << m;
 }
 
+// A platform driven over a face's edge belongs to the face beyond from then on: platformPart says
+// which, and its offset counts from the crossing (in that face's frame).
+TEST(Platforms, ScriptsSeeAPlatformCrossAnEdge) {
+  Level level("platform_crossing",
+              "local p\n"
+              "return { build = function(game)\n"
+              "  p = game.world.createPlatform(0, { 3600, 1200, 3900, 1200 })\n"
+              "  game.world.setPlatformMotion(p, 10, 0)\n"
+              "end, tick = function(game, frame)\n"
+              "  local dx, dy = game.world.platformOffset(p)\n"
+              "  game.message(game.world.platformPart(p) .. ' ' .. dx .. ' ' .. dy)\n"
+              "end }\n");
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene live(level.scene, registry, false);
+  EXPECT_EQ(play(live, 40).status.message, "0 390 0");  // the tick reads the frame's start
+  const Played p = play(live, 30);                      // its far end at 3900 + 700: over by 500
+  ASSERT_TRUE(p.errors.empty()) << joined(p.errors);
+  EXPECT_EQ(p.status.message.substr(0, 2), "1 ") << p.status.message;  // face 0's right edge leads to face 1
+}
+
 // The draw API checks its arguments with or without a renderer, so a script's mistake shows in a
 // headless scenario as in the window (headless it returned before looking at them).
 TEST(DrawApi, BadArgumentsAreErrorsHeadlessToo) {

@@ -364,6 +364,7 @@ TEST(PlatformCrossing, RandomPlatformsOverRandomSolidsNeverOverlapAndNeverStopSi
       b->world.solve();
       const physics::PlatformView p = b->world.platform(id);
       ASSERT_EQ(overlaps(b->world, id, &copyOverlaps), "") << "frame " << frame;
+      ASSERT_EQ(b->world.countOverlaps(), 0u) << "frame " << frame;  // bodies, fixed lines, the platform
       const bool justCrossed = crossed;
       crossed = p.part != before.part;
       if (crossed) {

@@ -151,12 +151,14 @@ class World {
   // On a face of a solid (a part whose warp lines close into a loop: MapPart::faceLoop), a platform
   // that does not turn crosses the face's edges: where its lines come within reach of a warp edge
   // they are also on the face beyond (a copy, PlatformView::copies, placed through the warp and
-  // moved with it, a whole unit at a time after its exact place), and that face's entities meet,
-  // ride and are pushed by them as by its own; once every line is beyond one edge, the platform
-  // belongs to the face beyond (its part, lines, pivot and motion turned into that part's frame,
-  // its offset counted from there). A copy that would be placed over a body there stops the
-  // platform for the frame (Rules::crushed). A turning platform stays in its part, as a platform
-  // on a face that is not part of a solid does: beyond an edge, no entity of that part can be.
+  // moved with it, a whole unit at a time after its exact place; one copy at most, across the edge
+  // its lines come furthest over). It meets each body in the first of its parts the body is in
+  // (its own, then its copy's), and pushes, carries and is stopped by it there as on one face; once
+  // every line is beyond one edge, the platform belongs to the face beyond (its part, lines, pivot
+  // and motion turned into that part's frame, exactly; its offset counted from there). A copy that
+  // would be placed over a body there stops the platform for the frame (Rules::crushed). A turning
+  // platform stays in its part, as a platform on a face that is not part of a solid does: beyond an
+  // edge, no entity of that part can be. docs/physics.md, "Platforms across edges", says more.
   // Up to 65,536 lines a platform and 16,384 platforms; lines must be Solid or OneWay.
   PlatformId createPlatform(MapPartId part, std::span<const PlatformLine> lines);
   void destroyPlatform(PlatformId id);
@@ -205,7 +207,8 @@ class World {
 
   // Number of (instance, line) pairs where the instance overlaps the interior of a line that is
   // solid for it; the invariant says always 0. One-way lines, and lines kept passable until an
-  // instance is clear of them (refreshPierce), do not count. For tests.
+  // instance is clear of them (refreshPierce), do not count; a platform's lines count in the part
+  // where the platform meets the body (createPlatform). For tests.
   size_t countOverlaps() const;
 
  private:
