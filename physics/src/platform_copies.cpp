@@ -15,28 +15,35 @@ namespace {
 // overlapped.
 constexpr int64_t kCopyReach = 4;
 
-bool boxesMeet(const Box& a, const Box& b) { return a.x0 <= b.x1 && a.x1 >= b.x0 && a.y0 <= b.y1 && a.y1 >= b.y0; }
-
-// How far the lines come over the warp edge `seg` (its face to its left), moved by up to `motion`:
-// the least cross(d, p - a) over their ends, against |d| rounded up (an end within `reach` units of
-// the edge's line, or beyond it, has cross <= reach |d|). Nothing when the box they sweep is not
-// near the edge's.
+// How far the lines come over the warp edge `seg` (its face to its left) when they have moved by
+// `motion`: the least cross(d, p - a) over their ends then, against |d| rounded up. Nothing when they
+// come nowhere near it on the way: no end within kCopyReach units of the edge's line or beyond it,
+// before or after the move, or all of them to one side of the edge's slab (past its ends by more
+// than the motion and the reach, along it).
 struct EdgeReach {
   i128 cross = 0, length = 1;
-  bool before(const EdgeReach& o) const { return cross * o.length < o.cross * length; }  // further over
+  // Further over than `o` by more than `by` units.
+  bool beyond(const EdgeReach& o, int64_t by) const {
+    return cross * o.length + by * length * o.length < o.cross * length;
+  }
 };
 std::optional<EdgeReach> reachOver(const Platform& pl, const Segment& seg, Vec2w motion) {
-  const int64_t reach = std::max(std::abs(motion.x), std::abs(motion.y)) + kCopyReach;
-  const Box near{pl.box.x0 - reach, pl.box.y0 - reach, pl.box.x1 + reach, pl.box.y1 + reach};
-  const Box edge{std::min(seg.a.x, seg.b.x), std::min(seg.a.y, seg.b.y), std::max(seg.a.x, seg.b.x),
-                 std::max(seg.a.y, seg.b.y)};
-  if (!boxesMeet(near, edge)) return std::nullopt;
   const Vec2w d = seg.b - seg.a;
-  EdgeReach r{INT64_MAX, static_cast<i128>(isqrt(static_cast<u128>(dot128(d, d)))) + 1};
+  const i128 length = static_cast<i128>(isqrt(static_cast<u128>(dot128(d, d)))) + 1;
+  EdgeReach after{INT64_MAX, length};
+  i128 before = INT64_MAX, alongLow = INT64_MAX, alongHigh = INT64_MIN;
   for (const PlatformLine& l : pl.lines)
-    for (const Vec2 p : {l.segment.a, l.segment.b}) r.cross = std::min(r.cross, cross128(d, p - seg.a));
-  if (r.cross > reach * r.length) return std::nullopt;
-  return r;
+    for (const Vec2 p : {l.segment.a, l.segment.b}) {
+      const Vec2w at = p - seg.a;
+      before = std::min(before, cross128(d, at));
+      after.cross = std::min(after.cross, cross128(d, at + motion));
+      const i128 along = dot128(d, at), alongAfter = dot128(d, at + motion);
+      alongLow = std::min({alongLow, along, alongAfter}), alongHigh = std::max({alongHigh, along, alongAfter});
+    }
+  const i128 margin = kCopyReach * length;
+  if (std::min(before, after.cross) > margin || alongHigh < -margin || alongLow > dot128(d, d) + margin)
+    return std::nullopt;
+  return after;
 }
 
 // Whether every line is wholly beyond the warp edge `seg`.
@@ -61,10 +68,11 @@ const Warp* warpInto(const MapPart& from, MapPartId to) {
 std::optional<WorldImpl::PlatformHit> WorldImpl::updatePlatformCopies(uint32_t slot, Vec2w motion) {
   Platform& pl = platforms[slot];
   const MapPart& home = part(pl.part);
-  // One copy at most: across the edge its lines come furthest over, or the one it has while its
-  // lines still reach it. Over two edges at once (beside a vertex) the faces beyond each would hold
-  // copies carried over different edges, which disagree by the angle the faces leave there; the
-  // bodies there would meet two platforms a few units apart. A turning platform stays in its part
+  // One copy at most: across the edge its lines come furthest over (the one it has is kept unless
+  // another is further over by more than kCopyReach: a line over a vertex does not make copies
+  // come and go). Over two edges at once (beside a vertex) the faces beyond each would hold copies
+  // carried over different edges, which disagree by the angle the faces leave there; the bodies
+  // there would meet two platforms a few units apart. A turning platform stays in its part
   // (World::createPlatform): it has none.
   auto targetOf = [&](LineIndex line) { return home.warps()[home.lines()[line].warp].target; };
   std::optional<LineIndex> chosen;
@@ -73,9 +81,10 @@ std::optional<WorldImpl::PlatformHit> WorldImpl::updatePlatformCopies(uint32_t s
   if (pl.spin == 0)
     for (const LineIndex line : home.faceLoop()) {
       const std::optional<EdgeReach> r = reachOver(pl, home.segments()[line], motion);
-      if (!r || chosenHeld) continue;
+      if (!r) continue;
       const bool held = platformCopyIn(pl, targetOf(line)) != nullptr;
-      if (held || !chosen || r->before(*furthest)) chosen = line, furthest = r, chosenHeld = held;
+      const int64_t margin = held ? -kCopyReach : chosenHeld ? kCopyReach : 0;  // what `r` must beat `furthest` by
+      if (!chosen || r->beyond(*furthest, margin)) chosen = line, furthest = r, chosenHeld = held;
     }
   const std::vector<LineIndex> reached = chosen ? std::vector<LineIndex>{*chosen} : std::vector<LineIndex>{};
   std::erase_if(pl.copies, [&](const PlatformCopy& c) {
@@ -122,7 +131,9 @@ std::optional<WorldImpl::PlatformHit> WorldImpl::updatePlatformCopies(uint32_t s
 // A body met where the platform's own lines are (platformMeets) has its copies on the faces beyond
 // rounded in their own frames, as the platform's copies are: the two roundings can leave one of its
 // copies a unit into a copy line. Such a copy is lifted off it, as a copy is off any line it meets by
-// rounding (it may sit up to three units off its exact place); an anchor there is pushed off it.
+// rounding (it may sit up to three units off its exact place); an anchor there is pushed off it. So
+// is a body the platform has come to meet there since (it left the platform's own part) still in
+// one of the copy's lines.
 void WorldImpl::clearPlatformCopies(uint32_t slot) {
   std::vector<std::pair<uint32_t, MapPartId>> near;
   for (const PlatformCopy& c : platforms[slot].copies)
@@ -133,7 +144,7 @@ void WorldImpl::clearPlatformCopies(uint32_t slot) {
     Entity& e = *slots[s].entity;
     const PlatformCopy* c = platformCopyIn(platforms[slot], partId);
     Instance* inst = e.instanceIn(partId);
-    if (!c || !inst || platformMeets(platforms[slot], e) == partId) continue;
+    if (!c || !inst) continue;
     worldVertices(*inst, verts);
     for (const PlatformLine& l : c->lines) {
       if ((l.kind == LineKind::OneWay && !wholyInFront(verts, l.segment)) || !overlapsInterior(verts, l.segment))

@@ -222,6 +222,13 @@ std::vector<WorldImpl::Rider> WorldImpl::ridersOf(uint32_t slot) {
       const Instance* inst = e.instanceIn(at.part);
       if (!inst || platformMeets(pl, e) != at.part) return;
       worldVertices(*inst, verts);
+      // One in a line (its copy was there, rounded in its own frame, when the platform came to meet
+      // it here, and no lift freed it) is passed through, as the platform's move passes it: not
+      // carried.
+      if (std::any_of(at.lines.begin(), at.lines.end(), [&](const PlatformLine& l) {
+            return l.kind != LineKind::OneWay && overlapsInterior(verts, l.segment);
+          }))
+        return;
       for (const PlatformLine& l : at.lines) {
         if (!stops(l, verts) || !standsOn(l.segment)) continue;
         const Vec2w d = l.segment.b - l.segment.a;
@@ -373,14 +380,16 @@ Vec2w WorldImpl::advancePlatform(uint32_t slot, Vec2w motion) {
   // Short of its motion, whatever stopped it (a push that made only part of the room, the
   // attempts running out, an entity it could not clear): the rules hear of it, as of a crush.
   if (remaining != Vec2w{} && !crushedSaid && blocker && slots[blocker->entity].entity &&
-      slots[blocker->entity].entity->instanceIn(blocker->part))
+      !slots[blocker->entity].entity->instances.empty())
     crushed(slot, blocker->entity, 0, blocker->part);
   return moved;
 }
 
 void WorldImpl::crushed(uint32_t slot, uint32_t entity, uint32_t line, MapPartId part) {
   Entity& e = *slots[entity].entity;
-  Contact c = makeContact(e, *e.instanceIn(part), kPlatformLineBit | (slot << 16) | line, Fraction::zero(), {}, {});
+  // In the part it was met in; pushed out of it since (over an edge), where it is now.
+  const Instance& inst = e.instanceIn(part) ? *e.instanceIn(part) : e.instances.front();
+  Contact c = makeContact(e, inst, kPlatformLineBit | (slot << 16) | line, Fraction::zero(), {}, {});
   callRules([&](Rules& r) { r.crushed(c); });
 }
 
