@@ -86,45 +86,41 @@ std::optional<WorldImpl::PlatformHit> WorldImpl::updatePlatformCopies(uint32_t s
       const int64_t margin = held ? -kCopyReach : chosenHeld ? kCopyReach : 0;  // what `r` must beat `furthest` by
       if (!chosen || r->beyond(*furthest, margin)) chosen = line, furthest = r, chosenHeld = held;
     }
-  const std::vector<LineIndex> reached = chosen ? std::vector<LineIndex>{*chosen} : std::vector<LineIndex>{};
   std::erase_if(pl.copies, [&](const PlatformCopy& c) {
-    const bool kept = std::any_of(reached.begin(), reached.end(), [&](LineIndex l) { return targetOf(l) == c.part; });
+    const bool kept = chosen && targetOf(*chosen) == c.part;
     if (!kept) ++platformEpochs[c.part];
     return !kept;
   });
+  if (!chosen) return std::nullopt;
+  const Warp& w = home.warps()[home.lines()[*chosen].warp];
+  if (w.target == pl.part || platformCopyIn(pl, w.target) || !part(w.target).initialized()) return std::nullopt;
+  PlatformCopy c;
+  c.part = w.target;
+  c.rotation = w.rotation;
+  c.lines = pl.lines;
+  for (PlatformLine& l : c.lines)
+    for (Vec2* p : {&l.segment.a, &l.segment.b}) {
+      const Vec2w at = mapThroughWarp(w, home.segments()[*chosen], q30FromPoint(*p));
+      // Beyond the coordinate range there: no entity can be where it goes.
+      if (std::max(std::abs(unitsFromQ30(at.x)), std::abs(unitsFromQ30(at.y))) > kCoordLimit) return std::nullopt;
+      *p = pointFromQ30(at);
+    }
+  c.box = boxOfLines(c.lines);
+  // Nothing of that part may be inside it (no push made room for it).
+  std::optional<PlatformHit> over;
   std::vector<Vec2> verts;
-  for (const LineIndex line : reached) {
-    const Warp& w = home.warps()[home.lines()[line].warp];
-    if (w.target == pl.part || platformCopyIn(pl, w.target) || !part(w.target).initialized()) continue;
-    PlatformCopy c;
-    c.part = w.target;
-    c.rotation = w.rotation;
-    c.lines = pl.lines;
-    bool inside = true;
-    for (PlatformLine& l : c.lines)
-      for (Vec2* p : {&l.segment.a, &l.segment.b}) {
-        const Vec2w at = mapThroughWarp(w, home.segments()[line], q30FromPoint(*p));
-        const Vec2w units{unitsFromQ30(at.x), unitsFromQ30(at.y)};
-        inside = inside && std::max(std::abs(units.x), std::abs(units.y)) <= kCoordLimit;
-        *p = inside ? pointFromQ30(at) : Vec2{};
-      }
-    if (!inside) continue;  // beyond the coordinate range there: no entity can be where it goes
-    c.box = boxOfLines(c.lines);
-    // Nothing of that part may be inside it (no push made room for it).
-    std::optional<PlatformHit> over;
-    entityIndex.forEachNear(c.part, c.box, [&](uint32_t s) {
-      const Instance* inst = slots[s].entity->instanceIn(c.part);
-      if (over || !inst || platformMeets(pl, *slots[s].entity)) return;  // met where it is first
-      worldVertices(*inst, verts);
-      for (uint32_t k = 0; k < c.lines.size() && !over; ++k)
-        if ((c.lines[k].kind != LineKind::OneWay || wholyInFront(verts, c.lines[k].segment)) &&
-            overlapsInterior(verts, c.lines[k].segment))
-          over = PlatformHit{Fraction::zero(), s, k, c.part};
-    });
-    if (over) return over;
-    ++platformEpochs[c.part];
-    pl.copies.push_back(std::move(c));
-  }
+  entityIndex.forEachNear(c.part, c.box, [&](uint32_t s) {
+    const Instance* inst = slots[s].entity->instanceIn(c.part);
+    if (over || !inst || platformMeets(pl, *slots[s].entity)) return;  // met where it is first
+    worldVertices(*inst, verts);
+    for (uint32_t k = 0; k < c.lines.size() && !over; ++k)
+      if ((c.lines[k].kind != LineKind::OneWay || wholyInFront(verts, c.lines[k].segment)) &&
+          overlapsInterior(verts, c.lines[k].segment))
+        over = PlatformHit{Fraction::zero(), s, k, c.part};
+  });
+  if (over) return over;
+  ++platformEpochs[c.part];
+  pl.copies.push_back(std::move(c));
   return std::nullopt;
 }
 
