@@ -145,17 +145,11 @@ void WorldImpl::clearPlatformCopies(uint32_t slot) {
     for (const PlatformLine& l : c->lines) {
       if ((l.kind == LineKind::OneWay && !wholyInFront(verts, l.segment)) || !overlapsInterior(verts, l.segment))
         continue;
-      const Vec2w d = l.segment.b - l.segment.a;
-      i128 side = 0;
-      for (const Vec2 v : verts) side += cross(d, v - l.segment.a);
-      const Vec2w away = side >= 0 ? Vec2w{-d.y, d.x} : Vec2w{d.y, -d.x};
+      const Vec2w away = normalTowards(verts, l.segment);
       if (inst != &e.instances[0]) {
         liftCopy(e, *inst, away, {});
       } else {
-        const Vec2w n = shortDirection(away);
-        const int64_t length = static_cast<int64_t>(isqrt(static_cast<u128>(dot128(n, n))));
-        const Vec2w by{static_cast<int64_t>(roundDiv(i128{n.x} * 2, length)),
-                       static_cast<int64_t>(roundDiv(i128{n.y} * 2, length))};
+        const Vec2w by = stepAlong(away, 2);
         push(e, inst->frame == 0 ? by : rotateWideInverse(inst->rotation, by));
       }
       reindex(e);

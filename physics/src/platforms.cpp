@@ -176,14 +176,6 @@ std::vector<PlatformId> World::platforms() const {
 
 namespace {
 
-// A step of about one unit along `v` (none for none).
-Vec2w unitStep(Vec2w v) {
-  const Vec2w n = shortDirection(v);
-  const int64_t length = static_cast<int64_t>(isqrt(static_cast<u128>(dot128(n, n))));
-  if (length == 0) return {};
-  return {static_cast<int64_t>(roundDiv(i128{n.x}, length)), static_cast<int64_t>(roundDiv(i128{n.y}, length))};
-}
-
 void shift(std::vector<Vec2>& verts, Vec2w by) {
   for (Vec2& v : verts) v = {static_cast<int32_t>(v.x + by.x), static_cast<int32_t>(v.y + by.y)};
 }
@@ -206,7 +198,7 @@ std::vector<WorldImpl::Rider> WorldImpl::ridersOf(uint32_t slot) {
     // body that came to rest on it up to a unit and a half off it (the rest test's reach), and its
     // slide along it a unit more now and then (each step rounded to whole units): it stands on it
     // all the same. A copy's lines and the body's copy are also each rounded in their own frame.
-    const Vec2w down = unitStep(gravity);
+    const Vec2w down = stepAlong(gravity, 1);
     auto standsOn = [&](const Segment& s) {
       if (!turning && !copy && (s.a.x == s.b.x || s.a.y == s.b.y)) return touchesOrOverlaps(verts, s);
       std::vector<Vec2w>& normals = scratch.lineNormals;
@@ -231,11 +223,7 @@ std::vector<WorldImpl::Rider> WorldImpl::ridersOf(uint32_t slot) {
         return;
       for (const PlatformLine& l : at.lines) {
         if (!stops(l, verts) || !standsOn(l.segment)) continue;
-        const Vec2w d = l.segment.b - l.segment.a;
-        i128 side = 0;
-        for (const Vec2 v : verts) side += cross(d, v - l.segment.a);
-        const Vec2w up = side >= 0 ? Vec2w{-d.y, d.x} : Vec2w{d.y, -d.x};
-        if (dot128(up, gravity) < 0) {
+        if (dot128(normalTowards(verts, l.segment), gravity) < 0) {  // it stands on the line's upper side
           riders.push_back({s, at.part, inst->position, origin});
           return;
         }
@@ -430,11 +418,7 @@ void WorldImpl::settleOn(uint32_t slot, Entity& e) {
   worldVertices(*inst, verts);
   for (const PlatformLine& l : pl.lines)
     if (stops(l, verts) && touchesOrOverlaps(verts, l.segment)) return;  // standing on it
-  const Vec2w n = shortDirection(g);
-  const int64_t length = static_cast<int64_t>(isqrt(static_cast<u128>(dot128(n, n))));
-  if (length == 0) return;
-  const Vec2w down{static_cast<int64_t>(roundDiv(i128{n.x} * 2, length)),
-                   static_cast<int64_t>(roundDiv(i128{n.y} * 2, length))};
+  const Vec2w down = stepAlong(g, 2);
   if (down != Vec2w{}) push(e, inst->frame == 0 ? down : rotateWideInverse(inst->rotation, down));
 }
 
@@ -587,10 +571,7 @@ size_t lineSweepingOver(const Platform& pl, const std::vector<PlatformLine>& nex
 Vec2w turnPush(const Segment& from, const Segment& to, Vec2w centre, std::span<const Vec2> verts, bool retry) {
   Vec2w by = sweepAt(from, to, centre);
   if (!retry && by != Vec2w{}) return by;
-  const Vec2w d = to.b - to.a;
-  i128 side = 0;
-  for (const Vec2 v : verts) side += cross(d, v - to.a);
-  const Vec2w out = side >= 0 ? Vec2w{-d.y, d.x} : Vec2w{d.y, -d.x};
+  const Vec2w out = normalTowards(verts, to);
   return by + Vec2w{out.x > 0 ? 1 : out.x < 0 ? -1 : 0, out.y > 0 ? 1 : out.y < 0 ? -1 : 0};
 }
 

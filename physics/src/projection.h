@@ -1,7 +1,10 @@
 // Projections of motions and velocities onto lines, with the slide's rounding rules: what is left
 // after a contact never points into the line, and what rounding leaves out can be carried on.
 #pragma once
+#include <span>
+
 #include "fixed_point.h"
+#include "platon/physics/sweep.h"
 
 namespace platon::physics {
 
@@ -69,6 +72,25 @@ inline Vec2w shortDirection(Vec2w n) {
     n.y /= 2;
   }
   return n;
+}
+
+// A step of about `units` whole units along `direction` (none for none): each component of the
+// direction scaled to that length, rounded to the nearest unit.
+inline Vec2w stepAlong(Vec2w direction, int64_t units) {
+  const Vec2w n = shortDirection(direction);
+  const int64_t length = static_cast<int64_t>(isqrt(static_cast<u128>(i128{n.x} * n.x + i128{n.y} * n.y)));
+  if (length == 0) return {};
+  return {static_cast<int64_t>(roundDiv(i128{n.x} * units, length)),
+          static_cast<int64_t>(roundDiv(i128{n.y} * units, length))};
+}
+
+// The normal of the directed segment on the side the polygon lies (by the sum of its vertices'
+// sides; the left one when they balance), not normalized.
+inline Vec2w normalTowards(std::span<const Vec2> verts, Segment s) {
+  const Vec2w d = s.b - s.a;
+  i128 side = 0;
+  for (const Vec2 v : verts) side += cross(d, v - s.a);
+  return side >= 0 ? Vec2w{-d.y, d.x} : Vec2w{d.y, -d.x};
 }
 
 }  // namespace platon::physics

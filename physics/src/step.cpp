@@ -291,10 +291,7 @@ class SubMove {
       const Segment seg = w_.part(inst.part).segments()[hit_.line];
       const bool edgeOn = hit_.sweep.axis < static_cast<int>(verts_[i].size());  // a polygon edge met the end
       if (i == 0 && !(edgeOn && (nearWarpLine(w_, e_, inst, seg.a) || nearWarpLine(w_, e_, inst, seg.b)))) return false;
-      const Vec2w d = seg.b - seg.a;
-      i128 side = 0;  // which side of the line the instance is on (the sum over its vertices)
-      for (const Vec2 v : verts_[i]) side += cross(d, v - seg.a);
-      liftAlong = side >= 0 ? Vec2w{-d.y, d.x} : Vec2w{d.y, -d.x};
+      liftAlong = normalTowards(verts_[i], seg);  // off the line, on the instance's side
       // Not into the line by more than about a degree (the turn between two faces comes from their
       // rounded edges, so a floor continued across them is off by a fraction of one): -dot / |a||b|
       // <= 1/64, compared squared on directions shortened to 20 bits.
@@ -545,12 +542,8 @@ class SubMove {
   // Moves the whole entity one to three units along `direction` (entity frame) where that move is
   // free of every line for every instance: a sub-move of its own, with its pierce events.
   bool liftEntity(Vec2w direction) {
-    const Vec2w n = shortDirection(direction);
-    const int64_t length = static_cast<int64_t>(isqrt(static_cast<u128>(i128{n.x} * n.x + i128{n.y} * n.y)));
-    if (length == 0) return false;
     for (int64_t units = 1; units <= 3; ++units) {
-      const Vec2w step{static_cast<int64_t>(roundDiv(i128{n.x} * units, length)),
-                       static_cast<int64_t>(roundDiv(i128{n.y} * units, length))};
+      const Vec2w step = stepAlong(direction, units);
       if (step == Vec2w{}) continue;
       std::vector<Vec2w> none;
       Move lift{e_, step, none, step, e_.velocityQ16};
@@ -724,10 +717,7 @@ bool WorldImpl::restOnPartLines(Entity& e, Instance& inst, const std::vector<Vec
         std::any_of(normals.begin(), normals.end(), [&](Vec2w n) { return dot128(n, seg.b - seg.a) == 0; });
     if (&inst != &e.instances[0] ||
         (!ownSide && (nearWarpLine(*this, e, inst, seg.a) || nearWarpLine(*this, e, inst, seg.b)))) {
-      const Vec2w d = seg.b - seg.a;
-      i128 side = 0;
-      for (const Vec2 v : verts) side += cross(d, v - seg.a);
-      normals.assign(1, side >= 0 ? Vec2w{-d.y, d.x} : Vec2w{d.y, -d.x});
+      normals.assign(1, normalTowards(verts, seg));
     }
     touching = touching || nearness == Nearness::Touching;
     closeDirections(scratch.open, inst, normals);

@@ -90,14 +90,11 @@ bool WorldImpl::placeNear(const Entity& e, Instance& inst, Vec2w targetQ30, cons
 }
 
 bool WorldImpl::liftCopy(const Entity& e, Instance& copy, Vec2w direction, Vec2w move) {
-  const Vec2w n = shortDirection(direction);
-  const int64_t length = static_cast<int64_t>(isqrt(static_cast<u128>(i128{n.x} * n.x + i128{n.y} * n.y)));
-  if (length == 0) return false;
   const Vec2 was = copy.position;
   std::vector<Vec2>& verts = scratch.probe;
   for (int64_t lift = 1; lift <= 3; ++lift) {
-    copy.position = {was.x + static_cast<int32_t>(roundDiv(i128{n.x} * lift, length)),
-                     was.y + static_cast<int32_t>(roundDiv(i128{n.y} * lift, length))};
+    const Vec2w by = stepAlong(direction, lift);
+    copy.position = {was.x + static_cast<int32_t>(by.x), was.y + static_cast<int32_t>(by.y)};
     if (copy.position == was) continue;
     worldVertices(copy, verts);
     coverMotion(copy, move, 3);

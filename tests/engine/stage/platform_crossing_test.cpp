@@ -134,6 +134,9 @@ struct Edge {
   physics::Segment seg;  // in the face's part, the face to its left
   physics::MapPartId target;
   physics::Segment targetSeg;  // the same edge in the target part, its face to the right
+  Vec2d d, in;                 // along it and into the face, unit vectors in the face's part
+  double length = 0;
+  Vec2d td;  // along it in the target part (the same way as d)
 };
 
 std::vector<Edge> edgesOf(const physics::World& w, physics::MapPartId part) {
@@ -141,7 +144,15 @@ std::vector<Edge> edgesOf(const physics::World& w, physics::MapPartId part) {
   const physics::MapPart& p = w.mapPart(part);
   for (const physics::LineIndex line : p.faceLoop()) {
     const physics::Warp& warp = p.warps()[p.lines()[line].warp];
-    out.push_back({p.segments()[line], warp.target, warp.targetSegment});
+    const physics::Segment s = p.segments()[line], t = warp.targetSegment;
+    const Vec2d d = unit(double(s.b.x) - s.a.x, double(s.b.y) - s.a.y);
+    out.push_back({s,
+                   warp.target,
+                   t,
+                   d,
+                   {-d.y, d.x},
+                   std::hypot(double(s.b.x) - s.a.x, double(s.b.y) - s.a.y),
+                   unit(double(t.b.x) - t.a.x, double(t.b.y) - t.a.y)});
   }
   return out;
 }
@@ -196,9 +207,8 @@ TEST(PlatformCrossing, AWallDrivenOverEveryEdgePushesWhatIsBeyondAndGoesOnWithou
              {std::pair{3, 0.0}, std::pair{17, 0.0}, std::pair{41, 0.0}, std::pair{41, 0.6}, std::pair{300, 0.6}}) {
           SCOPED_TRACE(::testing::Message() << "solid " << int(solid) << " face " << f << " to part " << edge.target
                                             << " speed " << speed << " slant " << slant);
-          const Vec2d d = unit(double(edge.seg.b.x) - edge.seg.a.x, double(edge.seg.b.y) - edge.seg.a.y);
-          const Vec2d in{-d.y, d.x};  // into the face
-          const double along = std::hypot(double(edge.seg.b.x) - edge.seg.a.x, double(edge.seg.b.y) - edge.seg.a.y);
+          const Vec2d d = edge.d, in = edge.in;
+          const double along = edge.length;
           auto at = [&](double t, double depth) {
             return rounded(edge.seg.a.x + d.x * along * t + in.x * depth,
                            edge.seg.a.y + d.y * along * t + in.y * depth);
@@ -211,8 +221,7 @@ TEST(PlatformCrossing, AWallDrivenOverEveryEdgePushesWhatIsBeyondAndGoesOnWithou
                                       (-in.y * std::cos(slant) + d.y * std::sin(slant)) * speed);
           b->world.setPlatformMotion(id, motion);
           // A box beyond the edge, in the wall's way: 60 units into the next face.
-          const Vec2d td =
-              unit(double(edge.targetSeg.b.x) - edge.targetSeg.a.x, double(edge.targetSeg.b.y) - edge.targetSeg.a.y);
+          const Vec2d td = edge.td;
           // (Where the wall comes over: a slanted one has gone along the edge by then.)
           const double shift = 210 * std::tan(slant);
           const Vec2 boxAt = rounded((double(edge.targetSeg.a.x) + edge.targetSeg.b.x) / 2 + td.x * shift + td.y * 60,
@@ -277,10 +286,7 @@ TEST(PlatformCrossing, APlankCarriesItsRiderOverEveryEdge) {
         for (const int speed : {4, 11}) {
           SCOPED_TRACE(::testing::Message()
                        << "solid " << int(solid) << " face " << f << " to part " << edge.target << " speed " << speed);
-          const Vec2d d = unit(double(edge.seg.b.x) - edge.seg.a.x, double(edge.seg.b.y) - edge.seg.a.y);
-          const Vec2d in{-d.y, d.x};
-          const Vec2d td =
-              unit(double(edge.targetSeg.b.x) - edge.targetSeg.a.x, double(edge.targetSeg.b.y) - edge.targetSeg.a.y);
+          const Vec2d d = edge.d, in = edge.in, td = edge.td;
           for (size_t g = 0; g < b->stage.faceCount(); ++g) b->world.mapPart(b->stage.part(g)).setGravity({0, 0});
           b->world.mapPart(b->stage.part(f)).setGravity({std::llround(-d.x * kPull), std::llround(-d.y * kPull)});
           b->world.mapPart(edge.target).setGravity({std::llround(-td.x * kPull), std::llround(-td.y * kPull)});
