@@ -487,3 +487,42 @@ TEST(PlatformCrossing, RandomPlatformsOverRandomSolidsNeverOverlapAndNeverStopSi
       "passed through\n",
       frames, crossings, copyOverlaps, passedThrough);
 }
+
+// A platform made already over an edge, where a body stands on the face beyond, is refused (an
+// Error naming the line, the body and the part), as one made over a body of its own part is; the
+// world is as it was. Every edge of every solid.
+TEST(PlatformCrossing, APlatformMadeOverABodyBeyondAnEdgeIsRefused) {
+  int refused = 0;
+  for (const stage::Solid solid : stage::kSolids) {
+    auto b = build(solid);
+    for (size_t f = 0; f < b->stage.faceCount(); ++f)
+      for (const Edge& edge : edgesOf(b->world, b->stage.part(f))) {
+        // A box 80 units into the face beyond, and a line from 100 units inside this face to 150
+        // beyond the edge, through where the box is.
+        const double mx = (double(edge.seg.a.x) + edge.seg.b.x) / 2, my = (double(edge.seg.a.y) + edge.seg.b.y) / 2;
+        const double tx = (double(edge.targetSeg.a.x) + edge.targetSeg.b.x) / 2,
+                     ty = (double(edge.targetSeg.a.y) + edge.targetSeg.b.y) / 2;
+        const physics::EntityId box = b->world.createEntity(physics::Convex::box(10, 10));
+        b->world.insert(box, edge.target, rounded(tx + edge.td.y * 80, ty - edge.td.x * 80), 0);
+        const physics::PlatformLine line{
+            {rounded(mx + edge.in.x * 100, my + edge.in.y * 100), rounded(mx - edge.in.x * 150, my - edge.in.y * 150)}};
+        const uint64_t hash = b->world.stateHash();
+        const size_t platforms = b->world.platforms().size();
+        try {
+          b->world.createPlatform(b->stage.part(f), std::span(&line, 1));
+          ADD_FAILURE() << "made over a body beyond the edge to part " << edge.target;
+        } catch (const physics::Error& e) {
+          EXPECT_NE(std::string(e.what()).find("createPlatform: line 0 would overlap entity " +
+                                               std::to_string(box.index) + " in map part " +
+                                               std::to_string(edge.target) + ", beyond a warp edge its lines reach"),
+                    std::string::npos)
+              << e.what();
+          ++refused;
+        }
+        EXPECT_EQ(b->world.stateHash(), hash);
+        EXPECT_EQ(b->world.platforms().size(), platforms);
+        b->world.destroyEntity(box);
+      }
+  }
+  EXPECT_EQ(refused, 180);
+}
