@@ -113,6 +113,15 @@ struct Entity {
   std::vector<Contact> contacts;  // solid contacts of the latest solve(), in the order they happened
   uint32_t work = 0;              // lines and bodies its moves were tested against in the latest solve()
   uint64_t steppedFrame = 0;      // the world frame it last stepped in (or began to)
+  // Waiting, before its own move, for the entities that hold it to step first (step.cpp's
+  // stepHoldersFirst): to a move that meets it meanwhile it has not stepped yet, and it takes its
+  // step then, from the state it had when the frame's step began (kept here).
+  struct Awaiting {
+    bool now = false;        // waiting for its holders
+    bool takenOver = false;  // a move met it meanwhile and it stepped there: its own step is over
+    uint64_t frame = 0;      // the frame it last waited in (it waits once a frame)
+    Vec2w velocityQ16, subunitQ17;
+  } awaiting;
   // At rest and undisturbed (world.h, "rest costs nothing"): its rest test's answer is known until
   // something that could change it happens, so the frame keeps that answer instead of asking again.
   // What it depends on: its own state (the calls that set it clear this), every entity and line

@@ -176,7 +176,7 @@ class SubMove {
         worldVertices(oi, other);
         const Sweep s = sweep(verts_[i], moves_[i], other);
         if (!s.hitsWithinFrame()) return;
-        if (o.steppedFrame != w_.frame) unsteppedMet_ = std::min(unsteppedMet_, o.id.index);
+        if (!w_.steppedThisFrame(o)) unsteppedMet_ = std::min(unsteppedMet_, o.id.index);
         const LineIndex key = kEntityKey | o.id.index;
         if (hit_.improvedBy(s.enter, HitKind::Entity, i, key))
           hit_ = {HitKind::Entity, s.enter, i, key, s, s.enterAxis, o.id.index};
@@ -822,7 +822,13 @@ bool WorldImpl::keepsRest(const Entity& e) const {
 
 void WorldImpl::stepEntity(Entity& e) {
   for (Instance& inst : e.instances) inst.blockedWarps.clear();
-  const bool kept = keepsRest(e);
+  bool kept = keepsRest(e);
+  // Held by an entity that has not stepped this frame: that one steps first, as it does for the
+  // rest test below (moving, it wakes this one, which is then tested where it is now).
+  if (kept && stepHoldersFirst(e, e.restContacts, e.velocityQ16)) {
+    if (e.awaiting.takenOver) return;
+    kept = keepsRest(e);
+  }
   if (e.resting && !kept) wake(e);
   if (kept && !restCheck) {  // the rest test's answer, as it would give it again
     e.velocityQ16 = {};
@@ -853,10 +859,13 @@ void WorldImpl::stepEntityTested(Entity& e) {
   // At rest: pressed into the lines it is against, it cannot move. It stays exactly where it is,
   // with no velocity and no fraction of a unit left over, so it stays at rest.
   bool rests = e.angularVelocity == 0 && restsAgainstLines(e, e.velocityQ16);
-  // Held by an entity that has not stepped this frame (a guard it walks behind): that one steps
-  // first, as a sweep meeting it would have it, and the test is asked again. Only for a body that
-  // was moving (one at rest from the frame's start keeps its answer: World::RestMode).
-  if (rests && before != Vec2w{} && stepHoldersFirst(e)) rests = restsAgainstLines(e, e.velocityQ16);
+  // Held by an entity that has not stepped this frame (a guard it walks behind, a crate it stands
+  // on that slides away): that one steps first, as a sweep meeting it would have it, and the test
+  // is asked again. So whether it is still held never depends on the handles' order.
+  if (rests && stepHoldersFirst(e, e.contacts, before)) {
+    if (e.awaiting.takenOver) return;
+    rests = restsAgainstLines(e, e.velocityQ16);
+  }
   if (rests) {
     // It was moving and stops here: a landing (a rounded step can end touching a line that the
     // exact motion reaches just after the frame) is a contact, whichever path finds it.
@@ -924,10 +933,18 @@ WorldImpl::Arrival WorldImpl::reportArrival(Entity& e, Vec2w& frameQ17) {
 // first), and the mover's sub-move is planned again. So a move, and a chain it pushes (each link a
 // slide of its own), meets every entity where it is this frame. Nested steps are bounded; beyond
 // that, an entity is met where it is.
-bool WorldImpl::stepMetEntityFirst(Entity& mover, uint32_t slot) {
+bool WorldImpl::steppedThisFrame(const Entity& e) const { return e.steppedFrame == frame && !e.awaiting.now; }
+
+bool WorldImpl::stepMetEntityFirst(Entity& mover, uint32_t slot, bool moverMoved) {
   Entity* o = slots[slot].entity.get();
-  if (!steppingEntities || !o || o->steppedFrame == frame || neighbourDepth >= kMaxNeighbourDepth) return false;
-  reindex(mover);
+  if (!steppingEntities || !o || steppedThisFrame(*o) || neighbourDepth >= kMaxNeighbourDepth) return false;
+  if (moverMoved) reindex(mover);
+  if (o->awaiting.now) {  // its step starts again here, from where it began, and is over when this returns
+    o->awaiting.now = false;
+    o->awaiting.takenOver = true;
+    o->velocityQ16 = o->awaiting.velocityQ16;
+    o->subunitQ17 = o->awaiting.subunitQ17;
+  }
   const int pushesBefore = pushDepth;
   pushDepth = 0;  // its own step pushes as far as any step may
   ++neighbourDepth;
@@ -937,13 +954,25 @@ bool WorldImpl::stepMetEntityFirst(Entity& mover, uint32_t slot) {
   return true;
 }
 
-bool WorldImpl::stepHoldersFirst(Entity& e) {
-  std::vector<uint32_t> holders;
-  for (const Contact& c : e.contacts)
-    if (c.other.isSet()) holders.push_back(c.other.index);
+// The holders step while this entity waits (once a frame: two bodies that hold each other do not
+// take turns). `velocityBefore` is its velocity when its step began.
+bool WorldImpl::stepHoldersFirst(Entity& e, const std::vector<Contact>& contacts, Vec2w velocityBefore) {
+  if (e.awaiting.frame == frame || !steppingEntities) return false;
+  auto waitsFor = [&](const Contact& c) {
+    const Entity* o = c.other.isSet() ? slots[c.other.index].entity.get() : nullptr;
+    return o && !steppedThisFrame(*o);
+  };
+  if (std::none_of(contacts.begin(), contacts.end(), waitsFor)) return false;  // the usual case: no list made
+  std::vector<uint32_t> holders;  // a step may change the contacts: the slots are read first
+  for (const Contact& c : contacts)
+    if (waitsFor(c)) holders.push_back(c.other.index);
+  e.awaiting = {true, false, frame, velocityBefore, e.subunitQ17};
   bool stepped = false;
-  for (const uint32_t slot : holders) stepped = stepMetEntityFirst(e, slot) || stepped;
-  return stepped;
+  // Before its own move the entity is where the index has it (reindexing would only wake it).
+  for (size_t k = 0; k < holders.size() && !e.awaiting.takenOver; ++k)
+    stepped = stepMetEntityFirst(e, holders[k], false) || stepped;
+  e.awaiting.now = false;
+  return stepped || e.awaiting.takenOver;
 }
 
 void WorldImpl::slide(Move& move) {

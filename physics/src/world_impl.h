@@ -345,10 +345,14 @@ struct WorldImpl {
   // The entity's frame, once per solve(): its contacts and work start afresh.
   void stepInFrame(Entity& e);
   // A sub-move of `mover` met the entity in `slot`: if that one has not stepped this frame, it steps
-  // now (returns true, and the sub-move is planned again).
-  bool stepMetEntityFirst(Entity& mover, uint32_t slot);
-  // The same for the entities among e's contacts (its rest test's): whether any stepped.
-  bool stepHoldersFirst(Entity& e);
+  // now (returns true, and the sub-move is planned again). The mover is reindexed first if it may
+  // have moved since it was last.
+  bool stepMetEntityFirst(Entity& mover, uint32_t slot, bool moverMoved = true);
+  // The same for the entities among `contacts` (e's rest test's, or its kept rest's), before e
+  // moves: whether any stepped. Meanwhile e counts as not stepped (Entity::awaiting).
+  bool stepHoldersFirst(Entity& e, const std::vector<Contact>& contacts, Vec2w velocityBefore);
+  // Whether e has taken its step this frame (one waiting for its holders has not).
+  bool steppedThisFrame(const Entity& e) const;
   void stepEntity(Entity& e);
   void stepEntityTested(Entity& e);  // the step as it is without a kept rest answer
   void slide(Move& move);
