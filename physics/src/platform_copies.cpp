@@ -15,11 +15,11 @@ namespace {
 // overlapped.
 constexpr int64_t kCopyReach = 4;
 
-// How far the lines come over the warp edge `seg` (its face to its left) when they have moved by
-// `motion`: the least cross(d, p - a) over their ends then, against |d| rounded up. Nothing when they
-// come nowhere near it on the way: no end within kCopyReach units of the edge's line or beyond it,
-// before or after the move, or all of them to one side of the edge's slab (past its ends by more
-// than the motion and the reach, along it).
+// How far the lines come over the warp edge `seg` (its face to its left) by the frame's end: the
+// least cross(d, p - a) over their ends then (`then`), against |d| rounded up. Nothing when they
+// come nowhere near it: no end within kCopyReach units of the edge's line or beyond it, now, on
+// the way (`between`: a turn's) or then; or, all on the face's side of its line, all to one side
+// of the edge's slab (past its ends by more than the reach, along it).
 struct EdgeReach {
   i128 cross = 0, length = 1;
   // Further over than `o` by more than `by` units.
@@ -27,22 +27,26 @@ struct EdgeReach {
     return cross * o.length + by * length * o.length < o.cross * length;
   }
 };
-std::optional<EdgeReach> reachOver(const Platform& pl, const Segment& seg, Vec2w motion) {
+std::optional<EdgeReach> reachOver(std::span<const Vec2w> now, std::span<const Vec2w> between,
+                                   std::span<const Vec2w> then, const Segment& seg) {
   const Vec2w d = seg.b - seg.a;
   const i128 length = static_cast<i128>(isqrt(static_cast<u128>(dot128(d, d)))) + 1;
   EdgeReach after{INT64_MAX, length};
-  i128 before = INT64_MAX, alongLow = INT64_MAX, alongHigh = INT64_MIN;
-  for (const PlatformLine& l : pl.lines)
-    for (const Vec2 p : {l.segment.a, l.segment.b}) {
-      const Vec2w at = p - seg.a;
-      before = std::min(before, cross128(d, at));
-      after.cross = std::min(after.cross, cross128(d, at + motion));
-      const i128 along = dot128(d, at), alongAfter = dot128(d, at + motion);
-      alongLow = std::min({alongLow, along, alongAfter}), alongHigh = std::max({alongHigh, along, alongAfter});
+  i128 least = INT64_MAX, alongLow = INT64_MAX, alongHigh = INT64_MIN;
+  for (const auto points : {now, between, then})
+    for (const Vec2w p : points) {
+      const Vec2w at = p - wide(seg.a);
+      const i128 cross = cross128(d, at), along = dot128(d, at);
+      least = std::min(least, cross);
+      if (points.data() == then.data()) after.cross = std::min(after.cross, cross);
+      alongLow = std::min(alongLow, along), alongHigh = std::max(alongHigh, along);
     }
   const i128 margin = kCopyReach * length;
-  if (std::min(before, after.cross) > margin || alongHigh < -margin || alongLow > dot128(d, d) + margin)
-    return std::nullopt;
+  // Beside the slab only while on the face's side of the edge's line: lines inside the face near
+  // that line are near the edge itself, and lines over the line (past a vertex) are over the edge
+  // wherever they are along it (else a platform driven past a vertex, over one edge's line and past
+  // its end, had no copy anywhere and never crossed).
+  if (least > margin || (least >= 0 && (alongHigh < -margin || alongLow > dot128(d, d) + margin))) return std::nullopt;
   return after;
 }
 
@@ -54,16 +58,32 @@ bool whollyBeyond(const Platform& pl, const Segment& seg) {
   });
 }
 
-// The warp of `from`'s face loop into part `to`, if any.
-const Warp* warpInto(const MapPart& from, MapPartId to) {
-  for (const LineIndex line : from.faceLoop()) {
-    const Warp& w = from.warps()[from.lines()[line].warp];
-    if (w.target == to) return &w;
-  }
-  return nullptr;
+// The warp line of `from`'s face loop into part `to`, if any.
+std::optional<LineIndex> warpInto(const MapPart& from, MapPartId to) {
+  for (const LineIndex line : from.faceLoop())
+    if (from.warps()[from.lines()[line].warp].target == to) return line;
+  return std::nullopt;
 }
 
 }  // namespace
+
+Vec2w WorldImpl::pointThrough(const Platform& pl, LineIndex edge, Vec2w point) const {
+  const MapPart& home = part(pl.part);
+  const Vec2w at = mapThroughWarp(home.warps()[home.lines()[edge].warp], home.segments()[edge],
+                                  {point.x << kQ30Bits, point.y << kQ30Bits});
+  return {unitsFromQ30(at.x), unitsFromQ30(at.y)};
+}
+
+bool WorldImpl::linesThrough(const Platform& pl, LineIndex edge, std::vector<PlatformLine>& lines) const {
+  for (PlatformLine& l : lines)
+    for (Vec2* p : {&l.segment.a, &l.segment.b}) {
+      const Vec2w at = pointThrough(pl, edge, wide(*p));
+      // Beyond the coordinate range there: no entity can be where it goes.
+      if (std::max(std::abs(at.x), std::abs(at.y)) > kCoordLimit) return false;
+      *p = {static_cast<int32_t>(at.x), static_cast<int32_t>(at.y)};
+    }
+  return true;
+}
 
 std::optional<WorldImpl::PlatformHit> WorldImpl::updatePlatformCopies(uint32_t slot, Vec2w motion) {
   Platform& pl = platforms[slot];
@@ -72,20 +92,35 @@ std::optional<WorldImpl::PlatformHit> WorldImpl::updatePlatformCopies(uint32_t s
   // another is further over by more than kCopyReach: a line over a vertex does not make copies
   // come and go). Over two edges at once (beside a vertex) the faces beyond each would hold copies
   // carried over different edges, which disagree by the angle the faces leave there; the bodies
-  // there would meet two platforms a few units apart. A turning platform stays in its part
-  // (World::createPlatform): it has none.
+  // there would meet two platforms a few units apart. A turning platform's reach is the square
+  // about its pivot that its turns stay in.
   auto targetOf = [&](LineIndex line) { return home.warps()[home.lines()[line].warp].target; };
   std::optional<LineIndex> chosen;
   std::optional<EdgeReach> furthest;
   bool chosenHeld = false;
-  if (pl.spin == 0)
-    for (const LineIndex line : home.faceLoop()) {
-      const std::optional<EdgeReach> r = reachOver(pl, home.segments()[line], motion);
-      if (!r) continue;
-      const bool held = platformCopyIn(pl, targetOf(line)) != nullptr;
-      const int64_t margin = held ? -kCopyReach : chosenHeld ? kCopyReach : 0;  // what `r` must beat `furthest` by
-      if (!chosen || r->beyond(*furthest, margin)) chosen = line, furthest = r, chosenHeld = held;
+  // The ends now, and where the frame takes them: moved by its motion, and a turning platform turned
+  // by all of its spin too (and half of it on the way: a sub-step's lines stray a few units from
+  // those at most).
+  std::vector<Vec2w> now, between, then;
+  for (const PlatformLine& l : pl.lines) now.insert(now.end(), {wide(l.segment.a), wide(l.segment.b)});
+  if (pl.spin == 0) {
+    for (const Vec2w p : now) then.push_back(p + motion);
+  } else {
+    Platform moved = pl;
+    moved.offset = {static_cast<int32_t>(pl.offset.x + motion.x), static_cast<int32_t>(pl.offset.y + motion.y)};
+    std::vector<PlatformLine> turned;
+    for (std::vector<Vec2w>* points : {&between, &then}) {
+      placePlatformLines(moved, static_cast<Angle>(pl.angle + (points == &then ? pl.spin : pl.spin / 2)), turned);
+      for (const PlatformLine& l : turned) points->insert(points->end(), {wide(l.segment.a), wide(l.segment.b)});
     }
+  }
+  for (const LineIndex line : home.faceLoop()) {
+    const std::optional<EdgeReach> r = reachOver(now, between, then, home.segments()[line]);
+    if (!r) continue;
+    const bool held = platformCopyIn(pl, targetOf(line)) != nullptr;
+    const int64_t margin = held ? -kCopyReach : chosenHeld ? kCopyReach : 0;  // what `r` must beat `furthest` by
+    if (!chosen || r->beyond(*furthest, margin)) chosen = line, furthest = r, chosenHeld = held;
+  }
   std::erase_if(pl.copies, [&](const PlatformCopy& c) {
     const bool kept = chosen && targetOf(*chosen) == c.part;
     if (!kept) ++platformEpochs[c.part];
@@ -97,14 +132,9 @@ std::optional<WorldImpl::PlatformHit> WorldImpl::updatePlatformCopies(uint32_t s
   PlatformCopy c;
   c.part = w.target;
   c.rotation = w.rotation;
+  c.edge = *chosen;
   c.lines = pl.lines;
-  for (PlatformLine& l : c.lines)
-    for (Vec2* p : {&l.segment.a, &l.segment.b}) {
-      const Vec2w at = mapThroughWarp(w, home.segments()[*chosen], q30FromPoint(*p));
-      // Beyond the coordinate range there: no entity can be where it goes.
-      if (std::max(std::abs(unitsFromQ30(at.x)), std::abs(unitsFromQ30(at.y))) > kCoordLimit) return std::nullopt;
-      *p = pointFromQ30(at);
-    }
+  if (!linesThrough(pl, c.edge, c.lines)) return std::nullopt;
   c.box = boxOfLines(c.lines);
   // Nothing of that part may be inside it (no push made room for it).
   std::optional<PlatformHit> over;
@@ -178,7 +208,7 @@ bool WorldImpl::copyOverlapsABody(const PlatformCopy& c) {
 
 void WorldImpl::crossPlatform(uint32_t slot) {
   Platform& pl = platforms[slot];
-  if (pl.copies.empty() || pl.spin != 0) return;
+  if (pl.copies.empty()) return;
   const MapPart& home = part(pl.part);
   for (const LineIndex line : home.faceLoop()) {
     const Segment seg = home.segments()[line];
@@ -186,20 +216,21 @@ void WorldImpl::crossPlatform(uint32_t slot) {
     const PlatformCopy* beyond = platformCopyIn(pl, w.target);
     if (!beyond || !whollyBeyond(pl, seg)) continue;
     const MapPart& there = part(w.target);
-    const Warp* back = warpInto(there, pl.part);
+    const std::optional<LineIndex> back = warpInto(there, pl.part);
     if (!back || copyOverlapsABody(*beyond)) continue;
     // Its lines stay where they are in every part: the copy's become its own, its own a copy of the
     // new part's (following it back through the warp), and a copy on a face the new part has a warp
     // into follows it through that warp; any other copy is dropped (made again next frame if reached).
     std::vector<PlatformCopy> copies;
-    copies.push_back({pl.part, pl.lines, pl.box, back->rotation, {}});
+    copies.push_back({pl.part, pl.lines, pl.box, there.warps()[there.lines()[*back].warp].rotation, {}, *back});
     for (PlatformCopy& c : pl.copies) {
       if (c.part == w.target) continue;
-      const Warp* into = warpInto(there, c.part);
+      const std::optional<LineIndex> into = warpInto(there, c.part);
       ++platformEpochs[c.part];
       if (!into) continue;
-      c.rotation = into->rotation;
+      c.rotation = there.warps()[there.lines()[*into].warp].rotation;
       c.originQ30 = {};
+      c.edge = *into;
       copies.push_back(std::move(c));
     }
     const Vec2 pivotNow{pl.pivot.x + pl.offset.x, pl.pivot.y + pl.offset.y};

@@ -392,31 +392,34 @@ void WorldImpl::carryRiders(uint32_t slot, const std::vector<Rider>& riders, Vec
     const Instance* inst = e.instanceIn(r.part);
     if (!inst) continue;
     Vec2w to;
+    const std::vector<PlatformLine>* lines = &pl.lines;
     if (r.part == pl.part) {
       const Vec2w moved0 = wide(r.start) + moved;
       to = turned == 0 ? moved0 : pivot + rotateWide(rotation, moved0 - pivot);
-    } else {  // on a copy (a platform that does not turn): by what the copy moved
+    } else {  // on a copy: by what the copy moved, then turned about the pivot placed there
       const PlatformCopy* copy = platformCopyIn(pl, r.part);
       if (!copy) continue;
-      to = wide(r.start) + (pointFromQ30(copy->originQ30) - r.origin);
+      const Vec2w moved0 = wide(r.start) + (pointFromQ30(copy->originQ30) - r.origin);
+      const Vec2w there = turned == 0 ? Vec2w{} : pointThrough(pl, copy->edge, pivot);
+      to = turned == 0 ? moved0 : there + rotateWide(rotation, moved0 - there);
+      lines = &copy->lines;
     }
     const Vec2w carry = to - wide(inst->position);
     if (carry != Vec2w{}) push(e, inst->frame == 0 ? carry : rotateWideInverse(inst->rotation, carry));
-    if (turned != 0) settleOn(slot, e);
+    if (turned != 0) settleOn(r.part, *lines, e);
   }
 }
 
 // A rider carried by a turn ends where rounding put it, up to two units off the turned line: it is
 // let down along its part's gravity (a slide, so it stops on the first thing it meets) to stand on
 // it again, as a body fixed to the platform would.
-void WorldImpl::settleOn(uint32_t slot, Entity& e) {
-  const Platform& pl = platforms[slot];
-  const Instance* inst = e.instanceIn(pl.part);
-  const Vec2w g = part(pl.part).gravity();
+void WorldImpl::settleOn(MapPartId partId, const std::vector<PlatformLine>& lines, Entity& e) {
+  const Instance* inst = e.instanceIn(partId);
+  const Vec2w g = part(partId).gravity();
   if (!inst || g == Vec2w{}) return;
   std::vector<Vec2> verts;
   worldVertices(*inst, verts);
-  for (const PlatformLine& l : pl.lines)
+  for (const PlatformLine& l : lines)
     if (stops(l, verts) && touchesOrOverlaps(verts, l.segment)) return;  // standing on it
   const Vec2w down = stepAlong(g, 2);
   if (down != Vec2w{}) push(e, inst->frame == 0 ? down : rotateWideInverse(inst->rotation, down));
@@ -534,16 +537,18 @@ struct TurnSweep {
   Ring ring;
 };
 
-TurnSweep sweepOfTurn(const Platform& pl, const std::vector<PlatformLine>& next) {
+TurnSweep sweepOfTurn(const WorldImpl::TurnPlace& at) {
+  const std::vector<PlatformLine>& from = *at.from;
+  const std::vector<PlatformLine>& next = at.to;
   TurnSweep t;
-  t.pivot = {int64_t{pl.pivot.x} + pl.offset.x, int64_t{pl.pivot.y} + pl.offset.y};
+  t.pivot = at.pivot;
   for (size_t k = 0; k < next.size(); ++k) {
-    const Box b = boxOfSegments(pl.lines[k].segment, next[k].segment);
+    const Box b = boxOfSegments(from[k].segment, next[k].segment);
     t.lineBoxes.push_back({b.x0 - 1, b.y0 - 1, b.x1 + 1, b.y1 + 1});
     const Box& w = t.lineBoxes.back();
     t.area = {std::min(t.area.x0, w.x0), std::min(t.area.y0, w.y0), std::max(t.area.x1, w.x1),
               std::max(t.area.y1, w.y1)};
-    t.ring.add(pl.lines[k].segment, t.pivot);
+    t.ring.add(from[k].segment, t.pivot);
     t.ring.add(next[k].segment, t.pivot);
   }
   return t;
@@ -551,15 +556,16 @@ TurnSweep sweepOfTurn(const Platform& pl, const std::vector<PlatformLine>& next)
 
 // The first line (in order) whose sweep passes over the vertices, or next.size(); `work` counts the
 // lines tested.
-size_t lineSweepingOver(const Platform& pl, const std::vector<PlatformLine>& next, const TurnSweep& t,
-                        std::span<const Vec2> verts, uint64_t& work) {
+size_t lineSweepingOver(const WorldImpl::TurnPlace& at, const TurnSweep& t, std::span<const Vec2> verts,
+                        uint64_t& work) {
+  const std::vector<PlatformLine>& from = *at.from;
   const Box b = sweptBox(verts, {});
-  if (!t.ring.meets(b, t.pivot)) return next.size();
+  if (!t.ring.meets(b, t.pivot)) return at.to.size();
   size_t k = 0;
-  for (; k < next.size(); ++k) {
+  for (; k < at.to.size(); ++k) {
     ++work;
-    if (boxesMeet(b, t.lineBoxes[k]) && stops(pl.lines[k], verts) &&
-        sweptOver(pl.lines[k].segment, next[k].segment, t.pivot, verts))
+    if (boxesMeet(b, t.lineBoxes[k]) && stops(from[k], verts) &&
+        sweptOver(from[k].segment, at.to[k].segment, t.pivot, verts))
       break;
   }
   return k;
@@ -580,27 +586,29 @@ Vec2w turnPush(const Segment& from, const Segment& to, Vec2w centre, std::span<c
 // Passes over the bodies near, in slot order, pushing each one the lines sweep over (a few times:
 // the sweep, then what rounding left). A push can move a body already passed (a chain of pushable
 // bodies), so passes go on until one pushes nothing: then every body is clear. A body that cannot
-// be cleared stops the sub-step.
-bool WorldImpl::clearTurn(uint32_t slot, const std::vector<PlatformLine>& next, uint32_t& blocker) {
-  const TurnSweep sweep = sweepOfTurn(platforms[slot], next);
-  const MapPartId partId = platforms[slot].part;
+// be cleared stops the sub-step. In a copy's part, only the bodies the platform meets there
+// (platformMeets).
+bool WorldImpl::clearTurn(uint32_t slot, const TurnPlace& at, uint32_t& blocker) {
+  const TurnSweep sweep = sweepOfTurn(at);
   std::vector<Vec2> verts;
   for (int pass = 0; pass < 4; ++pass) {
     std::vector<uint32_t> near;
-    entityIndex.forEachNear(partId, sweep.area, [&](uint32_t s) { near.push_back(s); });
+    entityIndex.forEachNear(at.part, sweep.area, [&](uint32_t s) {
+      if (platformMeets(platforms[slot], *slots[s].entity) == at.part) near.push_back(s);
+    });
     std::sort(near.begin(), near.end());  // slot order: the index's order is not part of the result
     platforms[slot].work += near.size();
     bool pushed = false;
     for (const uint32_t s : near) {
       Entity& e = *slots[s].entity;
       for (int attempt = 0;; ++attempt) {
-        const Instance* inst = e.instanceIn(partId);
+        const Instance* inst = e.instanceIn(at.part);
         if (!inst) break;
         worldVertices(*inst, verts);
-        const size_t k = lineSweepingOver(platforms[slot], next, sweep, verts, platforms[slot].work);
-        if (k == next.size()) break;
-        const Vec2w by = turnPush(platforms[slot].lines[k].segment, next[k].segment,
-                                  wide(inst->position) + wide(inst->centre), verts, attempt > 0);
+        const size_t k = lineSweepingOver(at, sweep, verts, platforms[slot].work);
+        if (k == at.to.size()) break;
+        const Vec2w by = turnPush((*at.from)[k].segment, at.to[k].segment, wide(inst->position) + wide(inst->centre),
+                                  verts, attempt > 0);
         if (attempt == 3 || pass == 3 || !push(e, inst->frame == 0 ? by : rotateWideInverse(inst->rotation, by))) {
           blocker = s;
           return false;
@@ -613,29 +621,52 @@ bool WorldImpl::clearTurn(uint32_t slot, const std::vector<PlatformLine>& next, 
   return true;  // not reached: the last pass returns at its first body still swept over
 }
 
+// Each sub-step turns the lines in the platform's part and its copy's (placed through the warp
+// again from the turned lines, about the pivot placed there: a warp moves the plane rigidly, so the
+// copy turns by the same angle), clearing the bodies each place meets; a body that cannot be
+// cleared stops the turn there.
 Angle WorldImpl::turnPlatform(uint32_t slot) {
-  Platform& pl = platforms[slot];
-  const int64_t delta = pl.spin;
-  const int64_t steps = rotationSubSteps(turnRadius2(pl.base, pl.pivot), delta);
-  std::vector<PlatformLine> next;
+  const int64_t delta = platforms[slot].spin;
+  const int64_t steps = rotationSubSteps(turnRadius2(platforms[slot].base, platforms[slot].pivot), delta);
+  std::vector<TurnPlace> places;
   Angle turned = 0;
   for (int64_t j = 1; j <= steps; ++j) {
     const Angle by = static_cast<Angle>(delta * j / steps - delta * (j - 1) / steps);
-    placePlatformLines(platforms[slot], static_cast<Angle>(platforms[slot].angle + by), next);
-    const bool inside = std::all_of(next.begin(), next.end(),
+    const Platform& pl = platforms[slot];
+    const Vec2w pivot{int64_t{pl.pivot.x} + pl.offset.x, int64_t{pl.pivot.y} + pl.offset.y};
+    places.assign(1, {pl.part, &pl.lines, {}, pivot});
+    placePlatformLines(pl, static_cast<Angle>(pl.angle + by), places[0].to);
+    const bool inside = std::all_of(places[0].to.begin(), places[0].to.end(),
                                     [](const PlatformLine& l) { return inRange(l.segment.a) && inRange(l.segment.b); });
-    uint32_t blocker = 0;
-    platforms[slot].work += next.size();
+    platforms[slot].work += places[0].to.size();
     if (!inside) break;  // the coordinate range's edge: no entity can be beyond it to hear of it
-    if (!clearTurn(slot, next, blocker)) {
-      crushed(slot, blocker, 0, platforms[slot].part);
+    for (const PlatformCopy& c : pl.copies) {
+      // Turned beyond the coordinate range there: that part has no entity where it goes; the copy
+      // is dropped below (its place is made again when the lines come back).
+      TurnPlace there{c.part, &c.lines, places[0].to, pointThrough(pl, c.edge, pivot)};
+      if (linesThrough(pl, c.edge, there.to)) places.push_back(std::move(there));
+    }
+    uint32_t blocker = 0;
+    const auto stopped =
+        std::find_if(places.begin(), places.end(), [&](const TurnPlace& at) { return !clearTurn(slot, at, blocker); });
+    if (stopped != places.end()) {
+      crushed(slot, blocker, 0, stopped->part);
       break;
     }
     Platform& p = platforms[slot];
     p.angle = static_cast<Angle>(p.angle + by);
-    p.lines = next;
+    p.lines = places[0].to;
     p.box = boxOfLines(p.lines);
     ++platformEpochs[p.part];
+    std::erase_if(p.copies, [&](PlatformCopy& c) {
+      ++platformEpochs[c.part];
+      const auto at =
+          std::find_if(places.begin() + 1, places.end(), [&](const TurnPlace& t) { return t.part == c.part; });
+      if (at == places.end()) return true;
+      c.lines = std::move(at->to);
+      c.box = boxOfLines(c.lines);
+      return false;
+    });
     turned = static_cast<Angle>(turned + by);
   }
   return turned;

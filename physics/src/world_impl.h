@@ -69,8 +69,9 @@ struct PlatformCopy {
   MapPartId part = 0;
   std::vector<PlatformLine> lines;
   Box box{0, 0, -1, -1};
-  Rotation rotation;  // the platform's frame into this part's
-  Vec2w originQ30;    // where the platform's moves so far take a point that started at 0
+  Rotation rotation;   // the platform's frame into this part's
+  Vec2w originQ30;     // where the platform's moves so far take a point that started at 0
+  LineIndex edge = 0;  // the platform's part's warp line it is placed through (a turn maps its lines again)
   // The step of the copy's lines when the platform steps by `step`.
   Vec2w stepFor(Vec2w step) const {
     return pointFromQ30(originQ30 + rotateQ30(rotation, step)) - pointFromQ30(originQ30);
@@ -285,7 +286,7 @@ struct WorldImpl {
   static Vec2w frameMotion(Platform& pl);
   Vec2w advancePlatform(uint32_t slot, Vec2w motion);
   void carryRiders(uint32_t slot, const std::vector<Rider>& riders, Vec2w moved, Angle turned);
-  void settleOn(uint32_t slot, Entity& e);
+  void settleOn(MapPartId part, const std::vector<PlatformLine>& lines, Entity& e);
   // Where platform `slot`'s lines are at `angle` (its offset as it is).
   void placePlatformLines(const Platform& pl, Angle angle, std::vector<PlatformLine>& out) const;
   // Turns platform `slot` by its spin in sub-steps, pushing what each sub-step's lines sweep over;
@@ -293,7 +294,19 @@ struct WorldImpl {
   Angle turnPlatform(uint32_t slot);
   // Pushes every entity that turning platform `slot` from its lines to `next` sweeps over; false
   // (and `blocker`, its slot) when one cannot be cleared of the lines' new place.
-  bool clearTurn(uint32_t slot, const std::vector<PlatformLine>& next, uint32_t& blocker);
+  // One place of a turning platform's sub-step: its part or a copy's, its lines from and to, the
+  // pivot there.
+  struct TurnPlace {
+    MapPartId part;
+    const std::vector<PlatformLine>* from;
+    std::vector<PlatformLine> to;
+    Vec2w pivot;
+  };
+  bool clearTurn(uint32_t slot, const TurnPlace& at, uint32_t& blocker);
+  // A platform's lines (or a point) in its part, placed through the warp of its part's warp line
+  // `edge`: false (nothing) where an end falls beyond the coordinate range there.
+  bool linesThrough(const Platform& pl, LineIndex edge, std::vector<PlatformLine>& lines) const;
+  Vec2w pointThrough(const Platform& pl, LineIndex edge, Vec2w point) const;
   // Calls visit(line, key) for each line of a live platform in `part` whose platform box meets
   // `box` (the caller tests the line itself).
   template <class Visit>
