@@ -51,7 +51,7 @@ std::optional<EntityId> WorldImpl::entityOverlap(const Entity& e, const Instance
   return found;
 }
 
-bool WorldImpl::push(Entity& b, Vec2w motion) {
+bool WorldImpl::push(Entity& b, Vec2w motion, bool straight) {
   if (pushDepth >= 4 || b.instances.empty() || motion == Vec2w{}) return false;
   ++pushDepth;
   std::vector<Vec2> before;
@@ -59,6 +59,7 @@ bool WorldImpl::push(Entity& b, Vec2w motion) {
   const MapPartId anchorPart = b.instances[0].part;
   std::vector<Vec2w> normals;  // its own: the pusher's frame keeps scratch.normals
   Move move{b, motion, normals, motion, b.velocityQ16};
+  move.straight = straight;
   slide(move);
   reindex(b);
   --pushDepth;

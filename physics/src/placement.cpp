@@ -74,7 +74,8 @@ std::optional<LineIndex> WorldImpl::solidOverlap(const Entity& e, Instance& inst
     if (blocks(e, inst, k, verts) && overlapsInterior(verts, p.segments()[lines[k]])) return lines[k];
   std::optional<LineIndex> found;
   forEachPlatformLine(inst.part, sweptBox(verts, {}), [&](const PlatformLine& l, LineIndex key) {
-    if (!found && (l.kind != LineKind::OneWay || wholyInFront(verts, l.segment)) && overlapsInterior(verts, l.segment))
+    if (!found && !inPocket(e, key) && (l.kind != LineKind::OneWay || wholyInFront(verts, l.segment)) &&
+        overlapsInterior(verts, l.segment))
       found = key;
   });
   return found;
@@ -102,8 +103,8 @@ Fraction WorldImpl::firstBlock(const Entity& e, Instance& inst, std::span<const 
     const int64_t rate = dot(c.c, step);
     if (rate > 0 && Fraction{c.slack, rate} < first) first = Fraction{c.slack, rate};
   }
-  forEachPlatformLine(inst.part, box, [&](const PlatformLine& l, LineIndex) {
-    if (l.kind == LineKind::OneWay && !wholyInFront(verts, l.segment)) return;
+  forEachPlatformLine(inst.part, box, [&](const PlatformLine& l, LineIndex key) {
+    if ((l.kind == LineKind::OneWay && !wholyInFront(verts, l.segment)) || inPocket(e, key)) return;
     const Sweep s = sweep(verts, step, l.segment);
     if (s.hitsWithinFrame() && s.enter < first) first = s.enter;
   });

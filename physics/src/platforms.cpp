@@ -251,7 +251,8 @@ WorldImpl::PlatformHit WorldImpl::firstPlatformHit(uint32_t slot, Vec2w motion) 
     (m.y < 0 ? swept.y0 : swept.y1) += m.y;
     entityIndex.forEachNear(at.part, swept, [&](uint32_t s) {
       const Instance* inst = slots[s].entity->instanceIn(at.part);
-      if (!inst || platformMeets(pl, *slots[s].entity) != at.part) return;
+      if (!inst || platformMeets(pl, *slots[s].entity) != at.part || (pocket.platform == slot && pocket.entity == s))
+        return;
       work += at.lines.size();
       worldVertices(*inst, verts);
       for (uint32_t k = 0; k < at.lines.size(); ++k) {
@@ -282,7 +283,9 @@ Vec2w WorldImpl::clearPlatformStep(uint32_t slot, Vec2w step, std::optional<Plat
     swept.y0 += std::min<int64_t>(0, m.y), swept.y1 += std::max<int64_t>(0, m.y);
     entityIndex.forEachNear(at.part, swept, [&](uint32_t s) {
       const Instance* inst = slots[s].entity->instanceIn(at.part);
-      if (!clear || !inst || platformMeets(pl, *slots[s].entity) != at.part) return;
+      if (!clear || !inst || platformMeets(pl, *slots[s].entity) != at.part ||
+          (pocket.platform == slot && pocket.entity == s))
+        return;
       platforms[slot].work += at.lines.size();
       worldVertices(*inst, verts);
       for (const PlatformLine& l : at.lines) {
@@ -358,6 +361,14 @@ Vec2w WorldImpl::advancePlatform(uint32_t slot, Vec2w motion) {
     const Instance& inst = *pushed.instanceIn(hit.part);
     const Vec2w there = hit.part == partId ? remaining : platformCopyIn(platforms[slot], hit.part)->stepFor(remaining);
     const Vec2w inFrame = inst.frame == 0 ? there : rotateWideInverse(inst.rotation, there);
+    // Held by the platform's own lines on the far side (in a pocket of them), it goes along.
+    if (hit.part == partId && heldByOwnLines(slot, pushed, remaining)) {
+      if (const Vec2w carried = carryInPocket(slot, hit.entity, remaining); carried != Vec2w{}) {
+        moved = moved + carried;
+        remaining = remaining - carried;
+        continue;
+      }
+    }
     const bool made = push(pushed, inFrame);
     if (!made && step == Vec2w{}) {
       crushed(slot, hit.entity, hit.line, hit.part);
@@ -371,6 +382,74 @@ Vec2w WorldImpl::advancePlatform(uint32_t slot, Vec2w motion) {
       !slots[blocker->entity].entity->instances.empty())
     crushed(slot, blocker->entity, 0, blocker->part);
   return moved;
+}
+
+// Whether the instance's way by `step` (a few units wider) comes near a warp line of its part.
+bool WorldImpl::nearAWarp(Instance& inst, Vec2w step) {
+  coverMotion(inst, step, 3);
+  std::vector<Vec2> verts;
+  worldVertices(inst, verts);
+  Box box = sweptBox(verts, step);
+  box.x0 -= 3, box.y0 -= 3, box.x1 += 3, box.y1 += 3;
+  const MapPart& p = part(inst.part);
+  const auto lines = inst.region.lines();
+  return std::any_of(lines.begin(), lines.end(),
+                     [&](uint32_t k) { return p.lines()[k].kind == LineKind::Warp && !outside(p.segments()[k], box); });
+}
+
+// Whether the platform's own lines stop `e` (wholly in the platform's part) going straight by
+// `motion`, the platform's, before it is through: they are in its way on the side the platform goes
+// to, so it is in a pocket of its lines, which go along with it.
+bool WorldImpl::heldByOwnLines(uint32_t slot, const Entity& e, Vec2w motion) {
+  const Platform& pl = platforms[slot];
+  if (e.instances.size() != 1 || e.instances[0].part != pl.part) return false;
+  std::vector<Vec2> verts;
+  worldVertices(e.instances[0], verts);
+  return std::any_of(pl.lines.begin(), pl.lines.end(), [&](const PlatformLine& l) {
+    return stops(l, verts) && sweep(verts, motion, l.segment).hitsWithinFrame();
+  });
+}
+
+// A body the platform's line cannot push because the platform's own lines hold it on the far side
+// (a body snug in a pocket of its lines: a cage, a cup with a lid) is no crush: it goes with the
+// platform as if fixed to it. The platform steps as far as it is free of every other body; the body
+// goes straight that way as far as it is free of everything but this platform (a push of its own,
+// events and all); the platform then steps by what the body went, less where that is not free, and
+// the body goes back by the difference, the way it came. Both end where they were to each other.
+// Only a body wholly in the platform's part that stays so: over an edge its copy, rounded in its
+// own frame, could be carried into the platform's copy. Returns the step they made (nothing: the
+// body cannot go, and the push that follows is the crush it was).
+Vec2w WorldImpl::carryInPocket(uint32_t slot, uint32_t entity, Vec2w remaining) {
+  Entity& e = *slots[entity].entity;
+  auto inFrame = [&](Vec2w step) {
+    const Instance& inst = e.instances[0];
+    return inst.frame == 0 ? step : rotateWideInverse(inst.rotation, step);
+  };
+  // Each coordinate between none and all of `along`'s.
+  auto partOf = [](Vec2w v, Vec2w along) {
+    auto within = [](int64_t x, int64_t a) { return a >= 0 ? x >= 0 && x <= a : x <= 0 && x >= a; };
+    return within(v.x, along.x) && within(v.y, along.y);
+  };
+  pocket = {slot, entity};
+  std::optional<PlatformHit> blocker;
+  const Vec2w free = clearPlatformStep(slot, remaining, blocker);
+  const Vec2 before = e.instances[0].position;
+  Vec2w went{};
+  if (free != Vec2w{} && !nearAWarp(e.instances[0], free)) {
+    push(e, inFrame(free), true);
+    went = wide(e.instances[0].position) - wide(before);
+    if (e.instances.size() != 1 || !partOf(went, free)) {  // off the way (not expected): back, no carry
+      push(e, inFrame(-went), true);
+      went = {};
+    }
+  }
+  // Straight on, it goes a part of the way (each coordinate towards zero): the platform's step that
+  // far is proved again, and what the platform cannot make the body takes back.
+  const Vec2w step = went == Vec2w{} ? went : clearPlatformStep(slot, went, blocker);
+  if (step != went) push(e, inFrame(step - went), true);
+  pocket = {};
+  if (step != Vec2w{}) shiftPlatform(slot, step);
+  return step;
 }
 
 void WorldImpl::crushed(uint32_t slot, uint32_t entity, uint32_t line, MapPartId part) {

@@ -165,7 +165,7 @@ class SubMove {
       if (moves_[i] == Vec2w{}) continue;
       w_.forEachPlatformLine(inst.part, box, [&](const PlatformLine& l, LineIndex key) {
         ++tested;
-        if (l.kind == LineKind::OneWay && !wholyInFront(verts_[i], l.segment)) return;
+        if ((l.kind == LineKind::OneWay && !wholyInFront(verts_[i], l.segment)) || w_.inPocket(e_, key)) return;
         const Sweep s = sweep(verts_[i], moves_[i], l.segment);
         if (s.hitsWithinFrame() && hit_.improvedBy(s.enter, HitKind::Solid, i, key))
           hit_ = {HitKind::Solid, s.enter, i, key, s, s.enterAxis};
@@ -212,7 +212,8 @@ class SubMove {
       if (!outside(seg, box) && w_.blocks(e_, inst, k, verts_[i])) touches(lines[k], seg);
     }
     w_.forEachPlatformLine(inst.part, box, [&](const PlatformLine& l, LineIndex key) {
-      if (l.kind != LineKind::OneWay || wholyInFront(verts_[i], l.segment)) touches(key, l.segment);
+      if ((l.kind != LineKind::OneWay || wholyInFront(verts_[i], l.segment)) && !w_.inPocket(e_, key))
+        touches(key, l.segment);
     });
     std::sort(touchingLines.begin(), touchingLines.end(),
               [](const WorldImpl::TouchingLine& a, const WorldImpl::TouchingLine& b) { return a.key < b.key; });
@@ -998,7 +999,8 @@ void WorldImpl::slide(Move& move) {
     const SubMove::Next next = sub.next();
     if (next == SubMove::Next::Stop) break;
     if (next == SubMove::Next::Again) continue;
-    if (sub.respondToContact(pushes) == SubMove::After::Stop) break;
+    const SubMove::After after = sub.respondToContact(pushes);
+    if (after == SubMove::After::Stop || (after == SubMove::After::Slide && move.straight)) break;
   }
   keepOnFace(move);
 }

@@ -52,6 +52,9 @@ struct Move {
   // The part of the copy whose centre stood least off its face when the slide began (where the
   // body was, on the solid): a path through a vertex goes on from that copy (keepOnFace).
   std::optional<MapPartId> startFace{};
+  // Straight on: a contact ends the move instead of turning it along the line (a body carried in a
+  // platform's pocket goes where the platform goes, or stops).
+  bool straight = false;
 };
 
 // Where each instance went during one sub-move, for the pierce events along the way. Empty: the
@@ -214,7 +217,18 @@ struct WorldImpl {
   // The first entity solid to `e` whose instance in inst's part the vertices overlap.
   std::optional<EntityId> entityOverlap(const Entity& e, const Instance& inst, std::span<const Vec2> verts);
   // Moves entity `b` by `push` (its own frame) as a slide of its own; returns whether it moved.
-  bool push(Entity& b, Vec2w push);
+  bool push(Entity& b, Vec2w push, bool straight = false);
+  // A body carried in a pocket of one platform's lines (carryInPocket): that platform's lines are
+  // not in the body's way, nor the body in theirs.
+  struct Pocket {
+    uint32_t platform = UINT32_MAX, entity = UINT32_MAX;
+  } pocket;
+  bool inPocket(const Entity& e, LineIndex platformLine) const {
+    return e.id.index == pocket.entity && ((platformLine & ~kPlatformLineBit) >> 16) == pocket.platform;
+  }
+  bool heldByOwnLines(uint32_t slot, const Entity& e, Vec2w motion);
+  bool nearAWarp(Instance& inst, Vec2w step);
+  Vec2w carryInPocket(uint32_t slot, uint32_t entity, Vec2w remaining);
   // Begin and end events of entities that report overlaps, along a sub-move's path (or at rest),
   // added to `events` for updatePierceState to order.
   struct PathEvent {

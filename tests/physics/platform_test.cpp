@@ -1,5 +1,7 @@
 // Moving platforms: they carry what stands on them, push what is in their way, stop (and report)
 // where a push is impossible, and never overlap anything solid to them.
+#include <cmath>
+#include <optional>
 #include <random>
 #include <set>
 #include <string>
@@ -360,6 +362,90 @@ TEST(Platforms, AShortMoveIsAlwaysACrushTheRulesHear) {
   EXPECT_EQ(failure, "") << "after " << frames << " frames";
   EXPECT_GT(shortMoves, 100) << "the family met too few short moves to say anything (" << frames << " frames)";
   std::printf("%d platform frames, %d short moves, each a crush the rules heard\n", frames, shortMoves);
+}
+
+// A body snug in a pocket of one platform's lines (a floor and a roof, both tilted at random, each
+// touching it or a unit or two off; half of them a cage with walls at its sides too) cannot be
+// pushed by one of them without going into another; those go along with it, so no push is
+// impossible there: the body goes with the platform as if fixed to it, every way, at 1 to 40 units
+// a frame, under gravity down, sideways or none. The platform moves its whole motion every frame,
+// never calls crushed, nothing overlaps. (Before, a pocket moved by its roof into the body, or by
+// its floor, was "crushed" for good: the push met the platform's own other line, not yet moved.)
+TEST(Platforms, ABodyInAPocketOfItsLinesGoesWithThePlatform) {
+  std::mt19937_64 rng(97);
+  int scenes = 0, carried = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    World world;
+    Crushes rules;
+    world.setRules(&rules);
+    MapPart& part = room(world);
+    const int g = in(rng, 0, 2);
+    part.setGravity(g == 0 ? Vec2w{} : g == 1 ? Vec2w{0, -kUnit / 2} : Vec2w{kUnit / 3, -kUnit / 5});
+    part.initialize();
+    const Convex shape =
+        in(rng, 0, 1) ? Convex::box(in(rng, 6, 40), in(rng, 6, 40)) : Convex::regular(in(rng, 3, 8), in(rng, 8, 40));
+    const Vec2 at{in(rng, -200, 200), 1500};
+    const EntityId body = world.createEntity(shape);
+    world.insert(body, 1, at, 0);
+    // A line through the point of the shape furthest along -n, tilted by `a` (n its normal towards
+    // the body), `gap` units off it; long enough to hold it.
+    auto tangent = [&](double a, Vec2w towards, int gap) {
+      const double nx = double(towards.x) * std::cos(a) - double(towards.y) * std::sin(a);
+      const double ny = double(towards.x) * std::sin(a) + double(towards.y) * std::cos(a);
+      double least = 1e18;
+      for (const Vec2 v : shape.vertices()) least = std::min(least, v.x * nx + v.y * ny);
+      const double cx = at.x + nx * (least - gap), cy = at.y + ny * (least - gap);
+      const double dx = -ny * 120, dy = nx * 120;
+      return Segment{{static_cast<int32_t>(std::lround(cx - dx)), static_cast<int32_t>(std::lround(cy - dy))},
+                     {static_cast<int32_t>(std::lround(cx + dx)), static_cast<int32_t>(std::lround(cy + dy))}};
+    };
+    std::optional<PlatformId> pocket;
+    for (int gap = in(rng, 0, 1); gap <= 3 && !pocket; ++gap) {
+      std::vector<PlatformLine> lines;
+      const double tilt = 0.4;
+      lines.push_back(
+          {tangent(std::uniform_real_distribution<double>(-tilt, tilt)(rng), {0, 1}, gap), 0, LineKind::Solid});
+      lines.push_back(
+          {tangent(std::uniform_real_distribution<double>(-tilt, tilt)(rng), {0, -1}, gap), 0, LineKind::Solid});
+      if (trial % 2) {
+        lines.push_back({tangent(0, {1, 0}, gap + 1), 0, LineKind::Solid});
+        lines.push_back({tangent(0, {-1, 0}, gap + 1), 0, LineKind::Solid});
+      }
+      try {
+        pocket = world.createPlatform(1, lines);
+      } catch (const Error&) {  // rounded a unit into the body: a unit further off
+      }
+    }
+    ASSERT_TRUE(pocket) << "trial " << trial;
+    const double a = std::uniform_real_distribution<double>(0, 2 * M_PI)(rng);
+    const int speed = in(rng, 1, 40);
+    const Vec2 motion{static_cast<int32_t>(std::lround(std::cos(a) * speed)),
+                      static_cast<int32_t>(std::lround(std::sin(a) * speed))};
+    world.setPlatformMotion(*pocket, motion);
+    const Vec2 start = world.entity(body).position();
+    for (int f = 0; f < 30; ++f) {  // at most 1,200 units: nowhere near the room's walls
+      const Vec2 before = world.platform(*pocket).offset;
+      world.solve();
+      const Vec2 after = world.platform(*pocket).offset;
+      ASSERT_EQ(world.countOverlaps(), 0u) << "trial " << trial << ", frame " << f;
+      if (rules.count) {
+        std::string d = "motion " + toString(motion) + " body at " + toString(world.entity(body).position()) + " shape";
+        for (const Vec2 v : shape.vertices()) d += " " + toString(v);
+        d += " lines";
+        for (const PlatformLine& l : world.platform(*pocket).lines)
+          d += " " + toString(l.segment.a) + "-" + toString(l.segment.b);
+        ADD_FAILURE() << d;
+      }
+      ASSERT_EQ(rules.count, 0) << "trial " << trial << ", frame " << f << ": crushed";
+      ASSERT_EQ(after, (Vec2{before.x + motion.x, before.y + motion.y})) << "trial " << trial << ", frame " << f;
+    }
+    const Vec2 end = world.entity(body).position(), offset = world.platform(*pocket).offset;
+    // Carried: it went with the platform (gravity may slide it along a tilted floor a little).
+    carried += std::abs(end.x - start.x - offset.x) + std::abs(end.y - start.y - offset.y) < 60;
+    ++scenes;
+  }
+  EXPECT_EQ(scenes, 200);
+  EXPECT_GT(carried, 150);
 }
 
 TEST(Platforms, BadPlatformsAreRefused) {
