@@ -146,20 +146,18 @@ class World {
 
   // Moving platforms: lines of one map part that move together by whole units, once a frame before
   // the entities step. A platform pushes every entity in its way (as a slide of the entity's own,
-  // so walls stop it), carries the entities standing on it, and stops where a push is impossible
-  // (Rules::crushed). It passes through the part's fixed lines and other platforms.
-  // On a face of a solid (a part whose warp lines close into a loop: MapPart::faceLoop), a platform
-  // crosses the face's edges: where its lines come within reach of a warp edge they are also on the
-  // face beyond (a copy, PlatformView::copies, placed through the warp and moved with it, a whole
-  // unit at a time after its exact place, and turned with it about its pivot placed there; one copy
-  // at most, across the edge its lines come furthest over). It meets each body in the first of its parts the body is in
-  // (its own, then its copy's), and pushes, carries and is stopped by it there as on one face; once
-  // every line is beyond one edge, the platform belongs to the face beyond (its part, lines, pivot
-  // and motion turned into that part's frame, exactly; its offset counted from there). A copy that
-  // would be placed over a body there stops the platform for the frame (Rules::crushed). On a part
-  // that is not a face of a solid a platform stays in its part. docs/physics.md, "Platforms across
-  // edges", says more.
-  // Up to 65,536 lines a platform and 16,384 platforms; lines must be Solid or OneWay.
+  // so walls stop it), carries the entities standing on it and those snug in a pocket of its own
+  // lines, and stops where a push is impossible (Rules::crushed). It passes through the part's fixed lines and other
+  // platforms. On a face of a solid (a part whose warp lines close into a loop: MapPart::faceLoop), a platform crosses
+  // the face's edges: where its lines come within reach of a warp edge they are also on the face beyond (a copy,
+  // PlatformView::copies, placed through the warp and moved with it, a whole unit at a time after its exact place, and
+  // turned with it about its pivot placed there; one copy at most, across the edge its lines come furthest over). It
+  // meets each body in the first of its parts the body is in (its own, then its copy's), and pushes, carries and is
+  // stopped by it there as on one face; once every line is beyond one edge, the platform belongs to the face beyond
+  // (its part, lines, pivot and motion turned into that part's frame, exactly; its offset counted from there). A copy
+  // that would be placed over a body there stops the platform for the frame (Rules::crushed). On a part that is not a
+  // face of a solid a platform stays in its part. docs/physics.md, "Platforms across edges", says more. Up to 65,536
+  // lines a platform and 16,384 platforms; lines must be Solid or OneWay.
   PlatformId createPlatform(MapPartId part, std::span<const PlatformLine> lines);
   void destroyPlatform(PlatformId id);
   void setPlatformMotion(PlatformId id, Vec2 perFrame);
