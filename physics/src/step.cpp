@@ -458,7 +458,12 @@ class SubMove {
     ContactResponse response;
     w_.callRules([&](Rules& r) { r.contact(contact, response); });
     const Vec2w normal = shortDirection(rotateWideInverse(rotation, shortDirection(partNormal)));
-    if (withEntity && inst && pushes < 4 && tryPush(*inst, normal)) {
+    // A push goes along the contact's own normal (the sweep's), not the slide's: that can be a line
+    // the body touches too, the floor it jumps off (a crate on its head, the jump sideways). Pushed
+    // along the floor's normal the crate was not pushed at all, and sliding along the floor, the
+    // body went nowhere, frame after frame.
+    const Vec2w pushNormal = shortDirection(rotateWideInverse(rotation, shortDirection(hit_.sweep.normal())));
+    if (withEntity && inst && pushes < 4 && tryPush(*inst, pushNormal)) {
       ++pushes;
       return After::Again;
     }
@@ -681,10 +686,17 @@ class SubMove {
 namespace {
 
 // The directions a contact's normals close to the entity (in its own frame), as one line's.
-void closeDirections(OpenDirections& open, const Instance& inst, const std::vector<Vec2w>& normals) {
+// Whether one of them is against `w` (any, for no w): a line the body is pressed onto, not one it
+// only touches (a crate on its head does not hold it up).
+bool closeDirections(OpenDirections& open, const Instance& inst, const std::vector<Vec2w>& normals, Vec2w w) {
   open.beginLine();
-  for (const Vec2w n : normals)
-    open.addNormal(inst.frame == 0 ? n : shortDirection(rotateWideInverse(inst.rotation, shortDirection(n))));
+  bool against = w == Vec2w{};
+  for (const Vec2w n : normals) {
+    const Vec2w inFrame = inst.frame == 0 ? n : shortDirection(rotateWideInverse(inst.rotation, shortDirection(n)));
+    open.addNormal(inFrame);
+    against = against || dot128(inFrame, w) < 0;
+  }
+  return against;
 }
 
 // The normal a contact with `seg` reports: the line's own when it is one of them (a body on a
@@ -700,7 +712,7 @@ Vec2w reportedNormal(const std::vector<Vec2w>& normals, const Segment& seg) {
 
 // The instance's part's own lines it rests against: their normals close directions in `open`,
 // each is a contact. Whether one of them touches it.
-bool WorldImpl::restOnPartLines(Entity& e, Instance& inst, const std::vector<Vec2>& verts, const Box& box) {
+bool WorldImpl::restOnPartLines(Entity& e, Instance& inst, const std::vector<Vec2>& verts, const Box& box, Vec2w w) {
   std::vector<Vec2w>& normals = scratch.lineNormals;
   const MapPart& p = part(inst.part);
   bool touching = false;
@@ -720,15 +732,16 @@ bool WorldImpl::restOnPartLines(Entity& e, Instance& inst, const std::vector<Vec
         (!ownSide && (nearWarpLine(*this, e, inst, seg.a) || nearWarpLine(*this, e, inst, seg.b)))) {
       normals.assign(1, normalTowards(verts, seg));
     }
-    touching = touching || nearness == Nearness::Touching;
-    closeDirections(scratch.open, inst, normals);
+    const bool against = closeDirections(scratch.open, inst, normals, w);
+    touching = touching || (nearness == Nearness::Touching && against);
     e.contacts.push_back(makeContact(e, inst, lines[k], Fraction::zero(), reportedNormal(normals, seg), {}));
   }
   return touching;
 }
 
 // The same for the moving platforms' lines near it: they count as the part's own do.
-bool WorldImpl::restOnPlatformLines(Entity& e, Instance& inst, const std::vector<Vec2>& verts, const Box& box) {
+bool WorldImpl::restOnPlatformLines(Entity& e, Instance& inst, const std::vector<Vec2>& verts, const Box& box,
+                                    Vec2w w) {
   std::vector<Vec2w>& normals = scratch.lineNormals;
   bool touching = false;
   forEachPlatformLine(inst.part, box, [&](const PlatformLine& l, LineIndex key) {
@@ -736,8 +749,8 @@ bool WorldImpl::restOnPlatformLines(Entity& e, Instance& inst, const std::vector
     normals.clear();
     const Nearness nearness = nearNormals(verts, l.segment, normals);
     if (nearness == Nearness::Apart) return;
-    touching = touching || nearness == Nearness::Touching;
-    closeDirections(scratch.open, inst, normals);
+    const bool against = closeDirections(scratch.open, inst, normals, w);
+    touching = touching || (nearness == Nearness::Touching && against);
     e.contacts.push_back(makeContact(e, inst, key, Fraction::zero(), reportedNormal(normals, l.segment), {}));
   });
   return touching;
@@ -746,7 +759,7 @@ bool WorldImpl::restOnPlatformLines(Entity& e, Instance& inst, const std::vector
 // The same for the entities solid to it that it is against: the other polygon's sides count as
 // lines do. One that can be pushed holds it only as a support (a contact against gravity, as in a
 // stack): from the side, walking into it pushes it.
-bool WorldImpl::restOnEntities(Entity& e, Instance& inst, const std::vector<Vec2>& verts, const Box& box) {
+bool WorldImpl::restOnEntities(Entity& e, Instance& inst, const std::vector<Vec2>& verts, const Box& box, Vec2w w) {
   std::vector<Vec2w>& normals = scratch.lineNormals;
   std::vector<Vec2>& other = scratch.probe;
   const Vec2w down = part(inst.part).gravity();
@@ -758,8 +771,8 @@ bool WorldImpl::restOnEntities(Entity& e, Instance& inst, const std::vector<Vec2
     if (nearness == Nearness::Apart) return;
     if (o.filter.pushable) std::erase_if(normals, [&](Vec2w n) { return dot128(n, down) >= 0; });
     if (normals.empty()) return;
-    touching = touching || nearness == Nearness::Touching;
-    closeDirections(scratch.open, inst, normals);
+    const bool against = closeDirections(scratch.open, inst, normals, w);
+    touching = touching || (nearness == Nearness::Touching && against);
     Contact c = makeContact(e, inst, kNoLine, Fraction::zero(), normals[0], {});
     c.other = o.id;
     e.contacts.push_back(c);
@@ -781,9 +794,9 @@ bool WorldImpl::restsAgainstLines(Entity& e, Vec2w w) {
     worldVertices(inst, verts);
     Box box = sweptBox(verts, {});
     box.x0 -= 2, box.y0 -= 2, box.x1 += 2, box.y1 += 2;
-    touching = restOnPartLines(e, inst, verts, box) || touching;
-    touching = restOnPlatformLines(e, inst, verts, box) || touching;
-    touching = restOnEntities(e, inst, verts, box) || touching;
+    touching = restOnPartLines(e, inst, verts, box, w) || touching;
+    touching = restOnPlatformLines(e, inst, verts, box, w) || touching;
+    touching = restOnEntities(e, inst, verts, box, w) || touching;
   }
   // Resting on a line, it touches it; wedged into a corner, it may be kept up to 1.5 units from
   // the lines by the whole-unit grid, and lines near it count only if they form a corner.
@@ -826,7 +839,8 @@ void WorldImpl::stepEntity(Entity& e) {
   bool kept = keepsRest(e);
   // Held by an entity that has not stepped this frame: that one steps first, as it does for the
   // rest test below (moving, it wakes this one, which is then tested where it is now).
-  if (kept && stepHoldersFirst(e, e.restContacts, e.velocityQ16)) {
+  if (kept &&
+      stepHoldersFirst(e, e.restContacts, e.velocityQ16, e.gravity ? part(e.instances[0].part).gravity() : Vec2w{})) {
     if (e.awaiting.takenOver) return;
     kept = keepsRest(e);
   }
@@ -863,7 +877,7 @@ void WorldImpl::stepEntityTested(Entity& e) {
   // Held by an entity that has not stepped this frame (a guard it walks behind, a crate it stands
   // on that slides away): that one steps first, as a sweep meeting it would have it, and the test
   // is asked again. So whether it is still held never depends on the handles' order.
-  if (rests && stepHoldersFirst(e, e.contacts, before)) {
+  if (rests && stepHoldersFirst(e, e.contacts, before, e.velocityQ16)) {
     if (e.awaiting.takenOver) return;
     rests = restsAgainstLines(e, e.velocityQ16);
   }
@@ -957,11 +971,15 @@ bool WorldImpl::stepMetEntityFirst(Entity& mover, uint32_t slot, bool moverMoved
 
 // The holders step while this entity waits (once a frame: two bodies that hold each other do not
 // take turns). `velocityBefore` is its velocity when its step began.
-bool WorldImpl::stepHoldersFirst(Entity& e, const std::vector<Contact>& contacts, Vec2w velocityBefore) {
+bool WorldImpl::stepHoldersFirst(Entity& e, const std::vector<Contact>& contacts, Vec2w velocityBefore, Vec2w pressed) {
   if (e.awaiting.frame == frame || !steppingEntities) return false;
+  // A holder is what it is pressed into (by its velocity, gravity in it): a crate on its head holds
+  // it from nothing, and waiting for it, each would wait for the other.
   auto waitsFor = [&](const Contact& c) {
     const Entity* o = c.other.isSet() ? slots[c.other.index].entity.get() : nullptr;
-    return o && !steppedThisFrame(*o);
+    const Instance* inst = e.instanceIn(c.part);
+    if (!o || !inst || steppedThisFrame(*o)) return false;
+    return dot128(c.normal, inst->frame == 0 ? pressed : rotateWide(inst->rotation, pressed)) < 0;
   };
   if (std::none_of(contacts.begin(), contacts.end(), waitsFor)) return false;  // the usual case: no list made
   std::vector<uint32_t> holders;  // a step may change the contacts: the slots are read first

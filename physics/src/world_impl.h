@@ -375,9 +375,11 @@ struct WorldImpl {
   // now (returns true, and the sub-move is planned again). The mover is reindexed first if it may
   // have moved since it was last.
   bool stepMetEntityFirst(Entity& mover, uint32_t slot, bool moverMoved = true);
-  // The same for the entities among `contacts` (e's rest test's, or its kept rest's), before e
-  // moves: whether any stepped. Meanwhile e counts as not stepped (Entity::awaiting).
-  bool stepHoldersFirst(Entity& e, const std::vector<Contact>& contacts, Vec2w velocityBefore);
+  // The same for the entities among `contacts` (e's rest test's, or its kept rest's) that e is
+  // pressed into by `pressed` (the velocity its rest test asks with), before e moves: whether any
+  // stepped. Meanwhile e counts as not stepped (Entity::awaiting); `velocityBefore` is its velocity
+  // when its step began.
+  bool stepHoldersFirst(Entity& e, const std::vector<Contact>& contacts, Vec2w velocityBefore, Vec2w pressed);
   // Whether e has taken its step this frame (one waiting for its holders has not).
   bool steppedThisFrame(const Entity& e) const;
   void stepEntity(Entity& e);
@@ -388,9 +390,9 @@ struct WorldImpl {
   // they become its contacts for this frame.
   bool restsAgainstLines(Entity& e, Vec2w w);
   // Its steps, for one instance (its vertices and their box grown by 2): whether one touches it.
-  bool restOnPartLines(Entity& e, Instance& inst, const std::vector<Vec2>& verts, const Box& box);
-  bool restOnPlatformLines(Entity& e, Instance& inst, const std::vector<Vec2>& verts, const Box& box);
-  bool restOnEntities(Entity& e, Instance& inst, const std::vector<Vec2>& verts, const Box& box);
+  bool restOnPartLines(Entity& e, Instance& inst, const std::vector<Vec2>& verts, const Box& box, Vec2w w);
+  bool restOnPlatformLines(Entity& e, Instance& inst, const std::vector<Vec2>& verts, const Box& box, Vec2w w);
+  bool restOnEntities(Entity& e, Instance& inst, const std::vector<Vec2>& verts, const Box& box, Vec2w w);
   // The entity was moving and has just come to rest against its contacts (restsAgainstLines): the
   // rules hear of each. They may let it rest; send it off with a velocity that no longer presses
   // into them (it Stays where it is for the rest of this frame, as a slide along its contacts

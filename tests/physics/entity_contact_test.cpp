@@ -360,16 +360,16 @@ TEST(EntitySolids, AChainSeesItsNeighboursWhereTheyAreThisFrameWhateverTheirHand
 
 // A body held by another that moves away by its own step falls (or moves on) in the same frame
 // whatever the handles' order: a holder that has not stepped yet steps first, for a body at rest as
-// for a moving one. Random families: towers of one to three crates (boxes, the top one maybe a
-// random upright shape, at random offsets) on a guard that stands a while and then walks off
-// either way at its own speed; and, under gravity along the floor, a row of crates leaning on a
-// guard that walks away along the gravity or into the row (a body waiting for its holder that the
-// holder's move meets takes its step there, as it would have had it not stepped yet). The same
-// scene made in three handle orders moves identically frame by frame (places, velocities, contact
-// normals), and so does it with every body's rest tested every frame (World::RestMode::Tested).
-// Without the rule, a body at rest that steps before its holder sees it where it was and falls a
-// frame late. Supports are flat: a body sliding down a slope into the guard that moves into it is
-// the case of two bodies moving into each other, which no order of steps removes (docs/physics.md).
+// for a moving one; a holder is what the body is pressed into (a crate that cannot be pushed on its
+// head is none). Random families: towers of one to three crates (boxes, the top one maybe a
+// random upright shape, at random offsets, a third of them not pushable) on a guard that stands a while and then walks
+// off either way at its own speed; and, under gravity along the floor, a row of crates leaning on a guard that walks
+// away along the gravity or into the row (a body waiting for its holder that the holder's move meets takes its step
+// there, as it would have had it not stepped yet). The same scene made in three handle orders moves identically frame
+// by frame (places, velocities, the normals of the contacts that hold each body), and so does it with every body's rest
+// tested every frame (World::RestMode::Tested). Without the rule, a body at rest that steps before its holder sees it
+// where it was and falls a frame late. Supports are flat: a body sliding down a slope into the guard that moves into it
+// is the case of two bodies moving into each other, which no order of steps removes (docs/physics.md).
 TEST(EntitySolids, ABodyHeldByAnotherThatMovesAwayMovesInTheSameFrameWhateverTheirHandleOrder) {
   std::mt19937_64 rng(89);
   int moved = 0;  // scenes whose guard moves away from what it holds
@@ -386,7 +386,9 @@ TEST(EntitySolids, ABodyHeldByAnotherThatMovesAwayMovesInTheSameFrameWhateverThe
     const int dir = r() % 2 ? 1 : -1;
     const int64_t gravity = between(r, 8000, 60000);
     const int start = between(r, 0, 40);
-    const EntityFilter guardFilter{kEnemy, kCrate, 0, false}, crateFilter{kCrate, kCrate | kEnemy, 0, true};
+    const EntityFilter guardFilter{kEnemy, kCrate, 0, false};
+    // Crates pushable or not (one that is not holds the crate under it from above as well).
+    auto crateFilter = [&] { return EntityFilter{kCrate, kCrate | kEnemy, 0, r() % 3 != 0}; };
     std::vector<Body> bodies;
     auto extent = [](const Convex& s, int32_t& x0, int32_t& x1, int32_t& y0, int32_t& y1) {
       x0 = y0 = INT32_MAX, x1 = y1 = INT32_MIN;
@@ -408,7 +410,7 @@ TEST(EntitySolids, ABodyHeldByAnotherThatMovesAwayMovesInTheSameFrameWhateverThe
         int32_t c0, c1, d0, d1;
         extent(shape, c0, c1, d0, d1);
         const int32_t x = between(r, lo, hi), y = top + between(r, 1, 10) - d0;
-        bodies.push_back({shape, {x, y}, crateFilter, {}});
+        bodies.push_back({shape, {x, y}, crateFilter(), {}});
         top = y + d1, lo = x + c0, hi = x + c1;
       }
     } else {
@@ -425,7 +427,7 @@ TEST(EntitySolids, ABodyHeldByAnotherThatMovesAwayMovesInTheSameFrameWhateverThe
         int32_t c0, c1, d0, d1;
         extent(shape, c0, c1, d0, d1);
         const int32_t x = front + between(r, 0, 10) - c0;
-        bodies.push_back({shape, {x, -d0}, crateFilter, {}});
+        bodies.push_back({shape, {x, -d0}, crateFilter(), {}});
         front = x + c1;
       }
     }
@@ -450,8 +452,11 @@ TEST(EntitySolids, ABodyHeldByAnotherThatMovesAwayMovesInTheSameFrameWhateverThe
           const EntityView e = room.world.entity(id);
           at += " (" + std::to_string(e.position().x) + ", " + std::to_string(e.position().y) + " v " +
                 std::to_string(e.velocity().x) + ", " + std::to_string(e.velocity().y) + " n";
+          // Its supports (what it is pressed onto): a neighbour only near it, not holding it, is a
+          // contact or not as it steps before or after it.
           for (const Contact& c : e.contacts())
-            at += " " + std::to_string(c.normal.x) + "," + std::to_string(c.normal.y);
+            if (sideways ? c.normal.x > 0 : c.normal.y > 0)
+              at += " " + std::to_string(c.normal.x) + "," + std::to_string(c.normal.y);
           at += ")";
         }
         path.push_back(at);
@@ -478,4 +483,41 @@ TEST(EntitySolids, ABodyHeldByAnotherThatMovesAwayMovesInTheSameFrameWhateverThe
     moved += guardFrom != guardTo;
   }
   EXPECT_GE(moved, 70);
+}
+
+// A body that jumps any way (up, up and sideways, nearly sideways) with a crate resting on its head
+// lifts the crate (pushes it) and goes its way: its push goes along its contact with the crate, not
+// along the floor it leaves, which it also touches at that instant. Random families of bodies and
+// crates (boxes and regular polygons, the crate at random offsets). (Before, a jump with any
+// sideways part pushed along the floor's normal, did not push at all, and slid along the floor
+// nowhere: the body stood frozen with its velocity, frame after frame.)
+TEST(EntitySolids, ABodyJumpingAnyWayWithACrateOnItsHeadLiftsIt) {
+  std::mt19937_64 r(101);
+  int jumps = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    Room room;
+    room.part->setGravity({0, -between(r, 8000, 60000)});
+    const int32_t w = between(r, 20, 80), h = between(r, 10, 40);
+    const EntityId body = room.add(Convex::box(w, h), {0, h}, {kPlayer, kCrate, 0, false});
+    const Convex crate = r() % 2 ? Convex::box(between(r, 8, 40), between(r, 8, 30))
+                                 : Convex::regular(between(r, 4, 8), between(r, 10, 30));
+    int32_t bottom = INT32_MAX;
+    for (const Vec2 v : crate.vertices()) bottom = std::min(bottom, v.y);
+    const EntityId box = room.add(crate, {between(r, -w + 5, w - 5), 2 * h - bottom + between(r, 0, 3)},
+                                  {kCrate, kCrate | kPlayer, 0, true});
+    for (int f = 0; f < 20; ++f) room.world.solve();  // the crate settles on its head
+    const Vec2 before = room.world.entity(body).position();
+    const Vec2w jump{between(r, -8, 8) * kUnit + between(r, 0, kUnit), between(r, 3, 12) * kUnit};
+    room.world.setVelocity(body, jump);
+    room.world.solve();
+    ASSERT_EQ(room.world.countOverlaps(), 0u) << "trial " << trial;
+    const Vec2 after = room.world.entity(body).position();
+    // Up by nearly its velocity (half a frame's gravity less, and a unit of rounding), sideways too.
+    EXPECT_GE(after.y - before.y, jump.y / kUnit - 2) << "trial " << trial << ": jumped " << jump.x << "," << jump.y;
+    EXPECT_LE(std::abs(after.x - before.x - jump.x / kUnit), 1)
+        << "trial " << trial << ": jumped " << jump.x << "," << jump.y;
+    EXPECT_GT(room.world.entity(box).position().y, 2 * h - bottom) << "trial " << trial << ": the crate was not lifted";
+    ++jumps;
+  }
+  EXPECT_EQ(jumps, 300);
 }
