@@ -667,7 +667,7 @@ Vec2w turnPush(const Segment& from, const Segment& to, Vec2w centre, std::span<c
 // bodies), so passes go on until one pushes nothing: then every body is clear. A body that cannot
 // be cleared stops the sub-step. In a copy's part, only the bodies the platform meets there
 // (platformMeets).
-bool WorldImpl::clearTurn(uint32_t slot, const TurnPlace& at, uint32_t& blocker) {
+bool WorldImpl::clearTurn(uint32_t slot, const TurnPlace& at, uint32_t& blocker, bool& pushedAny) {
   const TurnSweep sweep = sweepOfTurn(at);
   std::vector<Vec2> verts;
   for (int pass = 0; pass < 4; ++pass) {
@@ -692,7 +692,7 @@ bool WorldImpl::clearTurn(uint32_t slot, const TurnPlace& at, uint32_t& blocker)
           blocker = s;
           return false;
         }
-        pushed = true;
+        pushed = pushedAny = true;
       }
     }
     if (!pushed) return true;
@@ -725,11 +725,19 @@ Angle WorldImpl::turnPlatform(uint32_t slot) {
       TurnPlace there{c.part, &c.lines, places[0].to, pointThrough(pl, c.edge, pivot)};
       if (linesThrough(pl, c.edge, there.to)) places.push_back(std::move(there));
     }
+    // A body pushed in one place can come to be met in another (pushed from the copy's part into
+    // the platform's own, where that was cleared already): the places are gone over again until a
+    // round pushes nothing.
     uint32_t blocker = 0;
-    const auto stopped =
-        std::find_if(places.begin(), places.end(), [&](const TurnPlace& at) { return !clearTurn(slot, at, blocker); });
-    if (stopped != places.end()) {
-      crushed(slot, blocker, 0, stopped->part);
+    std::optional<MapPartId> stopped;
+    for (int round = 0; round < 3 && !stopped; ++round) {
+      bool pushed = false;
+      for (const TurnPlace& at : places)
+        if (!stopped && !clearTurn(slot, at, blocker, pushed)) stopped = at.part;
+      if (!pushed) break;
+    }
+    if (stopped) {
+      crushed(slot, blocker, 0, *stopped);
       break;
     }
     Platform& p = platforms[slot];
