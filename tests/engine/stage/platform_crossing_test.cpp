@@ -596,6 +596,7 @@ SceneCounts randomPlatformScenes(uint64_t seed, int scenes, bool turning) {
         ++counts.crushed;
         continue;
       }
+      // (On a crossing frame the copy is the one on the face it left until the next frame's start.)
       EXPECT_TRUE(onTheFaceBeyond(b->world, p)) << "frame " << frame << ": lines over an edge with no copy there";
       EXPECT_EQ(static_cast<physics::Angle>(p.angle - before.angle), static_cast<physics::Angle>(p.spin))
           << "frame " << frame << ": turned short of its spin, and no crushed call";
