@@ -131,6 +131,7 @@ struct Entity {
   Vec2w restGravityQ16;               // the anchor part's gravity when the answer was found
   uint64_t restPlatformEpoch = 0;     // the platforms of its parts had moved this often
   std::vector<Contact> restContacts;  // the contacts that held it
+  std::vector<uint32_t> restHolders;  // the slots of the entities among them it is pressed onto
 
   Instance* instanceIn(MapPartId part) {
     for (Instance& i : instances)

@@ -839,8 +839,11 @@ void WorldImpl::stepEntity(Entity& e) {
   bool kept = keepsRest(e);
   // Held by an entity that has not stepped this frame: that one steps first, as it does for the
   // rest test below (moving, it wakes this one, which is then tested where it is now).
-  if (kept &&
-      stepHoldersFirst(e, e.restContacts, e.velocityQ16, e.gravity ? part(e.instances[0].part).gravity() : Vec2w{})) {
+  const bool holderWaits = std::any_of(e.restHolders.begin(), e.restHolders.end(), [&](uint32_t s) {
+    const Entity* o = slots[s].entity.get();
+    return o && !steppedThisFrame(*o);
+  });
+  if (kept && holderWaits && stepHoldersFirst(e, e.restContacts, e.velocityQ16, true)) {
     if (e.awaiting.takenOver) return;
     kept = keepsRest(e);
   }
@@ -877,7 +880,7 @@ void WorldImpl::stepEntityTested(Entity& e) {
   // Held by an entity that has not stepped this frame (a guard it walks behind, a crate it stands
   // on that slides away): that one steps first, as a sweep meeting it would have it, and the test
   // is asked again. So whether it is still held never depends on the handles' order.
-  if (rests && stepHoldersFirst(e, e.contacts, before, e.velocityQ16)) {
+  if (rests && stepHoldersFirst(e, e.contacts, before, false)) {
     if (e.awaiting.takenOver) return;
     rests = restsAgainstLines(e, e.velocityQ16);
   }
@@ -902,6 +905,10 @@ void WorldImpl::stepEntityTested(Entity& e) {
         e.restGravityQ16 = part(e.instances[0].part).gravity();
         e.restPlatformEpoch = platformEpochOf(e);
         e.restContacts = e.contacts;
+        e.restHolders.clear();  // what it is pressed onto: gravity its only push
+        for (const Contact& c : e.contacts)
+          if (c.other.isSet() && dot128(c.normal, e.gravity ? e.restGravityQ16 : Vec2w{}) < 0)
+            e.restHolders.push_back(c.other.index);
       }
     }
     if (arrival != Arrival::Bounces) return;
@@ -971,17 +978,24 @@ bool WorldImpl::stepMetEntityFirst(Entity& mover, uint32_t slot, bool moverMoved
 
 // The holders step while this entity waits (once a frame: two bodies that hold each other do not
 // take turns). `velocityBefore` is its velocity when its step began.
-bool WorldImpl::stepHoldersFirst(Entity& e, const std::vector<Contact>& contacts, Vec2w velocityBefore, Vec2w pressed) {
+bool WorldImpl::stepHoldersFirst(Entity& e, const std::vector<Contact>& contacts, Vec2w velocityBefore, bool kept) {
   if (e.awaiting.frame == frame || !steppingEntities) return false;
+  auto unstepped = [&](const Contact& c) {
+    const Entity* o = c.other.isSet() ? slots[c.other.index].entity.get() : nullptr;
+    return o && !steppedThisFrame(*o);
+  };
+  // The usual case (on lines, or on what has stepped already) costs a look at its contacts.
+  if (std::none_of(contacts.begin(), contacts.end(), unstepped)) return false;
+  // Kept at rest, its velocity is none and its rest test would ask with its gravity.
+  const Vec2w pressed = !kept ? e.velocityQ16 : e.gravity ? part(e.instances[0].part).gravity() : Vec2w{};
   // A holder is what it is pressed into (by its velocity, gravity in it): a crate on its head holds
   // it from nothing, and waiting for it, each would wait for the other.
   auto waitsFor = [&](const Contact& c) {
-    const Entity* o = c.other.isSet() ? slots[c.other.index].entity.get() : nullptr;
     const Instance* inst = e.instanceIn(c.part);
-    if (!o || !inst || steppedThisFrame(*o)) return false;
-    return dot128(c.normal, inst->frame == 0 ? pressed : rotateWide(inst->rotation, pressed)) < 0;
+    return unstepped(c) && inst &&
+           dot128(c.normal, inst->frame == 0 ? pressed : rotateWide(inst->rotation, pressed)) < 0;
   };
-  if (std::none_of(contacts.begin(), contacts.end(), waitsFor)) return false;  // the usual case: no list made
+  if (std::none_of(contacts.begin(), contacts.end(), waitsFor)) return false;  // no list made
   std::vector<uint32_t> holders;  // a step may change the contacts: the slots are read first
   for (const Contact& c : contacts)
     if (waitsFor(c)) holders.push_back(c.other.index);

@@ -375,11 +375,11 @@ struct WorldImpl {
   // now (returns true, and the sub-move is planned again). The mover is reindexed first if it may
   // have moved since it was last.
   bool stepMetEntityFirst(Entity& mover, uint32_t slot, bool moverMoved = true);
-  // The same for the entities among `contacts` (e's rest test's, or its kept rest's) that e is
-  // pressed into by `pressed` (the velocity its rest test asks with), before e moves: whether any
+  // The same for the entities among `contacts` (e's rest test's, or its kept rest's: `kept`) that
+  // e is pressed into (by the velocity its rest test asks with), before e moves: whether any
   // stepped. Meanwhile e counts as not stepped (Entity::awaiting); `velocityBefore` is its velocity
   // when its step began.
-  bool stepHoldersFirst(Entity& e, const std::vector<Contact>& contacts, Vec2w velocityBefore, Vec2w pressed);
+  bool stepHoldersFirst(Entity& e, const std::vector<Contact>& contacts, Vec2w velocityBefore, bool kept);
   // Whether e has taken its step this frame (one waiting for its holders has not).
   bool steppedThisFrame(const Entity& e) const;
   void stepEntity(Entity& e);
