@@ -175,3 +175,40 @@ TEST(Rest, AKeptAnswerIsNeverContradictedAndStatesMatchAWorldThatTestsEveryFrame
   std::printf("[  STATS   ] %llu kept rest answers over 12 scenes of 1,500 frames, none contradicted\n",
               static_cast<unsigned long long>(kept));
 }
+
+// A body rests only touching what it is pressed into: one touching a ceiling (a fixed line, or a
+// crate that cannot be pushed) while a unit above the floor falls that unit and rests on the floor.
+// (Before, touching anything and within 1.5 units of a floor was rest: it hung there, and whether
+// it hung by a crate above depended on whether the crate had stepped yet.) Random boxes and
+// regular polygons, gaps of one unit, ceilings as lines and as crates.
+TEST(Rest, ABodyTouchingOnlyACeilingFallsTheUnitToTheFloor) {
+  std::mt19937_64 r(103);
+  for (int trial = 0; trial < 200; ++trial) {
+    World world;
+    MapPart& part = world.createMapPart(1);
+    part.line({-3000, 0}, {3000, 0});
+    part.setGravity({0, -platon::testing::between(r, 2000, 40000)});
+    const Convex shape = r() % 2
+                             ? Convex::box(platon::testing::between(r, 5, 40), platon::testing::between(r, 5, 40))
+                             : Convex::regular(platon::testing::between(r, 3, 9), platon::testing::between(r, 6, 40));
+    int32_t bottom = INT32_MAX, top = INT32_MIN;
+    for (const Vec2 v : shape.vertices()) bottom = std::min(bottom, v.y), top = std::max(top, v.y);
+    const Vec2 at{0, 1 - bottom};  // one unit above the floor
+    const bool lineCeiling = trial % 2 == 0;
+    if (lineCeiling) part.line({300, at.y + top}, {-300, at.y + top});
+    part.initialize();
+    const EntityId body = world.createEntity(shape);
+    world.setFilter(body, {1, 1, 0, true});
+    world.insert(body, 1, at, 0);
+    if (!lineCeiling) {  // a slab that cannot be pushed, floating on no gravity of its own
+      const EntityId slab = world.createEntity(Convex::box(200, 10));
+      world.setFilter(slab, {1, 1, 0, false});
+      world.setGravityEnabled(slab, false);
+      world.insert(slab, 1, {0, at.y + top + 10}, 0);
+    }
+    world.solve();
+    world.solve();
+    ASSERT_EQ(world.countOverlaps(), 0u) << "trial " << trial;
+    EXPECT_EQ(world.entity(body).position().y, at.y - 1) << "trial " << trial << ": hung a unit above the floor";
+  }
+}
