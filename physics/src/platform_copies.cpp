@@ -33,14 +33,18 @@ std::optional<EdgeReach> reachOver(std::span<const Vec2w> now, std::span<const V
   const i128 length = static_cast<i128>(isqrt(static_cast<u128>(dot128(d, d)))) + 1;
   EdgeReach after{INT64_MAX, length};
   i128 least = INT64_MAX, alongLow = INT64_MAX, alongHigh = INT64_MIN;
-  for (const auto points : {now, between, then})
+  auto reach = [&](std::span<const Vec2w> points, bool atEnd) {
     for (const Vec2w p : points) {
       const Vec2w at = p - wide(seg.a);
       const i128 cross = cross128(d, at), along = dot128(d, at);
       least = std::min(least, cross);
-      if (points.data() == then.data()) after.cross = std::min(after.cross, cross);
+      if (atEnd) after.cross = std::min(after.cross, cross);
       alongLow = std::min(alongLow, along), alongHigh = std::max(alongHigh, along);
     }
+  };
+  reach(now, false);
+  reach(between, false);
+  reach(then, true);
   const i128 margin = kCopyReach * length;
   // Beside the slab only while on the face's side of the edge's line: lines inside the face near
   // that line are near the edge itself, and lines over the line (past a vertex) are over the edge

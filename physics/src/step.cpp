@@ -839,11 +839,13 @@ void WorldImpl::stepEntity(Entity& e) {
   bool kept = keepsRest(e);
   // Held by an entity that has not stepped this frame: that one steps first, as it does for the
   // rest test below (moving, it wakes this one, which is then tested where it is now).
-  const bool holderWaits = std::any_of(e.restHolders.begin(), e.restHolders.end(), [&](uint32_t s) {
-    const Entity* o = slots[s].entity.get();
-    return o && !steppedThisFrame(*o);
-  });
-  if (kept && holderWaits && stepHoldersFirst(e, e.restContacts, e.velocityQ16, true)) {
+  auto holderWaits = [&] {
+    return std::any_of(e.restHolders.begin(), e.restHolders.end(), [&](uint32_t s) {
+      const Entity* o = slots[s].entity.get();
+      return o && !steppedThisFrame(*o);
+    });
+  };
+  if (kept && holderWaits() && stepHoldersFirst(e, e.restContacts, e.velocityQ16, true)) {
     if (e.awaiting.takenOver) return;
     kept = keepsRest(e);
   }

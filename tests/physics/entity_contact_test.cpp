@@ -1,5 +1,6 @@
 // Entities meeting entities: overlap events (pickups, hazards, enemies), solid contact (crates a
 // player pushes, crates resting on crates), filters, and the invariant extended to solid pairs.
+#include <array>
 #include <map>
 #include <random>
 
@@ -281,6 +282,15 @@ Convex uprightCrate(std::mt19937_64& r) {
   return Convex(convexHull(points));
 }
 
+// The orders a scene's n bodies are made in: forward, backward and shuffled.
+std::array<std::vector<size_t>, 3> handleOrders(size_t n, std::mt19937_64& r) {
+  std::vector<size_t> forward(n);
+  for (size_t k = 0; k < n; ++k) forward[k] = k;
+  std::vector<size_t> shuffled = forward;
+  std::shuffle(shuffled.begin(), shuffled.end(), r);
+  return {forward, std::vector<size_t>(forward.rbegin(), forward.rend()), shuffled};
+}
+
 // A push chain meets every entity where that entity is this frame, whatever the handles' order: an
 // entity a move meets (or a moving body's rest test finds holding it) that has not stepped yet steps
 // first. Random families: a player walking into a row of none to four crates (boxes and random
@@ -343,11 +353,7 @@ TEST(EntitySolids, AChainSeesItsNeighboursWhereTheyAreThisFrameWhateverTheirHand
       }
       return path;
     };
-    std::vector<size_t> forward(bodies.size()), backward, shuffled;
-    for (size_t k = 0; k < bodies.size(); ++k) forward[k] = k;
-    backward.assign(forward.rbegin(), forward.rend());
-    shuffled = forward;
-    std::shuffle(shuffled.begin(), shuffled.end(), r);
+    const auto [forward, backward, shuffled] = handleOrders(bodies.size(), r);
     const auto a = run(forward), b = run(backward), c = run(shuffled);
     for (size_t f = 0; f < a.size(); ++f) {
       ASSERT_EQ(a[f], b[f]) << "trial " << trial << " (seed " << seed << "), frame " << f << ": forward vs backward";
@@ -465,11 +471,7 @@ TEST(EntitySolids, ABodyHeldByAnotherThatMovesAwayMovesInTheSameFrameWhateverThe
       }
       return path;
     };
-    std::vector<size_t> forward(bodies.size()), backward, shuffled;
-    for (size_t k = 0; k < bodies.size(); ++k) forward[k] = k;
-    backward.assign(forward.rbegin(), forward.rend());
-    shuffled = forward;
-    std::shuffle(shuffled.begin(), shuffled.end(), r);
+    const auto [forward, backward, shuffled] = handleOrders(bodies.size(), r);
     const auto a = run(forward, World::RestMode::Kept), b = run(backward, World::RestMode::Kept),
                c = run(shuffled, World::RestMode::Kept), d = run(backward, World::RestMode::Tested);
     for (size_t f = 0; f < a.size(); ++f) {
