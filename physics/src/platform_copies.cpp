@@ -161,9 +161,10 @@ std::optional<WorldImpl::PlatformHit> WorldImpl::updatePlatformCopies(uint32_t s
 // A body met where the platform's own lines are (platformMeets) has its copies on the faces beyond
 // rounded in their own frames, as the platform's copies are: the two roundings can leave one of its
 // copies a unit into a copy line. Such a copy is lifted off it, as a copy is off any line it meets by
-// rounding (it may sit up to three units off its exact place); an anchor there is pushed off it. So
-// is a body the platform has come to meet there since (it left the platform's own part) still in
-// one of the copy's lines.
+// rounding (it may sit up to three units off its exact place); an anchor there is pushed off it, by
+// as deep as it is in. So is a body the platform has come to meet there since (it left the
+// platform's own part: pushed, or carried, through a vertex, where its instances' places disagree
+// by more than rounding) still in one of the copy's lines.
 void WorldImpl::clearPlatformCopies(uint32_t slot) {
   std::vector<std::pair<uint32_t, MapPartId>> near;
   for (const PlatformCopy& c : platforms[slot].copies)
@@ -182,8 +183,8 @@ void WorldImpl::clearPlatformCopies(uint32_t slot) {
       const Vec2w away = normalTowards(verts, l.segment);
       if (inst != &e.instances[0]) {
         liftCopy(e, *inst, away, {});
-      } else {
-        const Vec2w by = stepAlong(away, 2);
+      } else {  // pushed out of the line's side, by as deep as it is in (and a unit)
+        const Vec2w by = stepAlong(away, depthBehind(verts, l.segment, away) + 1);
         push(e, inst->frame == 0 ? by : rotateWideInverse(inst->rotation, by));
       }
       reindex(e);

@@ -666,8 +666,8 @@ Vec2w turnPush(const Segment& from, const Segment& to, Vec2w centre, std::span<c
 // the sweep, then what rounding left). A push can move a body already passed (a chain of pushable
 // bodies), so passes go on until one pushes nothing: then every body is clear. A body that cannot
 // be cleared stops the sub-step. In a copy's part, only the bodies the platform meets there
-// (platformMeets).
-bool WorldImpl::clearTurn(uint32_t slot, const TurnPlace& at, uint32_t& blocker, bool& pushedAny) {
+// (platformMeets). Not `pushing`, the first body swept over stops it.
+bool WorldImpl::clearTurn(uint32_t slot, const TurnPlace& at, uint32_t& blocker, bool& pushedAny, bool pushing) {
   const TurnSweep sweep = sweepOfTurn(at);
   std::vector<Vec2> verts;
   for (int pass = 0; pass < 4; ++pass) {
@@ -686,6 +686,10 @@ bool WorldImpl::clearTurn(uint32_t slot, const TurnPlace& at, uint32_t& blocker,
         worldVertices(*inst, verts);
         const size_t k = lineSweepingOver(at, sweep, verts, platforms[slot].work);
         if (k == at.to.size()) break;
+        if (!pushing) {
+          blocker = s;
+          return false;
+        }
         const Vec2w by = turnPush((*at.from)[k].segment, at.to[k].segment, wide(inst->position) + wide(inst->centre),
                                   verts, attempt > 0);
         if (attempt == 3 || pass == 3 || !push(e, inst->frame == 0 ? by : rotateWideInverse(inst->rotation, by))) {
@@ -727,13 +731,15 @@ Angle WorldImpl::turnPlatform(uint32_t slot) {
     }
     // A body pushed in one place can come to be met in another (pushed from the copy's part into
     // the platform's own, where that was cleared already): the places are gone over again until a
-    // round pushes nothing.
+    // round pushes nothing. Rounds that keep pushing (a body beside a vertex, where its instances'
+    // places disagree, pushed out of one place into the other and back) end in a round that only
+    // looks: a body still swept over stops the turn there.
     uint32_t blocker = 0;
     std::optional<MapPartId> stopped;
-    for (int round = 0; round < 3 && !stopped; ++round) {
+    for (int round = 0; round < 4 && !stopped; ++round) {
       bool pushed = false;
       for (const TurnPlace& at : places)
-        if (!stopped && !clearTurn(slot, at, blocker, pushed)) stopped = at.part;
+        if (!stopped && !clearTurn(slot, at, blocker, pushed, round < 3)) stopped = at.part;
       if (!pushed) break;
     }
     if (stopped) {
@@ -762,7 +768,8 @@ Angle WorldImpl::turnPlatform(uint32_t slot) {
 // One platform's frame: its copies on the faces beside it that this frame's motion reaches (one
 // that cannot be placed stops it), then who stands on it; move it as far as its motion goes or until
 // a push is impossible, turn it as far as its spin goes or until a push is impossible, then carry
-// those standing on it as if fixed to it (less what it pushed them); wholly beyond an edge, it
+// those standing on it as if fixed to it (less what it pushed them), then clear its copies' lines
+// of what all that left in them (a rider carried through a vertex too); wholly beyond an edge, it
 // belongs to the face beyond.
 void WorldImpl::movePlatforms() {
   for (uint32_t slot = 0; slot < platforms.size(); ++slot) {
@@ -774,8 +781,8 @@ void WorldImpl::movePlatforms() {
     const std::vector<Rider> riders = ridersOf(slot);
     const Vec2w moved = motion == Vec2w{} || unplaced ? Vec2w{} : advancePlatform(slot, motion);
     const Angle turned = platforms[slot].spin == 0 ? 0 : turnPlatform(slot);
-    clearPlatformCopies(slot);
     carryRiders(slot, riders, moved, turned);
+    clearPlatformCopies(slot);
     crossPlatform(slot);
   }
 }

@@ -93,4 +93,14 @@ inline Vec2w normalTowards(std::span<const Vec2> verts, Segment s) {
   return side >= 0 ? Vec2w{-d.y, d.x} : Vec2w{d.y, -d.x};
 }
 
+// How far (whole units, rounded up) the vertices reach behind the line through `s`, seen from its
+// side `normal` points to (none when all are on that side).
+inline int64_t depthBehind(std::span<const Vec2> verts, Segment s, Vec2w normal) {
+  const Vec2w n = shortDirection(normal);
+  const int64_t length = static_cast<int64_t>(isqrt(static_cast<u128>(i128{n.x} * n.x + i128{n.y} * n.y)));
+  i128 deepest = 0;
+  for (const Vec2 v : verts) deepest = std::max(deepest, -dot128(v - s.a, n));
+  return length == 0 ? 0 : static_cast<int64_t>((deepest + length - 1) / length);
+}
+
 }  // namespace platon::physics

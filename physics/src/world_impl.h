@@ -316,7 +316,7 @@ struct WorldImpl {
     std::vector<PlatformLine> to;
     Vec2w pivot;
   };
-  bool clearTurn(uint32_t slot, const TurnPlace& at, uint32_t& blocker, bool& pushedAny);
+  bool clearTurn(uint32_t slot, const TurnPlace& at, uint32_t& blocker, bool& pushedAny, bool pushing);
   // A platform's lines (or a point) in its part, placed through the warp of its part's warp line
   // `edge`: false (nothing) where an end falls beyond the coordinate range there.
   bool linesThrough(const Platform& pl, LineIndex edge, std::vector<PlatformLine>& lines) const;
