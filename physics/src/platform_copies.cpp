@@ -4,6 +4,7 @@
 
 #include "bounds.h"
 #include "faces.h"
+#include "platon/physics/sweep.h"
 #include "projection.h"
 #include "world_impl.h"
 
@@ -52,6 +53,17 @@ std::optional<EdgeReach> reachOver(std::span<const Vec2w> now, std::span<const V
   // its end, had no copy anywhere and never crossed).
   if (least > margin || (least >= 0 && (alongHigh < -margin || alongLow > dot128(d, d) + margin))) return std::nullopt;
   return after;
+}
+
+// How far (whole units, rounded up) the polygon goes along `away` before it is out of the segment:
+// where its way out of the line through `s` (as deep as its vertices are behind that line) leaves
+// the segment. Only as far as the segment is in it: an end of the line poking into a body a unit
+// or two is left by that much, however deep the line through it would cut.
+int64_t unitsOutOf(std::span<const Vec2> verts, Segment s, Vec2w away) {
+  const int64_t deepest = depthBehind(verts, s, away) + 1;
+  const Sweep way = sweep(verts, stepAlong(away, deepest), s);
+  if (way.empty || !way.hasExit || way.exit >= Fraction::one()) return deepest;
+  return std::max<int64_t>(0, static_cast<int64_t>(ceilDiv(i128{way.exit.num} * deepest, way.exit.den)));
 }
 
 // Whether every line is wholly beyond the warp edge `seg`.
@@ -161,8 +173,8 @@ std::optional<WorldImpl::PlatformHit> WorldImpl::updatePlatformCopies(uint32_t s
 // A body met where the platform's own lines are (platformMeets) has its copies on the faces beyond
 // rounded in their own frames, as the platform's copies are: the two roundings can leave one of its
 // copies a unit into a copy line. Such a copy is lifted off it, as a copy is off any line it meets by
-// rounding (it may sit up to three units off its exact place); an anchor there is pushed off it, by
-// as deep as it is in. So is a body the platform has come to meet there since (it left the
+// rounding (it may sit up to three units off its exact place); an anchor there is pushed off it, as
+// far as it takes. So is a body the platform has come to meet there since (it left the
 // platform's own part: pushed, or carried, through a vertex, where its instances' places disagree
 // by more than rounding) still in one of the copy's lines.
 void WorldImpl::clearPlatformCopies(uint32_t slot) {
@@ -183,8 +195,8 @@ void WorldImpl::clearPlatformCopies(uint32_t slot) {
       const Vec2w away = normalTowards(verts, l.segment);
       if (inst != &e.instances[0]) {
         liftCopy(e, *inst, away, {});
-      } else {  // pushed out of the line's side, by as deep as it is in (and a unit)
-        const Vec2w by = stepAlong(away, depthBehind(verts, l.segment, away) + 1);
+      } else {  // pushed out of the line's side, as far as it takes (and a unit)
+        const Vec2w by = stepAlong(away, unitsOutOf(verts, l.segment, away) + 1);
         push(e, inst->frame == 0 ? by : rotateWideInverse(inst->rotation, by));
       }
       reindex(e);

@@ -768,9 +768,9 @@ Angle WorldImpl::turnPlatform(uint32_t slot) {
 // One platform's frame: its copies on the faces beside it that this frame's motion reaches (one
 // that cannot be placed stops it), then who stands on it; move it as far as its motion goes or until
 // a push is impossible, turn it as far as its spin goes or until a push is impossible, then carry
-// those standing on it as if fixed to it (less what it pushed them), then clear its copies' lines
-// of what all that left in them (a rider carried through a vertex too); wholly beyond an edge, it
-// belongs to the face beyond.
+// those standing on it as if fixed to it (less what it pushed them), clearing its copies' lines of
+// what the moves left in them before and after the carry (a rider carried through a vertex can
+// land in one); wholly beyond an edge, it belongs to the face beyond.
 void WorldImpl::movePlatforms() {
   for (uint32_t slot = 0; slot < platforms.size(); ++slot) {
     platforms[slot].work = 0;
@@ -781,6 +781,7 @@ void WorldImpl::movePlatforms() {
     const std::vector<Rider> riders = ridersOf(slot);
     const Vec2w moved = motion == Vec2w{} || unplaced ? Vec2w{} : advancePlatform(slot, motion);
     const Angle turned = platforms[slot].spin == 0 ? 0 : turnPlatform(slot);
+    clearPlatformCopies(slot);
     carryRiders(slot, riders, moved, turned);
     clearPlatformCopies(slot);
     crossPlatform(slot);

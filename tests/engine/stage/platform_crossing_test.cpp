@@ -354,6 +354,30 @@ TEST(PlatformCrossing, ABodySweptFromTheFaceBeyondIntoThePlatformsOwnPartIsClear
 // onto the plank (the same way on both sides of the edge, as a level's gravity does), the others not
 // at all. The box rides it over the edge, never overlapping it and never crushed, and stands on it
 // on the face beyond as it did before.
+// An audit's case: a line driven at (-29, -31) a frame towards a resting triangle whose copy is
+// beyond an edge of an octahedron; the copy's line pokes a few units into the triangle's anchor
+// there. Pushed out as deep as the line through the segment cuts it, the triangle was shoved into
+// the face beyond and met there inside the copy's line; pushed only as far as the segment takes, it
+// is pushed along at home.
+TEST(PlatformCrossing, ALineEndPokingIntoABodyPushesItOutOnlyAsFarAsTheSegmentTakes) {
+  stage::Stage st = stage::platonicStage(stage::kSolids[2], 988);
+  physics::World w;
+  stage::addStageToWorld(st, w, 0);
+  for (size_t f = 0; f < st.faceCount(); ++f) w.mapPart(st.part(f)).initialize();
+  CountCrushes rules;
+  w.setRules(&rules);
+  const physics::PlatformLine line{{{168, 52}, {111, 28}}};
+  const physics::PlatformId id = w.createPlatform(st.part(7), std::span(&line, 1));
+  const physics::EntityId e = w.createEntity(physics::Convex({{-14, -23}, {27, 0}, {-13, 23}}));
+  w.insert(e, st.part(7), {98, 19}, 3579012531u);
+  w.setPlatformMotion(id, {-29, -31});
+  for (int frame = 0; frame < 4; ++frame) {
+    w.solve();
+    ASSERT_EQ(overlaps(w, id), "") << "frame " << frame;
+    ASSERT_EQ(w.countOverlaps(), 0u) << "frame " << frame;
+  }
+}
+
 TEST(PlatformCrossing, APlankCarriesItsRiderOverEveryEdge) {
   constexpr int64_t kPull = 20000;  // Q16 units a frame, about 0.3 units a frame squared
   int runs = 0;
