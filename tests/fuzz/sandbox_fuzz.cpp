@@ -319,7 +319,7 @@ bool byTheClock(const std::string& error) {
 
 struct Run {
   std::vector<std::string> trace;  // per frame: the error (if any) and the world's state hash
-  bool deadline = false;           // a stop by the deadline
+  bool deadline = false;           // a stop by the clock (byTheClock)
   // The first entry of the trace with a stop by the memory limit (or the trace's size): where the
   // Lua state's memory reaches a limit may differ between two runs (LuaJIT seeds its string hashes
   // per state, and tables resize, and the collector runs, at other moments; docs/scripting.md,
