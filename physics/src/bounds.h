@@ -32,8 +32,12 @@ inline bool outside(const Segment& s, const Box& b) {
 }
 
 // Constraints that keep every vertex inside the coordinate range, in the sweep's form: moving by D
-// stays inside while slack - dot(c, D) >= 0.
-inline void boundConstraints(std::span<const Vec2> verts, Constraint out[4]) {
+// stays inside while slack - dot(c, D) >= 0. Only those a move within `swept` (the box it sweeps)
+// can meet: none while that box stays inside the range (a constraint stops a move only past it).
+inline std::span<const Constraint> boundConstraints(std::span<const Vec2> verts, const Box& swept,
+                                                    Constraint (&out)[4]) {
+  if (swept.x0 >= -kCoordLimit && swept.y0 >= -kCoordLimit && swept.x1 <= kCoordLimit && swept.y1 <= kCoordLimit)
+    return {};
   int64_t x0 = INT64_MAX, x1 = INT64_MIN, y0 = INT64_MAX, y1 = INT64_MIN;
   for (const Vec2 v : verts) {
     x0 = std::min<int64_t>(x0, v.x), x1 = std::max<int64_t>(x1, v.x);
@@ -43,6 +47,7 @@ inline void boundConstraints(std::span<const Vec2> verts, Constraint out[4]) {
   out[1] = {x0 + kCoordLimit, {-1, 0}};
   out[2] = {kCoordLimit - y1, {0, 1}};
   out[3] = {y0 + kCoordLimit, {0, -1}};
+  return out;
 }
 
 // Every vertex on or left of the directed segment's line: wholly on a one-way line's front.

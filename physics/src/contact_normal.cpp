@@ -105,9 +105,10 @@ bool OpenDirections::open(Vec2w d) const {
 bool OpenDirections::cannotMove(Vec2w w) const {
   if (w == Vec2w{}) return true;
   if (open(w)) return false;
+  const bool oneLine = groupEnds_.size() == 1;  // then along any of its normals is open past it
   for (const Vec2w n : normals_)
     for (const Vec2w r : {Vec2w{-n.y, n.x}, Vec2w{n.y, -n.x}})
-      if (dot128(r, w) > 0 && open(r)) return false;
+      if (dot128(r, w) > 0 && (oneLine || open(r))) return false;
   return true;
 }
 
@@ -137,11 +138,16 @@ int OpenDirections::slideNormal(Vec2w w) const {
   // factors below 2^63, so the products fit in 128 bits). Ties keep the earlier normal.
   int best = -1;
   u128 bestCross = 0, bestDot = 1;
+  // One line: a direction along one of its normals is open past it (dot 0 with that normal).
+  const bool oneLine = groupEnds_.size() == 1;
   for (size_t k = 0; k < normals_.size(); ++k) {
     const Vec2w n = normals_[k];
+    // The same direction as the one before (a body's side on the line: the line's normal and the
+    // side's): its edges are the same directions scaled, never better (ties keep the earlier).
+    if (k > 0 && cross128(normals_[k - 1], n) == 0 && dot128(normals_[k - 1], n) > 0) continue;
     for (const Vec2w r : {Vec2w{-n.y, n.x}, Vec2w{n.y, -n.x}}) {
       const i128 along = dot128(r, w);
-      if (along <= 0 || !open(r)) continue;
+      if (along <= 0 || (!oneLine && !open(r))) continue;
       const i128 across = cross128(r, w);
       const u128 a = static_cast<u128>(across < 0 ? -across : across), d = static_cast<u128>(along);
       if (best < 0 || a * bestDot < bestCross * d) best = static_cast<int>(k), bestCross = a, bestDot = d;

@@ -67,6 +67,14 @@ inline Vec2 centreOf(const Instance& inst) {
   return {inst.position.x + inst.centre.x, inst.position.y + inst.centre.y};
 }
 
+// The box swept by the instance moving by m: sweptBox of its vertices, from the box it keeps.
+inline Box sweptBox(const Instance& inst, Vec2w m) {
+  return {int64_t{inst.position.x} + inst.low.x + std::min<int64_t>(m.x, 0),
+          int64_t{inst.position.y} + inst.low.y + std::min<int64_t>(m.y, 0),
+          int64_t{inst.position.x} + inst.high.x + std::max<int64_t>(m.x, 0),
+          int64_t{inst.position.y} + inst.high.y + std::max<int64_t>(m.y, 0)};
+}
+
 // Whether the instance's bounding box meets the closed box [x0, x1] x [y0, y1].
 template <class B>
 inline bool boxMeets(const Instance& inst, const B& box) {
@@ -86,9 +94,12 @@ struct WarpLink {
 
 // The instance's vertices in its part's coordinates.
 inline void worldVertices(const Instance& inst, std::vector<Vec2>& out) {
-  out.resize(inst.shape.size());
-  for (size_t i = 0; i < inst.shape.size(); ++i)
-    out[i] = {inst.position.x + inst.shape[i].x, inst.position.y + inst.shape[i].y};
+  const size_t n = inst.shape.size();
+  out.resize(n);
+  const Vec2* shape = inst.shape.data();  // read once: `out` could alias them as far as the compiler knows
+  Vec2* to = out.data();
+  const Vec2 at = inst.position;
+  for (size_t i = 0; i < n; ++i) to[i] = {at.x + shape[i].x, at.y + shape[i].y};
 }
 inline std::vector<Vec2> worldVertices(const Instance& inst) {
   std::vector<Vec2> out;

@@ -53,6 +53,8 @@ void EntityIndex::update(const Entity& e) {
   const uint32_t slot = e.id.index;
   if (slot >= filed_.size()) filed_.resize(slot + 1), stamp_.resize(slot + 1, 0);
   std::vector<Filed>& was = filed_[slot];
+  // The usual case, one instance still in the same cells, costs one filing and a comparison.
+  if (was.size() == 1 && e.instances.size() == 1 && fileFor(e.instances[0]) == was[0]) return;
   if (was.empty() && !e.instances.empty()) ++entities_;
   now_.clear();
   for (const Instance& inst : e.instances) now_.push_back(fileFor(inst));

@@ -66,26 +66,14 @@ CellRect Grid::cellsCovering(const Box& box) const {
   return {columnOf(box.x0), rowOf(box.y0), columnOf(box.x1), rowOf(box.y1)};
 }
 
-int Grid::Axis::cellNear(int64_t v, int hint) const {
-  const int n = static_cast<int>(cuts.size());
-  if (hint < 0 || hint >= n) return cellOf(v);
-  for (int step = 0; step < 3; ++step) {
-    if (hint > 0 && v < cuts[hint]) {
-      --hint;
-    } else if (hint + 1 < n && v >= cuts[hint + 1]) {
-      ++hint;
-    } else {
-      return hint;
-    }
+void Grid::cellRanges(const CellRect& r, Box& from, Box& to) const {
+  if (cellLines_.empty()) {  // no lines: every box covers no cells
+    from = {INT64_MIN, INT64_MIN, INT64_MIN, INT64_MIN};
+    to = {INT64_MAX, INT64_MAX, INT64_MAX, INT64_MAX};
+    return;
   }
-  return cellOf(v);
-}
-
-CellRect Grid::cellsCovering(const Box& box, const CellRect& near) const {
-  if (cellLines_.empty()) return {};
-  if (near.empty()) return cellsCovering(box);
-  return {xAxis_.cellNear(box.x0, near.x0), yAxis_.cellNear(box.y0, near.y0), xAxis_.cellNear(box.x1, near.x1),
-          yAxis_.cellNear(box.y1, near.y1)};
+  from = {xAxis_.low(r.x0), yAxis_.low(r.y0), xAxis_.low(r.x1), yAxis_.low(r.y1)};
+  to = {xAxis_.high(r.x0), yAxis_.high(r.y0), xAxis_.high(r.x1), yAxis_.high(r.y1)};
 }
 
 // Visits every cell a segment passes through (a superset near cell corners is harmless). `span` is

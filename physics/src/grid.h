@@ -41,8 +41,17 @@ class Grid {
   // Cells whose area meets the closed box (clamped to the grid; cells on the border extend outwards).
   CellRect cellsCovering(const Box& box) const;
   // The same, searching outwards from `near` first: a moving entity's rectangle shifts by a cell
-  // or two per frame, so this is a few comparisons instead of four binary searches.
-  CellRect cellsCovering(const Box& box, const CellRect& near) const;
+  // or two per frame, so this is a few comparisons instead of four binary searches. (Inline: every
+  // sub-move of every body asks it.)
+  CellRect cellsCovering(const Box& box, const CellRect& near) const {
+    if (cellLines_.empty()) return {};
+    if (near.empty()) return cellsCovering(box);
+    return {xAxis_.cellNear(box.x0, near.x0), yAxis_.cellNear(box.y0, near.y0), xAxis_.cellNear(box.x1, near.x1),
+            yAxis_.cellNear(box.y1, near.y1)};
+  }
+  // For each corner of a box whose cells are `r` (as cellsCovering gives them), the coordinates
+  // that fall in the same cell: from <= coordinate < to, per corner (x0, y0, x1, y1).
+  void cellRanges(const CellRect& r, Box& from, Box& to) const;
   std::span<const uint32_t> cell(int column, int row) const {
     const size_t c = static_cast<size_t>(row) * xAxis_.cuts.size() + column;
     return {cellLines_.data() + cellStart_[c], cellLines_.data() + cellStart_[c + 1]};
@@ -60,7 +69,25 @@ class Grid {
     int shift = 0;
     void index();
     int cellOf(int64_t v) const;
-    int cellNear(int64_t v, int hint) const;  // looks beside `hint` first
+    // The coordinates in cell i: [low, high), the end cells reaching to infinity.
+    int64_t low(int i) const { return i <= 0 ? INT64_MIN : cuts[static_cast<size_t>(i)]; }
+    int64_t high(int i) const {
+      return i + 1 >= static_cast<int>(cuts.size()) ? INT64_MAX : cuts[static_cast<size_t>(i) + 1];
+    }
+    int cellNear(int64_t v, int hint) const {  // looks beside `hint` first
+      const int n = static_cast<int>(cuts.size());
+      if (hint < 0 || hint >= n) return cellOf(v);
+      for (int step = 0; step < 3; ++step) {
+        if (hint > 0 && v < cuts[hint]) {
+          --hint;
+        } else if (hint + 1 < n && v >= cuts[hint + 1]) {
+          ++hint;
+        } else {
+          return hint;
+        }
+      }
+      return cellOf(v);
+    }
     size_t bytes() const { return cuts.capacity() * 4 + first.capacity() * 4; }
   };
   int columnOf(int64_t x) const { return xAxis_.cellOf(x); }

@@ -31,12 +31,11 @@ Contact WorldImpl::makeContact(const Entity& e, MapPartId partId, LineIndex line
   return c;
 }
 
-void WorldImpl::updatePierceState(Entity& e, const Path& path) {
+void WorldImpl::firePierceEvents(Entity& e, const Path& path) {
   std::vector<PathEvent> events;
   for (size_t i = 0; i < e.instances.size(); ++i) {
     Instance& inst = e.instances[i];
-    // Nothing pierceable near the path and nothing overlapped: no event is possible.
-    if (i < path.pierceNear.size() && !path.pierceNear[i] && inst.overlapping.empty()) continue;
+    if (pierceQuiet(e, path, i)) continue;
     const MapPart& p = part(inst.part);
     std::vector<Vec2>& now = scratch.now;
     worldVertices(inst, now);

@@ -24,7 +24,7 @@ Instance WorldImpl::makeInstance(const Entity& e, MapPartId partId, Vec2 positio
   return inst;
 }
 
-bool WorldImpl::isPierceable(const Entity& e, Instance& inst, size_t k) {
+bool WorldImpl::askPierceable(const Entity& e, Instance& inst, size_t k) {
   uint8_t& flag = inst.region.flags()[k];
   if (flag == 0) {
     const MapPart& p = part(inst.part);
@@ -43,28 +43,6 @@ bool WorldImpl::isPierceable(const Entity& e, Instance& inst, size_t k) {
     if (std::find(inst.blockedWarps.begin(), inst.blockedWarps.end(), index) != inst.blockedWarps.end()) return false;
   }
   return flag == 2;
-}
-
-bool WorldImpl::blocks(const Entity& e, Instance& inst, size_t k, std::span<const Vec2> verts) {
-  if (isPierceable(e, inst, k)) return false;
-  const MapPart& p = part(inst.part);
-  const LineIndex index = inst.region.lines()[k];
-  return p.lines()[index].kind != LineKind::OneWay || wholyInFront(verts, p.segments()[index]);
-}
-
-void WorldImpl::coverMotion(Instance& inst, Vec2w motion, int64_t slack) {
-  const int64_t px = inst.position.x, py = inst.position.y;
-  coverBox(inst, {px + inst.low.x + std::min<int64_t>(motion.x, 0) - slack,
-                  py + inst.low.y + std::min<int64_t>(motion.y, 0) - slack,
-                  px + inst.high.x + std::max<int64_t>(motion.x, 0) + slack,
-                  py + inst.high.y + std::max<int64_t>(motion.y, 0) + slack});
-}
-
-void WorldImpl::coverBox(Instance& inst, Box b) {
-  // One unit of margin: points on the box edge round into the next cell's range.
-  b.x0 -= 1, b.y0 -= 1, b.x1 += 1, b.y1 += 1;
-  const Grid& grid = part(inst.part).grid();
-  inst.region.update(grid, grid.cellsCovering(b, inst.region.rect()));
 }
 
 std::optional<LineIndex> WorldImpl::solidOverlap(const Entity& e, Instance& inst, std::span<const Vec2> verts) {
@@ -98,8 +76,7 @@ Fraction WorldImpl::firstBlock(const Entity& e, Instance& inst, std::span<const 
     if (s.hitsWithinFrame() && s.enter < first) first = s.enter;
   }
   Constraint bounds[4];
-  boundConstraints(verts, bounds);
-  for (const Constraint& c : bounds) {
+  for (const Constraint& c : boundConstraints(verts, box, bounds)) {
     const int64_t rate = dot(c.c, step);
     if (rate > 0 && Fraction{c.slack, rate} < first) first = Fraction{c.slack, rate};
   }

@@ -7,6 +7,7 @@ inline size_t hashLine(uint32_t line, size_t mask) { return (size_t{line} * 2654
 
 void Region::clear() {
   rect_ = {};
+  grid_ = nullptr;
   lines_.clear();
   flags_.clear();
   table_.clear();
@@ -92,6 +93,10 @@ void Region::removeCell(const Grid& grid, int x, int y) {
 }
 
 void Region::update(const Grid& grid, const CellRect& want) {
+  if (grid_ != &grid || want != rect_) {
+    grid_ = &grid;
+    grid.cellRanges(want, from_, to_);
+  }
   if (want == rect_) return;
   const CellRect old = rect_;
   if (!old.empty()) {

@@ -14,6 +14,13 @@ class Region {
   // Moves the rectangle to `want`, visiting only the cells that change.
   void update(const Grid& grid, const CellRect& want);
   void clear();
+  // Whether every corner of `box` lies in the cell of `grid` the rectangle's corner has: then the
+  // box covers the same cells, and updating to it would change nothing. (Four pairs of
+  // comparisons where finding the cells takes four searches: every sub-move asks.)
+  bool keeps(const Grid& grid, const Box& box) const {
+    return grid_ == &grid && box.x0 >= from_.x0 && box.x0 < to_.x0 && box.y0 >= from_.y0 && box.y0 < to_.y0 &&
+           box.x1 >= from_.x1 && box.x1 < to_.x1 && box.y1 >= from_.y1 && box.y1 < to_.y1;
+  }
 
   const CellRect& rect() const { return rect_; }
   // Lines in the region, in the order they entered; each appears once.
@@ -32,6 +39,8 @@ class Region {
   void grow();
 
   CellRect rect_;
+  const Grid* grid_ = nullptr;  // the grid rect_ is in; null: none yet
+  Box from_{}, to_{};           // per corner of a box, the range of its cell in rect_ (see keeps)
   std::vector<uint32_t> lines_;
   std::vector<uint8_t> flags_;
   // Open addressing, linear probing: key line + 1 (0 = empty), value = covering-cell count,

@@ -66,20 +66,22 @@ bool copiesSettled(const Entity& e) {
   return true;
 }
 
-// Whether `point` is within three units of a warp line near the instance: a line ending there is
-// cut by a face edge and continues on the next face (a seam).
-bool nearWarpLine(WorldImpl& w, const Entity& e, Instance& inst, Vec2 point) {
+// Whether an end of `seg` is within three units of a warp line near the instance: a line ending
+// there is cut by a face edge and continues on the next face (a seam).
+bool endNearWarpLine(WorldImpl& w, Instance& inst, const Segment& seg) {
   const MapPart& part = w.part(inst.part);
   const auto lines = inst.region.lines();
   for (size_t k = 0; k < lines.size(); ++k) {
     if (part.lines()[lines[k]].kind != LineKind::Warp) continue;
     const Segment s = part.segments()[lines[k]];
-    const Vec2w d = s.b - s.a, pa = point - s.a, pb = point - s.b;
-    if (dot128(pa, pa) <= 9 || dot128(pb, pb) <= 9) return true;
-    const i128 along = dot128(pa, d), across = cross128(d, pa);
-    if (along >= 0 && along <= dot128(d, d) && across * across <= 9 * dot128(d, d)) return true;
+    const Vec2w d = s.b - s.a;
+    for (const Vec2 point : {seg.a, seg.b}) {
+      const Vec2w pa = point - s.a, pb = point - s.b;
+      if (dot128(pa, pa) <= 9 || dot128(pb, pb) <= 9) return true;
+      const i128 along = dot128(pa, d), across = cross128(d, pa);
+      if (along >= 0 && along <= dot128(d, d) && across * across <= 9 * dot128(d, d)) return true;
+    }
   }
-  (void)e;
   return false;
 }
 
@@ -127,7 +129,7 @@ class SubMove {
       Instance& inst = e_.instances[i];
       const MapPart& part = w_.part(inst.part);
       const auto lines = inst.region.lines();
-      const Box box = sweptBox(verts_[i], moves_[i]);
+      const Box box = sweptBox(inst, moves_[i]);  // verts_[i] are where the instance is
       tested += static_cast<uint32_t>(lines.size());
       for (size_t k = 0; k < lines.size(); ++k) {
         const Segment& seg = part.segments()[lines[k]];
@@ -154,8 +156,7 @@ class SubMove {
         if (hit_.improvedBy(s.enter, kind, i, lines[k])) hit_ = {kind, s.enter, i, lines[k], s, s.enterAxis};
       }
       Constraint bounds[4];
-      boundConstraints(verts_[i], bounds);
-      for (const Constraint& c : bounds) {
+      for (const Constraint& c : boundConstraints(verts_[i], box, bounds)) {
         const int64_t rate = dot(c.c, moves_[i]);
         if (rate <= 0 || rate <= c.slack) continue;  // not reached within the frame (t = slack / rate >= 1)
         const Fraction when{c.slack, rate};
@@ -195,7 +196,7 @@ class SubMove {
     Instance& inst = e_.instances[i];
     const MapPart& part = w_.part(inst.part);
     const auto lines = inst.region.lines();
-    const Box box = sweptBox(verts_[i], moves_[i]);
+    const Box box = sweptBox(inst, moves_[i]);  // where verts_[i] are: a lift that failed moved nothing
     // Each touching line's normals, found once; then added in line index order, so the choice never
     // depends on the region's order.
     std::vector<WorldImpl::TouchingLine>& touchingLines = w_.scratch.touchingLines;
@@ -291,7 +292,7 @@ class SubMove {
     } else {
       const Segment seg = w_.part(inst.part).segments()[hit_.line];
       const bool edgeOn = hit_.sweep.axis < static_cast<int>(verts_[i].size());  // a polygon edge met the end
-      if (i == 0 && !(edgeOn && (nearWarpLine(w_, e_, inst, seg.a) || nearWarpLine(w_, e_, inst, seg.b)))) return false;
+      if (i == 0 && !(edgeOn && endNearWarpLine(w_, inst, seg))) return false;
       liftAlong = normalTowards(verts_[i], seg);  // off the line, on the instance's side
       // Not into the line by more than about a degree (the turn between two faces comes from their
       // rounded edges, so a floor continued across them is off by a fraction of one): -dot / |a||b|
@@ -728,20 +729,18 @@ bool WorldImpl::restOnPartLines(Entity& e, Instance& inst, const std::vector<Vec
     // slide lifts them off (liftAtSeam); for rest, such a line counts by its own side only.
     const bool ownSide =
         std::any_of(normals.begin(), normals.end(), [&](Vec2w n) { return dot128(n, seg.b - seg.a) == 0; });
-    if (&inst != &e.instances[0] ||
-        (!ownSide && (nearWarpLine(*this, e, inst, seg.a) || nearWarpLine(*this, e, inst, seg.b)))) {
+    if (&inst != &e.instances[0] || (!ownSide && endNearWarpLine(*this, inst, seg))) {
       normals.assign(1, normalTowards(verts, seg));
     }
     const bool against = closeDirections(scratch.open, inst, normals, w);
     touching = touching || (nearness == Nearness::Touching && against);
-    e.contacts.push_back(makeContact(e, inst, lines[k], Fraction::zero(), reportedNormal(normals, seg), {}));
+    scratch.restContacts.push_back({inst.part, lines[k], reportedNormal(normals, seg), {}});
   }
   return touching;
 }
 
 // The same for the moving platforms' lines near it: they count as the part's own do.
-bool WorldImpl::restOnPlatformLines(Entity& e, Instance& inst, const std::vector<Vec2>& verts, const Box& box,
-                                    Vec2w w) {
+bool WorldImpl::restOnPlatformLines(Instance& inst, const std::vector<Vec2>& verts, const Box& box, Vec2w w) {
   std::vector<Vec2w>& normals = scratch.lineNormals;
   bool touching = false;
   forEachPlatformLine(inst.part, box, [&](const PlatformLine& l, LineIndex key) {
@@ -751,7 +750,7 @@ bool WorldImpl::restOnPlatformLines(Entity& e, Instance& inst, const std::vector
     if (nearness == Nearness::Apart) return;
     const bool against = closeDirections(scratch.open, inst, normals, w);
     touching = touching || (nearness == Nearness::Touching && against);
-    e.contacts.push_back(makeContact(e, inst, key, Fraction::zero(), reportedNormal(normals, l.segment), {}));
+    scratch.restContacts.push_back({inst.part, key, reportedNormal(normals, l.segment), {}});
   });
   return touching;
 }
@@ -773,9 +772,7 @@ bool WorldImpl::restOnEntities(Entity& e, Instance& inst, const std::vector<Vec2
     if (normals.empty()) return;
     const bool against = closeDirections(scratch.open, inst, normals, w);
     touching = touching || (nearness == Nearness::Touching && against);
-    Contact c = makeContact(e, inst, kNoLine, Fraction::zero(), normals[0], {});
-    c.other = o.id;
-    e.contacts.push_back(c);
+    scratch.restContacts.push_back({inst.part, kNoLine, normals[0], o.id});
   });
   return touching;
 }
@@ -787,20 +784,25 @@ bool WorldImpl::restsAgainstLines(Entity& e, Vec2w w) {
   OpenDirections& open = scratch.open;
   open.clear();
   e.contacts.clear();
+  scratch.restContacts.clear();
   bool touching = false;
   for (Instance& inst : e.instances) {
     coverMotion(inst, {}, 2);
     std::vector<Vec2>& verts = scratch.now;
     worldVertices(inst, verts);
-    Box box = sweptBox(verts, {});
+    Box box = sweptBox(inst, {});
     box.x0 -= 2, box.y0 -= 2, box.x1 += 2, box.y1 += 2;
     touching = restOnPartLines(e, inst, verts, box, w) || touching;
-    touching = restOnPlatformLines(e, inst, verts, box, w) || touching;
+    touching = restOnPlatformLines(inst, verts, box, w) || touching;
     touching = restOnEntities(e, inst, verts, box, w) || touching;
   }
   // Resting on a line, it touches it; wedged into a corner, it may be kept up to 1.5 units from
   // the lines by the whole-unit grid, and lines near it count only if they form a corner.
   if (!open.empty() && open.cannotMove(w) && (touching || open.wedges(w))) {
+    for (const auto& r : scratch.restContacts) {
+      e.contacts.push_back(makeContact(e, r.part, r.line, Fraction::zero(), r.normal, {}));
+      e.contacts.back().other = r.other;
+    }
     // Contacts in line order, then entities by slot: neither the region's nor the index's order is
     // part of the result.
     std::sort(e.contacts.begin(), e.contacts.end(), [](const Contact& a, const Contact& b) {

@@ -300,6 +300,7 @@ int64_t WorldImpl::placeByCorner(Entity& e, const CornerReturn& r) {
 // The anchor if its centre is on its face (or not on a face at all), else the copy whose centre
 // is least off its face (the first such); with `inPart`, the copy in that part if there is one.
 size_t WorldImpl::startCopy(const Entity& e, std::optional<MapPartId> inPart) const {
+  if (e.instances.size() == 1) return 0;  // the anchor, whichever way it is asked (most bodies)
   if (!inPart) {  // the common case first: the anchor's centre on its face (0 off: none is less)
     const MapPart& face = part(e.instances[0].part);
     const Vec2 c = centreOf(e.instances[0]);

@@ -104,8 +104,9 @@ bool WorldImpl::liftCopy(const Entity& e, Instance& copy, Vec2w direction, Vec2w
   return false;
 }
 
-void WorldImpl::createOverlappedWarps(Entity& e) {
+void WorldImpl::createWarpsOverlapped(Entity& e) {
   for (size_t i = 0; i < e.instances.size(); ++i) {
+    if (e.instances[i].overlapping.empty()) continue;
     const MapPart& p = part(e.instances[i].part);
     for (const LineIndex line : e.instances[i].overlapping) {
       if (p.lines()[line].kind != LineKind::Warp) continue;

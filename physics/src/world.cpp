@@ -61,6 +61,10 @@ MapPart& World::createMapPart(MapPartId id) {
   impl_->parts.push_back(MapPart(id));
   MapPart* created = &impl_->parts.back();
   index.insert(it, created);
+  if (id < WorldImpl::kPartsById) {
+    if (impl_->partById.size() <= id) impl_->partById.resize(id + 1, nullptr);
+    impl_->partById[id] = created;
+  }
   impl_->uncheckedWarps.push_back(created);
   return *created;
 }

@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "bounds.h"
 #include "contact_normal.h"
 #include "entity.h"
 #include "entity_index.h"
@@ -123,8 +124,11 @@ struct WorldImpl {
     uint32_t generation = 0;
   };
 
-  std::deque<MapPart> parts;             // stable addresses
-  std::vector<MapPart*> partIndex;       // sorted by id
+  std::deque<MapPart> parts;        // stable addresses
+  std::vector<MapPart*> partIndex;  // sorted by id
+  // Parts by id for ids below kPartsById (levels number their faces from 0): a read, not a search.
+  static constexpr MapPartId kPartsById = 4096;
+  std::vector<MapPart*> partById;        // null where no part has that id
   std::vector<MapPart*> uncheckedWarps;  // parts whose warp targets have not been checked yet
   std::vector<Slot> slots;
   std::vector<uint32_t> freeSlots;
@@ -183,12 +187,21 @@ struct WorldImpl {
     std::vector<TouchingLine> touchingLines;
     std::vector<Vec2w> lineNormals;
     std::vector<Contact> arrived;
+    // The rest test's contacts, made into Contacts only if it holds (most moving bodies are not).
+    struct RestContact {
+      MapPartId part;
+      LineIndex line;
+      Vec2w normal;
+      EntityId other;
+    };
+    std::vector<RestContact> restContacts;
     OpenDirections open;
   } scratch;
 
   // world.cpp
   // Inline: the slide asks for an instance's part many times a sub-move.
   const MapPart* findPart(MapPartId id) const {
+    if (id < partById.size()) return partById[id];
     auto it = std::lower_bound(partIndex.begin(), partIndex.end(), id,
                                [](const MapPart* p, MapPartId v) { return p->id() < v; });
     return it != partIndex.end() && (*it)->id() == id ? *it : nullptr;
@@ -350,15 +363,37 @@ struct WorldImpl {
 
   // placement.cpp
   Instance makeInstance(const Entity& e, MapPartId part, Vec2 position, Angle turn) const;
-  bool isPierceable(const Entity& e, Instance& inst, size_t regionIndex);
+  // Whether region line k lets the instance through. Inline: every sweep asks it of every line
+  // near, and the answer is almost always the one the region keeps.
+  bool isPierceable(const Entity& e, Instance& inst, size_t regionIndex) {
+    const uint8_t kept = inst.region.flags()[regionIndex];
+    if (kept == 1) return false;
+    if (kept == 2 && inst.blockedWarps.empty()) return true;
+    return askPierceable(e, inst, regionIndex);
+  }
+  bool askPierceable(const Entity& e, Instance& inst, size_t regionIndex);  // not kept, or a warp held
   // Whether region line k stops the instance whose vertices are `verts`: it is not pierceable, and
   // if it is one-way, the instance is wholly on its front.
-  bool blocks(const Entity& e, Instance& inst, size_t regionIndex, std::span<const Vec2> verts);
+  bool blocks(const Entity& e, Instance& inst, size_t regionIndex, std::span<const Vec2> verts) {
+    if (isPierceable(e, inst, regionIndex)) return false;
+    const MapPart& p = part(inst.part);
+    const LineIndex index = inst.region.lines()[regionIndex];
+    return p.lines()[index].kind != LineKind::OneWay || wholyInFront(verts, p.segments()[index]);
+  }
   // Makes the instance's region hold every line near its shape moved by anything from 0 to
   // `motion`, and within `slack` more units around that.
-  void coverMotion(Instance& inst, Vec2w motion, int64_t slack = 0);
+  // (Inline, as coverBox: every sub-move asks, and the region almost always has those cells.)
+  void coverMotion(Instance& inst, Vec2w motion, int64_t slack = 0) {
+    Box b = sweptBox(inst, motion);
+    coverBox(inst, {b.x0 - slack, b.y0 - slack, b.x1 + slack, b.y1 + slack});
+  }
   // The same for any box of the part's coordinates (a rotation covers the hull it sweeps).
-  void coverBox(Instance& inst, Box box);
+  void coverBox(Instance& inst, Box b) {
+    // One unit of margin: points on the box edge round into the next cell's range.
+    b.x0 -= 1, b.y0 -= 1, b.x1 += 1, b.y1 += 1;
+    const Grid& grid = part(inst.part).grid();
+    if (!inst.region.keeps(grid, b)) inst.region.update(grid, grid.cellsCovering(b, inst.region.rect()));
+  }
   // The first solid line (in region order) whose interior the vertices overlap, if any. The
   // region must already cover them.
   std::optional<LineIndex> solidOverlap(const Entity& e, Instance& inst, std::span<const Vec2> verts);
@@ -391,7 +426,7 @@ struct WorldImpl {
   bool restsAgainstLines(Entity& e, Vec2w w);
   // Its steps, for one instance (its vertices and their box grown by 2): whether one touches it.
   bool restOnPartLines(Entity& e, Instance& inst, const std::vector<Vec2>& verts, const Box& box, Vec2w w);
-  bool restOnPlatformLines(Entity& e, Instance& inst, const std::vector<Vec2>& verts, const Box& box, Vec2w w);
+  bool restOnPlatformLines(Instance& inst, const std::vector<Vec2>& verts, const Box& box, Vec2w w);
   bool restOnEntities(Entity& e, Instance& inst, const std::vector<Vec2>& verts, const Box& box, Vec2w w);
   // The entity was moving and has just come to rest against its contacts (restsAgainstLines): the
   // rules hear of each. They may let it rest; send it off with a velocity that no longer presses
@@ -407,7 +442,13 @@ struct WorldImpl {
   // A new instance across the warp `warpLine` of instance `from`, where the point `fromQ30` maps;
   // placed so it can travel furthest along `probe`. False when the far side has no room.
   bool createWarpInstance(Entity& e, size_t from, LineIndex warpLine, Vec2w fromQ30, Vec2w probe);
-  void createOverlappedWarps(Entity& e);
+  // Instances overlapping a warp whose far side has no instance get one (most have no overlap:
+  // inline, that costs a look at each instance).
+  void createOverlappedWarps(Entity& e) {
+    for (const Instance& inst : e.instances)
+      if (!inst.overlapping.empty()) return createWarpsOverlapped(e);
+  }
+  void createWarpsOverlapped(Entity& e);
   // Moves `inst` to the free whole-unit position within two units of `targetQ30` (touching
   // `mustTouch` if given) that lets it travel furthest along `probe`, nearest first among equals.
   bool placeNear(const Entity& e, Instance& inst, Vec2w targetQ30, const Segment* mustTouch, Vec2w probe);
@@ -439,7 +480,22 @@ struct WorldImpl {
   int64_t placeByCorner(Entity& e, const CornerReturn& r);
 
   // pierce_events.cpp
-  void updatePierceState(Entity& e, const Path& path);
+  // The begin and end events of the pierceable lines and overlapping entities along the path. Most
+  // moves have nothing pierceable near, nothing overlapped and no overlaps reported (inline, that
+  // is a look at each instance).
+  void updatePierceState(Entity& e, const Path& path) {
+    if (e.filter.overlapWith == 0 && e.filter.category == 0) {
+      size_t i = 0;
+      while (i < e.instances.size() && pierceQuiet(e, path, i)) ++i;
+      if (i == e.instances.size()) return;
+    }
+    firePierceEvents(e, path);
+  }
+  // Whether instance i has nothing pierceable near the path and overlaps nothing.
+  static bool pierceQuiet(const Entity& e, const Path& path, size_t i) {
+    return i < path.pierceNear.size() && !path.pierceNear[i] && e.instances[i].overlapping.empty();
+  }
+  void firePierceEvents(Entity& e, const Path& path);
   void fireOverContacts();
   Contact makeContact(const Entity& e, MapPartId part, LineIndex line, Fraction t, Vec2w normal,
                       ContactPoints points) const;
