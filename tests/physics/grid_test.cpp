@@ -106,3 +106,43 @@ TEST(Region, IncrementalUpdatesMatchAFreshScan) {
     ASSERT_EQ(got, expected) << "step " << step;
   }
 }
+
+// Region::keeps answers "would this box cover the same cells" from four ranges the region keeps
+// (coverBox then skips the search). Over random maps (one line to thousands, clustered and spread),
+// random walks of boxes of every size, small steps and jumps, and boxes reaching past the map on
+// every side: it says yes exactly when the cells are the same, and a region from another grid is
+// never kept.
+TEST(Region, KeepsExactlyTheBoxesThatCoverItsCells) {
+  std::mt19937_64 rng(11);
+  int kept = 0, moved = 0;
+  for (int map = 0; map < 40; ++map) {
+    const int lines = map % 4 == 0 ? 1 + map / 4 : 200 + static_cast<int>(rng() % 3000);
+    const int32_t half = map % 3 == 0 ? 2000 : 40000;
+    const auto segments = randomSegments(rng, lines, half, map % 2 ? 300 : 5000);
+    Grid grid, other;
+    buildGrid(grid, segments);
+    buildGrid(other, segments);
+    Region region;
+    int64_t x = 0, y = 0;
+    for (int step = 0; step < 2000; ++step) {
+      const int64_t jump = step % 50 == 0 ? 4 * half : 600;
+      x += static_cast<int64_t>(rng() % static_cast<uint64_t>(2 * jump + 1)) - jump;
+      y += static_cast<int64_t>(rng() % static_cast<uint64_t>(2 * jump + 1)) - jump;
+      const int64_t w = static_cast<int64_t>(rng() % 3000), h = static_cast<int64_t>(rng() % 3000);
+      const Box box{x, y, x + w, y + h};
+      const CellRect cells = grid.cellsCovering(box, region.rect());
+      ASSERT_EQ(cells, grid.cellsCovering(box)) << "the hinted search found other cells";
+      const bool same = step > 0 && cells == region.rect();
+      ASSERT_EQ(region.keeps(grid, box), same) << "map " << map << " step " << step;
+      ASSERT_FALSE(region.keeps(other, box)) << "kept for another grid";
+      kept += same, moved += !same;
+      region.update(grid, cells);
+      ASSERT_TRUE(region.keeps(grid, box));
+    }
+    region.clear();
+    ASSERT_FALSE(region.keeps(grid, {0, 0, 0, 0})) << "kept after clear";
+  }
+  // Both answers were asked often.
+  EXPECT_GT(kept, 10000);
+  EXPECT_GT(moved, 10000);
+}
