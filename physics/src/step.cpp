@@ -203,10 +203,17 @@ class SubMove {
     std::vector<Vec2w>& normals = w_.scratch.lineNormals;
     touchingLines.clear();
     normals.clear();
+    // Met where it stands, the rest test may have asked the same of the same vertices.
+    const WorldImpl::Scratch::TouchMemo& memo = w_.scratch.touchMemo;
+    const bool standing = hit_.t == Fraction::zero() && memo.holds(inst.part, verts_[i]);
     auto touches = [&](LineIndex line, const Segment& seg) {
       const uint32_t begin = static_cast<uint32_t>(normals.size());
-      if (touchingNormals(verts_[i], moves_[i], hit_.t, seg, normals))
+      if (const WorldImpl::TouchingLine* known = standing ? memo.find(line) : nullptr) {
+        normals.insert(normals.end(), memo.normals.begin() + known->begin, memo.normals.begin() + known->end);
         touchingLines.push_back({line, begin, static_cast<uint32_t>(normals.size())});
+      } else if (touchingNormals(verts_[i], moves_[i], hit_.t, seg, normals)) {
+        touchingLines.push_back({line, begin, static_cast<uint32_t>(normals.size())});
+      }
     };
     for (size_t k = 0; k < lines.size(); ++k) {
       const Segment& seg = part.segments()[lines[k]];
@@ -724,6 +731,12 @@ bool WorldImpl::restOnPartLines(Entity& e, Instance& inst, const std::vector<Vec
     if (outside(seg, box) || !blocks(e, inst, k, verts)) continue;
     const Nearness nearness = nearNormals(verts, seg, normals);
     if (nearness == Nearness::Apart) continue;
+    if (nearness == Nearness::Touching && &inst == &e.instances[0]) {  // for the slide (TouchMemo)
+      Scratch::TouchMemo& memo = scratch.touchMemo;
+      const uint32_t begin = static_cast<uint32_t>(memo.normals.size());
+      memo.normals.insert(memo.normals.end(), normals.begin(), normals.end());
+      memo.lines.push_back({lines[k], begin, static_cast<uint32_t>(memo.normals.size())});
+    }
     // A copy sits where rounding put it, and may meet a line's end edge-on where the original
     // glides along it; so may any instance at a seam, the end of a line cut by a face edge. The
     // slide lifts them off (liftAtSeam); for rest, such a line counts by its own side only.
@@ -790,6 +803,12 @@ bool WorldImpl::restsAgainstLines(Entity& e, Vec2w w) {
     coverMotion(inst, {}, 2);
     std::vector<Vec2>& verts = scratch.now;
     worldVertices(inst, verts);
+    if (&inst == &e.instances[0]) {  // restOnPartLines notes what touches these vertices
+      scratch.touchMemo.part = inst.part;
+      scratch.touchMemo.verts = verts;
+      scratch.touchMemo.lines.clear();
+      scratch.touchMemo.normals.clear();
+    }
     Box box = sweptBox(inst, {});
     box.x0 -= 2, box.y0 -= 2, box.x1 += 2, box.y1 += 2;
     touching = restOnPartLines(e, inst, verts, box, w) || touching;

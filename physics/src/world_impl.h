@@ -195,6 +195,24 @@ struct WorldImpl {
       EntityId other;
     };
     std::vector<RestContact> restContacts;
+    // The part lines the rest test found touching a body's vertices (restOnPartLines) and the
+    // normals nearNormals gave them: touchingNormals at t = 0 gives the same for the same vertices
+    // and segment (a pure function of the two: see contact_normal.h), so the slide's contact where
+    // the body stands (resolveContactNormal) reads them here. Kept for the last vertices tested.
+    struct TouchMemo {
+      MapPartId part = 0;
+      std::vector<Vec2> verts;
+      std::vector<TouchingLine> lines;  // key: the line; [begin, end) in normals
+      std::vector<Vec2w> normals;
+      bool holds(MapPartId p, std::span<const Vec2> v) const {
+        return p == part && std::equal(v.begin(), v.end(), verts.begin(), verts.end());
+      }
+      const TouchingLine* find(LineIndex line) const {
+        for (const TouchingLine& t : lines)
+          if (t.key == line) return &t;
+        return nullptr;
+      }
+    } touchMemo;
     OpenDirections open;
   } scratch;
 
