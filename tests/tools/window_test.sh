@@ -20,7 +20,17 @@ focus_window() {
     kill -0 "$pid" 2>/dev/null || fail "the game ended before its window appeared"
     sleep 0.1
   done
-  fail "no window appeared"
+  fail "no window appeared that could take the keyboard; the X server's windows: $(windows_seen)"
+}
+
+# What the X server shows, for a failure's message: every window with a name, visible or not, and
+# (when xwininfo is there) whether it is mapped.
+windows_seen() {
+  for w in $(xdotool search --name "." 2>/dev/null); do
+    state=$(command -v xwininfo > /dev/null && xwininfo -id "$w" 2>/dev/null | sed -n 's/.*Map State: //p')
+    echo "[$w '$(xdotool getwindowname "$w" 2>/dev/null)' ${state:-?}]"
+  done | tr '\n' ' '
+  echo "(DISPLAY=$DISPLAY)"
 }
 
 # Waits for a line of the log matching $1; $2 (optional) says how many such lines are wanted.
