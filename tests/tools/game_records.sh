@@ -5,7 +5,7 @@
 #   with_xvfb.sh game_records.sh PLATON
 set -eu
 platon=$1
-unset SDL_VIDEODRIVER  # the X server xvfb-run started, not offscreen
+export SDL_VIDEODRIVER=x11  # the X server xvfb-run started: never a silent fallback to offscreen
 data=$(mktemp -d)
 log="$data/log"
 rec="$data/rec"

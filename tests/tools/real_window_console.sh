@@ -7,7 +7,7 @@
 #   with_xvfb.sh real_window_console.sh PLATON [COPY_SCREENSHOT_TO]
 set -eu
 platon=$1
-unset SDL_VIDEODRIVER  # the X server xvfb-run started, not offscreen
+export SDL_VIDEODRIVER=x11  # the X server xvfb-run started: never a silent fallback to offscreen
 data=$(mktemp -d)
 log="$data/log"
 rec="$data/rec"

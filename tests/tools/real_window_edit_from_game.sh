@@ -7,7 +7,7 @@ set -eu
 platon=$(realpath "$1")
 tools=$(cd "$(dirname "$0")" && pwd)
 source_root=$(pwd)
-unset SDL_VIDEODRIVER  # the X server xvfb-run started, not offscreen
+export SDL_VIDEODRIVER=x11  # the X server xvfb-run started: never a silent fallback to offscreen
 data=$(mktemp -d)
 log="$data/log"
 cp -r levels/cube_intro "$data/cube_intro"

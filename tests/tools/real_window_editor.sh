@@ -12,7 +12,7 @@ set -eu
 platon=$(realpath "$1")
 solid=$2
 pictures=${3:-}
-unset SDL_VIDEODRIVER  # the X server xvfb-run started, not offscreen
+export SDL_VIDEODRIVER=x11  # the X server xvfb-run started: never a silent fallback to offscreen
 data=$(mktemp -d)
 log="$data/log"
 level="$data/drawn"

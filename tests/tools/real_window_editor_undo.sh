@@ -7,7 +7,7 @@
 #   with_xvfb.sh real_window_editor_undo.sh PLATON
 set -eu
 platon=$(realpath "$1")
-unset SDL_VIDEODRIVER  # the X server xvfb-run started, not offscreen
+export SDL_VIDEODRIVER=x11  # the X server xvfb-run started: never a silent fallback to offscreen
 data=$(mktemp -d)
 log="$data/log"
 cp -r levels/cube_switches "$data/cube_switches"

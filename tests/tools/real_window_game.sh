@@ -8,7 +8,7 @@
 #   with_xvfb.sh real_window_game.sh PLATON
 set -eu
 platon=$1
-unset SDL_VIDEODRIVER  # the X server xvfb-run started, not offscreen
+export SDL_VIDEODRIVER=x11  # the X server xvfb-run started: never a silent fallback to offscreen
 data=$(mktemp -d)
 log="$data/log"
 SDL_AUDIODRIVER=disk SDL_DISKAUDIOFILE="$data/audio.raw" XDG_DATA_HOME="$data" XDG_CONFIG_HOME="$data/config" "$platon" game > "$log" 2>&1 &

@@ -5,7 +5,7 @@
 #   with_xvfb.sh real_window_keys.sh PLATON
 set -eu
 platon=$1
-unset SDL_VIDEODRIVER  # the X server xvfb-run started, not offscreen
+export SDL_VIDEODRIVER=x11  # the X server xvfb-run started: never a silent fallback to offscreen
 log=$(mktemp)
 "$platon" play levels/cube_intro/scene.lua > "$log" 2>&1 &
 pid=$!

@@ -5,7 +5,7 @@
 #   with_xvfb.sh real_window_screenshot.sh PLATON [COPY_SETTINGS_TO]
 set -eu
 platon=$1
-unset SDL_VIDEODRIVER  # the X server xvfb-run started, not offscreen
+export SDL_VIDEODRIVER=x11  # the X server xvfb-run started: never a silent fallback to offscreen
 data=$(mktemp -d)
 log="$data/log"
 XDG_DATA_HOME="$data" XDG_CONFIG_HOME="$data/config" "$platon" game > "$log" 2>&1 &

@@ -6,7 +6,7 @@
 #   with_xvfb.sh real_window_tap.sh PLATON
 set -eu
 platon=$1
-unset SDL_VIDEODRIVER  # the X server xvfb-run started, not offscreen
+export SDL_VIDEODRIVER=x11  # the X server xvfb-run started: never a silent fallback to offscreen
 folder=$(mktemp -d)
 log="$folder/log"
 "$platon" play levels/cube_intro/scene.lua --record "$folder/tap.replay" > "$log" 2>&1 &

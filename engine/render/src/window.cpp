@@ -17,12 +17,35 @@ namespace {
 using core::Button;
 using core::InputFrame;
 
-[[noreturn]] void fail(const std::string& what) { throw std::runtime_error(what + ": " + SDL_GetError()); }
+// Starts SDL's video on a screen. With no display to reach (DISPLAY unset, or a server that turns us
+// away) SDL falls back to a driver with no screen, and the game would run where nobody sees it: only
+// when asked for (SDL_VIDEODRIVER=offscreen: `platon shot`, the tests) is that a window. A display
+// that is set is tried for a second: on a loaded machine its first connection can fail (seen with a
+// fresh Xvfb that let other clients in a moment before and after).
+void startVideo() {
+  const char* asked = std::getenv("SDL_VIDEODRIVER");
+  const char* display = std::getenv("DISPLAY");
+  const bool implicit = !asked || !*asked, hasDisplay = display && *display;
+  std::string why;
+  for (int attempt = 0; attempt < (hasDisplay ? 6 : 1); ++attempt) {
+    if (attempt > 0) SDL_Delay(200);
+    if (SDL_InitSubSystem(SDL_INIT_VIDEO) != 0) {
+      why = SDL_GetError();
+      continue;
+    }
+    const char* driver = SDL_GetCurrentVideoDriver();
+    if (!implicit || !driver || (std::strcmp(driver, "offscreen") != 0 && std::strcmp(driver, "dummy") != 0)) return;
+    SDL_QuitSubSystem(SDL_INIT_VIDEO);
+    why = hasDisplay ? std::string("DISPLAY=") + display + " could not be opened" : "DISPLAY is not set";
+  }
+  if (!implicit) throw std::runtime_error("no display (SDL could not start its video): " + why);
+  throw std::runtime_error("no display to open a window on (" + why + "; SDL_VIDEODRIVER=offscreen runs without one)");
+}
 
 }  // namespace
 
 Window::Window(const std::string& title, int width, int height) {
-  if (SDL_InitSubSystem(SDL_INIT_VIDEO) != 0) fail("no display (SDL could not start its video)");
+  startVideo();
   SDL_GL_SetAttribute(SDL_GL_CONTEXT_MAJOR_VERSION, 3);
   SDL_GL_SetAttribute(SDL_GL_CONTEXT_MINOR_VERSION, 3);
   SDL_GL_SetAttribute(SDL_GL_CONTEXT_PROFILE_MASK, SDL_GL_CONTEXT_PROFILE_CORE);
