@@ -1,5 +1,5 @@
 #!/bin/sh
-# With no display to open (DISPLAY unset, or set to a server that is not there) and no
+# With no display to open (neither DISPLAY nor WAYLAND_DISPLAY set, or DISPLAY a server that is not there) and no
 # SDL_VIDEODRIVER asked for, the window commands say so and end (the game, the editor), or say so
 # and go on headless (play); none runs without a window where nobody sees it.
 #   no_display.sh PLATON
@@ -7,7 +7,7 @@ set -u
 platon=$1
 data=$(mktemp -d)
 trap 'rm -rf "$data"' EXIT
-unset SDL_VIDEODRIVER
+unset SDL_VIDEODRIVER WAYLAND_DISPLAY
 failed=0
 # expect NAME STATUS PATTERN COMMAND...: runs the command (8 s at most), checks its exit status
 # ("nonzero" or "zero") and that its output has PATTERN.
@@ -26,7 +26,7 @@ expect() {
 for display in "" ":97"; do
   if [ -n "$display" ]; then export DISPLAY="$display"; else unset DISPLAY; fi
   what=${display:+DISPLAY=$display could not be opened}
-  what=${what:-DISPLAY is not set}
+  what=${what:-neither DISPLAY nor WAYLAND_DISPLAY is set}
   expect "game, $what" nonzero "no display to open a window on ($what" "$platon" game
   expect "edit, $what" nonzero "no display to open a window on ($what" "$platon" edit --new HEXAHEDRON "$data/new$display"
   expect "play, $what" zero "no display to open a window on ($what.*playing headless" \

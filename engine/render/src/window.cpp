@@ -24,8 +24,10 @@ using core::InputFrame;
 // fresh Xvfb that let other clients in a moment before and after).
 void startVideo() {
   const char* asked = std::getenv("SDL_VIDEODRIVER");
-  const char* display = std::getenv("DISPLAY");
-  const bool implicit = !asked || !*asked, hasDisplay = display && *display;
+  const char* x11 = std::getenv("DISPLAY");
+  const char* wayland = std::getenv("WAYLAND_DISPLAY");
+  const bool implicit = !asked || !*asked, hasX11 = x11 && *x11, hasWayland = wayland && *wayland;
+  const bool hasDisplay = hasX11 || hasWayland;
   std::string why;
   for (int attempt = 0; attempt < (hasDisplay ? 6 : 1); ++attempt) {
     if (attempt > 0) SDL_Delay(200);
@@ -36,7 +38,9 @@ void startVideo() {
     const char* driver = SDL_GetCurrentVideoDriver();
     if (!implicit || !driver || (std::strcmp(driver, "offscreen") != 0 && std::strcmp(driver, "dummy") != 0)) return;
     SDL_QuitSubSystem(SDL_INIT_VIDEO);
-    why = hasDisplay ? std::string("DISPLAY=") + display + " could not be opened" : "DISPLAY is not set";
+    why = hasX11       ? std::string("DISPLAY=") + x11 + " could not be opened"
+          : hasWayland ? std::string("WAYLAND_DISPLAY=") + wayland + " could not be opened"
+                       : "neither DISPLAY nor WAYLAND_DISPLAY is set";
   }
   if (!implicit) throw std::runtime_error("no display (SDL could not start its video): " + why);
   throw std::runtime_error("no display to open a window on (" + why + "; SDL_VIDEODRIVER=offscreen runs without one)");
