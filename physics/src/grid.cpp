@@ -67,11 +67,6 @@ CellRect Grid::cellsCovering(const Box& box) const {
 }
 
 void Grid::cellRanges(const CellRect& r, Box& from, Box& to) const {
-  if (cellLines_.empty()) {  // no lines: every box covers no cells
-    from = {INT64_MIN, INT64_MIN, INT64_MIN, INT64_MIN};
-    to = {INT64_MAX, INT64_MAX, INT64_MAX, INT64_MAX};
-    return;
-  }
   from = {xAxis_.low(r.x0), yAxis_.low(r.y0), xAxis_.low(r.x1), yAxis_.low(r.y1)};
   to = {xAxis_.high(r.x0), yAxis_.high(r.y0), xAxis_.high(r.x1), yAxis_.high(r.y1)};
 }

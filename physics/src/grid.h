@@ -49,8 +49,8 @@ class Grid {
     return {xAxis_.cellNear(box.x0, near.x0), yAxis_.cellNear(box.y0, near.y0), xAxis_.cellNear(box.x1, near.x1),
             yAxis_.cellNear(box.y1, near.y1)};
   }
-  // For each corner of a box whose cells are `r` (as cellsCovering gives them), the coordinates
-  // that fall in the same cell: from <= coordinate < to, per corner (x0, y0, x1, y1).
+  // For each corner of a box whose cells are `r` (as cellsCovering gives them; not empty), the
+  // coordinates that fall in the same cell: from <= coordinate < to, per corner (x0, y0, x1, y1).
   void cellRanges(const CellRect& r, Box& from, Box& to) const;
   std::span<const uint32_t> cell(int column, int row) const {
     const size_t c = static_cast<size_t>(row) * xAxis_.cuts.size() + column;

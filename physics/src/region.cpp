@@ -93,7 +93,11 @@ void Region::removeCell(const Grid& grid, int x, int y) {
 }
 
 void Region::update(const Grid& grid, const CellRect& want) {
-  if (grid_ != &grid || want != rect_) {
+  // The ranges of an empty rectangle are kept by nobody: a grid with lines covers every box with
+  // some cells, and one with none is looked at again (it answers at once).
+  if (want.empty()) {
+    grid_ = nullptr;
+  } else if (grid_ != &grid || want != rect_) {
     grid_ = &grid;
     grid.cellRanges(want, from_, to_);
   }

@@ -139,6 +139,9 @@ TEST(Region, KeepsExactlyTheBoxesThatCoverItsCells) {
       region.update(grid, cells);
       ASSERT_TRUE(region.keeps(grid, box));
     }
+    region.update(grid, CellRect{});  // no cells: no box keeps them (every box covers some)
+    ASSERT_FALSE(region.keeps(grid, {x, y, x, y})) << "kept an empty rectangle";
+    region.update(grid, grid.cellsCovering({x, y, x, y}));
     region.clear();
     ASSERT_FALSE(region.keeps(grid, {0, 0, 0, 0})) << "kept after clear";
   }
