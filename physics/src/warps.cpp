@@ -104,7 +104,7 @@ bool WorldImpl::liftCopy(const Entity& e, Instance& copy, Vec2w direction, Vec2w
   return false;
 }
 
-void WorldImpl::createWarpsOverlapped(Entity& e) {
+void WorldImpl::makeOverlappedWarpInstances(Entity& e) {
   for (size_t i = 0; i < e.instances.size(); ++i) {
     if (e.instances[i].overlapping.empty()) continue;
     const MapPart& p = part(e.instances[i].part);

@@ -464,9 +464,9 @@ struct WorldImpl {
   // inline, that costs a look at each instance).
   void createOverlappedWarps(Entity& e) {
     for (const Instance& inst : e.instances)
-      if (!inst.overlapping.empty()) return createWarpsOverlapped(e);
+      if (!inst.overlapping.empty()) return makeOverlappedWarpInstances(e);
   }
-  void createWarpsOverlapped(Entity& e);
+  void makeOverlappedWarpInstances(Entity& e);
   // Moves `inst` to the free whole-unit position within two units of `targetQ30` (touching
   // `mustTouch` if given) that lets it travel furthest along `probe`, nearest first among equals.
   bool placeNear(const Entity& e, Instance& inst, Vec2w targetQ30, const Segment* mustTouch, Vec2w probe);
