@@ -101,7 +101,7 @@ bool WorldImpl::linesThrough(const Platform& pl, LineIndex edge, std::vector<Pla
   return true;
 }
 
-std::optional<WorldImpl::PlatformHit> WorldImpl::updatePlatformCopies(uint32_t slot, Vec2w motion) {
+std::optional<WorldImpl::PlatformHit> WorldImpl::updatePlatformCopies(uint32_t slot, Vec2w motion, bool strict) {
   Platform& pl = platforms[slot];
   const MapPart& home = part(pl.part);
   // One copy at most: across the edge its lines come furthest over (the one it has is kept unless
@@ -136,6 +136,12 @@ std::optional<WorldImpl::PlatformHit> WorldImpl::updatePlatformCopies(uint32_t s
     const bool held = platformCopyIn(pl, targetOf(line)) != nullptr;
     const int64_t margin = held ? -kCopyReach : chosenHeld ? kCopyReach : 0;  // what `r` must beat `furthest` by
     if (!chosen || r->beyond(*furthest, margin)) chosen = line, furthest = r, chosenHeld = held;
+  }
+  // Just crossed (the lines moved with no copy over this edge): only a copy that meets no body at
+  // all, wherever the platform meets it, replaces the one it has.
+  if (strict && chosen && !platformCopyIn(pl, targetOf(*chosen))) {
+    std::vector<PlatformLine> lines = pl.lines;
+    if (!linesThrough(pl, *chosen, lines) || anyInstanceIn(targetOf(*chosen), lines)) return std::nullopt;
   }
   std::erase_if(pl.copies, [&](const PlatformCopy& c) {
     const bool kept = chosen && targetOf(*chosen) == c.part;
@@ -205,27 +211,27 @@ void WorldImpl::clearPlatformCopies(uint32_t slot) {
   }
 }
 
-// Whether a body's instance in the copy's part overlaps one of its lines. Until it crosses, the
-// platform meets the bodies that are also in its own part there (platformMeets); their copies beyond
-// the edge, rounded in their own frame, can be a unit or so into the copy's lines, and the platform
-// goes over only once it would meet none of them so.
-bool WorldImpl::copyOverlapsABody(const PlatformCopy& c) {
+// Whether any body's instance in `partId` overlaps one of the lines (a one-way one from its front).
+// Until it crosses, the platform meets the bodies that are also in its own part there
+// (platformMeets); their copies beyond the edge, rounded in their own frame, can be a unit or so into
+// the copy's lines, and the platform goes over only once it would meet none of them so.
+bool WorldImpl::anyInstanceIn(MapPartId partId, const std::vector<PlatformLine>& lines) {
   bool over = false;
   std::vector<Vec2> verts;
-  entityIndex.forEachNear(c.part, c.box, [&](uint32_t s) {
-    const Instance* inst = slots[s].entity->instanceIn(c.part);
+  entityIndex.forEachNear(partId, boxOfLines(lines), [&](uint32_t s) {
+    const Instance* inst = slots[s].entity->instanceIn(partId);
     if (over || !inst) return;
     worldVertices(*inst, verts);
-    for (const PlatformLine& l : c.lines)
+    for (const PlatformLine& l : lines)
       if ((l.kind != LineKind::OneWay || wholyInFront(verts, l.segment)) && overlapsInterior(verts, l.segment))
         over = true;
   });
   return over;
 }
 
-void WorldImpl::crossPlatform(uint32_t slot) {
+bool WorldImpl::crossPlatform(uint32_t slot) {
   Platform& pl = platforms[slot];
-  if (pl.copies.empty()) return;
+  if (pl.copies.empty()) return false;
   const MapPart& home = part(pl.part);
   for (const LineIndex line : home.faceLoop()) {
     const Segment seg = home.segments()[line];
@@ -234,7 +240,7 @@ void WorldImpl::crossPlatform(uint32_t slot) {
     if (!beyond || !whollyBeyond(pl, seg)) continue;
     const MapPart& there = part(w.target);
     const std::optional<LineIndex> back = warpInto(there, pl.part);
-    if (!back || copyOverlapsABody(*beyond)) continue;
+    if (!back || anyInstanceIn(beyond->part, beyond->lines)) continue;
     // Its lines stay where they are in every part: the copy's become its own, its own a copy of the
     // new part's (following it back through the warp), and a copy on a face the new part has a warp
     // into follows it through that warp; any other copy is dropped (made again next frame if reached).
@@ -267,8 +273,9 @@ void WorldImpl::crossPlatform(uint32_t slot) {
     pl.motionLeftQ30 = rotateWide(w.rotation, pl.motionLeftQ30);
     pl.motion = pointFromQ30(pl.motionQ30);
     pl.copies = std::move(copies);
-    return;
+    return true;
   }
+  return false;
 }
 
 }  // namespace platon::physics

@@ -770,7 +770,8 @@ Angle WorldImpl::turnPlatform(uint32_t slot) {
 // a push is impossible, turn it as far as its spin goes or until a push is impossible, then carry
 // those standing on it as if fixed to it (less what it pushed them), clearing its copies' lines of
 // what the moves left in them before and after the carry (a rider carried through a vertex can
-// land in one); wholly beyond an edge, it belongs to the face beyond.
+// land in one); wholly beyond an edge, it belongs to the face beyond, and has the copies its
+// lines need there.
 void WorldImpl::movePlatforms() {
   for (uint32_t slot = 0; slot < platforms.size(); ++slot) {
     platforms[slot].work = 0;
@@ -784,7 +785,9 @@ void WorldImpl::movePlatforms() {
     clearPlatformCopies(slot);
     carryRiders(slot, riders, moved, turned);
     clearPlatformCopies(slot);
-    crossPlatform(slot);
+    // Crossed: the lines may be over another edge of the face they came to; a copy there now, where
+    // it meets no body at all, rather than the next frame (the entities step meanwhile).
+    if (crossPlatform(slot)) updatePlatformCopies(slot, {}, true);
   }
 }
 

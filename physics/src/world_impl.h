@@ -295,11 +295,14 @@ struct WorldImpl {
   void crushed(uint32_t slot, uint32_t entity, uint32_t line, MapPartId part);
   // platform_copies.cpp: the copies platform `slot` needs moving by `motion` (made where its lines
   // come within reach of a warp edge, dropped where they no longer do). A copy that cannot be placed
-  // (a body is where its lines would be) is not made: its blocker is returned.
-  std::optional<PlatformHit> updatePlatformCopies(uint32_t slot, Vec2w motion);
-  // Once every line of platform `slot` is beyond one warp edge, it belongs to the face beyond.
-  void crossPlatform(uint32_t slot);
-  bool copyOverlapsABody(const PlatformCopy& c);
+  // (a body is where its lines would be) is not made: its blocker is returned. `strict` (just
+  // crossed, nothing to stop): a new copy only where no body's instance at all is in its lines, and
+  // the copies as they were otherwise.
+  std::optional<PlatformHit> updatePlatformCopies(uint32_t slot, Vec2w motion, bool strict = false);
+  bool anyInstanceIn(MapPartId part, const std::vector<PlatformLine>& lines);
+  // Once every line of platform `slot` is beyond one warp edge, it belongs to the face beyond
+  // (true: it crossed).
+  bool crossPlatform(uint32_t slot);
   // Lifts the copies of bodies met elsewhere (platformMeets) off the platform's copy lines they
   // overlap by rounding.
   void clearPlatformCopies(uint32_t slot);

@@ -174,10 +174,21 @@ class CountCrushes : public physics::Rules {
  public:
   int crushes = 0;
   std::string last;  // the latest crush: the body, the part, the line
+  // The parts each body had an instance in at some moment since this was last cleared: an instance
+  // over a warp line is in its part (its overlaps with warp lines begin, go on and end there).
+  std::map<uint32_t, std::set<physics::MapPartId>> partsSeen;
   void crushed(const physics::Contact& c) override {
     ++crushes;
     last = "entity " + std::to_string(c.entity.index) + " in part " + std::to_string(c.part) + " by line " +
            std::to_string(c.line.index);
+  }
+  void beginContact(const physics::Contact& c) override { seen(c); }
+  void overContact(const physics::Contact& c) override { seen(c); }
+  void endContact(const physics::Contact& c) override { seen(c); }
+
+ private:
+  void seen(const physics::Contact& c) {
+    if (c.line.kind == physics::LineKind::Warp && !c.other.isSet()) partsSeen[c.entity.index].insert(c.part);
   }
 };
 
@@ -507,6 +518,11 @@ std::set<physics::MapPartId> partsOf(const physics::World& w, uint32_t index) {
 struct SceneCounts {
   int crossings = 0, frames = 0, copyOverlaps = 0, passedThrough = 0, crushed = 0;
   int copyOverlapsCrushed = 0;  // in frames the platform said it was crushed
+  int uncopiedCrossings = 0;    // crossings that left lines over another edge with no copy there
+  void add(const SceneCounts& o) {
+    crossings += o.crossings, frames += o.frames, copyOverlaps += o.copyOverlaps, passedThrough += o.passedThrough;
+    crushed += o.crushed, copyOverlapsCrushed += o.copyOverlapsCrushed, uncopiedCrossings += o.uncopiedCrossings;
+  }
 };
 
 // Random platforms (one to three lines, solid or one-way, at any angle) driven every way over random
@@ -589,6 +605,7 @@ SceneCounts randomPlatformScenes(uint64_t seed, int scenes, bool turning) {
       }
       const physics::PlatformView before = b->world.platform(id);
       const int crushesBefore = rules.crushes;
+      rules.partsSeen.clear();
       b->world.solve();
       const physics::PlatformView p = b->world.platform(id);
       // Where the platform meets a body: never in its own part; in its copy's, only a body whose copy
@@ -607,13 +624,15 @@ SceneCounts randomPlatformScenes(uint64_t seed, int scenes, bool turning) {
         ++met;
         const bool already = std::any_of(was.begin(), was.end(),
                                          [&](const Overlap& q) { return q.entity == o.entity && q.line == o.line; });
-        // Beside a vertex: in three faces' parts at the frame's start or its end, or over the frame
-        // (on one face at its start and across another edge at its end: pushed or carried past a
-        // vertex within the frame).
+        // Beside a vertex: in three faces' parts at the frame's start or its end, over the frame (on
+        // one face at its start and across another edge at its end: pushed or carried past a vertex
+        // within the frame), or within it (pushed to a vertex by the platform, then off it on its
+        // own step: its warp contacts say where it was).
         std::set<physics::MapPartId> parts = partsOf(b->world, o.entity);
         if (const auto started = partsBefore.find(o.entity); started != partsBefore.end())
           parts.insert(started->second.begin(), started->second.end());
-        const bool atVertex = parts.size() >= 3;
+        const std::set<physics::MapPartId>& within = rules.partsSeen[o.entity];
+        const bool atVertex = parts.size() >= 3 || within.size() >= 3;
         EXPECT_TRUE(!o.own && (already || atVertex)) << "frame " << frame << ": " << o.what;
         if (o.own || !(already || atVertex)) return counts;
         ++passedThrough;
@@ -628,13 +647,15 @@ SceneCounts randomPlatformScenes(uint64_t seed, int scenes, bool turning) {
       if (crossed) {
         ++crossings;
         crossedSinceSet = true;
+        // Its copy over another edge of the face it came to is made at once, unless a body is in its
+        // way (counted: the next frame places it or is crushed, as any frame).
+        if (!onTheFaceBeyond(b->world, p)) ++counts.uncopiedCrossings;
         continue;
       }
       if (crushedNow) {
         ++counts.crushed;
         continue;
       }
-      // (On a crossing frame the copy is the one on the face it left until the next frame's start.)
       EXPECT_TRUE(onTheFaceBeyond(b->world, p)) << "frame " << frame << ": lines over an edge with no copy there";
       EXPECT_EQ(static_cast<physics::Angle>(p.angle - before.angle), static_cast<physics::Angle>(p.spin))
           << "frame " << frame << ": turned short of its spin, and no crushed call";
@@ -654,18 +675,27 @@ SceneCounts randomPlatformScenes(uint64_t seed, int scenes, bool turning) {
 }  // namespace
 
 TEST(PlatformCrossing, RandomPlatformsOverRandomSolidsNeverOverlapAndNeverStopSilently) {
-  const SceneCounts c = randomPlatformScenes(4242, 100, false);
-  const int crossings = c.crossings, frames = c.frames, copyOverlaps = c.copyOverlaps, passedThrough = c.passedThrough;
-  EXPECT_GT(crossings, 500);
+  // Seed 9101's 153rd scene and 31337's 206th push a body to a vertex (in three faces' parts after
+  // the platform moves), and the body's own step then takes it off the face the platform meets it
+  // on, into the copy's line there: passed through, as beside a vertex.
+  SceneCounts c;
+  for (const auto& [seed, scenes] : {std::pair{4242ull, 100}, std::pair{9101ull, 160}, std::pair{31337ull, 210}}) {
+    SCOPED_TRACE(::testing::Message() << "seed " << seed);
+    c.add(randomPlatformScenes(seed, scenes, false));
+  }
+  EXPECT_GT(c.crossings, 2000);
   // A body's copy in a copy's line, where the platform meets the body elsewhere: where rounding in
   // two frames leaves no free place to lift it to (20 frames in 300,000 over 600 scenes). Counted
   // apart: frames the platform is crushed (a body wedged between two of its lines at an edge holds
   // it there, its copy in the copy's lines, until the platform's motion changes).
-  EXPECT_LE(copyOverlaps, frames / 1000);
+  EXPECT_LE(c.copyOverlaps, c.frames / 1000);
+  // A crossing that leaves lines over another edge uncopied: a body in the copy's way (a copy made
+  // only the next frame left about 3 crossings in 10 so).
+  EXPECT_LE(c.uncopiedCrossings, c.crossings / 20);
   std::printf(
-      "%d frames, %d crossings, %d overlaps of a body's copy elsewhere (%d more in frames it was crushed), %d frames "
-      "a body in a copy's line was passed through\n",
-      frames, crossings, copyOverlaps, c.copyOverlapsCrushed, passedThrough);
+      "%d frames, %d crossings (%d with lines over another edge uncopied), %d overlaps of a body's copy elsewhere (%d "
+      "more in frames it was crushed), %d frames a body in a copy's line was passed through\n",
+      c.frames, c.crossings, c.uncopiedCrossings, c.copyOverlaps, c.copyOverlapsCrushed, c.passedThrough);
 }
 
 // The same with the platforms turning as they go: their copies turn with them over the edges.
@@ -678,18 +708,16 @@ TEST(PlatformCrossing, RandomTurningPlatformsOverRandomSolidsNeverOverlapAndNeve
   for (const auto& [seed, scenes] :
        {std::pair{4343ull, 100}, std::pair{9101ull, 60}, std::pair{31337ull, 130}, std::pair{4242ull, 130}}) {
     SCOPED_TRACE(::testing::Message() << "seed " << seed);
-    const SceneCounts one = randomPlatformScenes(seed, scenes, true);
-    c.frames += one.frames, c.crossings += one.crossings, c.crushed += one.crushed;
-    c.copyOverlaps += one.copyOverlaps, c.copyOverlapsCrushed += one.copyOverlapsCrushed;
-    c.passedThrough += one.passedThrough;
+    c.add(randomPlatformScenes(seed, scenes, true));
   }
   EXPECT_GT(c.crossings, 300);
   EXPECT_LE(c.copyOverlaps, c.frames / 1000);
   EXPECT_LE(c.crushed, c.frames / 10);
+  EXPECT_LE(c.uncopiedCrossings, c.crossings / 20);
   std::printf(
-      "%d frames, %d crossings, %d crushed, %d overlaps of a body's copy elsewhere (%d more in frames it was "
-      "crushed), %d frames a body in a copy's line was passed through\n",
-      c.frames, c.crossings, c.crushed, c.copyOverlaps, c.copyOverlapsCrushed, c.passedThrough);
+      "%d frames, %d crossings (%d with lines over another edge uncopied), %d crushed, %d overlaps of a body's copy "
+      "elsewhere (%d more in frames it was crushed), %d frames a body in a copy's line was passed through\n",
+      c.frames, c.crossings, c.uncopiedCrossings, c.crushed, c.copyOverlaps, c.copyOverlapsCrushed, c.passedThrough);
 }
 
 // A platform made already over an edge, where a body stands on the face beyond, is refused (an

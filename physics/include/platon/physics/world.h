@@ -154,7 +154,8 @@ class World {
   // turned with it about its pivot placed there; one copy at most, across the edge its lines come furthest over). It
   // meets each body in the first of its parts the body is in (its own, then its copy's), and pushes, carries and is
   // stopped by it there as on one face; once every line is beyond one edge, the platform belongs to the face beyond
-  // (its part, lines, pivot and motion turned into that part's frame, exactly; its offset counted from there). A copy
+  // (its part, lines, pivot and motion turned into that part's frame, exactly; its offset counted from there; its copy
+  // over another edge of that face made in the same frame where it meets no body, else the next frame). A copy
   // that would be placed over a body there stops the platform for the frame (Rules::crushed). On a part that is not a
   // face of a solid a platform stays in its part. docs/physics.md, "Platforms across edges", says more. Up to 65,536
   // lines a platform and 16,384 platforms; lines must be Solid or OneWay.
