@@ -101,7 +101,26 @@ bool WorldImpl::linesThrough(const Platform& pl, LineIndex edge, std::vector<Pla
   return true;
 }
 
-std::optional<WorldImpl::PlatformHit> WorldImpl::updatePlatformCopies(uint32_t slot, Vec2w motion, bool strict) {
+// The first body with an instance in the copy's part that `meets` there and is in one of its lines
+// (a one-way one from its front).
+template <class Meets>
+std::optional<WorldImpl::PlatformHit> WorldImpl::firstBodyIn(const PlatformCopy& c, Meets&& meets) {
+  std::optional<PlatformHit> over;
+  std::vector<Vec2> verts;
+  entityIndex.forEachNear(c.part, c.box, [&](uint32_t s) {
+    const Instance* inst = slots[s].entity->instanceIn(c.part);
+    if (over || !inst || !meets(*slots[s].entity)) return;
+    worldVertices(*inst, verts);
+    for (uint32_t k = 0; k < c.lines.size() && !over; ++k)
+      if ((c.lines[k].kind != LineKind::OneWay || wholyInFront(verts, c.lines[k].segment)) &&
+          overlapsInterior(verts, c.lines[k].segment))
+        over = PlatformHit{Fraction::zero(), s, k, c.part};
+  });
+  return over;
+}
+
+std::optional<WorldImpl::PlatformHit> WorldImpl::updatePlatformCopies(uint32_t slot, Vec2w motion,
+                                                                      CopyPlacing placing) {
   Platform& pl = platforms[slot];
   const MapPart& home = part(pl.part);
   // One copy at most: across the edge its lines come furthest over (the one it has is kept unless
@@ -137,43 +156,41 @@ std::optional<WorldImpl::PlatformHit> WorldImpl::updatePlatformCopies(uint32_t s
     const int64_t margin = held ? -kCopyReach : chosenHeld ? kCopyReach : 0;  // what `r` must beat `furthest` by
     if (!chosen || r->beyond(*furthest, margin)) chosen = line, furthest = r, chosenHeld = held;
   }
-  // Just crossed (the lines moved with no copy over this edge): only a copy that meets no body at
-  // all, wherever the platform meets it, replaces the one it has.
-  if (strict && chosen && !platformCopyIn(pl, targetOf(*chosen))) {
-    std::vector<PlatformLine> lines = pl.lines;
-    if (!linesThrough(pl, *chosen, lines) || anyInstanceIn(targetOf(*chosen), lines)) return std::nullopt;
+  // The new copy, and the first body in its lines that the platform would meet there (it has no
+  // other copy then: a body also in its own part is met there).
+  std::optional<PlatformCopy> made;
+  std::optional<PlatformHit> over;
+  if (chosen && !platformCopyIn(pl, targetOf(*chosen)) && targetOf(*chosen) != pl.part &&
+      part(targetOf(*chosen)).initialized()) {
+    PlatformCopy c;
+    c.part = targetOf(*chosen);
+    c.rotation = home.warps()[home.lines()[*chosen].warp].rotation;
+    c.edge = *chosen;
+    c.lines = pl.lines;
+    if (linesThrough(pl, c.edge, c.lines)) {
+      c.box = boxOfLines(c.lines);
+      over = firstBodyIn(c, [&](const Entity& e) { return !e.instanceIn(pl.part); });
+      made = std::move(c);
+    }
   }
+  if (placing == CopyPlacing::Create && over) return over;
+  // Just crossed: a copy over another edge only where no body at all is in its lines (the lines came
+  // over that edge with no copy: a body there is met the next frame, where it may have gone).
+  if (placing == CopyPlacing::Crossed && made && firstBodyIn(*made, [](const Entity&) { return true; }))
+    return std::nullopt;
   std::erase_if(pl.copies, [&](const PlatformCopy& c) {
     const bool kept = chosen && targetOf(*chosen) == c.part;
     if (!kept) ++platformEpochs[c.part];
     return !kept;
   });
-  if (!chosen) return std::nullopt;
-  const Warp& w = home.warps()[home.lines()[*chosen].warp];
-  if (w.target == pl.part || platformCopyIn(pl, w.target) || !part(w.target).initialized()) return std::nullopt;
-  PlatformCopy c;
-  c.part = w.target;
-  c.rotation = w.rotation;
-  c.edge = *chosen;
-  c.lines = pl.lines;
-  if (!linesThrough(pl, c.edge, c.lines)) return std::nullopt;
-  c.box = boxOfLines(c.lines);
-  // Nothing of that part may be inside it (no push made room for it).
-  std::optional<PlatformHit> over;
-  std::vector<Vec2> verts;
-  entityIndex.forEachNear(c.part, c.box, [&](uint32_t s) {
-    const Instance* inst = slots[s].entity->instanceIn(c.part);
-    if (over || !inst || platformMeets(pl, *slots[s].entity)) return;  // met where it is first
-    worldVertices(*inst, verts);
-    for (uint32_t k = 0; k < c.lines.size() && !over; ++k)
-      if ((c.lines[k].kind != LineKind::OneWay || wholyInFront(verts, c.lines[k].segment)) &&
-          overlapsInterior(verts, c.lines[k].segment))
-        over = PlatformHit{Fraction::zero(), s, k, c.part};
-  });
-  if (over) return over;
-  ++platformEpochs[c.part];
-  pl.copies.push_back(std::move(c));
-  return std::nullopt;
+  if (!made) return std::nullopt;
+  // A body in its lines is in the platform already (its lines came over that edge with no copy:
+  // beside a vertex, or the frame it crossed): the platform passes through it, as through a body
+  // its copy's lines are left in, rather than stop where it cannot push (for good, whatever its
+  // motion, while the body stays).
+  ++platformEpochs[made->part];
+  pl.copies.push_back(std::move(*made));
+  return over;
 }
 
 // A body met where the platform's own lines are (platformMeets) has its copies on the faces beyond
@@ -211,24 +228,6 @@ void WorldImpl::clearPlatformCopies(uint32_t slot) {
   }
 }
 
-// Whether any body's instance in `partId` overlaps one of the lines (a one-way one from its front).
-// Until it crosses, the platform meets the bodies that are also in its own part there
-// (platformMeets); their copies beyond the edge, rounded in their own frame, can be a unit or so into
-// the copy's lines, and the platform goes over only once it would meet none of them so.
-bool WorldImpl::anyInstanceIn(MapPartId partId, const std::vector<PlatformLine>& lines) {
-  bool over = false;
-  std::vector<Vec2> verts;
-  entityIndex.forEachNear(partId, boxOfLines(lines), [&](uint32_t s) {
-    const Instance* inst = slots[s].entity->instanceIn(partId);
-    if (over || !inst) return;
-    worldVertices(*inst, verts);
-    for (const PlatformLine& l : lines)
-      if ((l.kind != LineKind::OneWay || wholyInFront(verts, l.segment)) && overlapsInterior(verts, l.segment))
-        over = true;
-  });
-  return over;
-}
-
 bool WorldImpl::crossPlatform(uint32_t slot) {
   Platform& pl = platforms[slot];
   if (pl.copies.empty()) return false;
@@ -240,7 +239,10 @@ bool WorldImpl::crossPlatform(uint32_t slot) {
     if (!beyond || !whollyBeyond(pl, seg)) continue;
     const MapPart& there = part(w.target);
     const std::optional<LineIndex> back = warpInto(there, pl.part);
-    if (!back || anyInstanceIn(beyond->part, beyond->lines)) continue;
+    // Until it crosses, the platform meets the bodies also in its own part there (platformMeets);
+    // their copies beyond the edge, rounded in their own frame, can be a unit or so into the copy's
+    // lines, and it goes over only once it would meet none of them so.
+    if (!back || firstBodyIn(*beyond, [](const Entity&) { return true; })) continue;
     // Its lines stay where they are in every part: the copy's become its own, its own a copy of the
     // new part's (following it back through the warp), and a copy on a face the new part has a warp
     // into follows it through that warp; any other copy is dropped (made again next frame if reached).

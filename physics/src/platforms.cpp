@@ -76,7 +76,8 @@ PlatformId World::createPlatform(MapPartId partId, std::span<const PlatformLine>
   pl.alive = true;
   ++w.platformEpochs[pl.part];  // what rests in its part is looked at again
   const PlatformId id{index, pl.generation};
-  if (const std::optional<WorldImpl::PlatformHit> over = w.updatePlatformCopies(index, {})) {
+  if (const std::optional<WorldImpl::PlatformHit> over =
+          w.updatePlatformCopies(index, {}, WorldImpl::CopyPlacing::Create)) {
     destroyPlatform(id);
     throw Error("createPlatform: line " + std::to_string(over->line) + " would overlap entity " +
                 std::to_string(over->entity) + " in map part " + std::to_string(over->part) +
@@ -765,8 +766,8 @@ Angle WorldImpl::turnPlatform(uint32_t slot) {
   return turned;
 }
 
-// One platform's frame: its copies on the faces beside it that this frame's motion reaches (one
-// that cannot be placed stops it), then who stands on it; move it as far as its motion goes or until
+// One platform's frame: its copies on the faces beside it that this frame's motion reaches, then
+// who stands on it; move it as far as its motion goes or until
 // a push is impossible, turn it as far as its spin goes or until a push is impossible, then carry
 // those standing on it as if fixed to it (less what it pushed them), clearing its copies' lines of
 // what the moves left in them before and after the carry (a rider carried through a vertex can
@@ -777,17 +778,16 @@ void WorldImpl::movePlatforms() {
     platforms[slot].work = 0;
     if (!platforms[slot].alive || (platforms[slot].motionQ30 == Vec2w{} && platforms[slot].spin == 0)) continue;
     const Vec2w motion = frameMotion(platforms[slot]);
-    const std::optional<PlatformHit> unplaced = updatePlatformCopies(slot, motion);
-    if (unplaced) crushed(slot, unplaced->entity, unplaced->line, unplaced->part);
+    updatePlatformCopies(slot, motion, CopyPlacing::Frame);
     const std::vector<Rider> riders = ridersOf(slot);
-    const Vec2w moved = motion == Vec2w{} || unplaced ? Vec2w{} : advancePlatform(slot, motion);
+    const Vec2w moved = motion == Vec2w{} ? Vec2w{} : advancePlatform(slot, motion);
     const Angle turned = platforms[slot].spin == 0 ? 0 : turnPlatform(slot);
     clearPlatformCopies(slot);
     carryRiders(slot, riders, moved, turned);
     clearPlatformCopies(slot);
     // Crossed: the lines may be over another edge of the face they came to; a copy there now, where
     // it meets no body at all, rather than the next frame (the entities step meanwhile).
-    if (crossPlatform(slot)) updatePlatformCopies(slot, {}, true);
+    if (crossPlatform(slot)) updatePlatformCopies(slot, {}, CopyPlacing::Crossed);
   }
 }
 

@@ -294,12 +294,15 @@ struct WorldImpl {
   // Rules::crushed for the entity (its slot) that platform `slot`'s line `line` stopped in `part`.
   void crushed(uint32_t slot, uint32_t entity, uint32_t line, MapPartId part);
   // platform_copies.cpp: the copies platform `slot` needs moving by `motion` (made where its lines
-  // come within reach of a warp edge, dropped where they no longer do). A copy that cannot be placed
-  // (a body is where its lines would be) is not made: its blocker is returned. `strict` (just
-  // crossed, nothing to stop): a new copy only where no body's instance at all is in its lines, and
-  // the copies as they were otherwise.
-  std::optional<PlatformHit> updatePlatformCopies(uint32_t slot, Vec2w motion, bool strict = false);
-  bool anyInstanceIn(MapPartId part, const std::vector<PlatformLine>& lines);
+  // come within reach of a warp edge, dropped where they no longer do). Returns the first body in a
+  // new copy's lines, of those the platform meets there. What is made over such a body: at a frame's
+  // start the copy (the body is passed through), on creation nothing (World::createPlatform refuses
+  // the platform), just after crossing nothing (nor is any copy dropped: the next frame's start
+  // decides, where the body may have gone).
+  enum class CopyPlacing { Frame, Create, Crossed };
+  std::optional<PlatformHit> updatePlatformCopies(uint32_t slot, Vec2w motion, CopyPlacing placing);
+  template <class Meets>
+  std::optional<PlatformHit> firstBodyIn(const PlatformCopy& c, Meets&& meets);
   // Once every line of platform `slot` is beyond one warp edge, it belongs to the face beyond
   // (true: it crossed).
   bool crossPlatform(uint32_t slot);
