@@ -540,6 +540,16 @@ std::vector<physics::Segment> placedCopy(const std::vector<physics::PlatformLine
   return placed;
 }
 
+// Whether the polygon is in one of a copy's lines as placed (placedCopy), to within two units: the
+// copy is placed exactly, the estimate rounds a turn in doubles.
+bool inPlacedCopy(std::span<const Vec2> verts, std::span<const physics::Segment> placed) {
+  for (const physics::Segment& l : placed)
+    for (int dx = -2; dx <= 2; ++dx)
+      for (int dy = -2; dy <= 2; ++dy)
+        if (physics::overlapsInterior(verts, {{l.a.x + dx, l.a.y + dy}, {l.b.x + dx, l.b.y + dy}})) return true;
+  return false;
+}
+
 // Each body's instances: their parts and world vertices.
 using Instances = std::map<uint32_t, std::vector<std::pair<physics::MapPartId, std::vector<Vec2>>>>;
 Instances instancesOf(const physics::World& w) {
@@ -671,15 +681,9 @@ SceneCounts randomPlatformScenes(uint64_t seed, int scenes, bool turning) {
         const auto body = atStart.find(o.entity);
         if (body == atStart.end()) return false;
         const std::vector<physics::Segment> placed = placedCopy(linesBefore, p, *c);
-        // (to within two units: the copy is placed exactly, this estimate rounds a turn in doubles)
-        for (const auto& [part, verts] : body->second)
-          for (const physics::Segment& l : placed)
-            for (int dx = -2; dx <= 2; ++dx)
-              for (int dy = -2; dy <= 2; ++dy)
-                if (part == o.part &&
-                    physics::overlapsInterior(verts, {{l.a.x + dx, l.a.y + dy}, {l.b.x + dx, l.b.y + dy}}))
-                  return true;
-        return false;
+        return std::any_of(body->second.begin(), body->second.end(), [&](const auto& instance) {
+          return instance.first == o.part && inPlacedCopy(instance.second, placed);
+        });
       };
       // Where the platform meets a body: never in its own part; in its copy's, only a body whose copy
       // was already in that line, that is or was beside a vertex (its copies there disagree with each
@@ -810,6 +814,76 @@ TEST(PlatformCrossing, RandomTurningPlatformsOverRandomSolidsNeverOverlapAndNeve
       "placed over one)\n",
       c.frames, c.crossings, c.uncopiedCrossings, c.crushed, c.copyOverlaps, c.copyOverlapsCrushed, c.passedThrough,
       c.placedOver);
+}
+
+// A plank across a vertex's corner, over both its edges (further over the first: its copy is
+// there), with a box where its lines reach beyond the second: one copy at most, so the box is in its
+// lines with no copy there. Driven further over the second edge, its copy goes there, over the box,
+// which it passes through; driven back, it comes back. Before, that copy was not made, and the plank
+// stopped with a crushed call every frame, whichever way it was driven, for as long as the box
+// stayed. Every vertex of every face of the five solids.
+TEST(PlatformCrossing, APlankOverTwoEdgesAtAVertexIsNotHeldByABoxItReachesBeyondTheSecond) {
+  int corners = 0, placedOver = 0;
+  for (const stage::Solid solid : stage::kSolids) {
+    auto b = build(solid);
+    CountCrushes rules;
+    b->world.setRules(&rules);
+    for (size_t f = 0; f < b->stage.faceCount(); ++f) {
+      const std::vector<Edge> edges = edgesOf(b->world, b->stage.part(f));
+      for (size_t k = 0; k < edges.size(); ++k) {
+        const Edge& e1 = edges[k];
+        const Edge& e2 = edges[(k + 1) % edges.size()];  // from the vertex e1 ends at
+        SCOPED_TRACE(::testing::Message() << "solid " << int(solid) << " face " << f << " vertex " << k);
+        // 80 units from the vertex along each edge: 35 beyond the first, 30 beyond the second, where
+        // a box 40 units wide is (its line still in it when the copy goes there).
+        const Vec2 p1 = rounded(e1.seg.b.x - e1.d.x * 80 - e1.in.x * 35, e1.seg.b.y - e1.d.y * 80 - e1.in.y * 35);
+        const Vec2 p2 = rounded(e2.seg.a.x + e2.d.x * 80 - e2.in.x * 30, e2.seg.a.y + e2.d.y * 80 - e2.in.y * 30);
+        const Vec2d inB{e2.td.y, -e2.td.x};  // into the face beyond the second edge
+        const Vec2 boxAt =
+            rounded(e2.targetSeg.a.x + e2.td.x * 80 + inB.x * 30, e2.targetSeg.a.y + e2.td.y * 80 + inB.y * 30);
+        const physics::PlatformLine plank{{p1, p2}};
+        const physics::PlatformId id = b->world.createPlatform(b->stage.part(f), std::span(&plank, 1));
+        const physics::EntityId box = b->world.createEntity(physics::Convex::box(20, 20));
+        b->world.insert(box, e2.target, boxAt, 0);
+        ASSERT_EQ(b->world.platform(id).copies.size(), 1u);
+        ASSERT_EQ(b->world.platform(id).copies[0].part, e1.target);
+        const int crushesBefore = rules.crushes;
+        // Over the second edge until its copy is there (and two frames more), then back as far.
+        int shortFrames = 0;  // frames it did not move its motion on its face
+        bool boxInCopy = false;
+        auto drive = [&](Vec2 motion) {
+          b->world.setPlatformMotion(id, motion);
+          const physics::PlatformView before = b->world.platform(id);
+          const std::vector<physics::PlatformLine> linesBefore(before.lines.begin(), before.lines.end());
+          const Instances boxBefore = instancesOf(b->world);
+          b->world.solve();
+          const physics::PlatformView p = b->world.platform(id);
+          shortFrames +=
+              p.part != before.part || Vec2{p.offset.x - before.offset.x, p.offset.y - before.offset.y} != motion;
+          const bool there = !p.copies.empty() && p.copies[0].part == e2.target;
+          if (there && !boxInCopy)  // the copy as placed, over the box
+            boxInCopy = inPlacedCopy(boxBefore.at(box.index)[0].second, placedCopy(linesBefore, p, p.copies[0]));
+          return there;
+        };
+        const Vec2 out = rounded(-e2.in.x * 5, -e2.in.y * 5);
+        int frames = 0, after = -1;
+        while (frames < 40 && after < 2) {
+          ++frames;
+          if (drive(out) || after >= 0) ++after;
+        }
+        for (int frame = 0; frame < frames; ++frame) drive({-out.x, -out.y});
+        EXPECT_EQ(shortFrames, 0);
+        EXPECT_EQ(rules.crushes, crushesBefore) << rules.last;
+        EXPECT_EQ(b->world.platform(id).offset, (Vec2{0, 0}));
+        placedOver += boxInCopy;
+        ++corners;
+        b->world.destroyPlatform(id);
+        b->world.destroyEntity(box);
+      }
+    }
+  }
+  EXPECT_EQ(corners, 4 * 3 + 6 * 4 + 8 * 3 + 12 * 5 + 20 * 3);
+  EXPECT_EQ(placedOver, corners);  // the copy went over the box every time
 }
 
 // A platform made already over an edge, where a body stands on the face beyond, is refused (an
