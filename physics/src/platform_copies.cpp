@@ -185,9 +185,9 @@ std::optional<WorldImpl::PlatformHit> WorldImpl::updatePlatformCopies(uint32_t s
   });
   if (!made) return std::nullopt;
   // A body in its lines is in the platform already (its lines came over that edge with no copy:
-  // beside a vertex, or the frame it crossed): the platform passes through it, as through a body
-  // its copy's lines are left in, rather than stop where it cannot push (for good, whatever its
-  // motion, while the body stays).
+  // beside a vertex, or the frame it crossed): it is one left in a copy's line (clearPlatformCopies
+  // clears it off, or the platform passes through it), rather than a reason to stop where no push
+  // can help (for good, whatever the platform's motion, while the body stays).
   ++platformEpochs[made->part];
   pl.copies.push_back(std::move(*made));
   return over;

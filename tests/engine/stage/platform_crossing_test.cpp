@@ -818,8 +818,9 @@ TEST(PlatformCrossing, RandomTurningPlatformsOverRandomSolidsNeverOverlapAndNeve
 
 // A plank across a vertex's corner, over both its edges (further over the first: its copy is
 // there), with a box where its lines reach beyond the second: one copy at most, so the box is in its
-// lines with no copy there. Driven further over the second edge, its copy goes there, over the box,
-// which it passes through; driven back, it comes back. Before, that copy was not made, and the plank
+// lines with no copy there. Driven further over the second edge, its copy goes there, over the box
+// (cleared off its line, or passed through, as a body left in a copy's line); driven back, it comes
+// back. Before, that copy was not made, and the plank
 // stopped with a crushed call every frame, whichever way it was driven, for as long as the box
 // stayed. Every vertex of every face of the five solids.
 TEST(PlatformCrossing, APlankOverTwoEdgesAtAVertexIsNotHeldByABoxItReachesBeyondTheSecond) {

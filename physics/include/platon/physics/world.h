@@ -157,10 +157,10 @@ class World {
   // (its part, lines, pivot and motion turned into that part's frame, exactly; its offset counted from there; its copy
   // over another edge of that face made in the same frame where it meets no body, else the next frame). A copy
   // made over a body there (the lines came over that edge with no copy: beside a vertex, where it has one copy, or the
-  // frame it crossed) passes through that body, as does a copy's line a body is left in; a platform is stopped only by
-  // a body it meets (Rules::crushed). On a part that is not a face of a solid a platform stays in its part.
-  // docs/physics.md, "Platforms across edges", says more. Up to 65,536 lines a platform and 16,384 platforms; lines
-  // must be Solid or OneWay.
+  // frame it crossed) treats that body as one left in a copy's line (cleared off it, or passed through); a platform is
+  // stopped only by a body it meets (Rules::crushed). On a part that is not a face of a solid a platform stays in its
+  // part. docs/physics.md, "Platforms across edges", says more. Up to 65,536 lines a platform and 16,384 platforms;
+  // lines must be Solid or OneWay.
   PlatformId createPlatform(MapPartId part, std::span<const PlatformLine> lines);
   void destroyPlatform(PlatformId id);
   void setPlatformMotion(PlatformId id, Vec2 perFrame);
