@@ -215,13 +215,7 @@ std::vector<WorldImpl::Rider> WorldImpl::ridersOf(uint32_t slot) {
       const Instance* inst = e.instanceIn(at.part);
       if (!inst || platformMeets(pl, e) != at.part) return;
       worldVertices(*inst, verts);
-      // One in a line (its copy was there, rounded in its own frame, when the platform came to meet
-      // it here, and no lift freed it) is passed through, as the platform's move passes it: not
-      // carried.
-      if (std::any_of(at.lines.begin(), at.lines.end(), [&](const PlatformLine& l) {
-            return l.kind != LineKind::OneWay && overlapsInterior(verts, l.segment);
-          }))
-        return;
+      if (passesThrough(at.lines, verts)) return;  // not carried
       for (const PlatformLine& l : at.lines) {
         if (!stops(l, verts) || !standsOn(l.segment)) continue;
         if (dot128(normalTowards(verts, l.segment), gravity) < 0) {  // it stands on the line's upper side
@@ -256,6 +250,7 @@ WorldImpl::PlatformHit WorldImpl::firstPlatformHit(uint32_t slot, Vec2w motion) 
         return;
       work += at.lines.size();
       worldVertices(*inst, verts);
+      if (at.part != pl.part && passesThrough(at.lines, verts)) return;
       for (uint32_t k = 0; k < at.lines.size(); ++k) {
         if (!stops(at.lines[k], verts)) continue;
         const Sweep sw = sweep(verts, -m, at.lines[k].segment);
@@ -289,12 +284,10 @@ Vec2w WorldImpl::clearPlatformStep(uint32_t slot, Vec2w step, std::optional<Plat
         return;
       platforms[slot].work += at.lines.size();
       worldVertices(*inst, verts);
+      if (at.part != pl.part && passesThrough(at.lines, verts)) return;
       for (const PlatformLine& l : at.lines) {
         if (!stops(l, verts)) continue;
         const Sweep sw = sweep(verts, -m, l.segment);
-        // A body already in a copy's line (its own copy was there, rounded in its frame, when the
-        // platform came to meet it there: platformMeets) is passed through, as a one-way line passes
-        // what is behind it, not crushed.
         const bool inside = sw.startsInside() && l.kind != LineKind::OneWay && at.part == pl.part;
         if (sw.hitsWithinFrame() || inside) clear = false;
       }
@@ -685,6 +678,7 @@ bool WorldImpl::clearTurn(uint32_t slot, const TurnPlace& at, uint32_t& blocker,
         const Instance* inst = e.instanceIn(at.part);
         if (!inst) break;
         worldVertices(*inst, verts);
+        if (at.part != platforms[slot].part && passesThrough(*at.from, verts)) break;
         const size_t k = lineSweepingOver(at, sweep, verts, platforms[slot].work);
         if (k == at.to.size()) break;
         if (!pushing) {
@@ -767,12 +761,11 @@ Angle WorldImpl::turnPlatform(uint32_t slot) {
 }
 
 // One platform's frame: its copies on the faces beside it that this frame's motion reaches, then
-// who stands on it; move it as far as its motion goes or until
-// a push is impossible, turn it as far as its spin goes or until a push is impossible, then carry
-// those standing on it as if fixed to it (less what it pushed them), clearing its copies' lines of
-// what the moves left in them before and after the carry (a rider carried through a vertex can
-// land in one); wholly beyond an edge, it belongs to the face beyond, and has the copies its
-// lines need there.
+// who stands on it; move it as far as its motion goes or until a push is impossible, turn it as far
+// as its spin goes or until a push is impossible, then carry those standing on it as if fixed to it
+// (less what it pushed them), clearing its copies' lines of what the moves left in them before and
+// after the carry (a rider carried through a vertex can land in one); wholly beyond an edge, it
+// belongs to the face beyond, and has the copies its lines need there.
 void WorldImpl::movePlatforms() {
   for (uint32_t slot = 0; slot < platforms.size(); ++slot) {
     platforms[slot].work = 0;
