@@ -101,8 +101,7 @@ bool WorldImpl::linesThrough(const Platform& pl, LineIndex edge, std::vector<Pla
   return true;
 }
 
-// The first body with an instance in the copy's part that `meets` there and is in one of its lines
-// (a one-way one from its front).
+// The first body with an instance in the copy's part that `meets` there and is in one of its lines.
 template <class Meets>
 std::optional<WorldImpl::PlatformHit> WorldImpl::firstBodyIn(const PlatformCopy& c, Meets&& meets) {
   std::optional<PlatformHit> over;
@@ -111,12 +110,14 @@ std::optional<WorldImpl::PlatformHit> WorldImpl::firstBodyIn(const PlatformCopy&
     const Instance* inst = slots[s].entity->instanceIn(c.part);
     if (over || !inst || !meets(*slots[s].entity)) return;
     worldVertices(*inst, verts);
-    for (uint32_t k = 0; k < c.lines.size() && !over; ++k)
-      if ((c.lines[k].kind != LineKind::OneWay || wholyInFront(verts, c.lines[k].segment)) &&
-          overlapsInterior(verts, c.lines[k].segment))
-        over = PlatformHit{Fraction::zero(), s, k, c.part};
+    if (const std::optional<uint32_t> k = lineItIsIn(c.lines, verts))
+      over = PlatformHit{Fraction::zero(), s, *k, c.part};
   });
   return over;
+}
+
+bool WorldImpl::anyBodyIn(const PlatformCopy& c) {
+  return firstBodyIn(c, [](const Entity&) { return true; }).has_value();
 }
 
 std::optional<WorldImpl::PlatformHit> WorldImpl::updatePlatformCopies(uint32_t slot, Vec2w motion,
@@ -169,15 +170,15 @@ std::optional<WorldImpl::PlatformHit> WorldImpl::updatePlatformCopies(uint32_t s
     c.lines = pl.lines;
     if (linesThrough(pl, c.edge, c.lines)) {
       c.box = boxOfLines(c.lines);
-      over = firstBodyIn(c, [&](const Entity& e) { return !e.instanceIn(pl.part); });
+      if (placing != CopyPlacing::Crossed)
+        over = firstBodyIn(c, [&](const Entity& e) { return !e.instanceIn(pl.part); });
       made = std::move(c);
     }
   }
   if (placing == CopyPlacing::Create && over) return over;
   // Just crossed: a copy over another edge only where no body at all is in its lines (the lines came
   // over that edge with no copy: a body there is met the next frame, where it may have gone).
-  if (placing == CopyPlacing::Crossed && made && firstBodyIn(*made, [](const Entity&) { return true; }))
-    return std::nullopt;
+  if (placing == CopyPlacing::Crossed && made && anyBodyIn(*made)) return std::nullopt;
   std::erase_if(pl.copies, [&](const PlatformCopy& c) {
     const bool kept = chosen && targetOf(*chosen) == c.part;
     if (!kept) ++platformEpochs[c.part];
@@ -212,19 +213,17 @@ void WorldImpl::clearPlatformCopies(uint32_t slot) {
     Instance* inst = e.instanceIn(partId);
     if (!c || !inst) continue;
     worldVertices(*inst, verts);
-    for (const PlatformLine& l : c->lines) {
-      if ((l.kind == LineKind::OneWay && !wholyInFront(verts, l.segment)) || !overlapsInterior(verts, l.segment))
-        continue;
-      const Vec2w away = normalTowards(verts, l.segment);
-      if (inst != &e.instances[0]) {
-        liftCopy(e, *inst, away, {});
-      } else {  // pushed out of the line's side, as far as it takes (and a unit)
-        const Vec2w by = stepAlong(away, unitsOutOf(verts, l.segment, away) + 1);
-        push(e, inst->frame == 0 ? by : rotateWideInverse(inst->rotation, by));
-      }
-      reindex(e);
-      break;
+    const std::optional<uint32_t> k = lineItIsIn(c->lines, verts);
+    if (!k) continue;
+    const Segment& line = c->lines[*k].segment;
+    const Vec2w away = normalTowards(verts, line);
+    if (inst != &e.instances[0]) {
+      liftCopy(e, *inst, away, {});
+    } else {  // pushed out of the line's side, as far as it takes (and a unit)
+      const Vec2w by = stepAlong(away, unitsOutOf(verts, line, away) + 1);
+      push(e, inst->frame == 0 ? by : rotateWideInverse(inst->rotation, by));
     }
+    reindex(e);
   }
 }
 
@@ -242,7 +241,7 @@ bool WorldImpl::crossPlatform(uint32_t slot) {
     // Until it crosses, the platform meets the bodies also in its own part there (platformMeets);
     // their copies beyond the edge, rounded in their own frame, can be a unit or so into the copy's
     // lines, and it goes over only once it would meet none of them so.
-    if (!back || firstBodyIn(*beyond, [](const Entity&) { return true; })) continue;
+    if (!back || anyBodyIn(*beyond)) continue;
     // Its lines stay where they are in every part: the copy's become its own, its own a copy of the
     // new part's (following it back through the warp), and a copy on a face the new part has a warp
     // into follows it through that warp; any other copy is dropped (made again next frame if reached).

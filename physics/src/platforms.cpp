@@ -288,6 +288,8 @@ Vec2w WorldImpl::clearPlatformStep(uint32_t slot, Vec2w step, std::optional<Plat
       for (const PlatformLine& l : at.lines) {
         if (!stops(l, verts)) continue;
         const Sweep sw = sweep(verts, -m, l.segment);
+        // In its own part, a body in one of its lines stops it (never left there); in a copy's, one
+        // is passed through (above).
         const bool inside = sw.startsInside() && l.kind != LineKind::OneWay && at.part == pl.part;
         if (sw.hitsWithinFrame() || inside) clear = false;
       }

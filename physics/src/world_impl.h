@@ -295,14 +295,16 @@ struct WorldImpl {
   void crushed(uint32_t slot, uint32_t entity, uint32_t line, MapPartId part);
   // platform_copies.cpp: the copies platform `slot` needs moving by `motion` (made where its lines
   // come within reach of a warp edge, dropped where they no longer do). Returns the first body in a
-  // new copy's lines, of those the platform meets there. What is made over such a body: at a frame's
-  // start the copy (the body is one left in a copy's line: cleared off it, or passed through), on
-  // creation nothing (World::createPlatform refuses the platform), just after crossing nothing, nor
-  // is any copy dropped (the next frame's start decides, where the body may have gone).
+  // new copy's lines, of those the platform meets there (World::createPlatform's refusal). What is
+  // made over such a body: at a frame's start the copy (the body is one left in a copy's line:
+  // cleared off it, or passed through), on creation nothing, just after crossing nothing over any
+  // body at all, nor is any copy dropped (the next frame's start decides, where the body may have
+  // gone).
   enum class CopyPlacing { Frame, Create, Crossed };
   std::optional<PlatformHit> updatePlatformCopies(uint32_t slot, Vec2w motion, CopyPlacing placing);
   template <class Meets>
   std::optional<PlatformHit> firstBodyIn(const PlatformCopy& c, Meets&& meets);
+  bool anyBodyIn(const PlatformCopy& c);
   // Once every line of platform `slot` is beyond one warp edge, it belongs to the face beyond
   // (true: it crossed).
   bool crossPlatform(uint32_t slot);
@@ -319,14 +321,19 @@ struct WorldImpl {
       if (e.instanceIn(c.part)) return c.part;
     return std::nullopt;
   }
+  // The first of the lines the polygon is in (its interior across a solid line; a one-way line
+  // lets through what crosses it, and a polygon wholly in front of one is not across it).
+  static std::optional<uint32_t> lineItIsIn(std::span<const PlatformLine> lines, std::span<const Vec2> verts) {
+    for (uint32_t k = 0; k < lines.size(); ++k)
+      if (lines[k].kind != LineKind::OneWay && overlapsInterior(verts, lines[k].segment)) return k;
+    return std::nullopt;
+  }
   // Whether a body the platform meets in a copy's part is in one of the copy's lines there (its own
   // copy was there, rounded in its frame, when the platform came to meet it there; or the copy was
   // made where it already was): the platform passes through it, as a one-way line passes what is
   // behind it: its lines neither push, carry nor stop at it until it is out of them.
   static bool passesThrough(std::span<const PlatformLine> lines, std::span<const Vec2> verts) {
-    return std::any_of(lines.begin(), lines.end(), [&](const PlatformLine& l) {
-      return l.kind != LineKind::OneWay && overlapsInterior(verts, l.segment);
-    });
+    return lineItIsIn(lines, verts).has_value();
   }
   // Where the lines of a platform are in one of its parts (its own, or its copy's), with the step
   // they take there when the platform steps by some step.
