@@ -157,10 +157,7 @@ std::optional<WorldImpl::PlatformHit> WorldImpl::updatePlatformCopies(uint32_t s
     const int64_t margin = held ? -kCopyReach : chosenHeld ? kCopyReach : 0;  // what `r` must beat `furthest` by
     if (!chosen || r->beyond(*furthest, margin)) chosen = line, furthest = r, chosenHeld = held;
   }
-  // The new copy, and the first body in its lines that the platform would meet there (it has no
-  // other copy then: a body also in its own part is met there).
   std::optional<PlatformCopy> made;
-  std::optional<PlatformHit> over;
   if (chosen && !platformCopyIn(pl, targetOf(*chosen)) && targetOf(*chosen) != pl.part &&
       part(targetOf(*chosen)).initialized()) {
     PlatformCopy c;
@@ -170,12 +167,15 @@ std::optional<WorldImpl::PlatformHit> WorldImpl::updatePlatformCopies(uint32_t s
     c.lines = pl.lines;
     if (linesThrough(pl, c.edge, c.lines)) {
       c.box = boxOfLines(c.lines);
-      if (placing != CopyPlacing::Crossed)
-        over = firstBodyIn(c, [&](const Entity& e) { return !e.instanceIn(pl.part); });
+      // Created over a body it would meet there (it has no other copy: one also in its own part is
+      // met there): refused.
+      if (placing == CopyPlacing::Create)
+        if (const std::optional<PlatformHit> over =
+                firstBodyIn(c, [&](const Entity& e) { return !e.instanceIn(pl.part); }))
+          return over;
       made = std::move(c);
     }
   }
-  if (placing == CopyPlacing::Create && over) return over;
   // Just crossed: a copy over another edge only where no body at all is in its lines (the lines came
   // over that edge with no copy: a body there is met the next frame, where it may have gone).
   if (placing == CopyPlacing::Crossed && made && anyBodyIn(*made)) return std::nullopt;
@@ -191,7 +191,7 @@ std::optional<WorldImpl::PlatformHit> WorldImpl::updatePlatformCopies(uint32_t s
   // can help (for good, whatever the platform's motion, while the body stays).
   ++platformEpochs[made->part];
   pl.copies.push_back(std::move(*made));
-  return over;
+  return std::nullopt;
 }
 
 // A body met where the platform's own lines are (platformMeets) has its copies on the faces beyond

@@ -294,12 +294,11 @@ struct WorldImpl {
   // Rules::crushed for the entity (its slot) that platform `slot`'s line `line` stopped in `part`.
   void crushed(uint32_t slot, uint32_t entity, uint32_t line, MapPartId part);
   // platform_copies.cpp: the copies platform `slot` needs moving by `motion` (made where its lines
-  // come within reach of a warp edge, dropped where they no longer do). Returns the first body in a
-  // new copy's lines, of those the platform meets there (World::createPlatform's refusal). What is
-  // made over such a body: at a frame's start the copy (the body is one left in a copy's line:
-  // cleared off it, or passed through), on creation nothing, just after crossing nothing over any
-  // body at all, nor is any copy dropped (the next frame's start decides, where the body may have
-  // gone).
+  // come within reach of a warp edge, dropped where they no longer do). A new copy over a body: at a
+  // frame's start made (the body is one left in a copy's line: cleared off it, or passed through);
+  // on creation not made, and the body is returned (World::createPlatform refuses the platform);
+  // just after crossing not made over any body at all, nor is any copy dropped (the next frame's
+  // start decides, where the body may have gone).
   enum class CopyPlacing { Frame, Create, Crossed };
   std::optional<PlatformHit> updatePlatformCopies(uint32_t slot, Vec2w motion, CopyPlacing placing);
   template <class Meets>
