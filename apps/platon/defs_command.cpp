@@ -7,13 +7,13 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <unistd.h>
 
 #include "commands.h"
 #include "engine_registry.h"
 #include "platon/core/error.h"
 #include "platon/core/live_scene.h"
+#include "platon/files/write_file.h"
 #include "platon/script/script_system.h"
 
 namespace platon::app {
@@ -22,10 +22,7 @@ namespace {
 namespace fs = std::filesystem;
 
 void writeFile(const fs::path& path, const std::string& text) {
-  fs::create_directories(path.parent_path());
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  if (!out) throw std::runtime_error(path.string() + ": cannot write it");
+  files::saveWholeOrThrow(path.string(), text, "the definitions");
 }
 
 // The server's settings for a folder of scripts of the set, to copy into it: LuaJIT, these

@@ -5,6 +5,7 @@
 
 #include "platon/core/visible_text.h"
 #include "platon/files/read_file.h"
+#include "platon/files/write_file.h"
 
 namespace platon::app {
 
@@ -39,7 +40,11 @@ bool writeJunit(const std::string& path, const JunitReport& report) {
     failure->SetAttribute("message", text.substr(0, text.find('\n')).c_str());
     failure->SetText(text.c_str());
   }
-  return doc.SaveFile(path.c_str()) == tinyxml2::XML_SUCCESS;
+  tinyxml2::XMLPrinter printer;
+  doc.Print(&printer);
+  return files::saveWhole(path, std::string(printer.CStr(), static_cast<size_t>(printer.CStrSize() - 1)),
+                          "the JUnit report")
+      .empty();
 }
 
 JunitReport readJunit(const std::string& path) {

@@ -8,7 +8,6 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <unistd.h>
 
 #include "commands.h"
@@ -16,6 +15,7 @@
 #include "platon/core/error.h"
 #include "platon/core/manifest.h"
 #include "platon/core/replay.h"
+#include "platon/core/visible_text.h"
 #include "platon/package/package.h"
 #include "platon/script/scenario.h"
 #include "run_command.h"
@@ -57,7 +57,7 @@ void verify(const fs::path& root, const std::string& folder, double timeout) {
   std::string scenario = script::scenarioFromReplay(fromRoot, none, "finish.replay");
   const std::string expect = "  expect = {\n";
   scenario.insert(scenario.find(expect) + expect.size(), "    goal_by = " + std::to_string(replay.frames()) + ",\n");
-  std::ofstream(root / "verify.lua") << scenario;
+  files::saveWholeOrThrow((root / "verify.lua").string(), scenario, "the package's check");
   const script::ScenarioResult r = runIsolated((root / "verify.lua").string(), timeout);
   if (!r.passed) throw std::runtime_error("finish.replay does not finish the level: " + r.message);
 }
@@ -108,11 +108,15 @@ int packCommand(int argc, char** argv) {
     replay.scene = "scene.lua";
     fs::remove(staging.path / folder / "finish.replay");
     core::writeReplay(replay, (staging.path / folder / "finish.replay").string());
+    for (const std::string& file : package::removeUncarriedFiles((staging.path / folder).string()))
+      std::printf("left out %s\n", core::visibleText(file).c_str());
     verify(staging.path, folder, timeout);
     const std::string name = core::loadManifest(found.scene).name;
     const package::PackageManifest m = package::writePackage(staging.path.string(), folder, name, out);
-    std::printf("%s: %s (%zu files, %llu frames to the goal), hash %s\n", out.c_str(), name.c_str(), m.files.size(),
-                static_cast<unsigned long long>(replay.frames()), m.hash.c_str());
+    // Names from content (the level's name) are shown through the visible-text filter: no terminal escapes.
+    std::printf("%s: %s (%zu files, %llu frames to the goal), hash %s\n", core::visibleText(out).c_str(),
+                core::visibleText(name).c_str(), m.files.size(), static_cast<unsigned long long>(replay.frames()),
+                m.hash.c_str());
     return 0;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s\n", core::errorReport(e).c_str());
@@ -144,13 +148,15 @@ int installCommand(int argc, char** argv) {
     if (fs::exists(fs::symlink_status(target)))
       throw std::runtime_error(target.string() + ": a level of this folder's name is installed (remove it first)");
     try {
+      for (const std::string& file : package::removeUncarriedFiles((staging.path / m.folder).string()))
+        std::printf("%s: refused %s\n", core::visibleText(archive).c_str(), core::visibleText(file).c_str());
       verify(staging.path, m.folder, timeout);
     } catch (const std::exception& e) {
       throw std::runtime_error(archive + ": " + e.what());
     }
     fs::rename(staging.path / m.folder, target);
-    std::printf("%s: installed %s in %s (the title screen lists it)\n", archive.c_str(), m.name.c_str(),
-                target.string().c_str());
+    std::printf("%s: installed %s in %s (the title screen lists it)\n", core::visibleText(archive).c_str(),
+                core::visibleText(m.name).c_str(), core::visibleText(target.string()).c_str());
     return 0;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s\n", core::errorReport(e).c_str());

@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <fcntl.h>
 #include <filesystem>
 #include <signal.h>
 #include <string>
@@ -96,9 +97,10 @@ std::string whyUnrecordable(const std::string& scenePath, const std::string& pat
   if (std::filesystem::is_directory(path, error)) return "is a folder";
   const std::string partial = path + ".partial";
   const bool existed = std::filesystem::exists(partial, error);
-  FILE* probe = std::fopen(partial.c_str(), "ab");
-  if (!probe) return "cannot write " + partial + ": " + std::strerror(errno);
-  std::fclose(probe);
+  // O_NOFOLLOW: a link of the partial file's name is not written through.
+  const int probe = ::open(partial.c_str(), O_WRONLY | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0644);
+  if (probe < 0) return "cannot write " + partial + ": " + std::strerror(errno);
+  ::close(probe);
   if (!existed) std::remove(partial.c_str());
   return "";
 }

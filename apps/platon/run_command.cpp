@@ -29,6 +29,7 @@
 #include "engine_registry.h"
 #include "junit.h"
 #include "platon/core/visible_text.h"
+#include "platon/files/write_file.h"
 #include "platon/script/scenario.h"
 #include "shard.h"
 
@@ -428,8 +429,8 @@ int scenarioCommand(int argc, char** argv) {
     if (out.empty()) {
       std::fputs(text.c_str(), stdout);
     } else {
-      std::ofstream file(out, std::ios::binary | std::ios::trunc);
-      if (!(file << text).flush()) return std::fprintf(stderr, "%s: cannot write\n", out.c_str()), 1;
+      if (const std::string why = files::saveWhole(out, text, "the scenario"); !why.empty())
+        return std::fprintf(stderr, "%s\n", why.c_str()), 1;
       std::fprintf(stderr, "wrote %s (%llu frames, %s)\n", out.c_str(),
                    static_cast<unsigned long long>(replay.frames()), outcome.message.c_str());
     }

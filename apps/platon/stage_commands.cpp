@@ -2,7 +2,6 @@
 
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <optional>
 #include <string>
 
@@ -11,6 +10,7 @@
 #include "level_argument.h"
 #include "platon/core/mesh_source.h"
 #include "platon/core/scene.h"
+#include "platon/files/write_file.h"
 #include "platon/stage/level_check.h"
 #include "platon/stage/net.h"
 
@@ -119,9 +119,10 @@ int netCommand(int argc, char** argv) {
       s = stageFor(*level);
       title = level->file;
     }
-    std::ofstream file(out);
-    file << stage::netSvg(s, stage::unfold(s), title, level ? &*level : nullptr);
-    if (!file) throw stage::StageError({out, 0, 0}, "cannot write the picture");
+    if (const std::string why =
+            files::saveWhole(out, stage::netSvg(s, stage::unfold(s), title, level ? &*level : nullptr), "the picture");
+        !why.empty())
+      throw stage::StageError({out, 0, 0}, why.substr(out.size() + 2));
   } catch (const stage::StageError& e) {
     std::fprintf(stderr, "%s\n", e.what());
     return 1;

@@ -139,12 +139,14 @@ TEST(Progress, AFailedSaveSaysWhyAndKeepsTheOldFile) {
   Progress p(path);
   ASSERT_TRUE(p.finish("a", 100, 0));
   const std::string before = read(path);
-  // The save's new file cannot be made (a folder stands where it goes; root cannot write that
-  // either): the save fails, says so, and the old file is as it was.
-  std::filesystem::create_directories(path + ".new");
+  // The file became a link (a save never replaces one, nor writes through it): the save fails,
+  // says so, and the file the link names is as it was.
+  std::filesystem::rename(path, folder.path("kept.txt"));
+  std::filesystem::create_symlink("kept.txt", path);
   EXPECT_FALSE(p.finish("b", 50, 0));
-  EXPECT_NE(p.lastError().find("cannot write the progress file"), std::string::npos) << p.lastError();
-  EXPECT_EQ(read(path), before);
+  EXPECT_NE(p.lastError().find("cannot write the progress file: it is a link"), std::string::npos) << p.lastError();
+  EXPECT_EQ(read(folder.path("kept.txt")), before);
+  EXPECT_TRUE(std::filesystem::is_symlink(path));
   // Nor can a progress file live under a file.
   folder.write("plain_file", "x");
   Progress under(folder.path("plain_file/progress.txt"));

@@ -3,13 +3,13 @@
 #include <algorithm>
 #include <charconv>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
 #include "platon/core/input.h"
 #include "platon/core/visible_text.h"
 #include "platon/files/read_file.h"
+#include "platon/files/write_file.h"
 
 namespace platon::core {
 namespace {
@@ -311,13 +311,11 @@ std::string formatReplay(const Replay& r) {
 void writeReplay(const Replay& replay, const std::string& path) {
   if (replay.scene.find_first_of("\"\n\r") != std::string::npos)
     throw std::runtime_error(path + ": a scene path with '\"' or a line break cannot be written");
-  const std::string temporary = path + ".partial";
-  {
-    std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-    file << formatReplay(replay);
-    if (!file.flush()) throw std::runtime_error(temporary + ": cannot write the replay");
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) throw std::runtime_error(path + ": cannot write the replay");
+  const std::string text = formatReplay(replay);
+  const std::string why = files::saveWhole(path, text, "the replay");
+  if (why.empty()) return;
+  files::saveWhole(path + ".partial", text, "the replay");  // the run kept beside it, where it can be
+  throw std::runtime_error(why);
 }
 
 uint64_t sceneFilesHash(const std::vector<std::string>& files) {

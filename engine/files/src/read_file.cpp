@@ -1,9 +1,12 @@
 #include "platon/files/read_file.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <fcntl.h>
+#include <linux/openat2.h>
 #include <sys/stat.h>
+#include <sys/syscall.h>
 #include <unistd.h>
 
 namespace platon::files {
@@ -22,11 +25,11 @@ std::string sizeText(unsigned long long bytes) {
   return std::to_string(bytes) + " bytes";
 }
 
-// Opens `path` for reading, checked: a regular file of at most maxBytes. Returns its size.
-size_t openChecked(const std::string& path, size_t maxBytes, Fd& file) {
-  // O_NONBLOCK: opening a FIFO with no writer would otherwise wait for one for ever.
-  file.fd = open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-  if (file.fd < 0) throw FileError(path, std::string("cannot open it: ") + std::strerror(errno));
+// O_NONBLOCK: opening a FIFO with no writer would otherwise wait for one for ever.
+constexpr int kReadFlags = O_RDONLY | O_NONBLOCK | O_CLOEXEC;
+
+// Checks the opened file: a regular file of at most maxBytes. Returns its size.
+size_t checkOpened(const std::string& path, size_t maxBytes, const Fd& file) {
   struct stat st {};
   if (fstat(file.fd, &st) != 0) throw FileError(path, std::string("cannot read it: ") + std::strerror(errno));
   if (!S_ISREG(st.st_mode))
@@ -42,26 +45,94 @@ size_t openChecked(const std::string& path, size_t maxBytes, Fd& file) {
   return static_cast<size_t>(size);
 }
 
-}  // namespace
+size_t openChecked(const std::string& path, size_t maxBytes, Fd& file) {
+  file.fd = open(path.c_str(), kReadFlags);
+  if (file.fd < 0) throw FileError(path, std::string("cannot open it: ") + std::strerror(errno));
+  return checkOpened(path, maxBytes, file);
+}
 
-std::string readBoundedFile(const std::string& path, size_t maxBytes) {
-  Fd file{-1};
-  std::string bytes(openChecked(path, maxBytes, file), '\0');
+// Fills `bytes` (sized to the file) from the file; shorter if the file shrank while read.
+void readAll(const std::string& path, const Fd& file, std::string& bytes) {
   size_t got = 0;
   while (got < bytes.size()) {
     const ssize_t n = read(file.fd, bytes.data() + got, bytes.size() - got);
     if (n < 0 && errno == EINTR) continue;
     if (n < 0) throw FileError(path, std::string("cannot read it: ") + std::strerror(errno));
-    if (n == 0) break;  // shorter than it said: it shrank while read
+    if (n == 0) break;
     got += static_cast<size_t>(n);
   }
   bytes.resize(got);
+}
+
+// Where the kernel has no openat2 (before Linux 5.6) or refuses it: the name walked a part at a
+// time, each part opened with O_NOFOLLOW, so no link is followed at all (stricter than openat2,
+// which follows a link that stays beneath).
+int openWalking(int folder, const std::string& name) {
+  int at = dup(folder);
+  for (size_t begin = 0; at >= 0;) {
+    const size_t end = std::min(name.find('/', begin), name.size());
+    const std::string part = name.substr(begin, end - begin);
+    if (part == "..") {
+      close(at);
+      errno = EXDEV;
+      return -1;
+    }
+    if (end == name.size()) {
+      const int fd = openat(at, part.c_str(), kReadFlags | O_NOFOLLOW);
+      const int saved = errno;
+      close(at);
+      errno = saved;
+      return fd;
+    }
+    const int next =
+        part.empty() || part == "." ? dup(at) : openat(at, part.c_str(), O_PATH | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+    const int saved = errno;
+    close(at);
+    errno = saved;
+    at = next;
+    begin = end + 1;
+  }
+  return -1;
+}
+
+int openBeneath(int folder, const std::string& name) {
+  open_how how{};
+  how.flags = kReadFlags;
+  how.resolve = RESOLVE_BENEATH | RESOLVE_NO_MAGICLINKS;
+  const long fd = syscall(SYS_openat2, folder, name.c_str(), &how, sizeof how);
+  if (fd < 0 && (errno == ENOSYS || errno == EPERM)) return openWalking(folder, name);  // EPERM: a seccomp filter
+  return static_cast<int>(fd);
+}
+
+}  // namespace
+
+std::string readBoundedFile(const std::string& path, size_t maxBytes) {
+  Fd file{-1};
+  std::string bytes(openChecked(path, maxBytes, file), '\0');
+  readAll(path, file, bytes);
   return bytes;
 }
 
 size_t checkBoundedFile(const std::string& path, size_t maxBytes) {
   Fd file{-1};
   return openChecked(path, maxBytes, file);
+}
+
+std::string readFileInside(const std::string& folder, const std::string& name, size_t maxBytes) {
+  const std::string shown = folder + "/" + name;
+  if (name.empty() || name[0] == '/')
+    throw FileError(shown, "not a name inside the folder (empty or absolute): content names its own files");
+  Fd dir{open(folder.c_str(), O_PATH | O_DIRECTORY | O_CLOEXEC)};
+  if (dir.fd < 0) throw FileError(folder, std::string("cannot open the folder: ") + std::strerror(errno));
+  Fd file{openBeneath(dir.fd, name)};
+  if (file.fd < 0) {
+    if (errno == EXDEV || errno == ELOOP)
+      throw FileError(shown, "leads out of its folder (through '..' or a link): content reads only its own folder");
+    throw FileError(shown, std::string("cannot open it: ") + std::strerror(errno));
+  }
+  std::string bytes(checkOpened(shown, maxBytes, file), '\0');
+  readAll(shown, file, bytes);
+  return bytes;
 }
 
 }  // namespace platon::files

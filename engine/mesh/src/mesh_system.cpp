@@ -6,15 +6,20 @@
 #include <assimp/scene.h>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <stdexcept>
 
+#include "folder_io.h"
 #include "platon/files/read_file.h"
 
 namespace platon::mesh {
 namespace {
 
 using Transform = std::array<std::array<double, 4>, 4>;  // row-major, acting on column vectors
+
+// The most corners one polygon of a mesh file may have. A face of a stage is one polygon of the
+// solid, and a solid's face with more corners than this is no level anyone draws; the cap is what
+// keeps assimp's split of a polygon into triangles (quadratic or worse in its corners) short.
+constexpr unsigned kMaxPolygonCorners = 1024;
 
 [[noreturn]] void fail(const std::string& path, const std::string& reason) {
   throw std::runtime_error(path + ": " + reason);
@@ -42,24 +47,42 @@ double determinant3(const Transform& t) {
          t[0][2] * (t[1][0] * t[2][1] - t[1][1] * t[2][0]);
 }
 
-// Refuses a file too big to be a stage before it is read whole: over the size cap, or a binary STL
-// whose header counts more triangles than a stage takes.
-void checkBeforeReading(const std::string& path) {
-  size_t bytes = 0;
-  try {  // assimp opens the file itself: a FIFO would block it, a device never end
-    bytes = files::checkBoundedFile(path, core::kMaxMeshFileBytes);
+// Refuses a file too big to be a stage before assimp reads it: over the size cap, or a binary STL
+// whose header counts more triangles than a stage takes. The file is read through the file layer
+// (a regular file, capped) as assimp will read it.
+void checkBeforeReading(const std::string& folder, const std::string& name, const std::string& path) {
+  std::string bytes;
+  try {
+    bytes = files::readFileInside(folder, name, core::kMaxMeshFileBytes);
   } catch (const files::FileError& e) {
     fail(path, e.reason());
   }
-  if (bytes < 84) return;
-  std::ifstream in(path, std::ios::binary);
-  char header[84];
-  if (!in.read(header, sizeof header)) return;
+  if (bytes.size() < 84) return;
   uint32_t count = 0;
-  std::memcpy(&count, header + 80, 4);
-  const bool binaryStl = bytes == 84 + 50 * uint64_t{count};
+  std::memcpy(&count, bytes.data() + 80, 4);
+  const bool binaryStl = bytes.size() == 84 + 50 * uint64_t{count};
   if (binaryStl && count > core::kMaxMeshFileTriangles)
     fail(path, "the file has " + std::to_string(count) + " triangles; a stage takes at most " +
+                   std::to_string(core::kMaxMeshFileTriangles));
+}
+
+// Refuses polygons a stage cannot take before assimp splits them into triangles (its split of an
+// n-cornered polygon takes time that grows as n squared or worse): every polygon of at most
+// kMaxPolygonCorners, and no more triangles in all than a stage takes.
+void checkPolygons(const aiScene& scene, const std::string& path) {
+  uint64_t triangles = 0;
+  for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+    const aiMesh& mesh = *scene.mMeshes[m];
+    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+      const unsigned corners = mesh.mFaces[f].mNumIndices;
+      if (corners > kMaxPolygonCorners)
+        fail(path, "a polygon of " + std::to_string(corners) + " corners; a stage's mesh takes polygons of at most " +
+                       std::to_string(kMaxPolygonCorners));
+      if (corners >= 3) triangles += corners - 2;
+    }
+  }
+  if (triangles > core::kMaxMeshFileTriangles)
+    fail(path, "the file makes " + std::to_string(triangles) + " triangles; a stage takes at most " +
                    std::to_string(core::kMaxMeshFileTriangles));
 }
 
@@ -101,12 +124,22 @@ class Flattener {
 }  // namespace
 
 core::MeshFile MeshSystem::loadMesh(const std::string& path) {
-  checkBeforeReading(path);
+  const size_t slash = path.find_last_of('/');
+  const std::string folder = slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
+  const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+  checkBeforeReading(folder, name, path);
   Assimp::Importer importer;
-  // Polygons split into triangles, nothing else: no joining of points (assimp's is within an
-  // absolute 1e-5, which collapses small models; polyhedronFromMesh welds relative to the size),
-  // no dropping of degenerate triangles (the stage builder says what it does with them).
-  const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_SortByPType);
+  auto* io = new FolderIO(folder, core::kMaxMeshFileBytes);
+  importer.SetIOHandler(io);  // the importer owns it
+  // Read as the file has it, checked, then polygons split into triangles, nothing else: no joining
+  // of points (assimp's is within an absolute 1e-5, which collapses small models;
+  // polyhedronFromMesh welds relative to the size), no dropping of degenerate triangles (the stage
+  // builder says what it does with them).
+  const aiScene* scene = importer.ReadFile(slash == std::string::npos ? folder + "/" + name : path, 0);
+  if (!io->refusals().empty()) fail(path, "it names a file it may not read: " + io->refusals().front());
+  if (!scene) fail(path, importer.GetErrorString());
+  checkPolygons(*scene, path);
+  scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_SortByPType);
   if (!scene) fail(path, importer.GetErrorString());
   if (!scene->mRootNode) fail(path, "the file places no mesh (it has no nodes)");
   Flattener flat(*scene);

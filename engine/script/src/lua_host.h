@@ -1,10 +1,10 @@
 // One LuaJIT state with the limits the engine puts on it, a traceback on every error, and two
 // kinds of code:
 //
-//  - trusted: the engine's own scripts (scripts/) and scenarios. All of LuaJIT's libraries, the
-//    JIT on. A trusted endless loop that the JIT compiled cannot be stopped from inside the
-//    process (LuaJIT runs no hooks in compiled traces); the scenario runner's worker processes
-//    are killed from outside after their wall-clock limit instead. An interpreted one is stopped
+//  - trusted: the engine's own scripts (scripts/), nothing else (scenarios run sandboxed). All of
+//    LuaJIT's libraries, the JIT on. A trusted endless loop that the JIT compiled cannot be stopped
+//    from inside the process (LuaJIT runs no hooks in compiled traces); the scenario runner's
+//    worker processes are killed from outside after their wall-clock limit instead. An interpreted one is stopped
 //    by the count hook after twice the frame budget.
 //  - sandboxed: level scripts, mods and a level's own rules. Each loaded chunk is a sandbox with
 //    an id, its own globals (the safe part of the standard library, see sandbox.cpp), loaded from

@@ -118,13 +118,19 @@ int convertProtected(lua_State* L) {
   return 0;
 }
 
-// Runs a scenario that is not a literal (trusted) and reads what it returns.
+// Runs a scenario that is not a literal and reads what it returns. It runs sandboxed, like a level's
+// scripts, whoever wrote it: scenarios travel with levels (the editor keeps a level's tests beside
+// it, packages carry them), so running one must never run its author's code with io and os. It
+// only computes a plan (loops, locals, string and math), under a frame's budget of steps.
 DataValue runScenarioFile(const std::string& path, std::string_view text) {
   LuaHost host;  // the scenario's own state: it only makes the plan
   lua_State* L = host.state();
   lua::StackGuard guard(L);
-  host.loadFile(path, Trust::Trusted);
-  host.call(0, 1);
+  const int sandbox = host.loadFile(path, Trust::Sandboxed);
+  host.beginFrame();
+  if (!host.callSandboxed(sandbox, 0, 1))
+    throw ScriptError(path + ": the scenario was stopped before it returned its plan (its budget of steps is spent)",
+                      "");
   Conversion job;
   job.line = returnLine(text);
   lua_pushcfunction(L, convertProtected);

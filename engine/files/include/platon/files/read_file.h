@@ -3,6 +3,11 @@
 // for ever (a tar archive can carry one), a device that never ends (/dev/zero) or a folder, and no
 // larger than the reader allows. Both are checked on the opened file, before a byte is read, so a
 // file swapped after a check is caught too.
+//
+// A file that content names by itself (a mesh's material library, a glTF buffer) is read with
+// readFileInside: the name is resolved beneath the content's folder by the kernel (openat2 with
+// RESOLVE_BENEATH), so "..", an absolute name or a link that leads out of the folder is refused at
+// the open itself, with nothing outside ever opened.
 #pragma once
 #include <cstddef>
 #include <stdexcept>
@@ -28,7 +33,12 @@ class FileError : public std::runtime_error {
 std::string readBoundedFile(const std::string& path, size_t maxBytes);
 
 // Checks what readBoundedFile checks without reading (for a file another library reads by its
-// path, as assimp does); returns its size.
+// path); returns its size.
 size_t checkBoundedFile(const std::string& path, size_t maxBytes);
+
+// The bytes of `name`, a path relative to `folder` as content wrote it, read only if it resolves
+// inside `folder` (links followed, but never out of it; no "..", no absolute name) and is a regular
+// file of at most maxBytes. Throws FileError naming folder/name.
+std::string readFileInside(const std::string& folder, const std::string& name, size_t maxBytes);
 
 }  // namespace platon::files

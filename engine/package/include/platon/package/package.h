@@ -53,6 +53,13 @@ PackageManifest writePackage(const std::string& root, const std::string& folder,
 // files. Throws PackageError naming the archive and what is wrong; nothing is left in `into` then.
 PackageManifest readPackage(const std::string& archive, const std::string& into);
 
+// Removes from a level's folder (staged to be packed, or unpacked to be installed) every file a
+// package does not carry: what is neither data a level is made of (.level, .replay, the mesh
+// formats and the files they name, .txt, .md) nor Lua its scene.lua loads (its scripts, mods and
+// sound bank; scene.lua itself). Returns each one's path inside the folder and why, sorted. Throws
+// (std::runtime_error, file:line:column) if scene.lua cannot be read.
+std::vector<std::string> removeUncarriedFiles(const std::string& levelFolder);
+
 // The manifest's text (package.lua, a Lua table literal) and its reader.
 std::string manifestText(const PackageManifest& manifest);
 PackageManifest parseManifest(const std::string& text, const std::string& file);

@@ -1,0 +1,67 @@
+#include "folder_io.h"
+
+#include <assimp/MemoryIOWrapper.h>
+#include <cerrno>
+#include <cstring>
+
+#include "platon/files/read_file.h"
+
+namespace platon::mesh {
+namespace {
+
+// A file's bytes, owned by the stream assimp reads them from (a base before MemoryIOStream, so
+// they are there when it is made).
+struct Owned {
+  std::string bytes;
+};
+class BytesStream : private Owned, public Assimp::MemoryIOStream {
+ public:
+  explicit BytesStream(std::string contents)
+      : Owned{std::move(contents)},
+        MemoryIOStream(reinterpret_cast<const uint8_t*>(Owned::bytes.data()), Owned::bytes.size()) {}
+};
+
+}  // namespace
+
+std::string FolderIO::inside(const std::string& file) const {
+  if (file.rfind(folder_ + "/", 0) == 0) return file.substr(folder_.size() + 1);
+  if (!file.empty() && file[0] != '/') return file;  // relative: to the mesh's folder
+  refusals_.push_back(file + ": outside the mesh's folder: a mesh reads only files beside it");
+  return "";
+}
+
+bool FolderIO::read(const std::string& file, std::string& bytes) const {
+  const std::string name = inside(file);
+  if (name.empty()) return false;
+  try {
+    bytes = files::readFileInside(folder_, name, maxBytes_);
+    return true;
+  } catch (const files::FileError& e) {
+    // A file that is simply not there is assimp's to report (or to do without: a missing material
+    // library is only a warning); anything else is a refusal.
+    if (e.reason().find(std::strerror(ENOENT)) == std::string::npos) refusals_.push_back(e.what());
+    return false;
+  }
+}
+
+bool FolderIO::Exists(const char* file) const {
+  if (!file || !read(file, keptBytes_)) return false;
+  keptName_ = file;
+  return true;
+}
+
+Assimp::IOStream* FolderIO::Open(const char* file, const char* mode) {
+  if (!file || !mode || std::string(mode).find_first_of("wa+") != std::string::npos) return nullptr;
+  std::string bytes;
+  if (keptName_ == file) {
+    bytes.swap(keptBytes_);
+    keptName_.clear();
+  } else if (!read(file, bytes)) {
+    return nullptr;
+  }
+  return new BytesStream(std::move(bytes));
+}
+
+void FolderIO::Close(Assimp::IOStream* stream) { delete stream; }
+
+}  // namespace platon::mesh
