@@ -67,6 +67,39 @@ sed -i 's|^scene .*|scene "scene.lua"|' "$work/src/badlevel/finish.replay"
 package badlevel "$work/bad.platon"
 refused "$work/bad.platon" "the level has errors"
 
+# A package carries data and the Lua its scene loads, nothing else: a kept test (Lua a person might
+# run), a script nothing loads, a program. pack leaves them out and says so; a package made by hand
+# that carries them installs without them, and install names each one it refused.
+mkdir -p "$work/src/extras/sub"
+cp levels/cube_intro/* "$work/src/extras/"
+printf 'os.execute("touch %s/ran")\nreturn {}\n' "$work" > "$work/src/extras/test_1.lua"
+printf '#!/bin/sh\ntouch %s/ran\n' "$work" > "$work/src/extras/sub/run.sh"
+printf 'return {}\n' > "$work/src/extras/unused.lua"
+printf 'A level of mine.\n' > "$work/src/extras/README.md"
+"$platon" pack "$work/src/extras" --replay tests/replays/cube_intro_walk.replay -o "$work/extras.platon" > "$work/pack.txt"
+for f in "sub/run.sh: not a kind a level is made of" "test_1.lua: Lua that scene.lua does not load" "unused.lua: Lua"; do
+  grep -q "left out $f" "$work/pack.txt" || fail "pack did not say it left out $f: $(cat "$work/pack.txt")"
+done
+listed=$(tar tzf "$work/extras.platon")
+for f in test_1.lua sub/run.sh unused.lua; do
+  if echo "$listed" | grep -q "extras/$f"; then fail "pack carried $f"; fi
+done
+echo "$listed" | grep -q "extras/README.md" || fail "pack left out the read-me: $listed"
+echo "$listed" | grep -q "extras/level.lua" || fail "pack left out the level's script: $listed"
+cp tests/replays/cube_intro_walk.replay "$work/src/extras/finish.replay"
+sed -i 's|^scene .*|scene "scene.lua"|' "$work/src/extras/finish.replay"
+package extras "$work/extras_by_hand.platon"
+"$platon" install "$work/extras_by_hand.platon" > "$work/install.txt" || fail "the package with extras was refused"
+for f in "refused sub/run.sh" "refused test_1.lua" "refused unused.lua"; do
+  grep -q "$f" "$work/install.txt" || fail "install did not say $f: $(cat "$work/install.txt")"
+done
+for f in test_1.lua sub/run.sh unused.lua; do
+  [ ! -e "$levels/extras/$f" ] || fail "install put $f in the player's levels"
+done
+[ -f "$levels/extras/level.lua" ] && [ -f "$levels/extras/README.md" ] || fail "install lost the level's own files"
+[ ! -e "$work/ran" ] || fail "something the package carried ran"
+rm -rf "$levels/extras"
+
 # The good one, made by hand the same way, installs: the tool above is how a package is made.
 mkdir -p "$work/src/handmade"
 cp levels/cube_intro/* "$work/src/handmade/"

@@ -24,10 +24,15 @@ class BytesStream : private Owned, public Assimp::MemoryIOStream {
 }  // namespace
 
 std::string FolderIO::inside(const std::string& file) const {
-  if (file.rfind(folder_ + "/", 0) == 0) return file.substr(folder_.size() + 1);
-  if (!file.empty() && file[0] != '/') return file;  // relative: to the mesh's folder
-  refusals_.push_back(file + ": outside the mesh's folder: a mesh reads only files beside it");
-  return "";
+  // assimp joins the mesh's folder to what a file names, and tries other joins of its own when that
+  // is not found ("<folder>//<folder>/x", "<folder>//x"): the folder is taken off for as long as the
+  // name starts with it, and what is left is a name inside the folder, an absolute one included (it
+  // is looked for there, never outside: "/etc/x" is the folder's etc/x).
+  std::string name = file;
+  while (name.rfind(folder_ + "/", 0) == 0) name.erase(0, folder_.size() + 1);
+  name.erase(0, name.find_first_not_of('/'));
+  if (name.empty()) refusals_.push_back(file + ": names no file");
+  return name;
 }
 
 bool FolderIO::read(const std::string& file, std::string& bytes) const {

@@ -350,3 +350,37 @@ TEST(LevelDocument, TheUndoHistoryKeepsTheLatestStepsWithinItsBudget) {
   EXPECT_FALSE(document.undo());
   EXPECT_EQ(document.text(), texts[texts.size() - 1 - kept]);
 }
+
+// A downloaded level folder can hold links named as a save's files might be (the level's name
+// with .new, .partial, .tmp, ~) that lead outside it. Ctrl+S saves the level and changes nothing
+// outside; a level file that is itself a link is not saved, and the editor says why.
+TEST(Editor, CtrlSNeverWritesThroughALinkPlantedInTheLevelsFolder) {
+  namespace fs = std::filesystem;
+  for (const char* suffix : {".new", ".partial", ".tmp", "~", ""}) {
+    SCOPED_TRACE(std::string("a link named cube_switches.level") + suffix);
+    const platon::testing::TempFolder folder("editor_links");
+    const std::string victim = folder.write("outside/victim.txt", "the player's own file\n");
+    const std::string original = readFile(levelFile("cube_switches"));
+    const std::string path = folder.write("level/cube_switches.level", original);
+    editor::Editor e = editorOf(path);
+    const fs::path planted = folder.path(std::string("level/cube_switches.level") + suffix);
+    if (*suffix == '\0') {  // the level file itself: read already, then made a link to the outside file
+      fs::remove(planted);
+      fs::create_symlink(victim, planted);
+    } else {
+      fs::create_symlink(victim, planted);
+    }
+    Driver d{e};
+    d.alt = true;
+    d.drag(pixelOf(e, 0, 2400, 2000), pixelOf(e, 0, 3400, 2200));
+    d.key("S", true);
+    EXPECT_EQ(readFile(victim), "the player's own file\n");
+    EXPECT_TRUE(fs::is_symlink(planted));
+    if (*suffix == '\0') {
+      EXPECT_NE(e.message().find("it is a link"), std::string::npos) << e.message();
+    } else {
+      EXPECT_EQ(readFile(path), e.document().text());
+      EXPECT_FALSE(fs::is_symlink(path));
+    }
+  }
+}

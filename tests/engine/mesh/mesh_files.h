@@ -72,8 +72,10 @@ inline std::string nodeJson(const Node& node, int index, bool last) {
   return json + "}";
 }
 
-// The mesh (positions stored as 32-bit floats, as glTF does) under the chain of nodes.
-inline void writeGltf(const stage::MeshData& m, const std::vector<Node>& chain, const std::string& path) {
+// The mesh (positions stored as 32-bit floats, as glTF does) under the chain of nodes. Its buffer
+// is in the file, or, with `uri`, named by it (its bytes left in *bufferBytes for the caller to put).
+inline void writeGltf(const stage::MeshData& m, const std::vector<Node>& chain, const std::string& path,
+                      const std::string& uri = "", std::string* bufferBytes = nullptr) {
   std::string buffer;
   Eigen::Vector3d lo = m.positions[0], hi = m.positions[0];
   for (const auto& p : m.positions) {
@@ -98,8 +100,8 @@ inline void writeGltf(const stage::MeshData& m, const std::vector<Node>& chain, 
   std::ofstream(path) << "{\"asset\":{\"version\":\"2.0\"},\"scene\":0,\"scenes\":[{\"nodes\":[0]}],\"nodes\":["
                       << nodeList
                       << "],\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0},\"indices\":1}]}],"
-                      << "\"buffers\":[{\"byteLength\":" << buffer.size()
-                      << ",\"uri\":\"data:application/octet-stream;base64," << base64(buffer) << "\"}],"
+                      << "\"buffers\":[{\"byteLength\":" << buffer.size() << ",\"uri\":\""
+                      << (uri.empty() ? "data:application/octet-stream;base64," + base64(buffer) : uri) << "\"}],"
                       << "\"bufferViews\":[{\"buffer\":0,\"byteOffset\":0,\"byteLength\":" << positionBytes
                       << "},{\"buffer\":0,\"byteOffset\":" << positionBytes
                       << ",\"byteLength\":" << buffer.size() - positionBytes
@@ -107,6 +109,7 @@ inline void writeGltf(const stage::MeshData& m, const std::vector<Node>& chain, 
                       << ",\"type\":\"VEC3\",\"min\":" << numbers(low, 3) << ",\"max\":" << numbers(high, 3)
                       << "},{\"bufferView\":1,\"componentType\":5125,\"count\":" << 3 * m.triangles.size()
                       << ",\"type\":\"SCALAR\"}]}\n";
+  if (bufferBytes) *bufferBytes = buffer;
 }
 
 // The mesh with the chain's transform written into its points (what a modeller's "apply

@@ -5,9 +5,14 @@
 #include "platon/stage/mesh.h"
 
 #include <algorithm>
+#include <chrono>
+#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <sstream>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 
@@ -337,3 +342,117 @@ TEST(MeshFiles, TheMeshMustStayInTheLevelsFolder) {
 }
 
 }  // namespace
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// A folder of meshes naming other files, with things to name inside it and outside it.
+struct Referencing {
+  fs::path root = fs::path(::testing::TempDir()) / ("mesh_references_" + std::to_string(getpid()));
+  fs::path level = root / "level";
+  Referencing() {
+    fs::remove_all(root);
+    fs::create_directories(level / "dir.mtl");
+    std::ofstream(root / "outside.mtl") << "newmtl m\nKd 1 0 0\n";
+    std::ofstream(level / "good.mtl") << "newmtl m\nKd 0 1 0\n";
+    fs::create_symlink(root / "outside.mtl", level / "link_out.mtl");
+    fs::create_symlink("/dev/zero", level / "zero.mtl");
+    mkfifo((level / "fifo.mtl").c_str(), 0644);
+    mkfifo((root / "fifo_out.mtl").c_str(), 0644);
+    mkfifo((level / "fifo.bin").c_str(), 0644);
+  }
+  ~Referencing() { fs::remove_all(root); }
+  // The load's refusal ("(accepted)" when it loads); a load that blocks fails the test instead of
+  // hanging it: after 30 s every FIFO is opened for writing and closed, which ends the read.
+  std::string load(const std::string& file) const {
+    auto loading = std::async(std::launch::async, [file] { return refusal(file); });
+    if (loading.wait_for(std::chrono::seconds(30)) == std::future_status::timeout) {
+      for (const fs::path& fifo : {level / "fifo.mtl", root / "fifo_out.mtl", level / "fifo.bin"}) {
+        const int fd = ::open(fifo.c_str(), O_WRONLY | O_NONBLOCK);
+        if (fd >= 0) ::close(fd);
+      }
+      ADD_FAILURE() << file << ": the load blocked for 30 s";
+    }
+    return loading.get();
+  }
+};
+
+}  // namespace
+
+// assimp opens what a mesh names by itself (an OBJ's material library): only a regular file inside
+// the mesh's folder may be read. Every other name is refused, the whole mesh with it, naming it:
+// "..", a link out, /dev/zero, a FIFO inside or out (which blocked assimp for ever), a folder. An
+// absolute name is looked for inside the folder. A library inside loads; a missing one is assimp's
+// warning, not a refusal.
+TEST(MeshFiles, AnObjReadsOnlyMaterialLibrariesInsideItsFolder) {
+  const Referencing r;
+  const std::string prism = [] {
+    std::ifstream in(kData + "prism.obj");
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  }();
+  const std::pair<std::string, std::string> cases[] = {
+      {"good.mtl", "(accepted)"},
+      {"missing.mtl", "(accepted)"},
+      {"../outside.mtl", "leads out of its folder"},
+      // an absolute name is looked for inside the folder, so a FIFO outside is never opened (it
+      // would be refused as a FIFO), and the library is missing
+      {(r.root / "fifo_out.mtl").string(), "(accepted)"},
+      {"link_out.mtl", "leads out of its folder"},
+      {"zero.mtl", "leads out of its folder"},
+      {"fifo.mtl", "not a regular file (a FIFO)"},
+      {"../fifo_out.mtl", "leads out of its folder"},
+      {"dir.mtl", "not a regular file (a folder)"},
+  };
+  for (const auto& [library, expected] : cases) {
+    SCOPED_TRACE(library);
+    const std::string file = (r.level / "prism.obj").string();
+    std::ofstream(file) << "mtllib " << library << "\nusemtl m\n" << prism;
+    const std::string why = r.load(file);
+    EXPECT_NE(why.find(expected), std::string::npos) << why;
+    if (expected != "(accepted)") {
+      EXPECT_NE(why.find("it names a file it may not read"), std::string::npos) << why;
+    }
+  }
+}
+
+// The same for a glTF's buffer: the bytes of its points come only from inside its folder.
+TEST(MeshFiles, AGltfReadsOnlyBuffersInsideItsFolder) {
+  const Referencing r;
+  const std::pair<std::string, std::string> cases[] = {
+      {"good.bin", "(accepted)"},
+      {"../outside.bin", "leads out of its folder"},
+      {(r.root / "outside.bin").string(), "could not open referenced file"},
+      {"fifo.bin", "not a regular file (a FIFO)"},
+  };
+  for (const auto& [uri, expected] : cases) {
+    SCOPED_TRACE(uri);
+    const std::string file = (r.level / "box.gltf").string();
+    std::string buffer;
+    testfiles::writeGltf(testmesh::box({1, 0.7, 0.45}), {}, file, uri, &buffer);
+    std::ofstream(r.level / "good.bin", std::ios::binary) << buffer;
+    std::ofstream(r.root / "outside.bin", std::ios::binary) << buffer;
+    const std::string why = r.load(file);
+    EXPECT_NE(why.find(expected), std::string::npos) << why;
+  }
+}
+
+// A polygon is split into triangles by assimp in time that grows as its corners squared or worse:
+// one of 90,000 corners (under the cap of triangles) is refused before it is split, at once.
+TEST(MeshFiles, APolygonWithTooManyCornersIsRefusedBeforeItIsSplit) {
+  for (const int corners : {1025, 90000}) {
+    SCOPED_TRACE(corners);
+    std::string text;
+    for (int i = 0; i < corners; ++i) {
+      const double a = 2 * M_PI * i / corners;
+      text += "v " + std::to_string(std::cos(a)) + " " + std::to_string(std::sin(a)) + " 0\n";
+    }
+    text += "v 0 0 1\nf";
+    for (int i = corners; i >= 1; --i) text += " " + std::to_string(i);
+    text += "\n";
+    const std::string file = scratch("many_corners.obj");
+    std::ofstream(file) << text;
+    EXPECT_EQ(refusal(file), file + ": a polygon of " + std::to_string(corners) +
+                                 " corners; a stage's mesh takes polygons of at most 1024");
+  }
+}

@@ -227,6 +227,55 @@ TEST(ScenarioReader, LiteralsComputedScenariosAndCommentsReadTheSame) {
       << escaped.message;
 }
 
+// Scenarios travel with levels (the editor's kept tests, packages), so one that computes its plan
+// runs in a sandbox, never as trusted code: every way out of it (files, processes, the library
+// loader, bytecode, the FFI, hooks) is refused at its line, and an endless loop is stopped by the
+// budget of steps. The marker file is never made.
+TEST(ScenarioReader, AComputedScenarioRunsSandboxedWhoeverWroteIt) {
+  Folder folder("scenario_sandboxed");
+  const std::string marker = folder.path("made_by_the_scenario");
+  const std::string escapes[] = {
+      "io.open('" + marker + "', 'w'):write('x')",
+      "io.popen('touch " + marker + "')",
+      "os.execute('touch " + marker + "')",
+      "os.remove('" + folder.path("sc.lua") + "')",
+      "os.getenv('HOME')",
+      "require('ffi')",
+      "package.loadlib('libc.so.6', 'system')",
+      "dofile('" + folder.path("other.lua") + "')",
+      "loadfile('" + folder.path("other.lua") + "')()",
+      "load(string.dump(function() end))()",
+      "debug.sethook(function() end, '', 1)",
+      "jit.off()",
+      "collectgarbage('stop')",
+      "setfenv(1, {})",
+  };
+  folder.write("other.lua", "local f = io.open('" + marker + "', 'w') f:write('x') f:close()\n");
+  for (const std::string& escape : escapes) {
+    SCOPED_TRACE(escape);
+    const std::string file =
+        folder.write("sc.lua", "local x = 1\n" + escape + "\nreturn { scene = '" + kScene + "', frames = 10 }\n");
+    const ScenarioResult r = runScenario(file);
+    EXPECT_FALSE(r.passed);
+    EXPECT_NE(r.message.find("sc.lua:2:"), std::string::npos) << r.message;
+    EXPECT_FALSE(std::filesystem::exists(marker));
+  }
+  // The sandbox's own library still computes a plan: a loop, string and math.
+  const ScenarioResult computed = runScenario(folder.write(
+      "sc.lua",
+      "local input = {}\nfor i = 1, 3 do input[i] = { press = ('JUMP'):lower(), at = 10 * i, frames = 2 } end\n"
+      "return { scene = '" +
+          kScene + "', frames = math.max(50, 40), input = input }\n"));
+  EXPECT_TRUE(computed.passed) << computed.message;
+  EXPECT_EQ(computed.frames, 50u);
+  // An endless loop is stopped by the budget, at its line.
+  const ScenarioResult endless =
+      runScenario(folder.write("sc.lua", "local n = 0\nwhile true do n = n + 1 end\nreturn {}\n"));
+  EXPECT_FALSE(endless.passed);
+  EXPECT_NE(endless.message.find("sc.lua:2:"), std::string::npos) << endless.message;
+  EXPECT_NE(endless.message.find("budget"), std::string::npos) << endless.message;
+}
+
 // D4: a replay records a hash of its scene's files, and says when they changed.
 TEST(ScenarioReplay, AChangedSceneIsNamedBeforeTheFirstHashMismatch) {
   Folder folder("replay_scene_files");
