@@ -19,6 +19,7 @@
 #include "entity_index.h"
 #include "fixed_point.h"
 #include "grid.h"
+#include "line_boxes.h"
 #include "platon/physics/world.h"
 
 namespace platon::physics {
@@ -155,6 +156,9 @@ struct WorldImpl {
   static constexpr int kMaxNeighbourDepth = 32;
   std::vector<Platform> platforms;
   std::vector<uint32_t> freePlatforms;
+  // countOverlaps' index of each part's fixed lines, made the first time it is asked.
+  mutable std::unordered_map<MapPartId, std::unique_ptr<LineBoxes>> overlapLineIndex;
+  const LineBoxes& overlapLines(const MapPart& part) const;
   // Rest that costs nothing (entity.h's `resting`): how many entities keep their rest answer, how
   // often each part's platforms moved, and the mode that asks anyway and compares (World::checkRest).
   size_t restingCount = 0;

@@ -482,15 +482,27 @@ int frame(lua_State* L) {
   return 1;
 }
 
+// Whole-world queries are charged by their real cost, after the work (chargeSteps may not return):
+// a sandbox calling one in a loop spends its budget, never the frame's time.
+// The hash reads every entity's state (about 16 values, 128 bytes, per entity): 8 steps each.
+constexpr int64_t kHashStepsPerEntity = 8;
+// The overlap check's work counts index nodes walked and pairs tested exactly: a pair's exact test
+// is tens of instructions' worth, a node a few: 4 steps each on the whole.
+constexpr int64_t kOverlapStepsPerWork = 4;
+
 int stateHash(lua_State* L) {
   char text[17];
-  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(worldOf(L).stateHash()));
+  const physics::World& world = worldOf(L);
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(world.stateHash()));
   lua_pushstring(L, text);
+  chargeSteps(L, static_cast<int64_t>(world.entityCount()) * kHashStepsPerEntity + 1);
   return 1;
 }
 
 int countOverlaps(lua_State* L) {
-  lua_pushnumber(L, static_cast<double>(worldOf(L).countOverlaps()));
+  size_t work = 0;
+  lua_pushnumber(L, static_cast<double>(worldOf(L).countOverlaps(&work)));
+  chargeSteps(L, static_cast<int64_t>(work) * kOverlapStepsPerWork + 1);
   return 1;
 }
 

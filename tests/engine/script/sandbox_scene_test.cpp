@@ -417,6 +417,32 @@ TEST(Finding8, ALoopOfSlowCallsIsStoppedByTheirWork) {
   EXPECT_EQ(p.status.message, "39");
 }
 
+// Whole-world queries cost what they do: a loop of them spends the frame's budget by their work
+// (the overlap check's pairs and index nodes, the hash's entities), not one step a call. Without
+// the charge each loop ran about ten times as long before the budget stopped it.
+TEST(Finding8, ALoopOfWholeWorldQueriesIsStoppedByTheirWork) {
+  for (const std::string query : {"countOverlaps", "stateHash"}) {
+    SCOPED_TRACE(query);
+    const std::string level =
+        "local n = 0\n"
+        "return { tick = function(game, frame)\n"
+        "  if frame == 1 then for i = 1, 200 do local e = game.world.createEntity{circle = 6} "
+        "game.world.insert(e, game.world.face(1), 300 + 16 * i, 3000) end end\n"
+        "  while true do n = n + 1 game.message(n) game.world." +
+        query +
+        "() end\n"
+        "end }\n";
+    Level charged("f8_queries", level);
+    const core::SystemRegistry registry = scripting();
+    core::LiveScene live(charged.scene, registry, false);
+    const Played p = play(live, 3);
+    ASSERT_EQ(p.errors.size(), 1u) << joined(p.errors);
+    EXPECT_NE(p.errors[0].find("level.lua:4: script stopped: it ran past the frame's script budget"), std::string::npos)
+        << p.errors[0];
+    EXPECT_LT(std::stoi(p.status.message), 30000) << p.status.message;
+  }
+}
+
 // --- 9: a level's manifest may lower the limits, never raise them ---
 
 TEST(Finding9, AManifestCannotRaiseTheLimits) {

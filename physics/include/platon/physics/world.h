@@ -209,8 +209,10 @@ class World {
   // Number of (instance, line) pairs where the instance overlaps the interior of a line that is
   // solid for it; the invariant says always 0. One-way lines, and lines kept passable until an
   // instance is clear of them (refreshPierce), do not count; a platform's lines count in the part
-  // where the platform meets the body (createPlatform). For tests.
-  size_t countOverlaps() const;
+  // where the platform meets the body (createPlatform). For tests; what it costs is what the
+  // bodies meet (never the map's size): `work`, if given, is set to the pairs and index nodes it
+  // looked at, for a caller that charges it.
+  size_t countOverlaps(size_t* work = nullptr) const;
 
  private:
   std::unique_ptr<WorldImpl> impl_;
