@@ -221,22 +221,56 @@ void LuaHost::pushReadOnly(int index, std::string_view name) {
   call(2, 1);
 }
 
+namespace {
+std::string nameOfChunk(const std::string& chunkName) {
+  return chunkName.size() > 1 && (chunkName[0] == '@' || chunkName[0] == '=') ? chunkName.substr(1) : chunkName;
+}
+}  // namespace
+
 int LuaHost::newSandbox(const std::string& chunkName) {
-  const std::string name =
-      chunkName.size() > 1 && (chunkName[0] == '@' || chunkName[0] == '=') ? chunkName.substr(1) : chunkName;
+  const std::string name = nameOfChunk(chunkName);
   lua_getfield(L_, LUA_REGISTRYINDEX, "platon.newSandbox");
   lua_pushlstring(L_, name.data(), name.size());
   pushSandboxApi();
   call(2, 1);
+  return addSandbox(chunkName, false);
+}
+
+int LuaHost::addSandbox(const std::string& chunkName, bool borrowsEnv) {
   Sandbox box;
-  box.name = name;
+  box.name = nameOfChunk(chunkName);
   box.source = chunkName;
   box.env = lua::Ref(L_, -1);
+  box.borrowsEnv = borrowsEnv;
+  if (!shared_->released.empty()) {  // a released place: the list of sandboxes does not grow
+    const int id = shared_->released.back();
+    shared_->released.pop_back();
+    shared_->sandboxes[static_cast<size_t>(id)] = std::move(box);
+    return id;
+  }
   shared_->sandboxes.push_back(std::move(box));
   return static_cast<int>(shared_->sandboxes.size() - 1);
 }
 
+void LuaHost::releaseSandbox(int sandbox) {
+  if (sandbox < 0 || static_cast<size_t>(sandbox) >= shared_->sandboxes.size()) return;
+  Sandbox& gone = shared_->sandboxes[static_cast<size_t>(sandbox)];
+  if (!gone.env.isSet()) return;  // released already
+  // Its globals are dropped, not wiped: a function the line left in another table still reads them.
+  gone.disabled = true;
+  gone.env.reset();
+  shared_->released.push_back(sandbox);
+}
+
 int LuaHost::loadString(std::string_view code, const std::string& chunkName, Trust trust) {
+  compile(code, chunkName, trust);
+  if (trust == Trust::Trusted) return kNoSandbox;
+  const int id = newSandbox(chunkName);
+  lua_setfenv(L_, -2);
+  return id;
+}
+
+void LuaHost::compile(std::string_view code, const std::string& chunkName, Trust trust) {
   const int top = lua_gettop(L_);
   if (trust == Trust::Sandboxed && !code.empty() && code[0] == '\x1b')
     throw ScriptError(chunkName.substr(chunkName[0] == '@' || chunkName[0] == '=' ? 1 : 0) +
@@ -249,23 +283,16 @@ int LuaHost::loadString(std::string_view code, const std::string& chunkName, Tru
     lua_settop(L_, top);
     throw error;
   }
-  if (trust == Trust::Trusted) return kNoSandbox;
   // No compiled traces for untrusted code: the hooks must see every loop.
-  luaJIT_setmode(L_, -1, LUAJIT_MODE_ALLFUNC | LUAJIT_MODE_OFF);
-  const int id = newSandbox(chunkName);
-  lua_setfenv(L_, -2);
-  return id;
+  if (trust == Trust::Sandboxed) luaJIT_setmode(L_, -1, LUAJIT_MODE_ALLFUNC | LUAJIT_MODE_OFF);
 }
 
 int LuaHost::loadStringInGlobalsOf(std::string_view code, const std::string& chunkName, int envOf) {
   if (envOf < 0 || static_cast<size_t>(envOf) >= shared_->sandboxes.size())
     throw ScriptError("no sandbox " + std::to_string(envOf), "");
-  const int id = loadString(code, chunkName, Trust::Sandboxed);  // the chunk, in a new sandbox
+  compile(code, chunkName, Trust::Sandboxed);  // a sandbox of its own, with no globals of its own to make
   shared_->sandboxes[static_cast<size_t>(envOf)].env.push();
-  lua_pushvalue(L_, -1);
-  shared_->sandboxes[static_cast<size_t>(id)].env = lua::Ref(L_, -1);
-  shared_->sandboxes[static_cast<size_t>(id)].borrowsEnv = true;
-  lua_pop(L_, 1);
+  const int id = addSandbox(chunkName, true);
   lua_setfenv(L_, -2);
   return id;
 }

@@ -108,6 +108,10 @@ class LuaHost {
   // as a sandbox of its own: its budget, its errors, its being disabled are its own. Pushes the
   // chunk; returns its id. The game's console, in the level script's globals.
   int loadStringInGlobalsOf(std::string_view code, const std::string& chunkName, int envOf);
+  // Ends sandbox `sandbox` for good, once its chunk has run (a console line): disabled, its
+  // globals let go (garbage unless a function it left elsewhere still reads them), and its place in
+  // the list taken by the next sandbox made, so lines that come and go leave nothing behind.
+  void releaseSandbox(int sandbox);
 
   // The table of functions trusted scripts see as `platon`. Pushes it.
   void pushApi();
@@ -190,6 +194,10 @@ class LuaHost {
   static constexpr int kTracebackSlot = 1;
   void openTrusted();
   int newSandbox(const std::string& chunkName);
+  // A sandbox whose globals are the table on top of the stack (left there); returns its id.
+  int addSandbox(const std::string& chunkName, bool borrowsEnv);
+  // Compiles and pushes the chunk (throws ScriptError with the syntax error's file:line).
+  void compile(std::string_view code, const std::string& chunkName, Trust trust);
   void disable(int sandbox);  // for good: its globals dropped, its garbage collected
   void callNested(int nargs, int nresults);
   int protectedCall(int nargs, int nresults, int& below);

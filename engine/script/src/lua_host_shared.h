@@ -60,6 +60,7 @@ struct LuaHost::Shared {
   pid_t timerThread = 0;
   uint64_t gameFrame = 0;
   std::vector<Sandbox> sandboxes;
+  std::vector<int> released;  // sandboxes released (releaseSandbox): their places are taken again
   std::function<void(std::string_view, std::string_view)> print;
 
   size_t sandboxLimit() const { return limits.memoryBytes - limits.memoryBytes / kTrustedReserveDivisor; }

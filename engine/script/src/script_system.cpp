@@ -34,6 +34,9 @@ struct ScriptSystem::State {
   std::unique_ptr<LuaRules> rules;
   std::vector<std::string> files;                      // every script file loaded: hot reload watches them
   bool ffi = std::getenv("PLATON_NO_FFI") == nullptr;  // the FFI fast paths (off: for the benches)
+  // The console's own globals when the level has no sandbox: made by its first line, kept for the
+  // rest (each line is a sandbox of its own in them, released when it ends).
+  int consoleGlobals = kNoSandbox;
 
   State(core::Scene& s, std::string r, LuaLimits limits) : scene(&s), root(std::move(r)), host(limits) {
     context.scene = &s;
@@ -591,7 +594,8 @@ void ScriptSystem::start(core::Scene&) {
 void ScriptSystem::beforeStep(core::Scene& scene, const core::InputFrame& input) {
   State& state = *state_;
   lua_State* L = state.host.state();
-  state.host.beginFrame();
+  if (!consoleOpenedFrame_) state.host.beginFrame();  // else begun by the console's lines before it
+  consoleOpenedFrame_ = false;
   state.host.setGameFrame(scene.world().frame());
   state.beforeStep.push();
   lua_pushnumber(L, input.held);
@@ -734,18 +738,27 @@ ScriptSystem::ConsoleAnswer ScriptSystem::console(const std::string& code) {
   lua_State* L = state_->host.state();
   lua::StackGuard guard(L);
   ConsoleAnswer answer;
+  int sandbox = kNoSandbox;
   try {
-    state_->host.beginFrame();  // the line's own budget, as a frame's
+    // Lines typed before a frame share that frame's budget with its scripts: however many are
+    // typed between two frames (or while the game is paused), they get one budget in all.
+    if (!consoleOpenedFrame_) state_->host.beginFrame();
+    consoleOpenedFrame_ = true;
     // In the level script's globals when it is sandboxed (its own globals are the level's state a
     // modder pokes at), else in a sandbox's fresh ones.
     state_->callDriver("levelSandbox", 0, 1);
-    const int level = lua_isnumber(L, -1) ? static_cast<int>(lua_tointeger(L, -1)) : kNoSandbox;
+    int globals = lua_isnumber(L, -1) ? static_cast<int>(lua_tointeger(L, -1)) : kNoSandbox;
     lua_pop(L, 1);
+    if (globals == kNoSandbox) {
+      if (state_->consoleGlobals == kNoSandbox) {
+        state_->consoleGlobals = state_->host.loadString("", "=console", Trust::Sandboxed);
+        lua_pop(L, 1);
+      }
+      globals = state_->consoleGlobals;
+    }
     auto compile = [&](const std::string& text) {
-      return level == kNoSandbox ? state_->host.loadString(text, "=console", Trust::Sandboxed)
-                                 : state_->host.loadStringInGlobalsOf(text, "=console", level);
+      return state_->host.loadStringInGlobalsOf(text, "=console", globals);
     };
-    int sandbox = kNoSandbox;
     try {  // an expression shows its value; a statement runs as written
       sandbox = compile("local game = ... return " + code);
     } catch (const ScriptError&) {
@@ -757,14 +770,20 @@ ScriptSystem::ConsoleAnswer ScriptSystem::console(const std::string& code) {
       return answer;
     }
     answer.ok = true;
-    if (lua_isnil(L, -1)) return answer;  // a statement, or nothing to show
-    lua_getfield(L, LUA_REGISTRYINDEX, "platon.tostring");
-    lua_insert(L, -2);
-    state_->host.call(1, 1);
-    answer.text = lua_isstring(L, -1) ? lua_tostring(L, -1) : "";
+    if (!lua_isnil(L, -1)) {  // else a statement, or nothing to show
+      // The answer is made inside the line's budget: its __tostring is the line's code.
+      lua_getfield(L, LUA_REGISTRYINDEX, "platon.tostring");
+      lua_insert(L, -2);
+      if (state_->host.callSandboxed(sandbox, 1, 1))
+        answer.text = lua_isstring(L, -1) ? lua_tostring(L, -1) : "";
+      else
+        answer.ok = false, answer.text = "not shown: the sandboxes' budget is spent";
+    }
   } catch (const ScriptError& e) {
+    answer.ok = false;
     answer.text = e.what();
   }
+  state_->host.releaseSandbox(sandbox);  // the line leaves no sandbox behind
   return answer;
 }
 

@@ -54,12 +54,57 @@ TEST(Console, ALineRunsInTheLevelsGlobalsAndStopsAlone) {
   EXPECT_FALSE(loop.ok);
   EXPECT_NE(loop.text.find("script stopped"), std::string::npos) << loop.text;  // the budget, or the deadline
   EXPECT_EQ(loop.text.find("save to reload"), std::string::npos) << "a typed line is no file to save: " << loop.text;
-  EXPECT_EQ(c.step(), "counter 6 at 3") << "the console's loop stopped the level";
+  // The line spent the coming frame's budget (lines typed before a frame share it with the
+  // frame's scripts): that frame's level call is skipped (the stop was said once, by the console);
+  // the next frame is the level's again.
+  EXPECT_EQ(c.step(), "counter 6 at 2");
+  EXPECT_EQ(c.step(), "counter 6 at 4") << "the console's loop stopped the level";
   EXPECT_EQ(c.scripts().console("counter").text, "6") << "the next line does not run";
   // What a sandbox may not do, the console may not either.
   EXPECT_FALSE(c.scripts().console("io.open('/etc/passwd')").ok);
   EXPECT_FALSE(c.scripts().console("os.execute('true')").ok);
   EXPECT_FALSE(c.scripts().console(")(").ok);  // a syntax error, said
+}
+
+// Lines typed between two frames share one budget with the coming frame's scripts, their answers
+// included: a value whose __tostring loops is stopped like a line that loops, and a thousand
+// lines typed while paused get one budget in all, not a thousand.
+TEST(Console, LinesAndTheirAnswersShareTheComingFramesBudget) {
+  ConsoleLevel c;
+  EXPECT_EQ(c.step(), "counter 5 at 1");
+  const ScriptSystem::ConsoleAnswer shown =
+      c.scripts().console("setmetatable({}, { __tostring = function() while true do end end })");
+  EXPECT_FALSE(shown.ok);
+  EXPECT_NE(shown.text.find("script stopped"), std::string::npos) << shown.text;
+  EXPECT_EQ(c.step(), "counter 5 at 1") << "the answer's loop spent the frame's budget";
+  EXPECT_EQ(c.step(), "counter 5 at 3");
+  // 20 lines of 10^6 steps each: the budget (10^7) runs out on the tenth.
+  int ran = 0;
+  for (int i = 0; i < 20; ++i) ran += c.scripts().console("for i = 1, 1000000 do end").ok ? 1 : 0;
+  EXPECT_LT(ran, 11);
+  EXPECT_GT(ran, 5);
+  EXPECT_EQ(c.step(), "counter 5 at 3") << "the lines spent the frame's budget";
+  EXPECT_EQ(c.step(), "counter 5 at 5");
+}
+
+// A line leaves nothing behind but what it put in the level's globals: 20,000 lines, each making
+// its own table, keep the state's memory where it was (each kept a sandbox before: its record and
+// its globals' reference, until the state was full).
+TEST(Console, LinesLeaveNoStateBehind) {
+  ConsoleLevel c;
+  EXPECT_EQ(c.step(), "counter 5 at 1");
+  const std::string line = "local t = {} for i = 1, 100 do t[i] = i end return #t";
+  auto memory = [&] {
+    return std::stod(c.scripts().evaluate("collectgarbage() return collectgarbage('count')", "=t"));
+  };
+  for (int i = 0; i < 200; ++i) (void)c.scripts().console(line);
+  const double before = memory();
+  for (int i = 0; i < 20000; ++i) {
+    if (i % 100 == 0) c.step();  // a frame now and then: a new budget
+    ASSERT_EQ(c.scripts().console(line).text, "100");
+  }
+  const double after = memory();
+  EXPECT_LT(after, before + 16) << "KB before " << before << ", after " << after;
 }
 
 }  // namespace

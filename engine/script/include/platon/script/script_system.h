@@ -79,6 +79,7 @@ class ScriptSystem final : public core::System {
   void prepare(core::Scene& scene);
   void setTagsApi(const stage::TagTable& tags);
   bool tagsSet_ = false;
+  bool consoleOpenedFrame_ = false;  // console lines began the coming frame's budget (console, beforeStep)
   std::unique_ptr<State> state_;
   double carriedFrames_ = 0;  // the level's frames played, from the version this one replaces
 };
