@@ -467,13 +467,24 @@ local function composedRules(rules, rulesId)
       ranges[#ranges + 1] = { k.number, k.number + k.count }
     end
   end
+  -- A tag's kind, looked for once per tag (the physics asks on every contact, and mods may declare
+  -- thousands of numbered kinds): then read from a table.
+  local kindOfTag = {}
   local function kindOf(tag)
-    if byTag[tag] or passOf[tag] ~= nil then return tag end
-    for i = 1, #ranges do
-      local r = ranges[i]
-      if tag > r[1] and tag <= r[2] then return r[1] end
+    local known = kindOfTag[tag]
+    if known then return known end
+    known = tag
+    if not (byTag[tag] or passOf[tag] ~= nil) then
+      for i = 1, #ranges do
+        local r = ranges[i]
+        if tag > r[1] and tag <= r[2] then
+          known = r[1]
+          break
+        end
+      end
     end
-    return tag
+    kindOfTag[tag] = known
+    return known
   end
   local function ruleOf(name)  -- the rules' callback, raw, called as its script's
     local f = rules and rawget(rules, name)

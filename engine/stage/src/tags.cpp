@@ -24,26 +24,33 @@ void TagTable::add(TagKind kind) {
     throw TagError("'" + kind.word + "' is the level format's own word, not a tag's");
   if (const TagKind* k = find(kind.word)) throw TagError("the tag '" + kind.word + "' is already " + k->owner + "'s");
   if (last(kind) > UINT32_MAX) throw TagError("the tag '" + kind.word + "' runs past the largest tag number");
-  for (const TagKind& k : kinds_)
+  // The kinds are disjoint ranges sorted by their first numbers: only the neighbours can overlap.
+  const auto next = std::lower_bound(byNumber_.begin(), byNumber_.end(), std::pair<uint32_t, size_t>{kind.number, 0});
+  for (auto at : {next, next == byNumber_.begin() ? next : std::prev(next)}) {
+    if (at == byNumber_.end()) continue;
+    const TagKind& k = kinds_[at->second];
     if (kind.number <= last(k) && k.number <= last(kind))
       throw TagError("the tag '" + kind.word + "' (" + std::to_string(kind.number) + ") overlaps '" + k.word + "' (" +
                      k.owner + "'s)");
+  }
+  byNumber_.insert(next, {kind.number, kinds_.size()});
+  byWord_.emplace(kind.word, kinds_.size());
   kinds_.push_back(std::move(kind));
 }
 
 const TagKind* TagTable::find(std::string_view word) const {
-  for (const TagKind& k : kinds_)
-    if (k.word == word) return &k;
-  return nullptr;
+  const auto at = byWord_.find(std::string(word));
+  return at == byWord_.end() ? nullptr : &kinds_[at->second];
 }
 
 const TagKind* TagTable::kindOf(uint32_t tag, uint32_t* n) const {
-  for (const TagKind& k : kinds_)
-    if (k.holds(tag)) {
-      if (n) *n = tag - k.number;
-      return &k;
-    }
-  return nullptr;
+  // The kind with the greatest first number at most `tag`: the only one that can hold it.
+  auto at = std::upper_bound(byNumber_.begin(), byNumber_.end(), std::pair<uint32_t, size_t>{tag, SIZE_MAX});
+  if (at == byNumber_.begin()) return nullptr;
+  const TagKind& k = kinds_[std::prev(at)->second];
+  if (!k.holds(tag)) return nullptr;
+  if (n) *n = tag - k.number;
+  return &k;
 }
 
 uint32_t TagTable::number(std::string_view word) const {

@@ -535,3 +535,51 @@ TEST(Tags, TheDocumentedWordsAreTheGamesTable) {
 }
 
 }  // namespace
+
+// The tag table's lookups (by word, and a tag's kind) answer as a pass over every kind would,
+// over tables of thousands of kinds, words alone and numbered, declared in any order.
+TEST(Tags, LookupsAgreeWithAPassOverEveryKind) {
+  platon::testing::Rng rng{77};
+  for (int table = 0; table < 20; ++table) {
+    stage::TagTable tags = *stage::gameTags();
+    std::vector<uint32_t> bases;
+    for (uint32_t i = 0; i < 3000; ++i) bases.push_back(stage::kFirstModTag + i * stage::kModTagStep);
+    for (size_t i = bases.size(); i > 1; --i) std::swap(bases[i - 1], bases[rng.next() % i]);  // any order
+    for (size_t i = 0; i < bases.size(); ++i) {
+      stage::TagKind k;
+      k.word = "w" + std::to_string(i);
+      k.number = bases[i];
+      k.count = rng.between(0, 2) == 0 ? 0 : static_cast<uint32_t>(rng.between(1, 999));
+      k.owner = "mod";
+      tags.add(k);
+    }
+    // A kind overlapping any other is refused, whichever side it overlaps from.
+    stage::TagKind overlapping;
+    overlapping.word = "late";
+    overlapping.number = bases[0] + 500;
+    overlapping.count = 999;
+    bool overlaps = false;
+    for (const stage::TagKind& k : tags.kinds())
+      overlaps =
+          overlaps || (k.number <= overlapping.number + overlapping.count && overlapping.number <= k.number + k.count);
+    if (overlaps) {
+      EXPECT_THROW(tags.add(overlapping), stage::TagError);
+    } else {
+      EXPECT_NO_THROW(tags.add(overlapping));
+    }
+    for (int q = 0; q < 20000; ++q) {
+      const uint32_t tag = rng.between(0, 2) == 0 ? static_cast<uint32_t>(rng.between(0, 3000))
+                                                  : bases[rng.next() % bases.size()] + rng.between(0, 1000);
+      const stage::TagKind* expected = nullptr;
+      for (const stage::TagKind& k : tags.kinds())
+        if (k.holds(tag)) expected = &k;
+      uint32_t n = 99;
+      ASSERT_EQ(tags.kindOf(tag, &n), expected) << tag;
+      if (expected) {
+        EXPECT_EQ(n, tag - expected->number);
+      }
+    }
+    for (const stage::TagKind& k : tags.kinds()) ASSERT_EQ(tags.find(k.word), &k);
+    EXPECT_EQ(tags.find("nothing"), nullptr);
+  }
+}

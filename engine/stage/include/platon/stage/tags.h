@@ -8,6 +8,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 #include <string_view>
 #include <vector>
 
@@ -68,6 +69,10 @@ class TagTable {
 
  private:
   std::vector<TagKind> kinds_;
+  // Lookups in constant or logarithmic time whatever the number of kinds (mods may declare
+  // thousands; the physics asks on every contact): by word, and by first number (kinds never overlap).
+  std::unordered_map<std::string, size_t> byWord_;
+  std::vector<std::pair<uint32_t, size_t>> byNumber_;  // sorted by number
 };
 
 // The game's kinds (scripts/rules/game.lua gives them their rules): solid 0, hazard 1, goal 2,
