@@ -75,7 +75,7 @@ Device& theDevice() {
 AudioSystem::AudioSystem(const core::SoundBank& bank) : device_(&theDevice()), bank_(bank) { ++device_->systems; }
 
 AudioSystem::~AudioSystem() {
-  for (auto& [name, chunk] : chunks_) Mix_FreeChunk(chunk);  // halts the channels playing it
+  for (auto& [name, kept] : chunks_) Mix_FreeChunk(kept.chunk);  // halts the channels playing it
   // The last scene that names audio is gone (the title with a level that does not): silence.
   if (--device_->systems == 0 && device_->open) {
     const std::lock_guard<std::mutex> held(device_->lock);
@@ -86,9 +86,15 @@ AudioSystem::~AudioSystem() {
 
 Mix_Chunk* AudioSystem::chunkOf(const std::string& name) {
   const auto cached = chunks_.find(name);
-  if (cached != chunks_.end()) return cached->second;
+  if (cached != chunks_.end()) {
+    uses_.splice(uses_.begin(), uses_, cached->second.use);  // the most recently played now
+    return cached->second.chunk;
+  }
   const auto effect = bank_.effects.find(name);
   if (effect == bank_.effects.end()) return nullptr;
+  const double seconds = synth::lengthOf(effect->second);
+  if (renderedThisFrame_ + seconds > kMaxRenderedSeconds) return nullptr;  // not heard this frame
+  renderedThisFrame_ += seconds;
   // Rendered at the device's rate, as 16-bit stereo (the same on both sides: panning is the channel's).
   const std::vector<float> mono = synth::render(effect->second, device_->rate);
   std::vector<int16_t> stereo(mono.size() * 2);
@@ -103,8 +109,22 @@ Mix_Chunk* AudioSystem::chunkOf(const std::string& name) {
     return nullptr;
   }
   chunk->allocated = 1;  // Mix_FreeChunk frees the samples too
-  chunks_[name] = chunk;
+  keep(name, chunk);
   return chunk;
+}
+
+void AudioSystem::keep(const std::string& name, Mix_Chunk* chunk) {
+  // The least recently played go first (never the one just made): freeing one halts its channels.
+  while (!uses_.empty() && keptBytes_ + chunk->alen > kMaxKeptBytes) {
+    const auto oldest = chunks_.find(uses_.back());
+    keptBytes_ -= oldest->second.chunk->alen;
+    Mix_FreeChunk(oldest->second.chunk);
+    chunks_.erase(oldest);
+    uses_.pop_back();
+  }
+  uses_.push_front(name);
+  chunks_[name] = {chunk, uses_.begin()};
+  keptBytes_ += chunk->alen;
 }
 
 void AudioSystem::playEffect(const std::string& name, float volume, float pan) {
@@ -124,6 +144,7 @@ void AudioSystem::playEffect(const std::string& name, float volume, float pan) {
 
 void AudioSystem::hear(const core::SoundFrame& frame) {
   if (!device_->open) return;
+  renderedThisFrame_ = 0;
   for (const core::SoundEvent& e : frame.effects) playEffect(e.name, e.volume, e.pan);
   setTune(frame.music, frame.bank);
 }
@@ -168,6 +189,7 @@ void AudioSystem::playNow(const std::string& name) {
   if (!device_->open) return;
   const bool paused = device_->paused;
   device_->paused = false;  // a menu's click sounds while the game is paused
+  renderedThisFrame_ = 0;   // the game's own sound, not a frame's
   playEffect(name, 1, 0);
   device_->paused = paused;
 }

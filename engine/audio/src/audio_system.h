@@ -1,10 +1,14 @@
 // The audio system: SDL_mixer plays what a scene makes heard (core/sound.h). Effects are rendered
-// by engine/synth the first time each is played and kept; the scene's tune is stepped by the
+// by engine/synth when played and kept, within bounds a bank cannot move (a 1 MB bank names tens of
+// thousands of effects of up to 10 s): the kept samples at most kMaxKeptBytes (the least recently
+// played let go first), and at most kMaxRenderedSeconds of sound made in one frame (what is past it
+// is not heard that frame). The scene's tune is stepped by the
 // synthesizer in the mixer's thread as it plays (no start-up cost, no file). The device is the
 // process's: opened by the first audio system, shared by the scenes after it (a hot reload or the
 // next level) and kept open until the process ends, so a tune that both scenes name plays on
 // without a break.
 #pragma once
+#include <list>
 #include <map>
 #include <memory>
 #include <string>
@@ -21,6 +25,9 @@ struct Device;
 
 class AudioSystem final : public core::System, public core::AudioControls {
  public:
+  static constexpr size_t kMaxKeptBytes = size_t{32} << 20;
+  static constexpr double kMaxRenderedSeconds = 12;  // a frame makes at least one longest effect (10 s)
+
   explicit AudioSystem(const core::SoundBank& bank);
   ~AudioSystem() override;
 
@@ -38,9 +45,18 @@ class AudioSystem final : public core::System, public core::AudioControls {
   void setTune(const std::string& name, const core::SoundBank& bank);
   Mix_Chunk* chunkOf(const std::string& name);
 
+  void keep(const std::string& name, Mix_Chunk* chunk);
+
   Device* device_;  // the process's (audio_system.cpp)
   core::SoundBank bank_;
-  std::map<std::string, Mix_Chunk*, std::less<>> chunks_;
+  struct Kept {
+    Mix_Chunk* chunk;
+    std::list<std::string>::iterator use;  // its place in uses_
+  };
+  std::map<std::string, Kept, std::less<>> chunks_;
+  std::list<std::string> uses_;  // the kept effects, the most recently played first
+  size_t keptBytes_ = 0;
+  double renderedThisFrame_ = 0;  // seconds
 };
 
 }  // namespace platon::audio

@@ -145,5 +145,54 @@ TEST(Audio, WhatASceneMakesHeardReachesTheDeviceOnItsFrame) {
   for (size_t i = last + 2; i < level.size(); ++i) EXPECT_LT(level[i], 0.001) << i;
 }
 
+// Plays `perFrame` effects of the bank (e1, e2, ...) each frame, a different one each time.
+class PlaysMany : public core::System {
+ public:
+  PlaysMany(int count, int perFrame) : count_(count), perFrame_(perFrame) {}
+  void beforeStep(core::Scene& scene, const core::InputFrame&) override {
+    for (int i = 0; i < perFrame_; ++i) scene.sounds().play("e" + std::to_string(next_++ % count_ + 1), 1, 0);
+  }
+
+ private:
+  int count_, perFrame_, next_ = 0;
+};
+
+size_t residentKilobytes() {
+  std::ifstream status("/proc/self/status");
+  for (std::string line; std::getline(status, line);)
+    if (line.rfind("VmRSS:", 0) == 0) return std::stoul(line.substr(6));
+  return 0;
+}
+
+// A bank may name thousands of effects of 10 s each (1.9 MB of samples apiece): played one after
+// another, the samples kept stay within the cache's bound (the least recently played let go), and a
+// frame makes at most 12 s of sound (30 asked for a frame, one made). Before, every effect played
+// was kept for good: 300 of them grew the process by about 570 MB.
+TEST(Audio, AHugeBankKeepsBoundedSamples) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  EXPECT_EXIT(
+      {
+        testing::TempFolder folder("audio_many");
+        setenv("SDL_AUDIODRIVER", "dummy", 1);
+        std::string bank = "return { effects = {\n";
+        for (int i = 1; i <= 300; ++i)
+          bank += "  e" + std::to_string(i) + " = { wave = 'noise', frequency = " + std::to_string(100 + i) +
+                  ", attack = 2, sustain = 4, decay = 4, volume = 0.1 },\n";
+        folder.write("bank.lua", bank + "} }\n");
+        const core::SystemRegistry registry = withAudio();
+        auto scene = core::loadScene(
+            folder.write("s.lua", "return { name = 's', systems = { 'audio' }, sounds = 'bank.lua' }"), registry);
+        scene->addSystem(std::make_unique<PlaysMany>(300, 30));
+        core::AudioControls* audio = scene->findSystem("audio")->audio();
+        if (!audio || !audio->silentBecause().empty()) std::exit(2);
+        const size_t before = residentKilobytes();
+        for (int f = 0; f < 330; ++f) scene->step({});
+        const size_t grown = (residentKilobytes() - before) / 1024;
+        std::fprintf(stderr, "grown by %zu MB\n", grown);
+        std::exit(grown < 96 ? 0 : 3);
+      },
+      ::testing::ExitedWithCode(0), "");
+}
+
 }  // namespace
 }  // namespace platon
