@@ -394,7 +394,19 @@ class Parser {
     level.size = integer(line, line.tokens[0], 64, 1 << 24, "face size (units)");
   }
 
+  // Refuses the segment at line:column when its face or the level holds as many as they may.
+  void countSegment(const Level& level, size_t& total, int line, int column) const {
+    if (level.faces.back().lines.size() >= kMaxFaceSegments)
+      fail(line, column,
+           "face " + std::to_string(level.faces.size() - 1) + " has " + std::to_string(kMaxFaceSegments) +
+               " segments already, the most a face may have");
+    if (++total > kMaxLevelSegments)
+      fail(line, column,
+           "the level has " + std::to_string(kMaxLevelSegments) + " segments already, the most a level may have");
+  }
+
   void faces(Level& level) {
+    size_t total = 0;
     for (;;) {
       std::array<int32_t, 4> v;
       LevelLine plain;
@@ -403,6 +415,7 @@ class Parser {
         plain.b = {v[2], v[3]};
         if (plain.a == plain.b)
           fail(plain.sourceLine, plain.sourceColumn, "the segment has no length (both ends at one point)");
+        countSegment(level, total, plain.sourceLine, plain.sourceColumn);
         level.faces.back().lines.push_back(plain);
         continue;
       }
@@ -415,11 +428,12 @@ class Parser {
                std::string(solidName(*level.solid)) + " has " + std::to_string(faceCount(*level.solid)) +
                    " faces; this '%' starts one more");
         level.faces.push_back(faceOptions(line));
-        level.faces.back().lines.reserve(reader_.linesBeforeNextFace());
+        level.faces.back().lines.reserve(std::min(reader_.linesBeforeNextFace(), kMaxFaceSegments));
         continue;
       }
       if (level.faces.empty())
         fail(line, line.tokens[0], "expected '%', which starts face 0 (after the four header lines)");
+      countSegment(level, total, line.number, line.tokens[0].column);
       level.faces.back().lines.push_back(segment(line));
     }
   }

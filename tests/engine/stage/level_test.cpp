@@ -583,3 +583,35 @@ TEST(Tags, LookupsAgreeWithAPassOverEveryKind) {
     EXPECT_EQ(tags.find("nothing"), nullptr);
   }
 }
+
+// A level's size is capped as it is read, not by the memory it would take: one segment past the
+// most a face may hold, or a level may hold, is refused at its line (a 256 MB file of 12 million
+// segments aborted `platon check` with bad_alloc).
+TEST(LevelFile, SegmentsPastTheCapsAreRefusedAtTheirLine) {
+  auto level = [](const std::vector<size_t>& perFace) {
+    std::string text = "HEXAHEDRON\n0 600 700\n2 2000 800\n4096\n";
+    text.reserve(24 * (stage::kMaxLevelSegments + 16));
+    for (const size_t n : perFace) {
+      text += "%\n";
+      for (size_t i = 0; i < n; ++i) text += (i % 2 ? "1 3 9 4\n" : "1 2 3 4 hazard\n");  // plain and tagged lines
+    }
+    return text;
+  };
+  const size_t face = stage::kMaxFaceSegments;
+  EXPECT_NO_THROW((void)stage::parseLevel(level({face, 1, 1, 1, 1, 1}), "ok.level"));
+  try {
+    (void)stage::parseLevel(level({face + 1, 1, 1, 1, 1, 1}), "face.level");
+    ADD_FAILURE() << "read";
+  } catch (const stage::StageError& e) {
+    EXPECT_EQ(std::string(e.what()), "face.level:" + std::to_string(5 + face + 1) + ":1: face 0 has " +
+                                         std::to_string(face) + " segments already, the most a face may have");
+  }
+  try {
+    (void)stage::parseLevel(level({face, face, 1, 1, 1, 1}), "all.level");
+    ADD_FAILURE() << "read";
+  } catch (const stage::StageError& e) {
+    EXPECT_EQ(std::string(e.what()), "all.level:" + std::to_string(5 + face + 1 + face + 2) + ":1: the level has " +
+                                         std::to_string(stage::kMaxLevelSegments) +
+                                         " segments already, the most a level may have");
+  }
+}

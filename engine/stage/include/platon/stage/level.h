@@ -94,6 +94,12 @@ Stage platonicStageOf(const Level& level);
 void buildLevel(const Level& level, Stage& stage, physics::World& world, physics::MapPartId firstPart,
                 int64_t defaultGravityQ16);
 
+// What a level may hold, checked as it is read (before memory grows): segments on one face and in
+// all. 10^6 on a face is the largest map the benches measure (bench/map_scaling); a level of more
+// would cost its players gigabytes (256 MB of text holds 12 million short segments).
+inline constexpr size_t kMaxFaceSegments = size_t{1} << 20;
+inline constexpr size_t kMaxLevelSegments = size_t{1} << 21;
+
 // Reads a level file: a regular file of at most kMaxLevelFileBytes (throws StageError naming the
 // file for one that cannot be read: missing, a FIFO or a device, too large).
 inline constexpr size_t kMaxLevelFileBytes = size_t{256} << 20;
