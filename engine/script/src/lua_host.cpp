@@ -297,14 +297,14 @@ int LuaHost::loadStringInGlobalsOf(std::string_view code, const std::string& chu
   return id;
 }
 
-int LuaHost::loadFile(const std::string& path, Trust trust) {
+int LuaHost::loadFile(const std::string& path, Trust trust, const std::string& shownAs) {
   std::string code;
   try {
     code = files::readBoundedFile(path, kMaxScriptBytes);
   } catch (const files::FileError& e) {
     throw ScriptError(path + ": the script: " + e.reason(), "");
   }
-  return loadString(code, "@" + path, trust);
+  return loadString(code, "@" + (shownAs.empty() ? path : shownAs), trust);
 }
 
 void LuaHost::call(int nargs, int nresults) {

@@ -101,7 +101,10 @@ class LuaHost {
   // sandbox (its environment) named after the chunk, the JIT is off for the chunk and every
   // function inside it, and the sandbox's id is returned (kNoSandbox for trusted code). Run the
   // chunk with callSandboxed(id, ...).
-  int loadFile(const std::string& path, Trust trust);
+  // `shownAs`: the name the chunk carries (messages, tracebacks) instead of the path: sandboxed
+  // code is named from its level's folder ("level.lua"), so what it sees of its own errors is the
+  // same wherever the level is installed and tells nothing of the player's folders.
+  int loadFile(const std::string& path, Trust trust, const std::string& shownAs = "");
   static constexpr size_t kMaxScriptBytes = size_t{16} << 20;  // a script file (a regular file)
   int loadString(std::string_view code, const std::string& chunkName, Trust trust);
   // Compiles `code` as sandboxed code that sees sandbox `envOf`'s globals (reads and writes them),

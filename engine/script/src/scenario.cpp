@@ -126,7 +126,7 @@ DataValue runScenarioFile(const std::string& path, std::string_view text) {
   LuaHost host;  // the scenario's own state: it only makes the plan
   lua_State* L = host.state();
   lua::StackGuard guard(L);
-  const int sandbox = host.loadFile(path, Trust::Sandboxed);
+  const int sandbox = host.loadFile(path, Trust::Sandboxed, std::filesystem::path(path).filename().string());
   host.beginFrame();
   if (!host.callSandboxed(sandbox, 0, 1))
     throw ScriptError(path + ": the scenario was stopped before it returned its plan (its budget of steps is spent)",

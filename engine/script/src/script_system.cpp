@@ -170,6 +170,15 @@ std::string engineScript(const std::string& root, const std::string& path) {
 // how may also be "base": an engine script run sandboxed, as the base a level's own script
 // extends (scripts/player.lua under a level's player: its functions then run inside the level's
 // limits, as the level's own do).
+// `file` as a path from `folder` ("level.lua", "mods/dash.lua"); its own name when it is elsewhere.
+std::string nameInFolder(const std::string& file, const std::string& folder) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  const fs::path inside = fs::path(file).lexically_relative(fs::weakly_canonical(folder.empty() ? "." : folder, error));
+  if (error || inside.empty() || *inside.begin() == "..") return fs::path(file).filename().string();
+  return inside.generic_string();
+}
+
 int engineLoad(lua_State* L) {
   ScriptSystem::State& state = stateOf(L);
   const std::string path(lua::checkString(L, 1));
@@ -191,7 +200,10 @@ int engineLoad(lua_State* L) {
   } catch (const files::FileError& e) {
     throw ScriptError(file + ": the script: " + e.reason() + named, "");
   }
-  const int sandbox = state.host.loadFile(file, trusted ? Trust::Trusted : Trust::Sandboxed);
+  // Sandboxed code carries a name from its level's folder (an engine script run as a level's base:
+  // "scripts/player.lua"), never the absolute path.
+  const std::string shown = trusted ? "" : base ? path : nameInFolder(file, state.scene->manifest().directory);
+  const int sandbox = state.host.loadFile(file, trusted ? Trust::Trusted : Trust::Sandboxed, shown);
   lua_insert(L, 3);
   if (trusted) {
     state.host.call(nargs, 1);
