@@ -446,6 +446,19 @@ end
 -- callback first, then each mod's handler for the contact's tag, in the manifest's order; the
 -- last answer that is not nil is the contact's. Whether a line is passed is its tag's owner's
 -- say: the rules' for the game's tags, a mod's `passable` for its own.
+-- Why a contact answer is none the world takes (nil when it is one): nil, a boolean, or a table
+-- { slide =, keepVelocity =, restitution = 0..1 }. A handler's bad answer is its own error, by its
+-- file's name (the world, given it, could only blame this file).
+local function badContactAnswer(a)
+  if a == nil or a == true or a == false then return nil end
+  if type(a) ~= "table" then
+    return "returned a " .. type(a) .. "; return nothing, false, or {slide =, keepVelocity =, restitution =}"
+  end
+  local r = rawget(a, "restitution")
+  if r ~= nil and (type(r) ~= "number" or not (r >= 0 and r <= 1)) then return "returned restitution outside [0, 1]" end
+  return nil
+end
+
 local function composedRules(rules, rulesId)
   local tags, kinds = platon.tags, platon.tagKinds
   local byTag, passOf, any = {}, {}, false  -- a kind's number -> its handlers; its own passage
@@ -516,8 +529,14 @@ local function composedRules(rules, rulesId)
         for i = 1, #list do
           local f = list[i].h[name]
           if f then
-            local ok, a = call(list[i].m.id, f, levelView, entity, tag, ...)
-            if ok and a ~= nil then answer = a end
+            local m = list[i].m
+            local ok, a = call(m.id, f, levelView, entity, tag, ...)
+            local why = ok and name == "contact" and badContactAnswer(a)
+            if why then  -- the mod's error, kept as its own (raised in its sandbox), and no answer
+              call(m.id, error, "the contact handler of tag " .. tostring(tag) .. " " .. why, 0)
+            elseif ok and a ~= nil then
+              answer = a
+            end
           end
         end
       end

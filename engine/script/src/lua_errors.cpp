@@ -2,6 +2,7 @@
 // traceback after it), and messages made printable (NUL bytes shown, a length cut) on their way
 // to C++.
 #include <algorithm>
+#include <cctype>
 #include <cstring>
 
 #include "lua_host_shared.h"
@@ -117,8 +118,27 @@ int tracebackHandler(lua_State* L) {
   return 1;
 }
 
+// A report with no address in it: LuaJIT names a built-in function's frame by where its code is
+// ("[builtin#19]: at 0x7f..."), and a trusted script's message may hold a table's; an address
+// differs from run to run and from machine to machine, and a report must not. Each run of eight
+// or more hex digits after "0x" is cut, and "at 0x..." becomes "in a built-in function".
+std::string withoutAddresses(std::string text) {
+  for (size_t at = text.find("0x"); at != std::string::npos; at = text.find("0x", at + 1)) {
+    size_t end = at + 2;
+    while (end < text.size() && std::isxdigit(static_cast<unsigned char>(text[end]))) ++end;
+    if (end - at - 2 < 8) continue;
+    if (at >= 3 && text.compare(at - 3, 3, "at ") == 0) {
+      text.replace(at - 3, end - at + 3, "in a built-in function");
+      at -= 3;
+    } else {
+      text.replace(at, end - at, "(an address)");
+    }
+  }
+  return text;
+}
+
 // The message and its traceback, each made printable and cut on its own (cutting them together
-// lost the traceback of a long message).
+// lost the traceback of a long message), with no address in either.
 ScriptError errorFromStack(lua_State* L, int status, const LuaHost::Shared& shared) {
   if (!lua_isstring(L, -1)) return ScriptError("(error object is not a string)", "");
   size_t length = 0;
@@ -130,8 +150,9 @@ ScriptError errorFromStack(lua_State* L, int status, const LuaHost::Shared& shar
                        "");
   }
   const size_t split = whole.rfind("\nstack traceback:");
-  if (split == std::string_view::npos) return ScriptError(printableText(raw, length), "");
-  return ScriptError(printableText(raw, split), printableText(raw + split + 1, length - split - 1));
+  if (split == std::string_view::npos) return ScriptError(withoutAddresses(printableText(raw, length)), "");
+  return ScriptError(withoutAddresses(printableText(raw, split)),
+                     withoutAddresses(printableText(raw + split + 1, length - split - 1)));
 }
 
 }  // namespace platon::script::host

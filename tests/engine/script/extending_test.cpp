@@ -328,3 +328,32 @@ TEST(ExtendedPlayer, TheBaseIsTheLevelsOwnCopyRunInItsLimits) {
 
 }  // namespace
 }  // namespace platon::script
+
+namespace platon::script {
+namespace {
+
+// A mod's contact handler that answers what the world cannot take (a string, a restitution out of
+// range) is the mod's error, named by the mod's file: never the scene driver's (which hands the
+// answers on). The frame goes on, with no answer from that handler.
+TEST(Tags, AModsBadContactAnswerIsTheModsError) {
+  for (const std::string answer : {"'bouncy'", "{ restitution = 2 }", "42"}) {
+    SCOPED_TRACE(answer);
+    ModLevel level(
+        "tags_bad_answer", "spring", "",
+        {"return { tags = { spring = { color = '#cc79a7', contact = function() return " + answer + " end } } }\n"});
+    const core::SystemRegistry registry = scripting();
+    core::LiveScene live(level.scene, registry, false);
+    core::InputEdges edges;
+    std::string errors;
+    for (int f = 0; f < 90; ++f)
+      if (const std::optional<std::string> e = live.step(edges.next(0))) errors += *e + "\n";
+    EXPECT_EQ(
+        errors.rfind("mod1.lua: the contact handler of tag " + std::to_string(stage::kFirstModTag) + " returned", 0),
+        0u)
+        << errors;
+    EXPECT_EQ(errors.find("0x"), std::string::npos) << "an address in the report:\n" << errors;
+  }
+}
+
+}  // namespace
+}  // namespace platon::script
