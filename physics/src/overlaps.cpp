@@ -64,7 +64,9 @@ size_t World::countOverlaps(size_t* work) const {
     }
   }
   size_t count = 0;
-  for (auto& [partId, bodies] : parts) {
+  for (auto& entry : parts) {
+    const MapPartId partId = entry.first;  // a name of its own: lambdas below capture it (clang 14)
+    std::vector<Body>& bodies = entry.second;
     const MapPart& part = w.part(partId);
     // Fixed lines: solid unless kept passable until the instance is clear (refreshPierce) or pierced.
     const LineBoxes& lines = w.overlapLines(part);

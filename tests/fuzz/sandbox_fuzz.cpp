@@ -17,6 +17,7 @@
 //    by the memory limit, which may come at another instruction).
 // Build and run: see CMakeLists.txt. PLATON_FUZZ_PRINT=1 prints each program.
 #include <algorithm>
+#include <cctype>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -274,9 +275,13 @@ struct Program {
     return s;
   }
 
+  // Lines for the game's console, typed after each frame (made by make()).
+  std::vector<std::string> console;
+
   std::string make() {
     std::string build, tick;
     for (int i = 0; i < 6 && c.more(); ++i) build += statement();
+    for (int i = 0; i < 2 && c.more(); ++i) console.push_back("local W, D = game.world, platon.draw " + statement());
     while (c.more()) tick += statement();
     return "local level = {}\nV = {1, 'x', {}}\nM = {}\nlocal e, p\n"
            "function level.build(game)\nlocal W, D, frame = game.world, platon.draw, 0\n"
@@ -329,7 +334,18 @@ struct Run {
   // that, not this): the slowest frame's (the load counts as one), and the whole run's.
   double slowest = 0;
   double processor = 0;
+  bool addressShown = false;  // a console answer showed an address
 };
+
+// An address in a text: "0x" and eight hex digits or more (it differs from run to run).
+bool hasAddress(const std::string& text) {
+  for (size_t at = text.find("0x"); at != std::string::npos; at = text.find("0x", at + 1)) {
+    size_t end = at + 2;
+    while (end < text.size() && std::isxdigit(static_cast<unsigned char>(text[end]))) ++end;
+    if (end - at - 2 >= 8) return true;
+  }
+  return false;
+}
 
 double threadSeconds() {
   timespec t{};
@@ -337,7 +353,7 @@ double threadSeconds() {
   return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec) * 1e-9;
 }
 
-Run run(const Folder& folder, const std::string& program) {
+Run run(const Folder& folder, const std::string& program, const std::vector<std::string>& console) {
   std::ofstream(folder.path + "/level.lua", std::ios::trunc) << program;
   core::SystemRegistry registry;
   registry.add("scripting", script::makeScriptSystem);
@@ -364,6 +380,18 @@ Run run(const Folder& folder, const std::string& program) {
     char hash[24];
     std::snprintf(hash, sizeof hash, " %016llx", static_cast<unsigned long long>(live->scene().world().stateHash()));
     r.trace.push_back(line + hash);
+    // The console's lines, typed after the frame: their answers are part of what two runs share.
+    auto* scripts = dynamic_cast<script::ScriptSystem*>(live->scene().findSystem("scripting"));
+    for (const std::string& code : console) {
+      if (!scripts) break;
+      const double typed = threadSeconds();
+      const script::ScriptSystem::ConsoleAnswer answer = scripts->console(code);
+      r.slowest = std::max(r.slowest, threadSeconds() - typed);
+      if (byTheClock(answer.text)) r.deadline = true;
+      if (answer.text.find("memory limit") != std::string::npos) r.memory = std::min(r.memory, r.trace.size());
+      if (hasAddress(answer.text)) r.addressShown = true;
+      r.trace.push_back("console: " + answer.text);
+    }
   }
   r.processor = threadSeconds() - began;
   return r;
@@ -380,12 +408,16 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   Choices choices{data, size};
   Program program{choices, vocabulary, "", 0};
   const std::string text = program.make();
-  if (std::getenv("PLATON_FUZZ_PRINT")) std::fprintf(stderr, "%s\n", text.c_str());
-  const Run first = run(folder, text);
-  const Run second = run(folder, text);
+  if (std::getenv("PLATON_FUZZ_PRINT")) {
+    std::fprintf(stderr, "%s\n", text.c_str());
+    for (const std::string& line : program.console) std::fprintf(stderr, "console: %s\n", line.c_str());
+  }
+  const Run first = run(folder, text, program.console);
+  const Run second = run(folder, text, program.console);
   if (std::getenv("PLATON_FUZZ_PRINT"))
     for (const Run* r : {&first, &second})
       for (const std::string& line : r->trace) std::fprintf(stderr, "trace: %s\n", line.c_str());
+  if (first.addressShown) bug("a console answer shows an address", text);
   // A run stopped by the clock that had half the deadline of processor time or less waited for
   // the machine (other programs had it), not for work the budget does not charge.
   const double deadline = kDeadlineMilliseconds / 1000.0;
