@@ -175,6 +175,7 @@ int playCommand(int argc, char** argv) {
       return playUsage();
   }
   core::Replay input;
+  size_t nextConsole = 0;  // the next of input's console lines to run
   try {
     if (!inputPath.empty()) input = core::readReplay(inputPath);
   } catch (const std::exception& e) {
@@ -297,6 +298,16 @@ int playCommand(int argc, char** argv) {
     }
     for (int s = 0; s < due && (frames == 0 || frame < frames); ++s) {
       const uint8_t held = inputPath.empty() ? taps.next(keys) : frame < input.held.size() ? input.held[frame] : 0;
+      // The replay's console lines before the frame they ran before, as `platon replay` runs them.
+      for (; nextConsole < input.console.size() && input.console[nextConsole].frame <= frame + 1; ++nextConsole) {
+        const std::string& code = input.console[nextConsole].code;
+        if (script::ScriptSystem* scripts = scriptsOf(live->scene())) {
+          const script::ScriptSystem::ConsoleAnswer answer = scripts->console(code);
+          std::printf("console before frame %llu: %s\n%s\n", static_cast<unsigned long long>(frame + 1),
+                      core::visibleText(code).c_str(), core::visibleText(answer.text, true).c_str());
+        }
+        if (recorder) recorder->console(code);
+      }
       ++frame;
       if (std::optional<std::string> error = live->step(edges.next(held))) {
         ++frameErrors;

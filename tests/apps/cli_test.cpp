@@ -849,4 +849,28 @@ TEST(Check, AModsTagWordsAreKnownThroughItsScene) {
   EXPECT_TRUE(contains(broken.out, "springs.lua: tags.spring.color: expected a colour")) << broken.out;
 }
 
+// `platon play --input` runs a replay's console lines where `platon replay` runs them (before the
+// frame they were typed before), and records them: a line that throws the player up changes every
+// hash after it, and the recording replays.
+TEST(Play, InputRunsTheReplaysConsoleLines) {
+  Folder folder("cli_play_console");
+  sceneWith(folder, "s");
+  const std::string head = "platon replay 1\nscene \"s/scene.lua\"\nframes 60\nhash_every 10\ninput\n60 right\nend\n";
+  folder.write("with.replay", head + "console 5 \"game.world.setVelocity(game.player(), 0, 20)\"\n");
+  folder.write("without.replay", head);
+  for (const char* name : {"with", "without"}) {
+    const Ran r = platon({"play", "s", "--headless", "--fast", "--frames", "60", "--input",
+                          std::string(name) + ".replay", "--record", std::string(name) + "_played.replay"},
+                         folder.path(), 120);
+    EXPECT_EQ(r.status, 0) << r.out << r.err;
+  }
+  const std::string with = contents(folder.path("with_played.replay")),
+                    without = contents(folder.path("without_played.replay"));
+  EXPECT_TRUE(contains(with, "console 5 \"game.world.setVelocity(game.player(), 0, 20)\"")) << with;
+  const auto hashes = [](const std::string& text) { return text.substr(text.find("\nhash ")); };
+  EXPECT_NE(hashes(with), hashes(without)) << "the console line changed nothing";
+  const Ran replayed = platon({"replay", "with_played.replay"}, folder.path(), 120);
+  EXPECT_EQ(replayed.status, 0) << replayed.out << replayed.err;
+}
+
 }  // namespace
