@@ -28,10 +28,10 @@ struct Bytes {
   size_t size, at = 0;
   uint8_t next() { return at < size ? data[at++] : 0; }
   bool more() const { return at < size; }
-  int32_t coordinate(int32_t size) {  // mostly inside a face, sometimes far out
+  int32_t coordinate(int32_t faceSize) {  // mostly inside a face, sometimes far out
     const uint8_t b = next();
     if (b == 255) return (next() & 1) ? INT32_MAX : INT32_MIN;
-    return static_cast<int32_t>((int64_t{b} << 8 | next()) * (size + 64) / 65536) - 32;
+    return static_cast<int32_t>((int64_t{b} << 8 | next()) * (faceSize + 64) / 65536) - 32;
   }
 };
 

@@ -406,7 +406,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   (void)rooted;
   if (size > 4096) return 0;  // a program of some hundreds of statements is enough
   Choices choices{data, size};
-  Program program{choices, vocabulary, "", 0};
+  Program program{choices, vocabulary, "", 0, {}};
   const std::string text = program.make();
   if (std::getenv("PLATON_FUZZ_PRINT")) {
     std::fprintf(stderr, "%s\n", text.c_str());
