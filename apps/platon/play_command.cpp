@@ -303,7 +303,7 @@ int playCommand(int argc, char** argv) {
         const std::string& code = input.console[nextConsole].code;
         if (script::ScriptSystem* scripts = scriptsOf(live->scene())) {
           const script::ScriptSystem::ConsoleAnswer answer = scripts->console(code);
-          std::printf("console before frame %llu: %s\n%s\n", static_cast<unsigned long long>(frame + 1),
+          std::printf("console before frame %llu: %s\n%s\n", static_cast<unsigned long long>(frame) + 1,
                       core::visibleText(code).c_str(), core::visibleText(answer.text, true).c_str());
         }
         if (recorder) recorder->console(code);

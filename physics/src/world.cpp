@@ -262,7 +262,6 @@ bool World::rotate(EntityId id, Angle angle) {
   return done;
 }
 
-
 // A body's step before any test (gravity, its contacts, whether it rests) costs about as much as
 // this many tests (measured on 10,000 bodies at rest): EntityView::work counts it too.
 constexpr uint32_t kBodyStepWork = 16;

@@ -37,8 +37,9 @@ struct Bytes {
   bool more() const { return at < size; }
 };
 
-const char* const kParts[] = {"lvl", "scene.lua", "finish.replay", "level.lua", "a.level", "..", ".", "",
-                              "x/../..", "/etc", "~", "sub", "README.md", "test_1.lua", "run.sh", ".hidden"};
+const char* const kParts[] = {"lvl",       "scene.lua",  "finish.replay", "level.lua", "a.level", "..",
+                              ".",         "",           "x/../..",       "/etc",      "~",       "sub",
+                              "README.md", "test_1.lua", "run.sh",        ".hidden"};
 
 std::string nameOf(Bytes& in) {
   std::string name;
@@ -129,7 +130,8 @@ std::set<std::string> filesUnder(const fs::path& dir, const std::string& text) {
   for (const fs::directory_entry& e : fs::recursive_directory_iterator(dir)) {
     const fs::file_status s = e.symlink_status();
     if (fs::is_directory(s)) continue;
-    if (!fs::is_regular_file(s)) bug("the reader left something that is not a regular file: " + e.path().string(), text);
+    if (!fs::is_regular_file(s))
+      bug("the reader left something that is not a regular file: " + e.path().string(), text);
     out.insert(e.path().lexically_relative(dir).generic_string());
   }
   return out;
