@@ -486,7 +486,7 @@ local function composedRules(rules, rulesId)
   end
   -- A tag's kind, looked for once per tag (the physics asks on every contact, and mods may declare
   -- thousands of numbered kinds): then read from a table.
-  local kindOfTag = {}
+  local kindOfTag, kindOfTagCount = {}, 0
   local function kindOf(tag)
     local known = kindOfTag[tag]
     if known then return known end
@@ -499,6 +499,10 @@ local function composedRules(rules, rulesId)
           break
         end
       end
+    end
+    kindOfTagCount = kindOfTagCount + 1
+    if kindOfTagCount > 65536 then  -- tags made by scripts are any numbers: the memo stays bounded
+      kindOfTag, kindOfTagCount = {}, 1
     end
     kindOfTag[tag] = known
     return known

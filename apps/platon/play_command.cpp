@@ -98,7 +98,7 @@ std::string whyUnrecordable(const std::string& scenePath, const std::string& pat
   const std::string partial = path + ".partial";
   const bool existed = std::filesystem::exists(partial, error);
   // O_NOFOLLOW: a link of the partial file's name is not written through.
-  const int probe = ::open(partial.c_str(), O_WRONLY | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0644);
+  const int probe = ::open(partial.c_str(), O_WRONLY | O_CREAT | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC, 0644);
   if (probe < 0) return "cannot write " + partial + ": " + std::strerror(errno);
   ::close(probe);
   if (!existed) std::remove(partial.c_str());

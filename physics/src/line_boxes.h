@@ -11,13 +11,13 @@
 #include <cstdint>
 #include <vector>
 
+#include "grid.h"
+
 namespace platon::physics {
 
 class LineBoxes {
  public:
-  struct Box {
-    int64_t x0, y0, x1, y1;
-  };
+  using Box = physics::Box;  // grid.h's closed integer box
   struct Item {
     Box box;
     uint32_t key;  // the caller's: a line's index, or which platform line

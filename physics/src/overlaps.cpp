@@ -15,22 +15,14 @@ namespace {
 
 // An instance in the part, with its vertices and box.
 struct Body {
-  LineBoxes::Box box;
+  Box box;
   const Entity* entity;
   const Instance* instance;
   std::vector<Vec2> verts;
 };
 
-LineBoxes::Box boxOf(std::span<const Vec2> points) {
-  LineBoxes::Box b{INT64_MAX, INT64_MAX, INT64_MIN, INT64_MIN};
-  for (const Vec2 p : points) {
-    b.x0 = std::min<int64_t>(b.x0, p.x), b.x1 = std::max<int64_t>(b.x1, p.x);
-    b.y0 = std::min<int64_t>(b.y0, p.y), b.y1 = std::max<int64_t>(b.y1, p.y);
-  }
-  return b;
-}
-
-LineBoxes::Box boxOf(const Segment& s) { return boxOf(std::array<Vec2, 2>{s.a, s.b}); }
+Box boxOf(std::span<const Vec2> points) { return sweptBox(points, {0, 0}); }
+Box boxOf(const Segment& s) { return boxOf(std::array<Vec2, 2>{s.a, s.b}); }
 
 // The part's solid fixed lines (one-way lines hold nothing inside them).
 LineBoxes fixedLines(const MapPart& part) {
@@ -88,6 +80,7 @@ size_t World::countOverlaps(size_t* work) const {
                             platformItems.push_back({boxOf(l.segment), static_cast<uint32_t>(platformLines.size())});
                             platformLines.emplace_back(&l, &w.platforms[(key & ~kPlatformLineBit) >> 16]);
                           });
+    done += w.platforms.size() + platformItems.size();  // the platforms looked through, their lines indexed
     if (!platformItems.empty()) {
       const LineBoxes moving(std::move(platformItems));
       for (const Body& b : bodies)

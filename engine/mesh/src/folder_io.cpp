@@ -36,10 +36,25 @@ std::string FolderIO::inside(const std::string& file) const {
 }
 
 bool FolderIO::read(const std::string& file, std::string& bytes) const {
+  // Once anything is refused, the mesh is refused whole: nothing more is read for it (assimp may
+  // go on asking, thousands of times).
+  if (!refusals_.empty()) return false;
+  if (read_ >= maxTotal_) {
+    refusals_.push_back(file + ": the mesh and the files it names come to more than " +
+                        std::to_string(maxTotal_ >> 20) + " MB read");
+    return false;
+  }
   const std::string name = inside(file);
   if (name.empty()) return false;
   try {
     bytes = files::readFileInside(folder_, name, maxBytes_);
+    read_ += bytes.size();
+    if (read_ > maxTotal_) {
+      refusals_.push_back(file + ": the mesh and the files it names come to more than " +
+                          std::to_string(maxTotal_ >> 20) + " MB read");
+      bytes.clear();
+      return false;
+    }
     return true;
   } catch (const files::FileError& e) {
     // A file that is simply not there is assimp's to report (or to do without: a missing material

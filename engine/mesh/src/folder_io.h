@@ -15,7 +15,10 @@ class FolderIO : public Assimp::IOSystem {
  public:
   // `folder`: the mesh's folder, as the path given to assimp spells it (so the names assimp joins
   // to it are recognised); `maxBytes`: the cap of each file read.
-  FolderIO(std::string folder, size_t maxBytes) : folder_(std::move(folder)), maxBytes_(maxBytes) {}
+  // `maxTotal`: what all its reads together may come to (assimp may ask for one file many times: an
+  // OBJ naming the same library 10,000 times, a glTF whose buffers all name one file).
+  FolderIO(std::string folder, size_t maxBytes, size_t maxTotal)
+      : folder_(std::move(folder)), maxBytes_(maxBytes), maxTotal_(maxTotal) {}
 
   bool Exists(const char* file) const override;
   char getOsSeparator() const override { return '/'; }
@@ -32,7 +35,8 @@ class FolderIO : public Assimp::IOSystem {
   bool read(const std::string& file, std::string& bytes) const;
 
   std::string folder_;
-  size_t maxBytes_;
+  size_t maxBytes_, maxTotal_;
+  mutable size_t read_ = 0;
   mutable std::vector<std::string> refusals_;  // Exists is const in assimp's interface
   // The file Exists read last: assimp asks Exists before Open, and a file is read once.
   mutable std::string keptName_, keptBytes_;

@@ -1,9 +1,11 @@
 #include "mesh_system.h"
 
+#include <algorithm>
 #include <array>
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <cctype>
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
@@ -64,6 +66,16 @@ void checkBeforeReading(const std::string& folder, const std::string& name, cons
   if (binaryStl && count > core::kMaxMeshFileTriangles)
     fail(path, "the file has " + std::to_string(count) + " triangles; a stage takes at most " +
                    std::to_string(core::kMaxMeshFileTriangles));
+}
+
+// The formats a stage's mesh may be (and a package carries): assimp reads dozens more, some of
+// them archives it unpacks itself (3MF, Quake's .pk3), which no level needs.
+void checkKind(const std::string& name, const std::string& path) {
+  std::string ending = name.substr(std::min(name.size(), name.find_last_of('.')));
+  std::transform(ending.begin(), ending.end(), ending.begin(), [](unsigned char c) { return std::tolower(c); });
+  for (const char* kind : {".obj", ".gltf", ".glb", ".ply", ".stl"})
+    if (ending == kind) return;
+  fail(path, "a stage's mesh is an OBJ, glTF, PLY or STL file (.obj, .gltf, .glb, .ply, .stl)");
 }
 
 // Refuses polygons a stage cannot take before assimp splits them into triangles (its split of an
@@ -127,9 +139,10 @@ core::MeshFile MeshSystem::loadMesh(const std::string& path) {
   const size_t slash = path.find_last_of('/');
   const std::string folder = slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
   const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+  checkKind(name, path);
   checkBeforeReading(folder, name, path);
   Assimp::Importer importer;
-  auto* io = new FolderIO(folder, core::kMaxMeshFileBytes);
+  auto* io = new FolderIO(folder, core::kMaxMeshFileBytes, 3 * core::kMaxMeshFileBytes);
   importer.SetIOHandler(io);  // the importer owns it
   // Read as the file has it, checked, then polygons split into triangles, nothing else: no joining
   // of points (assimp's is within an absolute 1e-5, which collapses small models;

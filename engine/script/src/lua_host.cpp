@@ -273,8 +273,7 @@ int LuaHost::loadString(std::string_view code, const std::string& chunkName, Tru
 void LuaHost::compile(std::string_view code, const std::string& chunkName, Trust trust) {
   const int top = lua_gettop(L_);
   if (trust == Trust::Sandboxed && !code.empty() && code[0] == '\x1b')
-    throw ScriptError(chunkName.substr(chunkName[0] == '@' || chunkName[0] == '=' ? 1 : 0) +
-                          ": a compiled (bytecode) chunk: sandboxed scripts load from text only",
+    throw ScriptError(nameOfChunk(chunkName) + ": a compiled (bytecode) chunk: sandboxed scripts load from text only",
                       "");
   const int status =
       luaL_loadbufferx(L_, code.data(), code.size(), chunkName.c_str(), trust == Trust::Sandboxed ? "t" : "bt");
@@ -559,6 +558,20 @@ void LuaHost::beginFrame() {
   s.skipNoted = false;
   s.stopNoted = false;
   for (Sandbox& box : s.sandboxes) box.spent = 0;
+}
+
+LuaHost::Budget LuaHost::budget() const {
+  const Shared& s = *shared_;
+  Budget b{s.frameSteps, s.frameSpent, s.printed, s.skipNoted, s.stopNoted, {}};
+  for (const Sandbox& box : s.sandboxes) b.spent.push_back(box.spent);
+  return b;
+}
+
+void LuaHost::restoreBudget(const Budget& b) {
+  Shared& s = *shared_;
+  s.frameSteps = b.frameSteps, s.frameSpent = b.frameSpent, s.printed = b.printed;
+  s.skipNoted = b.skipNoted, s.stopNoted = b.stopNoted;
+  for (size_t i = 0; i < s.sandboxes.size(); ++i) s.sandboxes[i].spent = i < b.spent.size() ? b.spent[i] : 0;
 }
 
 void LuaHost::setGameFrame(uint64_t frame) { shared_->gameFrame = frame; }

@@ -145,6 +145,16 @@ class LuaHost {
 
   // A new frame: the sandboxes' shared budget of steps and time starts again.
   void beginFrame();
+  // What the frame's budget has spent, to be put back (drawing runs on a budget of its own, at the
+  // display's rate, between the frames that replays run: it must not spend theirs).
+  struct Budget {
+    int64_t frameSteps, frameSpent;
+    size_t printed;
+    bool skipNoted, stopNoted;
+    std::vector<int64_t> spent;
+  };
+  Budget budget() const;
+  void restoreBudget(const Budget& budget);
   // The game clock sandboxes read through os.time/os.clock/os.date (frames, 60 a second).
   void setGameFrame(uint64_t frame);
 

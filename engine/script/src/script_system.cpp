@@ -640,6 +640,15 @@ void ScriptSystem::draw(const core::Scene&, core::DrawList& out) const {
   state.context.draw = &out;
   state.context.drawOverflowReported = false;
   lua::StackGuard guard(state.host.state());
+  // A budget of its own: drawing runs at the display's rate, and never in a replay, so it must not
+  // spend the budget of the frame the simulation runs next (the console's lines may have begun it).
+  const LuaHost::Budget frame = state.host.budget();
+  state.host.beginFrame();
+  struct Restore {
+    LuaHost& host;
+    const LuaHost::Budget& frame;
+    ~Restore() { host.restoreBudget(frame); }
+  } restore{state.host, frame};
   try {
     state.callDriver("draw", 0, 0);
     if (state.host.hasErrors()) {
@@ -750,7 +759,7 @@ ScriptSystem::ConsoleAnswer ScriptSystem::console(const std::string& code) {
   lua_State* L = state_->host.state();
   lua::StackGuard guard(L);
   ConsoleAnswer answer;
-  int sandbox = kNoSandbox;
+  int sandbox = kNoSandbox, globals = kNoSandbox;
   try {
     // Lines typed before a frame share that frame's budget with its scripts: however many are
     // typed between two frames (or while the game is paused), they get one budget in all.
@@ -759,7 +768,7 @@ ScriptSystem::ConsoleAnswer ScriptSystem::console(const std::string& code) {
     // In the level script's globals when it is sandboxed (its own globals are the level's state a
     // modder pokes at), else in a sandbox's fresh ones.
     state_->callDriver("levelSandbox", 0, 1);
-    int globals = lua_isnumber(L, -1) ? static_cast<int>(lua_tointeger(L, -1)) : kNoSandbox;
+    globals = lua_isnumber(L, -1) ? static_cast<int>(lua_tointeger(L, -1)) : kNoSandbox;
     lua_pop(L, 1);
     if (globals == kNoSandbox) {
       if (state_->consoleGlobals == kNoSandbox) {
@@ -779,23 +788,33 @@ ScriptSystem::ConsoleAnswer ScriptSystem::console(const std::string& code) {
     state_->callDriver("levelView", 0, 1);
     if (!state_->host.callSandboxed(sandbox, 1, 1)) {
       answer.text = "not run: the sandboxes' budget is spent";
-      return answer;
-    }
-    answer.ok = true;
-    if (!lua_isnil(L, -1)) {  // else a statement, or nothing to show
-      // The answer is made inside the line's budget: its __tostring is the line's code.
-      lua_getfield(L, LUA_REGISTRYINDEX, "platon.tostring");
-      lua_insert(L, -2);
-      if (state_->host.callSandboxed(sandbox, 1, 1))
-        answer.text = lua_isstring(L, -1) ? lua_tostring(L, -1) : "";
-      else
-        answer.ok = false, answer.text = "not shown: the sandboxes' budget is spent";
+    } else {
+      answer.ok = true;
+      if (!lua_isnil(L, -1)) {  // else a statement, or nothing to show
+        // The answer is made inside the line's budget: its __tostring is the line's code.
+        lua_getfield(L, LUA_REGISTRYINDEX, "platon.tostring");
+        lua_insert(L, -2);
+        if (state_->host.callSandboxed(sandbox, 1, 1))
+          answer.text = lua_isstring(L, -1) ? lua_tostring(L, -1) : "";
+        else
+          answer.ok = false, answer.text = "not shown: the sandboxes' budget is spent";
+      }
     }
   } catch (const ScriptError& e) {
     answer.ok = false;
     answer.text = e.what();
   }
-  state_->host.releaseSandbox(sandbox);  // the line leaves no sandbox behind
+  // The line leaves no sandbox behind: what it made in the world (bodies, platforms) is its globals'
+  // owner's from now on, charged to it each frame (a released sandbox is charged nothing, and its
+  // place goes to the next sandbox made).
+  if (sandbox != kNoSandbox) {
+    ScriptContext& context = state_->context;
+    for (auto& [key, maker] : context.madeBy)
+      if (maker == sandbox) maker = globals;
+    for (auto& [number, maker] : context.platforms)
+      if (maker == sandbox) maker = globals;
+    state_->host.releaseSandbox(sandbox);
+  }
   return answer;
 }
 

@@ -423,6 +423,10 @@ class Parser {
       if (!next) break;
       const TextLine& line = *next;
       if (line.tokens[0].text == "%") {
+        if (level.faces.size() >= kMaxLevelFaces)
+          fail(line, line.tokens[0],
+               "this '%' starts face " + std::to_string(level.faces.size()) + "; a level has at most " +
+                   std::to_string(kMaxLevelFaces) + " faces (a mesh's most)");
         if (level.solid && static_cast<int>(level.faces.size()) == faceCount(*level.solid))
           fail(line, line.tokens[0],
                std::string(solidName(*level.solid)) + " has " + std::to_string(faceCount(*level.solid)) +

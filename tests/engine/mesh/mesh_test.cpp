@@ -456,3 +456,32 @@ TEST(MeshFiles, APolygonWithTooManyCornersIsRefusedBeforeItIsSplit) {
                                  " corners; a stage's mesh takes polygons of at most 1024");
   }
 }
+
+// A mesh is one of the four formats a stage takes (assimp reads dozens, some of them archives it
+// unpacks itself), and what assimp reads for it in all is bounded: an OBJ naming one 20 MB material
+// library 10,000 times is refused once the reads pass the bound (it read 200 GB before).
+TEST(MeshFiles, OnlyTheStagesFormatsAndABoundedReadInAll) {
+  const Referencing r;
+  const std::string prism = [] {
+    std::ifstream in(kData + "prism.obj");
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  }();
+  for (const char* name : {"prism.dae", "prism.3mf", "prism.pk3", "prism", "prism.OBJ.zip"}) {
+    SCOPED_TRACE(name);
+    std::ofstream(r.level / name) << prism;
+    EXPECT_NE(refusal((r.level / name).string()).find("a stage's mesh is an OBJ, glTF, PLY or STL file"),
+              std::string::npos);
+  }
+  std::ofstream(r.level / "PRISM.OBJ") << prism;  // the ending in capitals is the same kind
+  EXPECT_EQ(refusal((r.level / "PRISM.OBJ").string()), "(accepted)");
+  {
+    std::ofstream big(r.level / "big.mtl");
+    big << "newmtl m\nKd 1 0 0\n";
+    for (int i = 0; i < 20 << 16; ++i) big << "# padding\n";  // about 20 MB
+  }
+  std::string text;
+  for (int i = 0; i < 10000; ++i) text += "mtllib big.mtl\n";
+  std::ofstream(r.level / "many.obj") << text << prism;
+  const std::string why = r.load((r.level / "many.obj").string());
+  EXPECT_NE(why.find("come to more than 192 MB read"), std::string::npos) << why;
+}

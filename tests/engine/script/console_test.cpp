@@ -109,3 +109,75 @@ TEST(Console, LinesLeaveNoStateBehind) {
 
 }  // namespace
 }  // namespace platon::script
+
+namespace platon::script {
+namespace {
+
+// What a console line makes in the world outlives the line: its bodies are the level's from then
+// on, charged to the level each frame like its own (a released line was charged nothing, and its
+// place went to the next sandbox made, which inherited the charge).
+TEST(Console, WhatALineMakesIsChargedToTheLevel) {
+  testing::TempFolder folder{"console_made"};
+  core::SystemRegistry registry;
+  registry.add("scripting", makeScriptSystem);
+  folder.write("level.lua",
+               "local level = { start = { face = 0, x = 600, y = 700 } }\n"
+               "function level.build(game) game.world.line(game.world.face(1), 0, 512, 4096, 512) end\n"
+               "function level.tick(game, frame) end\n"
+               "return level\n");
+  core::LiveScene live(folder.write("scene.lua",
+                                    "return { systems = { 'scripting' }, scripts = { preset = 'game', "
+                                    "level = 'level.lua' }, limits = { steps = 200000 } }\n"),
+                       registry, false);
+  auto& scripts = dynamic_cast<ScriptSystem&>(*live.scene().findSystem("scripting"));
+  ASSERT_FALSE(live.step({}).has_value());
+  const ScriptSystem::ConsoleAnswer made = scripts.console(
+      "for i = 1, 3000 do local e = game.world.createEntity{circle = 6} "
+      "game.world.insert(e, game.world.face(1), 100 + (i % 250) * 15, 600 + math.floor(i / 250) * 15) end");
+  ASSERT_TRUE(made.ok) << made.text;
+  EXPECT_EQ(scripts.console("1 + 1").text, "2");  // another line, in the released line's place
+  std::string errors;
+  for (int f = 0; f < 3; ++f)
+    if (const std::optional<std::string> e = live.step({})) errors += *e;
+  EXPECT_NE(errors.find("level.lua: stopped: the physics of the 3000 bodies"), std::string::npos) << errors;
+  EXPECT_EQ(errors.find("console"), std::string::npos) << errors;
+  EXPECT_EQ(live.scene().world().entityCount(), 1u) << "the bodies the line made are not removed with the level's";
+}
+
+}  // namespace
+}  // namespace platon::script
+
+namespace platon::script {
+namespace {
+
+// Drawing runs at the display's rate (while paused too) and never in a replay: it spends a budget
+// of its own, never the frame's that the console's lines began. A mod's costly draw hook, drawn a
+// hundred times after a line is typed, leaves the coming frame's level tick its budget.
+TEST(Console, DrawingDoesNotSpendTheComingFramesBudget) {
+  testing::TempFolder folder{"console_draw"};
+  core::SystemRegistry registry;
+  registry.add("scripting", makeScriptSystem);
+  folder.write("level.lua",
+               "local level = { start = { face = 0, x = 600, y = 700 } }\n"
+               "function level.build(game) game.world.line(game.world.face(1), 0, 512, 4096, 512) end\n"
+               "function level.tick(game, frame) game.message('tick ' .. frame) end\n"
+               "return level\n");
+  folder.write("mod.lua", "return { draw = function(game) for i = 1, 1000000 do end end }\n");
+  core::LiveScene live(folder.write("scene.lua",
+                                    "return { systems = { 'scripting' }, scripts = { preset = 'game', "
+                                    "level = 'level.lua', mods = { 'mod.lua' } } }\n"),
+                       registry, false);
+  auto& scripts = dynamic_cast<ScriptSystem&>(*live.scene().findSystem("scripting"));
+  ASSERT_FALSE(live.step({}).has_value());
+  EXPECT_EQ(scripts.console("1 + 1").text, "2");
+  for (int i = 0; i < 100; ++i) {  // a hundred pictures while the game waits
+    core::DrawList list(true);
+    scripts.draw(live.scene(), list);
+  }
+  const std::optional<std::string> error = live.step({});
+  EXPECT_FALSE(error.has_value()) << *error;
+  EXPECT_EQ(scripts.status().message, "tick 2");
+}
+
+}  // namespace
+}  // namespace platon::script

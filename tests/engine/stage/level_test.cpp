@@ -615,3 +615,18 @@ TEST(LevelFile, SegmentsPastTheCapsAreRefusedAtTheirLine) {
                                          " segments already, the most a level may have");
   }
 }
+
+// Faces are capped as they are read too: a mesh level's '%' lines past a mesh's most faces.
+TEST(LevelFile, FacesPastTheCapAreRefusedAtTheirLine) {
+  std::string text = "MESH m.obj\n0 600 700\n0 2000 800\n4096\n";
+  for (size_t i = 0; i <= stage::kMaxLevelFaces; ++i) text += "%\n";
+  try {
+    (void)stage::parseLevel(text, "m.level");
+    ADD_FAILURE() << "read";
+  } catch (const stage::StageError& e) {
+    EXPECT_EQ(std::string(e.what()), "m.level:" + std::to_string(5 + stage::kMaxLevelFaces) +
+                                         ":1: this '%' starts face " + std::to_string(stage::kMaxLevelFaces) +
+                                         "; a level has at most " + std::to_string(stage::kMaxLevelFaces) +
+                                         " faces (a mesh's most)");
+  }
+}

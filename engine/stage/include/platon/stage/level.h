@@ -99,6 +99,8 @@ void buildLevel(const Level& level, Stage& stage, physics::World& world, physics
 // would cost its players gigabytes (256 MB of text holds 12 million short segments).
 inline constexpr size_t kMaxFaceSegments = size_t{1} << 20;
 inline constexpr size_t kMaxLevelSegments = size_t{1} << 21;
+// Faces ('%' lines): a mesh stage's most (its triangles, stage::kMaxMeshTriangles).
+inline constexpr size_t kMaxLevelFaces = 100000;
 
 // Reads a level file: a regular file of at most kMaxLevelFileBytes (throws StageError naming the
 // file for one that cannot be read: missing, a FIFO or a device, too large).
