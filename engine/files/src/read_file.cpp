@@ -9,16 +9,11 @@
 #include <sys/syscall.h>
 #include <unistd.h>
 
+#include "fd.h"
+
 namespace platon::files {
 
 namespace {
-
-struct Fd {
-  int fd;
-  ~Fd() {
-    if (fd >= 0) close(fd);
-  }
-};
 
 std::string sizeText(unsigned long long bytes) {
   if (bytes >= (1ULL << 20)) return std::to_string(bytes >> 20) + " MB";

@@ -8,15 +8,10 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "fd.h"
+
 namespace platon::files {
 namespace {
-
-struct Fd {
-  int fd;
-  ~Fd() {
-    if (fd >= 0) close(fd);
-  }
-};
 
 std::string reasonOf(int error) { return std::strerror(error); }
 
