@@ -16,6 +16,7 @@
 #include <unistd.h>
 
 #include "fuzz_bug.h"
+#include "fuzz_bytes.h"
 #include "platon/editor/level_document.h"
 
 using namespace platon;
@@ -23,17 +24,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Bytes {
-  const uint8_t* data;
-  size_t size, at = 0;
-  uint8_t next() { return at < size ? data[at++] : 0; }
-  bool more() const { return at < size; }
-  int32_t coordinate(int32_t faceSize) {  // mostly inside a face, sometimes far out
-    const uint8_t b = next();
-    if (b == 255) return (next() & 1) ? INT32_MAX : INT32_MIN;
-    return static_cast<int32_t>((int64_t{b} << 8 | next()) * (faceSize + 64) / 65536) - 32;
-  }
-};
+// A coordinate of a face of `faceSize`: mostly inside it, sometimes far out.
+int32_t coordinate(Bytes& in, int32_t faceSize) {
+  const uint8_t b = in.next();
+  if (b == 255) return (in.next() & 1) ? INT32_MAX : INT32_MIN;
+  return static_cast<int32_t>((int64_t{b} << 8 | in.next()) * (faceSize + 64) / 65536) - 32;
+}
 
 std::string contents(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
@@ -59,14 +55,14 @@ void edit(editor::LevelDocument& d, Bytes& in) {
     switch (op) {
       case 0: {  // draw
         stage::LevelLine s;
-        s.a = {in.coordinate(size), in.coordinate(size)};
-        s.b = {in.coordinate(size), in.coordinate(size)};
+        s.a = {coordinate(in, size), coordinate(in, size)};
+        s.b = {coordinate(in, size), coordinate(in, size)};
         s.tag = in.next() % 4 == 0 ? 1 : 0;
         lines.push_back(s);
         break;
       }
       case 1:  // move an end
-        if (!lines.empty()) lines[in.next() % lines.size()].b = {in.coordinate(size), in.coordinate(size)};
+        if (!lines.empty()) lines[in.next() % lines.size()].b = {coordinate(in, size), coordinate(in, size)};
         break;
       case 2:  // delete
         if (!lines.empty()) lines.erase(lines.begin() + in.next() % lines.size());
@@ -75,10 +71,10 @@ void edit(editor::LevelDocument& d, Bytes& in) {
         if (!lines.empty()) lines[in.next() % lines.size()].tag = in.next() % 8 == 0 ? 2001 : in.next() % 4;
         break;
       case 4:  // the start
-        l.start.face = static_cast<int>(face), l.start.position = {in.coordinate(size), in.coordinate(size)};
+        l.start.face = static_cast<int>(face), l.start.position = {coordinate(in, size), coordinate(in, size)};
         break;
       default:  // the goal
-        l.goal.face = static_cast<int>(face), l.goal.position = {in.coordinate(size), in.coordinate(size)};
+        l.goal.face = static_cast<int>(face), l.goal.position = {coordinate(in, size), coordinate(in, size)};
         break;
     }
   });

@@ -22,20 +22,13 @@
 #include <vector>
 
 #include "fuzz_bug.h"
+#include "fuzz_bytes.h"
 #include "platon/package/package.h"
 
 using namespace platon;
 namespace fs = std::filesystem;
 
 namespace {
-
-// Reads the input a byte at a time; zeros once it runs out.
-struct Bytes {
-  const uint8_t* data;
-  size_t size, at = 0;
-  uint8_t next() { return at < size ? data[at++] : 0; }
-  bool more() const { return at < size; }
-};
 
 const char* const kParts[] = {"lvl",       "scene.lua",  "finish.replay", "level.lua", "a.level", "..",
                               ".",         "",           "x/../..",       "/etc",      "~",       "sub",

@@ -10,11 +10,13 @@
 namespace platon::script {
 namespace {
 
+// A level whose tick shows `counter` (a global the console can set), with what `extra` adds to its
+// manifest (limits, mods) and the mod it names, if any.
 struct ConsoleLevel {
   testing::TempFolder folder{"console"};
   core::SystemRegistry registry;
   std::unique_ptr<core::LiveScene> live;
-  ConsoleLevel() {
+  explicit ConsoleLevel(const std::string& extra = "", const std::string& mod = "") {
     registry.add("scripting", makeScriptSystem);
     folder.write("level.lua",
                  "counter = 5\n"
@@ -22,10 +24,12 @@ struct ConsoleLevel {
                  "function level.build(game) game.world.line(game.world.face(1), 0, 512, 4096, 512) end\n"
                  "function level.tick(game, frame) game.message('counter ' .. counter .. ' at ' .. frame) end\n"
                  "return level\n");
+    if (!mod.empty()) folder.write("mod.lua", mod);
     live = std::make_unique<core::LiveScene>(
         folder.write("scene.lua",
                      "return { systems = { 'scripting' }, scripts = { preset = 'game', level = "
-                     "'level.lua' } }\n"),
+                     "'level.lua'" +
+                         std::string(mod.empty() ? "" : ", mods = { 'mod.lua' }") + " }" + extra + " }\n"),
         registry, false);
   }
   ScriptSystem& scripts() { return dynamic_cast<ScriptSystem&>(*live->scene().findSystem("scripting")); }
@@ -104,7 +108,9 @@ TEST(Console, LinesLeaveNoStateBehind) {
     ASSERT_EQ(c.scripts().console(line).text, "100");
   }
   const double after = memory();
-  EXPECT_LT(after, before + 16) << "KB before " << before << ", after " << after;
+  // (The leak this guards against filled the 96 MB limit; allocators round differently, and an
+  // instrumented build keeps some 20 KB more.)
+  EXPECT_LT(after, before + 64) << "KB before " << before << ", after " << after;
 }
 
 }  // namespace
@@ -117,66 +123,33 @@ namespace {
 // on, charged to the level each frame like its own (a released line was charged nothing, and its
 // place went to the next sandbox made, which inherited the charge).
 TEST(Console, WhatALineMakesIsChargedToTheLevel) {
-  testing::TempFolder folder{"console_made"};
-  core::SystemRegistry registry;
-  registry.add("scripting", makeScriptSystem);
-  folder.write("level.lua",
-               "local level = { start = { face = 0, x = 600, y = 700 } }\n"
-               "function level.build(game) game.world.line(game.world.face(1), 0, 512, 4096, 512) end\n"
-               "function level.tick(game, frame) end\n"
-               "return level\n");
-  core::LiveScene live(folder.write("scene.lua",
-                                    "return { systems = { 'scripting' }, scripts = { preset = 'game', "
-                                    "level = 'level.lua' }, limits = { steps = 200000 } }\n"),
-                       registry, false);
-  auto& scripts = dynamic_cast<ScriptSystem&>(*live.scene().findSystem("scripting"));
-  ASSERT_FALSE(live.step({}).has_value());
-  const ScriptSystem::ConsoleAnswer made = scripts.console(
+  ConsoleLevel c(", limits = { steps = 200000 }");
+  EXPECT_EQ(c.step(), "counter 5 at 1");
+  const ScriptSystem::ConsoleAnswer made = c.scripts().console(
       "for i = 1, 3000 do local e = game.world.createEntity{circle = 6} "
       "game.world.insert(e, game.world.face(1), 100 + (i % 250) * 15, 600 + math.floor(i / 250) * 15) end");
   ASSERT_TRUE(made.ok) << made.text;
-  EXPECT_EQ(scripts.console("1 + 1").text, "2");  // another line, in the released line's place
+  EXPECT_EQ(c.scripts().console("1 + 1").text, "2");  // another line, in the released line's place
   std::string errors;
   for (int f = 0; f < 3; ++f)
-    if (const std::optional<std::string> e = live.step({})) errors += *e;
+    if (const std::optional<std::string> e = c.live->step({})) errors += *e;
   EXPECT_NE(errors.find("level.lua: stopped: the physics of the 3000 bodies"), std::string::npos) << errors;
   EXPECT_EQ(errors.find("console"), std::string::npos) << errors;
-  EXPECT_EQ(live.scene().world().entityCount(), 1u) << "the bodies the line made are not removed with the level's";
+  EXPECT_EQ(c.live->scene().world().entityCount(), 1u) << "the bodies the line made are not removed with the level's";
 }
-
-}  // namespace
-}  // namespace platon::script
-
-namespace platon::script {
-namespace {
 
 // Drawing runs at the display's rate (while paused too) and never in a replay: it spends a budget
 // of its own, never the frame's that the console's lines began. A mod's costly draw hook, drawn a
 // hundred times after a line is typed, leaves the coming frame's level tick its budget.
 TEST(Console, DrawingDoesNotSpendTheComingFramesBudget) {
-  testing::TempFolder folder{"console_draw"};
-  core::SystemRegistry registry;
-  registry.add("scripting", makeScriptSystem);
-  folder.write("level.lua",
-               "local level = { start = { face = 0, x = 600, y = 700 } }\n"
-               "function level.build(game) game.world.line(game.world.face(1), 0, 512, 4096, 512) end\n"
-               "function level.tick(game, frame) game.message('tick ' .. frame) end\n"
-               "return level\n");
-  folder.write("mod.lua", "return { draw = function(game) for i = 1, 1000000 do end end }\n");
-  core::LiveScene live(folder.write("scene.lua",
-                                    "return { systems = { 'scripting' }, scripts = { preset = 'game', "
-                                    "level = 'level.lua', mods = { 'mod.lua' } } }\n"),
-                       registry, false);
-  auto& scripts = dynamic_cast<ScriptSystem&>(*live.scene().findSystem("scripting"));
-  ASSERT_FALSE(live.step({}).has_value());
-  EXPECT_EQ(scripts.console("1 + 1").text, "2");
+  ConsoleLevel c("", "return { draw = function(game) for i = 1, 1000000 do end end }\n");
+  EXPECT_EQ(c.step(), "counter 5 at 1");
+  EXPECT_EQ(c.scripts().console("1 + 1").text, "2");
   for (int i = 0; i < 100; ++i) {  // a hundred pictures while the game waits
     core::DrawList list(true);
-    scripts.draw(live.scene(), list);
+    c.scripts().draw(c.live->scene(), list);
   }
-  const std::optional<std::string> error = live.step({});
-  EXPECT_FALSE(error.has_value()) << *error;
-  EXPECT_EQ(scripts.status().message, "tick 2");
+  EXPECT_EQ(c.step(), "counter 5 at 2");
 }
 
 }  // namespace
