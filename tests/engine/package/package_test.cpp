@@ -185,6 +185,14 @@ TEST_F(Packages, EveryHostileArchiveIsRefusedAndLeavesNothing) {
        },
        "not in its manifest"},
       {"a file twice", [](auto& e) { e.push_back(e[1]); }, "twice"},
+      {"a file under a file (found by package_fuzz: the filesystem's own exception escaped)",
+       [](auto& e) {
+         auto files = kFiles;
+         files.push_back({"scene.lua/x", "x"});
+         e = {{"package.lua", manifestText(manifestOf(files))}};
+         for (const auto& [path, bytes] : files) e.push_back({"lvl/" + path, bytes});
+       },
+       "cannot make its folder"},
       {"a changed file", [](auto& e) { e[1].bytes[0] ^= 1; }, "not the file its manifest hashed"},
       {"a longer file", [](auto& e) { e[1].bytes += "more"; }, "larger than"},
       {"a shorter file", [](auto& e) { e[1].bytes.pop_back(); }, "its manifest says"},
