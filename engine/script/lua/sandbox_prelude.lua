@@ -421,8 +421,82 @@ local function deterministicRandom(m)
   end
 end
 
-local SAFE = { "assert", "error", "pcall", "select", "tonumber", "type", "unpack", "rawequal",
-               "rawget", "getmetatable", "setmetatable" }
+-- No weak tables. Which entries of a weak table the collector clears, and when, depends on the
+-- collector's timing, which depends on everything the Lua state allocates (the engine's own
+-- scripts, drawing, the console): six runs of one level gave six hashes. So a sandbox's metatables
+-- never have a __mode: setmetatable refuses one that has it, and every table a sandbox makes a
+-- metatable is sealed, so that `mt.__mode = "k"` afterwards is refused too. A new key reaches a
+-- table raw only where its metatable has no __newindex (a sandbox has no rawset; table.insert
+-- writes number keys only), so a sealed table's own metatable always has one, made here and never
+-- handed out: SEAL when the sandbox gave it none, or WITH(U), a copy of the metatable U it gave,
+-- whose __newindex refuses __mode and otherwise does what U's does (read when the key is written).
+-- getmetatable shows nil and U for these, as stock would.
+local rawsetmeta, rawset = debug.setmetatable, rawset
+local sealed = setmetatable({}, { __mode = "k" })  -- tables a sandbox made metatables (the engine's own)
+local madeHere = setmetatable({}, { __mode = "k" })  -- SEAL and every WITH(U), to what getmetatable shows
+local NO_WEAK = "weak tables are not for sandboxes: which entries the collector clears, and when, differs from "
+                .. "one run to the next (docs/scripting.md, Sandbox)"
+local function refuseMode(k)
+  if k == "__mode" then error("__mode in a metatable: " .. NO_WEAK, 3) end
+end
+local SEAL = { __newindex = function(t, k, v)
+  refuseMode(k)
+  rawset(t, k, v)
+end }
+madeHere[SEAL] = { shows = nil }
+local function with(u)
+  local m = {}
+  for k, v in next, u do
+    if type(k) == "string" and sub(k, 1, 2) == "__" then m[k] = v end
+  end
+  m.__newindex = function(t, k, v)
+    refuseMode(k)
+    local h = rawget(u, "__newindex")
+    if h == nil then return rawset(t, k, v) end
+    if type(h) == "function" then return h(t, k, v) end
+    h[k] = v
+  end
+  local protected = rawget(u, "__metatable")
+  if protected ~= nil then m.__metatable = protected else m.__metatable = nil end
+  madeHere[m] = { shows = u, protected = protected ~= nil }
+  return m
+end
+-- Seals mt, a table a sandbox is making a metatable.
+local function seal(mt)
+  local own = rawmeta(mt)
+  if own == nil then
+    rawsetmeta(mt, SEAL)
+  elseif sealed[own] then  -- a metatable the sandbox gave it (setmetatable(Class, { __index = Base }))
+    rawsetmeta(mt, with(own))
+  elseif rawget(own, "__newindex") == nil then  -- an engine table whose metatable lets keys in raw
+    error("bad argument #2 to 'setmetatable' (an engine table cannot be a sandbox's metatable)", 3)
+  end
+  sealed[mt] = true
+end
+local stockSetmetatable, stockGetmetatable = setmetatable, getmetatable
+local function safeSetmetatable(...)
+  local t, mt = ...
+  if type(t) ~= "table" or type(mt) ~= "table" and (mt ~= nil or select("#", ...) < 2) then
+    return stockSetmetatable(...)  -- stock's own argument errors
+  end
+  if mt ~= nil then
+    if rawget(mt, "__mode") ~= nil then error("bad argument #2 to 'setmetatable' (it has __mode: " .. NO_WEAK .. ")", 2) end
+    if not sealed[mt] then seal(mt) end
+  end
+  if not sealed[t] then return stockSetmetatable(t, mt) end
+  -- t is a metatable itself: the metatable it gets keeps it sealed.
+  local own = madeHere[rawmeta(t)]
+  if not own or own.protected then error("cannot change a protected metatable", 2) end
+  rawsetmeta(t, mt == nil and SEAL or with(mt))
+  return t
+end
+local function safeGetmetatable(...)
+  local made = madeHere[rawmeta((...))]
+  if made and not made.protected then return made.shows end
+  return stockGetmetatable(...)
+end
+
+local SAFE = { "assert", "error", "pcall", "select", "tonumber", "type", "unpack", "rawequal", "rawget" }
 
 -- A caught error costs far more than the few instructions around it: LuaJIT unwinds the C stack,
 -- and an error of the engine's C++ also throws and catches a C++ exception (3 to 12 us, the time
@@ -498,6 +572,7 @@ local function newSandbox(name, api)
   local env = {}
   for _, k in ipairs(SAFE) do env[k] = _G[k] end
   env.pairs, env.next, env.ipairs, env.tostring, env.xpcall = safePairs, safeNext, safeIpairs, safeTostring, safeXpcall
+  env.setmetatable, env.getmetatable = safeSetmetatable, safeGetmetatable
   env._G = env
   env._VERSION = _VERSION
   env.string = copy(methods)

@@ -992,5 +992,97 @@ TEST(Messages, PrintIsCappedAFrame) {
   EXPECT_EQ(printed.find('\x1b'), std::string::npos) << "no terminal escape reaches the console";
 }
 
+
+// Weak tables: which entries the collector clears, and when, depends on everything the Lua state
+// allocates, so no sandbox table may be weak, by any route to a metatable with __mode.
+class WeakTableRoutes : public testing::TestWithParam<const char*> {};
+
+TEST_P(WeakTableRoutes, AreEachRefusedAtTheScriptsLine) {
+  const std::string error = runSandboxed(GetParam());
+  EXPECT_NE(error.find("weak tables are not for sandboxes"), std::string::npos) << GetParam() << "\n" << error;
+  EXPECT_EQ(error.rfind("mod.lua:", 0), 0u) << error;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Each, WeakTableRoutes,
+    testing::Values(
+        "setmetatable({}, { __mode = 'k' })", "setmetatable({}, { __mode = 'v' })",
+        "setmetatable({}, { __mode = 'kv' })", "setmetatable({}, { __mode = 1 })",
+        // A placeholder first, the mode later (an existing key is written raw).
+        "local mt = { __mode = false } setmetatable({}, mt)",
+        // The mode after the metatable is set, by name, by a computed name, inside a coroutine.
+        "local mt = {} setmetatable({}, mt) mt.__mode = 'k'",
+        "local mt = {} setmetatable({}, mt) mt['__' .. 'mode'] = 'v'",
+        "local mt = {} setmetatable({}, mt) coroutine.wrap(function() mt.__mode = 'k' end)()",
+        "local mt = {} setmetatable({}, mt) pcall(function() mt.__mode = 'k' end) mt.__mode = 'k'",
+        // Taking the seal off: the metatable's own metatable removed, replaced, given a __newindex.
+        "local mt = {} setmetatable({}, mt) setmetatable(mt, nil) mt.__mode = 'k'",
+        "local mt = {} setmetatable({}, mt) setmetatable(mt, {}) mt.__mode = 'k'",
+        "local mt = {} setmetatable({}, mt) setmetatable(mt, { __newindex = function(t, k, v) t[k] = v end }) "
+        "mt.__mode = 'k'",
+        "local mt = {} setmetatable({}, mt) local other = {} setmetatable(mt, { __newindex = other }) "
+        "mt.__mode = 'k'",
+        // A class with a base: its own metatable changed after it was set.
+        "local Base = {} local U = { __index = Base } local D = setmetatable({}, U) D.__index = D "
+        "setmetatable({}, D) U.__newindex = nil D.__mode = 'k'",
+        "local U = {} local D = setmetatable({}, U) setmetatable({}, D) "
+        "U.__newindex = function(t, k, v) t[k] = v end D.__mode = 'k'",
+        "local U = {} local D = setmetatable({}, U) setmetatable({}, D) setmetatable(U, nil) D.__mode = 'k'",
+        // The metatable made one after the table it seals is used, in either order.
+        "local D = {} setmetatable({}, D) local U = {} setmetatable(D, U) D.__mode = 'k'",
+        "local D = {} local U = {} setmetatable(D, U) setmetatable({}, D) D.__mode = 'k'",
+        // Reaching what seals it: getmetatable shows nothing of it.
+        "local mt = {} setmetatable({}, mt) local s = getmetatable(mt) assert(s == nil) "
+        "setmetatable({}, { __mode = 'k' })"));
+
+TEST(WeakTables, WhatAScriptWroteStaysForTheCollector) {
+  // Had any route made t weak, a full collection between the two calls would empty it.
+  LuaHost host;
+  const int id = host.loadString("if not t then mt = {} t = setmetatable({}, mt) "
+                                 "pcall(function() mt.__mode = 'v' end) pcall(function() mt.__mode = 'kv' end) "
+                                 "pcall(setmetatable, mt, nil) pcall(function() mt.__mode = 'v' end) "
+                                 "for i = 1, 100 do t['k' .. i] = {} end return end "
+                                 "local n = 0 for _ in pairs(t) do n = n + 1 end assert(n == 100, n) "
+                                 "assert(next(mt) == nil)",
+                                 "@mod.lua", Trust::Sandboxed);
+  for (int call = 0; call < 2; ++call) {  // the second call counts (an error there throws)
+    host.beginFrame();
+    ASSERT_TRUE(host.callSandboxed(id, 0, 0));
+    lua_gc(host.state(), LUA_GCCOLLECT, 0);
+    lua_gc(host.state(), LUA_GCCOLLECT, 0);
+  }
+}
+
+TEST(WeakTables, MetatablesStillWorkAsInStockLua) {
+  EXPECT_EQ(runSandboxed(
+                // A class: methods added after instances, a call metamethod on the class.
+                "local Class = {} Class.__index = Class "
+                "setmetatable(Class, { __call = function(cls, x) return setmetatable({ x = x }, cls) end }) "
+                "local a = Class(1) function Class:get() return self.x end assert(a:get() == 1) "
+                "assert(getmetatable(a) == Class) assert(type(getmetatable(Class).__call) == 'function') "
+                // Inheritance two deep, each metatable used before and after it got its own.
+                "local Base = {} Base.__index = Base function Base:hello() return 'base' end "
+                "local Derived = setmetatable({}, { __index = Base }) Derived.__index = Derived "
+                "local d = setmetatable({}, Derived) assert(d:hello() == 'base') "
+                "function Derived:hello() return 'derived' end assert(d:hello() == 'derived') "
+                "local Leaf = setmetatable({}, Derived) setmetatable({}, Leaf) assert(Leaf:hello() == 'derived') "
+                // __newindex of a metatable's own metatable, a function and a table.
+                "local seen = {} local M = setmetatable({}, { __newindex = function(t, k, v) seen[#seen + 1] = k end }) "
+                "setmetatable({}, M) M.x = 1 assert(seen[1] == 'x' and rawget(M, 'x') == nil) "
+                "local sink = {} local N = setmetatable({}, { __newindex = sink }) setmetatable({}, N) "
+                "N.y = 2 assert(sink.y == 2 and rawget(N, 'y') == nil) "
+                // A metatable's own keys, as ever; a protected metatable stays protected.
+                "local mt = {} setmetatable({}, mt) mt.count = 1 mt.count = mt.count + 1 assert(mt.count == 2) "
+                "assert(getmetatable(mt) == nil) "
+                "local P = setmetatable({}, { __metatable = 'mine' }) setmetatable({}, P) "
+                "assert(getmetatable(P) == 'mine') assert(not pcall(setmetatable, P, {})) "
+                "local q = setmetatable({}, { __metatable = 'locked' }) assert(not pcall(setmetatable, q, nil)) "
+                // setmetatable's own argument errors, as stock gives them.
+                "assert(select(2, pcall(setmetatable, 1, {})):find('table expected, got number')) "
+                "assert(select(2, pcall(setmetatable, {}, 1)):find('nil or table expected')) "
+                "assert(select(2, pcall(setmetatable, {})):find('nil or table expected'))"),
+            "");
+}
+
 }  // namespace
 }  // namespace platon::script
