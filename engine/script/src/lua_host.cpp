@@ -249,6 +249,7 @@ int LuaHost::addSandbox(const std::string& chunkName, bool borrowsEnv) {
     return id;
   }
   shared_->sandboxes.push_back(std::move(box));
+  shared_->heldBytes.resize(shared_->sandboxes.size() + 1, 0);
   return static_cast<int>(shared_->sandboxes.size() - 1);
 }
 
@@ -458,6 +459,7 @@ bool LuaHost::callSandboxed(int sandbox, int nargs, int nresults) {
   if (s.memoryStop != kNoSandbox && (status == LUA_ERRMEM || message.empty()))
     message = !s.stopMessage.empty() ? s.stopMessage
                                      : s.sandboxes[static_cast<size_t>(s.memoryStop)].name + ": " + memoryStopText(s);
+  if (s.memoryStop != kNoSandbox) blameTheBiggestHolder(s, message);
   int off = kNoSandbox;
   if (s.memoryStop != kNoSandbox)
     off = s.memoryStop;
@@ -481,6 +483,24 @@ bool LuaHost::callSandboxed(int sandbox, int nargs, int nresults) {
     if (s.stopNoted && off == sandbox) message += " (the frame's other sandboxed calls are skipped)";
   }
   throw ScriptError(message, traceback);
+}
+
+// A memory stop is the fault of what holds the memory, not of the allocation that crossed the
+// line: once the stopped call's garbage is collected, the sandbox that holds the most is the one
+// stopped (and disabled), named first, with the place where the line was crossed.
+void LuaHost::blameTheBiggestHolder(Shared& s, std::string& message) {
+  lua_gc(L_, LUA_GCCOLLECT, 0);
+  const int holder = biggestHolder(s);
+  if (holder == kNoSandbox || holder == s.memoryStop) return;
+  const auto held = [&](int box) { return s.heldBytes[static_cast<size_t>(box) + 1]; };
+  if (held(holder) <= held(s.memoryStop)) return;
+  const Sandbox& stopped = s.sandboxes[static_cast<size_t>(s.memoryStop)];
+  std::string at = located(message.c_str()) ? message.substr(0, message.find(": ")) : stopped.name;
+  message = s.sandboxes[static_cast<size_t>(holder)].name + ": " + memoryStopText(s) + "; it holds " +
+            std::to_string((held(holder) + (1 << 19)) >> 20) + " MB, the most of any script (" + at +
+            " was running, holding " + std::to_string((std::max<int64_t>(held(s.memoryStop), 0) + (1 << 19)) >> 20) +
+            " MB)";
+  s.memoryStop = holder;
 }
 
 void LuaHost::disable(int sandbox) {

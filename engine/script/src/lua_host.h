@@ -215,6 +215,7 @@ class LuaHost {
   // Compiles and pushes the chunk (throws ScriptError with the syntax error's file:line).
   void compile(std::string_view code, const std::string& chunkName, Trust trust);
   void disable(int sandbox);  // for good: its globals dropped, its garbage collected
+  void blameTheBiggestHolder(Shared& s, std::string& message);
   void callNested(int nargs, int nresults);
   int protectedCall(int nargs, int nresults, int& below);
   [[gnu::cold]] void afterFailedCall(int status, int below);

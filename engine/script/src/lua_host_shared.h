@@ -61,6 +61,9 @@ struct LuaHost::Shared {
   uint64_t gameFrame = 0;
   std::vector<Sandbox> sandboxes;
   std::vector<int> released;  // sandboxes released (releaseSandbox): their places are taken again
+  // The bytes of the state's blocks each sandbox made or last grew, [sandbox + 1] ([0]: the
+  // engine's): what a memory stop blames. Never shrinks (a block names its maker's place for good).
+  std::vector<int64_t> heldBytes = std::vector<int64_t>(1, 0);
   std::function<void(std::string_view, std::string_view)> print;
 
   size_t sandboxLimit() const { return limits.memoryBytes - limits.memoryBytes / kTrustedReserveDivisor; }
@@ -105,6 +108,8 @@ void* limitedAlloc(void* ud, void* ptr, size_t oldSize, size_t newSize);
 std::string milliseconds(int64_t nanoseconds);
 std::string stepsText(int64_t steps);
 std::string memoryStopText(const LuaHost::Shared& s);
+// The enabled sandbox whose blocks hold the most of the state (kNoSandbox if none).
+int biggestHolder(const LuaHost::Shared& s);
 
 // ---- lua_errors.cpp ----
 

@@ -124,11 +124,28 @@ void armTimer(LuaHost::Shared& s, int64_t nanoseconds) {
 
 // --- memory ---
 
+namespace {
+// Each block of the state carries who made it (or last grew it), so a memory stop can blame the
+// sandbox that holds the most, not the one whose allocation happened to cross the line (a level's
+// script, after many mods filled the state). 16 bytes keep malloc's alignment.
+struct alignas(16) BlockHeader {
+  int32_t owner;
+};
+static_assert(sizeof(BlockHeader) == 16);
+
+int64_t& heldBy(LuaHost::Shared& s, int owner) {
+  const size_t at = static_cast<size_t>(owner + 1);
+  return at < s.heldBytes.size() ? s.heldBytes[at] : s.heldBytes[0];
+}
+}  // namespace
+
 void* limitedAlloc(void* ud, void* ptr, size_t oldSize, size_t newSize) {
   auto* shared = static_cast<LuaHost::Shared*>(ud);
   const size_t old = ptr ? oldSize : 0;
+  BlockHeader* block = ptr ? static_cast<BlockHeader*>(ptr) - 1 : nullptr;
   if (newSize == 0) {
-    std::free(ptr);
+    if (block) heldBy(*shared, block->owner) -= static_cast<int64_t>(old);
+    std::free(block);
     shared->used -= old;
     return nullptr;
   }
@@ -149,10 +166,27 @@ void* limitedAlloc(void* ud, void* ptr, size_t oldSize, size_t newSize) {
       return nullptr;  // LuaJIT raises "not enough memory"
     }
   }
-  void* grown = std::realloc(ptr, newSize);
-  if (!grown) return nullptr;
+  auto* header = static_cast<BlockHeader*>(std::realloc(block, newSize + sizeof(BlockHeader)));
+  if (!header) return nullptr;
+  if (!block) {
+    header->owner = shared->current;
+  } else if (newSize > old && header->owner != shared->current) {  // a shrink is the collector's
+    heldBy(*shared, header->owner) -= static_cast<int64_t>(old);
+    header->owner = shared->current;
+    heldBy(*shared, header->owner) += static_cast<int64_t>(old);
+  }
+  heldBy(*shared, header->owner) += static_cast<int64_t>(newSize) - static_cast<int64_t>(old);
   shared->used = shared->used - old + newSize;
-  return grown;
+  return header + 1;
+}
+
+int biggestHolder(const LuaHost::Shared& s) {
+  int most = kNoSandbox;
+  for (size_t i = 0; i < s.sandboxes.size(); ++i) {
+    if (s.sandboxes[i].disabled) continue;
+    if (most == kNoSandbox || s.heldBytes[i + 1] > s.heldBytes[static_cast<size_t>(most) + 1]) most = static_cast<int>(i);
+  }
+  return most;
 }
 
 std::string milliseconds(int64_t nanoseconds) { return std::to_string((nanoseconds + 500'000) / 1'000'000) + " ms"; }

@@ -401,6 +401,64 @@ TEST(Runaway, UnboundedMemoryIsStopped) {
   EXPECT_EQ(runSandboxed(host, "local t = {} for i = 1, 1000 do t[i] = i end"), "");  // the garbage went
 }
 
+// A memory stop blames what holds the memory: with several scripts holding some each, the one
+// holding the most is stopped and disabled, whichever script's allocation crossed the line.
+TEST(Runaway, AMemoryStopBlamesTheScriptThatHoldsTheMost) {
+  struct Case {
+    std::vector<int> holdsMb;  // what each of mod1.lua, mod2.lua... keeps in its globals
+    int crossing;              // the script that then allocates without end (an index into holdsMb)
+  };
+  const Case cases[] = {{{2, 14, 3}, 0}, {{14, 2, 3}, 2}, {{1, 1, 1, 1, 1, 1, 12}, 3}, {{3, 3}, 1}, {{1, 12}, 1}};
+  for (const Case& c : cases) {
+    LuaLimits limits;
+    limits.memoryBytes = size_t{32} << 20;  // the sandboxes' share: 24 MB
+    LuaHost host(limits);
+    std::vector<int> ids;
+    std::vector<lua::Ref> chunks;
+    for (size_t i = 0; i < c.holdsMb.size(); ++i) {
+      const std::string name = "@mod" + std::to_string(i + 1) + ".lua";
+      ids.push_back(host.loadString("if held then local t = {} while true do t[#t + 1] = string.rep('y', 1000) .. #t end end "
+                                    "held = {} for i = 1, " + std::to_string(c.holdsMb[i] * 1024) + " do held[i] = string.rep('x', 1000) .. '" +
+                                        name + "' .. i end",  // its own strings (equal ones are one)
+                                    name, Trust::Sandboxed));
+      chunks.emplace_back(host.state(), -1);
+      host.beginFrame();
+      ASSERT_TRUE(host.callSandboxed(ids.back(), 0, 0));
+    }
+    size_t most = static_cast<size_t>(c.crossing);  // which, of equals, crossed the line
+    for (size_t i = 0; i < c.holdsMb.size(); ++i)
+      if (c.holdsMb[i] > c.holdsMb[most]) most = i;
+    const std::string blamed = "mod" + std::to_string(most + 1) + ".lua";
+    const std::string crossing = "mod" + std::to_string(c.crossing + 1) + ".lua";
+    std::string error;
+    host.beginFrame();
+    try {
+      chunks[static_cast<size_t>(c.crossing)].push();
+      host.callSandboxed(ids[static_cast<size_t>(c.crossing)], 0, 0);
+    } catch (const ScriptError& e) {
+      error = e.what();
+    }
+    const std::string what = "stopped: the sandboxes reached their memory limit of 24 MB";
+    if (static_cast<size_t>(c.crossing) == most) {
+      EXPECT_EQ(error.rfind(blamed + ":1: script " + what, 0), 0u) << error;
+    } else {
+      EXPECT_EQ(error.rfind(blamed + ": script " + what, 0), 0u) << error;
+      EXPECT_NE(error.find(" MB, the most of any script (" + crossing + ":1 was running, holding "),
+                std::string::npos)
+          << error;
+    }
+    EXPECT_NE(error.find(blamed + " disabled"), std::string::npos) << error;
+    // The blamed one is off and its memory is free: what is left is what the others hold.
+    host.beginFrame();
+    chunks[most].push();
+    EXPECT_FALSE(host.callSandboxed(ids[most], 0, 0));
+    int others = 0;
+    for (size_t i = 0; i < c.holdsMb.size(); ++i)
+      if (i != most) others += c.holdsMb[i];
+    EXPECT_LE(host.memoryUsed(), static_cast<size_t>(others + 4) << 20) << blamed;
+  }
+}
+
 TEST(Runaway, OneHugeStringIsStopped) {
   LuaLimits limits;
   limits.memoryBytes = size_t{32} << 20;
@@ -1045,8 +1103,11 @@ TEST(WeakTables, WhatAScriptWroteStaysForTheCollector) {
                                  "local n = 0 for _ in pairs(t) do n = n + 1 end assert(n == 100, n) "
                                  "assert(next(mt) == nil)",
                                  "@mod.lua", Trust::Sandboxed);
+  const lua::Ref chunk(host.state(), -1);
+  lua_pop(host.state(), 1);
   for (int call = 0; call < 2; ++call) {  // the second call counts (an error there throws)
     host.beginFrame();
+    chunk.push();
     ASSERT_TRUE(host.callSandboxed(id, 0, 0));
     lua_gc(host.state(), LUA_GCCOLLECT, 0);
     lua_gc(host.state(), LUA_GCCOLLECT, 0);
