@@ -376,13 +376,13 @@ bool LuaHost::callSandboxed(int sandbox, int nargs, int nresults) {
   }
   const int outer = s.current;
   if (outer == kNoSandbox) {
-    const bool late = s.frameSpent >= s.limits.deadlineNanoseconds;
+    const bool late = s.frameSpent >= s.frameDeadline();
     if (late || s.frameSteps >= s.limits.frameSteps) {  // the frame's budget is spent: skipped
       lua_pop(L_, nargs + 1);
       if (!s.skipNoted && !s.stopNoted)
         keepError(ScriptError(
             box.name + ": skipped: " +
-                (late ? "the frame's deadline of " + milliseconds(s.limits.deadlineNanoseconds) + " has passed"
+                (late ? "the frame's deadline of " + milliseconds(s.frameDeadline()) + " has passed"
                       : "the frame's script budget of " + stepsText(s.limits.frameSteps) + " is spent") +
                 " (the level's scripts and mods share it; their other calls this frame are "
                 "skipped)",
@@ -391,7 +391,7 @@ bool LuaHost::callSandboxed(int sandbox, int nargs, int nresults) {
       return false;
     }
     s.enteredAt = coarseNanoseconds();
-    if (!s.timerArmed) armTimer(s, s.limits.deadlineNanoseconds - s.frameSpent);
+    if (!s.timerArmed) armTimer(s, s.frameDeadline() - s.frameSpent);
     // The count starts again here, and the call pays one tick for the instructions of its last
     // tick, which no look counts: so its charge depends on nothing that ran before it.
     hookForSandbox(s);

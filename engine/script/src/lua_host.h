@@ -19,7 +19,8 @@
 //    steps on every machine, so a stop happens at the same instruction everywhere and replays.
 //    After the budget is spent, the frame's further sandboxed calls are skipped.
 //  - time, the backstop: a wall-clock deadline (limits.deadlineNanoseconds) on the frame's
-//    sandboxed calls together, for work nothing charged. A POSIX timer fires at the deadline on
+//    sandboxed calls together, for work nothing charged, and sooner when the time is far more
+//    than the steps charged explain (limits.unchargedNanoseconds beyond kStepNanoseconds a step). A POSIX timer fires at the deadline on
 //    the calling thread and its handler sets a flag the count hook and chargeSteps look at. A stop
 //    by the deadline depends on the machine and says so.
 //  - memory: sandboxed allocations are refused past limits.memoryBytes minus a reserve
@@ -52,7 +53,16 @@ struct LuaLimits {
   // The same calls' wall-clock time, the backstop for uncharged work: far enough above the steps'
   // time (200 ns a step) that a machine or a step slower than usual still meets the budget first.
   int64_t deadlineNanoseconds = 2'000'000'000;
+  // Work no step counts still has to be explained by the steps: the frame's sandboxed calls may
+  // take this much machine time beyond kStepNanoseconds a charged step, never more (before the
+  // deadline). A compare of two 50 MB strings is one instruction (a step) and 10 ms of memcmp: a
+  // level doing a few hundred a frame ran at 1 frame a second, under the deadline, for good.
+  int64_t unchargedNanoseconds = 250'000'000;
 };
+// The machine time a charged step may take before its frame is over time: the slowest build and
+// machine the steps were measured on (4-8 ns with the hook on; AddressSanitizer, a loaded CI
+// machine: up to 30) and a wide margin.
+inline constexpr int64_t kStepNanoseconds = 200;
 
 // Interpreted instructions between two looks of the count hook, and what each look charges.
 inline constexpr int kTickSteps = 100;

@@ -2,6 +2,7 @@
 // limits (lua_limits.cpp: the allocator, the count hook, the deadline's timer, the stops) and its
 // errors (lua_errors.cpp: the message handler, where an error is, what a message shows).
 #pragma once
+#include <algorithm>
 #include <functional>
 #include <signal.h>
 #include <string>
@@ -67,6 +68,11 @@ struct LuaHost::Shared {
   std::function<void(std::string_view, std::string_view)> print;
 
   size_t sandboxLimit() const { return limits.memoryBytes - limits.memoryBytes / kTrustedReserveDivisor; }
+  // When the frame's sandboxed calls are over time: the deadline, or sooner, the time the steps
+  // charged so far explain and the uncharged allowance.
+  int64_t frameDeadline() const {
+    return std::min(limits.deadlineNanoseconds, limits.unchargedNanoseconds + frameSteps * kStepNanoseconds);
+  }
 };
 
 namespace host {

@@ -226,7 +226,12 @@ namespace {
     s.hog = hog;
     std::string at = where(L, s);
     if (at.empty()) at = s.sandboxes[s.current].name + ": ";
-    if (deadline) {
+    if (deadline && s.frameDeadline() < s.limits.deadlineNanoseconds) {
+      s.stopMessage = at + "script stopped: the frame's scripts ran " + milliseconds(s.frameDeadline()) +
+                      " of machine time, far more than the " + stepsText(s.frameSteps) +
+                      " they were charged explain (work the step budget does not count, such as comparing very long "
+                      "strings; or a very slow machine: a replay of this run may differ)";
+    } else if (deadline) {
       s.stopMessage = at + "script stopped: the frame's scripts ran past the deadline of " +
                       milliseconds(s.limits.deadlineNanoseconds) +
                       " of machine time (work the step budget does not count, or a very slow machine: a replay of "
@@ -251,8 +256,8 @@ void charge(lua_State* L, LuaHost::Shared& s, int64_t steps) {
   if (s.timerFired) {
     s.timerFired = 0;
     const int64_t spent = s.frameSpent + (coarseNanoseconds() - s.enteredAt);  // the clock enteredAt was read with
-    if (spent >= s.limits.deadlineNanoseconds) stopOverBudget(L, s, true);
-    if (!s.timerArmed) armTimer(s, s.limits.deadlineNanoseconds - spent);  // a timer armed in an earlier frame
+    if (spent >= s.frameDeadline()) stopOverBudget(L, s, true);
+    if (!s.timerArmed) armTimer(s, s.frameDeadline() - spent);  // not over yet: the steps explained more
   }
 }
 

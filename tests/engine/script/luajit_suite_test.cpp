@@ -149,6 +149,7 @@ std::string runTest(const fs::path& root, const SuiteTest& t, Trust trust) {
   LuaLimits limits;
   limits.frameSteps = 4'000'000'000;
   limits.deadlineNanoseconds = 300'000'000'000;
+  limits.unchargedNanoseconds = limits.deadlineNanoseconds;
   LuaHost host(limits);
   try {
     const bool sandboxed = trust == Trust::Sandboxed;

@@ -162,6 +162,7 @@ LuaLimits shortBudget() {
   LuaLimits limits;
   limits.frameSteps = 1'000'000;
   limits.deadlineNanoseconds = int64_t{3600} * 1'000'000'000;
+  limits.unchargedNanoseconds = limits.deadlineNanoseconds;
   return limits;
 }
 
@@ -281,6 +282,32 @@ TEST(Runaway, TheDeadlineStopsWhatTheStepsAllow) {
   EXPECT_EQ(runSandboxed(host, "local x = 0 for i = 1, 1000 do x = x + i end assert(x == 500500)"), "");
 }
 
+// One instruction whose work no step counts (two long strings compared: a memcmp of their common
+// part) is stopped by time, long before the deadline: the frame's time may exceed what its steps
+// explain by limits.unchargedNanoseconds only. Each route here compares 8 MB strings in a loop
+// of a few steps: the 10 million steps of the budget would take hours, the 2 s deadline was met
+// anew each frame by a level that did a few hundred a frame.
+TEST(Runaway, WorkTheStepsDoNotExplainIsStoppedByTime) {
+  const std::string setup = "local a = string.rep('x', 2^23) .. 'a' local b = string.rep('x', 2^23) .. 'b'\n";
+  const char* routes[] = {
+      "while true do local _ = a < b end",
+      "while true do local _ = a <= b end",
+      "while true do local _ = b > a end",
+      "local t = {} for i = 1, 64 do t[i] = (i % 2 == 0) and a or b end while true do table.sort(t) end",
+      "local n = 0 while true do if a < b then n = n + 1 end end",
+  };
+  for (const char* route : routes) {
+    LuaHost host;
+    const std::string error = runSandboxed(host, setup + route);
+    EXPECT_EQ(error.rfind("mod.lua:2: script stopped: the frame's scripts ran ", 0), 0u) << route << "\n" << error;
+    EXPECT_NE(error.find(" ms of machine time, far more than the "), std::string::npos) << error;
+    EXPECT_NE(error.find("they were charged explain (work the step budget does not count, such as comparing very long "
+                         "strings; or a very slow machine: a replay of this run may differ); mod.lua disabled"),
+              std::string::npos)
+        << error;
+  }
+}
+
 // C functions that loop charge their work: a sort whose comparator is a pattern function runs no
 // Lua instruction between comparisons, yet each comparison's matching is charged, so the sort is
 // stopped by the budget (it would take hours otherwise).
@@ -335,6 +362,7 @@ TEST(Runaway, CWorkOverBytesAndValuesIsCharged) {
   for (const Case& c : cases) {
     LuaLimits limits;  // the game's budget (10 million steps); a deadline far past what it allows
     limits.deadlineNanoseconds = int64_t{60} * 1'000'000'000;
+    limits.unchargedNanoseconds = limits.deadlineNanoseconds;
     LuaHost host(limits);
     host.setPrintSink([](std::string_view, std::string_view) {});
     const std::string code = std::string(
@@ -662,6 +690,7 @@ TEST(PairsAndNext, WalkTheDocumentedOrderOverRandomTables) {
 TEST(PairsAndNext, EmptinessChecksAndClearLoopsFitTheFramesBudget) {
   LuaLimits limits;  // the frame's budget of steps; a deadline no machine meets, so the steps decide
   limits.deadlineNanoseconds = int64_t{3600} * 1'000'000'000;
+  limits.unchargedNanoseconds = limits.deadlineNanoseconds;
   LuaHost host(limits);
   EXPECT_EQ(runSandboxed(host,
                          "local t = {} for i = 1, 1e5 do t['key' .. i] = i end\n"
@@ -985,6 +1014,7 @@ TEST(CaughtErrors, ALoopOfCaughtErrorsMeetsTheStepBudgetNotTheDeadline) {
     // deadline is far past what the charged loop takes on any machine.
     LuaLimits limits;
     limits.deadlineNanoseconds = int64_t{60} * 1'000'000'000;
+    limits.unchargedNanoseconds = limits.deadlineNanoseconds;
     LuaHost host(limits);
     const auto [error, rounds] = runCounting(
         host, std::string("local t0 = ...\n") + c.setup + "\nwhile true do t0.n = t0.n + 1 " + c.body + " end");
