@@ -7,7 +7,7 @@ local world = platon.world
 local play = platon.sound.play
 local position, destroyEntity = world.position, world.destroyEntity
 local valid, refreshPierce = world.valid, world.refreshPierce
-local pcall, tostring, error, rawget, rawset, type = pcall, tostring, error, rawget, rawset, type
+local pcall, tostring, error, rawget, type = pcall, tostring, error, rawget, type
 local DOOR = platon.tags.door  -- door n is DOOR + n
 -- Taken once, now: a level's own (sandboxed) player script shares `game` and may write to it, so
 -- nothing here calls a function found in `game` later, and what it reads there it reads raw.
@@ -81,10 +81,10 @@ function progression.afterStep()
       local id = rawget(toggles, i)
       if id == nil then break end
       if type(id) == "number" then  -- levelApi.toggle checked it; a level's own player may write here too
-        rawset(on, id, not rawget(on, id))
+        on[id] = not rawget(on, id)  -- no __newindex on game's tables: a plain write is raw (a base has no rawset)
         refreshPierce(DOOR + id)
       end
-      rawset(toggles, i, nil)
+      toggles[i] = nil
       i = i + 1
     end
     listOpen()

@@ -431,12 +431,20 @@ function scene.build(frames)
   -- of scripts/player.lua run in a sandbox of its own, so that what the level changes in it stays
   -- the level's and its functions run inside the level's limits.
   local base = not setup.trusted.player and setup.player ~= "" and engine.load("scripts/player.lua", "base", game)
-  local Player, playerId = load(setup.player, setup.trusted.player, game, base or nil)
-  PlayerModule = setup.trusted.player and Player or sandboxedFunctions(Player, playerId, GAME_CHECKS)
+  -- With either of them sandboxed, the engine's own other one is within its reach (game.Player,
+  -- game.progression): it then runs as a base does, sandboxed. Trusted, the JIT would compile it
+  -- after a few calls from the sandbox and run it uncounted (a loop of calls to game.progression's
+  -- spawnPoint fit as many in the budget as calls of an empty function), and whether and when
+  -- that happens differs between processes.
+  local playerTrusted = setup.trusted.player and not anyGameLogicSandboxed
+  local progressionTrusted = setup.trusted.progression and not anyGameLogicSandboxed
+  local function how(trusted, trustedByManifest) return trusted or (trustedByManifest and "base") end
+  local Player, playerId = load(setup.player, how(playerTrusted, setup.trusted.player), game, base or nil)
+  PlayerModule = playerTrusted and Player or sandboxedFunctions(Player, playerId, GAME_CHECKS)
   game.Player = sealed(PlayerModule, "game.Player")
-  local progression, progressionId = load(setup.progression, setup.trusted.progression, game)
-  Progression = (setup.trusted.progression and progression or sandboxedFunctions(progression, progressionId,
-                                                                                  GAME_CHECKS)) or {}
+  local progression, progressionId = load(setup.progression, how(progressionTrusted, setup.trusted.progression), game)
+  Progression = (progressionTrusted and progression or sandboxedFunctions(progression, progressionId,
+                                                                          GAME_CHECKS)) or {}
   game.progression = sealed(Progression, "game.progression")
   for _, key in ipairs { "input", "levelApi", "Player", "progression", "level" } do
     engineTables[key] = rawget(game, key)

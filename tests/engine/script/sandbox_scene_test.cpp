@@ -845,6 +845,59 @@ TEST(OwnPlayer, WhatItWritesInGameIsNeverCalledOutsideItsLimits) {
   for (const std::string& e : p.errors) EXPECT_EQ(e.find("stopped"), std::string::npos) << e;
 }
 
+// Every engine function a sandbox can call is counted as its own code is: with a level's own
+// player, the engine's progression is within its reach (game.progression), and with its own
+// progression, the engine's player (game.Player). Trusted, the JIT compiled such a function after
+// a few calls and ran it uncounted, so a loop of calls ran on far past what its steps allowed,
+// and how far depended on the process. Here each loop counts its calls until the budget stops it,
+// against a loop calling a function of the script's own that does nothing.
+TEST(OwnGameLogic, TheEnginesFunctionsItCallsAreCountedAsItsOwn) {
+  const std::string player = fileText(std::string(PLATON_SOURCE_ROOT) + "/scripts/player.lua");
+  const std::string progression = fileText(std::string(PLATON_SOURCE_ROOT) + "/scripts/progression.lua");
+  struct Case {
+    const char* own;   // "player" or "progression": the script the level brings
+    const char* call;  // what its loop calls, as `f`
+  };
+  const Case cases[] = {
+      {"player", "game.progression.spawnPoint"},
+      {"player", "function() end"},
+      {"progression", "game.Player.canJump"},
+      {"progression", "function() end"},
+  };
+  const core::SystemRegistry registry = scripting();
+  int calls[4] = {};
+  for (int i = 0; i < 4; ++i) {
+    const Case& c = cases[i];
+    Level level(std::string("own_logic_") + std::to_string(i), "return {}\n");
+    const std::string loop = std::string("if game.time == 3 then local f, self, n = ") + c.call +
+                             ", { coyote = 1 }, 0 while true do f(self) n = n + 1 game.deaths = n end end\n";
+    if (std::string(c.own) == "player") {
+      std::string own = player;
+      own.replace(own.find("function Player.tick(self, input)\n"), 34, "function Player.tick(self, input)\n" + loop);
+      level.folder.write("player.lua", own);
+    } else {
+      std::string own = progression;
+      own.replace(own.find("function progression.afterStep()\n"), 33, "function progression.afterStep()\n" + loop);
+      level.folder.write("progression.lua", own);
+    }
+    level.folder.write("scene.lua", std::string("return { name = 'own logic', systems = { 'scripting' }, stage = { level = "
+                                                "'cube_intro.level' }, gravity = 0.35, scripts = { preset = 'game', ") +
+                                        c.own + " = '" + c.own + ".lua', level = 'level.lua' } }\n");
+    core::LiveScene live(level.scene, registry, false);
+    const Played p = play(live, 6);
+    ASSERT_FALSE(p.errors.empty()) << c.call;
+    EXPECT_NE(p.errors[0].find("script stopped: it ran past the frame's script budget"), std::string::npos)
+        << p.errors[0];
+    calls[i] = static_cast<int>(p.status.deaths);
+  }
+  // The engine's function costs its instructions and the call into another sandbox: fewer calls
+  // fit the budget than of a function that does nothing (uncounted, more did).
+  EXPECT_GT(calls[1], 0);
+  EXPECT_LT(calls[0], calls[1] / 2) << calls[0] << " calls of game.progression.spawnPoint, " << calls[1] << " of its own";
+  EXPECT_GT(calls[3], 0);
+  EXPECT_LT(calls[2], calls[3] / 2) << calls[2] << " calls of game.Player.canJump, " << calls[3] << " of its own";
+}
+
 // A rules table whose callback is not a function names the rules script (it named nothing).
 TEST(RulesScript, ACallbackThatIsNoFunctionNamesTheScript) {
   Level level("rules_not_fn", "return {}\n", "", "return { pierce = function() return true end, contact = 5 }\n");
