@@ -4,11 +4,10 @@
 #include <cerrno>
 #include <cstring>
 #include <fcntl.h>
-#include <linux/openat2.h>
 #include <sys/stat.h>
-#include <sys/syscall.h>
 #include <unistd.h>
 
+#include "beneath.h"
 #include "fd.h"
 
 namespace platon::files {
@@ -59,46 +58,6 @@ void readAll(const std::string& path, const Fd& file, std::string& bytes) {
   bytes.resize(got);
 }
 
-// Where the kernel has no openat2 (before Linux 5.6) or refuses it: the name walked a part at a
-// time, each part opened with O_NOFOLLOW, so no link is followed at all (stricter than openat2,
-// which follows a link that stays beneath).
-int openWalking(int folder, const std::string& name) {
-  int at = dup(folder);
-  for (size_t begin = 0; at >= 0;) {
-    const size_t end = std::min(name.find('/', begin), name.size());
-    const std::string part = name.substr(begin, end - begin);
-    if (part == "..") {
-      close(at);
-      errno = EXDEV;
-      return -1;
-    }
-    if (end == name.size()) {
-      const int fd = openat(at, part.c_str(), kReadFlags | O_NOFOLLOW);
-      const int saved = errno;
-      close(at);
-      errno = saved;
-      return fd;
-    }
-    const int next =
-        part.empty() || part == "." ? dup(at) : openat(at, part.c_str(), O_PATH | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
-    const int saved = errno;
-    close(at);
-    errno = saved;
-    at = next;
-    begin = end + 1;
-  }
-  return -1;
-}
-
-int openBeneath(int folder, const std::string& name) {
-  open_how how{};
-  how.flags = kReadFlags;
-  how.resolve = RESOLVE_BENEATH | RESOLVE_NO_MAGICLINKS;
-  const long fd = syscall(SYS_openat2, folder, name.c_str(), &how, sizeof how);
-  if (fd < 0 && (errno == ENOSYS || errno == EPERM)) return openWalking(folder, name);  // EPERM: a seccomp filter
-  return static_cast<int>(fd);
-}
-
 }  // namespace
 
 std::string readBoundedFile(const std::string& path, size_t maxBytes) {
@@ -113,13 +72,14 @@ size_t checkBoundedFile(const std::string& path, size_t maxBytes) {
   return openChecked(path, maxBytes, file);
 }
 
-std::string readFileInside(const std::string& folder, const std::string& name, size_t maxBytes) {
+std::string readInside(const std::string& folder, const std::string& name, size_t maxBytes,
+                       int (*openName)(int, const std::string&)) {
   const std::string shown = folder + "/" + name;
   if (name.empty() || name[0] == '/')
     throw FileError(shown, "not a name inside the folder (empty or absolute): content names its own files");
   Fd dir{open(folder.c_str(), O_PATH | O_DIRECTORY | O_CLOEXEC)};
   if (dir.fd < 0) throw FileError(folder, std::string("cannot open the folder: ") + std::strerror(errno));
-  Fd file{openBeneath(dir.fd, name)};
+  Fd file{openName(dir.fd, name)};
   if (file.fd < 0) {
     if (errno == EXDEV || errno == ELOOP)
       throw FileError(shown, "leads out of its folder (through '..' or a link): content reads only its own folder");
@@ -128,6 +88,10 @@ std::string readFileInside(const std::string& folder, const std::string& name, s
   std::string bytes(checkOpened(shown, maxBytes, file), '\0');
   readAll(shown, file, bytes);
   return bytes;
+}
+
+std::string readFileInside(const std::string& folder, const std::string& name, size_t maxBytes) {
+  return readInside(folder, name, maxBytes, openBeneath);
 }
 
 }  // namespace platon::files

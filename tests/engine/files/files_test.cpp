@@ -11,6 +11,7 @@
 
 #include "platon/files/read_file.h"
 #include "platon/files/write_file.h"
+#include "beneath.h"  // both ways of resolving
 #include "platon/testing/temp_folder.h"
 
 using namespace platon;
@@ -122,7 +123,17 @@ TEST(SaveWhole, WritesANewFileAndReplacesAnOldOne) {
   EXPECT_NE(files::saveWhole(folder.path("deep/er/"), "x", "the settings"), "");  // no file's name
 }
 
-TEST(ReadFileInside, RefusesEveryWayOutOfTheFolderAndEveryFileThatIsNotRegular) {
+// Both ways a name is resolved: the kernel's (openat2) and the walk where a kernel has none.
+class ReadFileInside : public ::testing::TestWithParam<bool> {
+ protected:
+  static std::string read(const std::string& folder, const std::string& name, size_t maxBytes) {
+    return GetParam() ? files::readInside(folder, name, maxBytes, files::openWalking)
+                      : files::readFileInside(folder, name, maxBytes);
+  }
+};
+INSTANTIATE_TEST_SUITE_P(ByTheKernelAndByTheWalk, ReadFileInside, ::testing::Bool());
+
+TEST_P(ReadFileInside, RefusesEveryWayOutOfTheFolderAndEveryFileThatIsNotRegular) {
   platon::testing::TempFolder folder("inside");
   folder.write("outside/secret.txt", "secret\n");
   const std::string level = folder.path("level");
@@ -134,6 +145,12 @@ TEST(ReadFileInside, RefusesEveryWayOutOfTheFolderAndEveryFileThatIsNotRegular) 
   fs::create_symlink("../outside/secret.txt", fs::path(level) / "relative_out.mtl");
   fs::create_symlink(folder.path("outside"), fs::path(level) / "folder_out");
   fs::create_symlink("/dev/zero", fs::path(level) / "zero.bin");
+  fs::create_symlink("sub", fs::path(level) / "sub_link");                       // a folder inside
+  fs::create_symlink("link_in.mtl", fs::path(level) / "chain.mtl");              // a link to a link inside
+  fs::create_symlink("loop_b.mtl", fs::path(level) / "loop_a.mtl");              // a loop
+  fs::create_symlink("loop_a.mtl", fs::path(level) / "loop_b.mtl");
+  fs::create_symlink("../../outside/secret.txt", fs::path(level) / "sub/up_out.mtl");  // out, from below
+  fs::create_symlink("../sub_link/../../outside", fs::path(level) / "sub/twisted");    // out, by a link inside
   ASSERT_EQ(mkfifo((fs::path(level) / "fifo.mtl").c_str(), 0644), 0);
   fs::create_directories(fs::path(level) / "dir.mtl");
   folder.write("level/big.bin", std::string(2000, 'x'));
@@ -143,9 +160,13 @@ TEST(ReadFileInside, RefusesEveryWayOutOfTheFolderAndEveryFileThatIsNotRegular) 
                                                                                    {"sub/b.mtl", "deeper\n"},
                                                                                    {"link_in.mtl", "deeper\n"},
                                                                                    {"sub/up_in.mtl", "inside\n"},
-                                                                                   {"sub/../a.mtl", "inside\n"}}) {
+                                                                                   {"sub/../a.mtl", "inside\n"},
+                                                                                   {"sub_link/b.mtl", "deeper\n"},
+                                                                                   {"chain.mtl", "deeper\n"},
+                                                                                   {"sub_link/up_in.mtl", "inside\n"},
+                                                                                   {"sub/./../sub/b.mtl", "deeper\n"}}) {
     SCOPED_TRACE(name);
-    EXPECT_EQ(files::readFileInside(level, name, 1000), text);
+    EXPECT_EQ(read(level, name, 1000), text);
   }
   const std::pair<std::string, std::string> refused[] = {
       {"../outside/secret.txt", "leads out of its folder"},
@@ -155,6 +176,12 @@ TEST(ReadFileInside, RefusesEveryWayOutOfTheFolderAndEveryFileThatIsNotRegular) 
       {"relative_out.mtl", "leads out of its folder"},
       {"folder_out/secret.txt", "leads out of its folder"},
       {"zero.bin", "leads out of its folder"},
+      {"loop_a.mtl", "leads out of its folder"},
+      {"sub/up_out.mtl", "leads out of its folder"},
+      {"sub/twisted/secret.txt", "leads out of its folder"},
+      {"sub_link/../../outside/secret.txt", "leads out of its folder"},
+      {"a.mtl/", "cannot open it"},
+      {"sub/", "not a regular file (a folder)"},
       {"fifo.mtl", "not a regular file (a FIFO)"},
       {"dir.mtl", "not a regular file (a folder)"},
       {"big.bin", "2000 bytes, more than the 1000 bytes"},
@@ -163,7 +190,7 @@ TEST(ReadFileInside, RefusesEveryWayOutOfTheFolderAndEveryFileThatIsNotRegular) 
   for (const auto& [name, reason] : refused) {
     SCOPED_TRACE(name);
     try {
-      files::readFileInside(level, name, 1000);
+      read(level, name, 1000);
       ADD_FAILURE() << "read";
     } catch (const files::FileError& e) {
       EXPECT_NE(e.reason().find(reason), std::string::npos) << e.what();
