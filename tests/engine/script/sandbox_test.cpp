@@ -295,6 +295,7 @@ TEST(Runaway, WorkTheStepsDoNotExplainIsStoppedByTime) {
       "while true do local _ = b > a end",
       "local t = {} for i = 1, 64 do t[i] = (i % 2 == 0) and a or b end while true do table.sort(t) end",
       "local n = 0 while true do if a < b then n = n + 1 end end",
+      "while true do local y = a .. 'c' end",  // a join copies both strings
   };
   for (const char* route : routes) {
     LuaHost host;
