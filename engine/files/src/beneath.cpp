@@ -10,12 +10,12 @@
 #include <unistd.h>
 #include <vector>
 
+#include "fd.h"
+
 namespace platon::files {
 
 namespace {
 
-// O_NONBLOCK: opening a FIFO with no writer would otherwise wait for one for ever.
-constexpr int kReadFlags = O_RDONLY | O_NONBLOCK | O_CLOEXEC;
 constexpr int kMaxLinks = 40;  // as the kernel's own walk
 
 std::deque<std::string> partsOf(const std::string& path) {

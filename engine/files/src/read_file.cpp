@@ -19,9 +19,6 @@ std::string sizeText(unsigned long long bytes) {
   return std::to_string(bytes) + " bytes";
 }
 
-// O_NONBLOCK: opening a FIFO with no writer would otherwise wait for one for ever.
-constexpr int kReadFlags = O_RDONLY | O_NONBLOCK | O_CLOEXEC;
-
 // Checks the opened file: a regular file of at most maxBytes. Returns its size.
 size_t checkOpened(const std::string& path, size_t maxBytes, const Fd& file) {
   struct stat st {};

@@ -380,13 +380,13 @@ bool LuaHost::callSandboxed(int sandbox, int nargs, int nresults) {
     if (late || s.frameSteps >= s.limits.frameSteps) {  // the frame's budget is spent: skipped
       lua_pop(L_, nargs + 1);
       if (!s.skipNoted && !s.stopNoted)
-        keepError(ScriptError(
-            box.name + ": skipped: " +
-                (late ? "the frame's deadline of " + milliseconds(s.frameDeadline()) + " has passed"
-                      : "the frame's script budget of " + stepsText(s.limits.frameSteps) + " is spent") +
-                " (the level's scripts and mods share it; their other calls this frame are "
-                "skipped)",
-            ""));
+        keepError(
+            ScriptError(box.name + ": skipped: " +
+                            (late ? "the frame's deadline of " + milliseconds(s.frameDeadline()) + " has passed"
+                                  : "the frame's script budget of " + stepsText(s.limits.frameSteps) + " is spent") +
+                            " (the level's scripts and mods share it; their other calls this frame are "
+                            "skipped)",
+                        ""));
       s.skipNoted = true;
       return false;
     }

@@ -20,8 +20,8 @@
 //    After the budget is spent, the frame's further sandboxed calls are skipped.
 //  - time, the backstop: a wall-clock deadline (limits.deadlineNanoseconds) on the frame's
 //    sandboxed calls together, for work nothing charged, and sooner when the time is far more
-//    than the steps charged explain (limits.unchargedNanoseconds beyond kStepNanoseconds a step). A POSIX timer fires at the deadline on
-//    the calling thread and its handler sets a flag the count hook and chargeSteps look at. A stop
+//    than the steps charged explain (limits.unchargedNanoseconds beyond kStepNanoseconds a step). A POSIX timer fires
+//    at the deadline on the calling thread and its handler sets a flag the count hook and chargeSteps look at. A stop
 //    by the deadline depends on the machine and says so.
 //  - memory: sandboxed allocations are refused past limits.memoryBytes minus a reserve
 //    (kTrustedReserve of it), so the engine's own scripts can still run; after a refusal, the

@@ -184,7 +184,8 @@ int biggestHolder(const LuaHost::Shared& s) {
   int most = kNoSandbox;
   for (size_t i = 0; i < s.sandboxes.size(); ++i) {
     if (s.sandboxes[i].disabled) continue;
-    if (most == kNoSandbox || s.heldBytes[i + 1] > s.heldBytes[static_cast<size_t>(most) + 1]) most = static_cast<int>(i);
+    if (most == kNoSandbox || s.heldBytes[i + 1] > s.heldBytes[static_cast<size_t>(most) + 1])
+      most = static_cast<int>(i);
   }
   return most;
 }

@@ -9,9 +9,9 @@
 
 #include <gtest/gtest.h>
 
+#include "beneath.h"  // both ways of resolving
 #include "platon/files/read_file.h"
 #include "platon/files/write_file.h"
-#include "beneath.h"  // both ways of resolving
 #include "platon/testing/temp_folder.h"
 
 using namespace platon;
@@ -145,9 +145,9 @@ TEST_P(ReadFileInside, RefusesEveryWayOutOfTheFolderAndEveryFileThatIsNotRegular
   fs::create_symlink("../outside/secret.txt", fs::path(level) / "relative_out.mtl");
   fs::create_symlink(folder.path("outside"), fs::path(level) / "folder_out");
   fs::create_symlink("/dev/zero", fs::path(level) / "zero.bin");
-  fs::create_symlink("sub", fs::path(level) / "sub_link");                       // a folder inside
-  fs::create_symlink("link_in.mtl", fs::path(level) / "chain.mtl");              // a link to a link inside
-  fs::create_symlink("loop_b.mtl", fs::path(level) / "loop_a.mtl");              // a loop
+  fs::create_symlink("sub", fs::path(level) / "sub_link");           // a folder inside
+  fs::create_symlink("link_in.mtl", fs::path(level) / "chain.mtl");  // a link to a link inside
+  fs::create_symlink("loop_b.mtl", fs::path(level) / "loop_a.mtl");  // a loop
   fs::create_symlink("loop_a.mtl", fs::path(level) / "loop_b.mtl");
   fs::create_symlink("../../outside/secret.txt", fs::path(level) / "sub/up_out.mtl");  // out, from below
   fs::create_symlink("../sub_link/../../outside", fs::path(level) / "sub/twisted");    // out, by a link inside
@@ -155,16 +155,17 @@ TEST_P(ReadFileInside, RefusesEveryWayOutOfTheFolderAndEveryFileThatIsNotRegular
   fs::create_directories(fs::path(level) / "dir.mtl");
   folder.write("level/big.bin", std::string(2000, 'x'));
 
-  for (const auto& [name, text] : std::vector<std::pair<std::string, std::string>>{{"a.mtl", "inside\n"},
-                                                                                   {"./a.mtl", "inside\n"},
-                                                                                   {"sub/b.mtl", "deeper\n"},
-                                                                                   {"link_in.mtl", "deeper\n"},
-                                                                                   {"sub/up_in.mtl", "inside\n"},
-                                                                                   {"sub/../a.mtl", "inside\n"},
-                                                                                   {"sub_link/b.mtl", "deeper\n"},
-                                                                                   {"chain.mtl", "deeper\n"},
-                                                                                   {"sub_link/up_in.mtl", "inside\n"},
-                                                                                   {"sub/./../sub/b.mtl", "deeper\n"}}) {
+  for (const auto& [name, text] :
+       std::vector<std::pair<std::string, std::string>>{{"a.mtl", "inside\n"},
+                                                        {"./a.mtl", "inside\n"},
+                                                        {"sub/b.mtl", "deeper\n"},
+                                                        {"link_in.mtl", "deeper\n"},
+                                                        {"sub/up_in.mtl", "inside\n"},
+                                                        {"sub/../a.mtl", "inside\n"},
+                                                        {"sub_link/b.mtl", "deeper\n"},
+                                                        {"chain.mtl", "deeper\n"},
+                                                        {"sub_link/up_in.mtl", "inside\n"},
+                                                        {"sub/./../sub/b.mtl", "deeper\n"}}) {
     SCOPED_TRACE(name);
     EXPECT_EQ(read(level, name, 1000), text);
   }

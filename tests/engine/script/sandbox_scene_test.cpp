@@ -880,9 +880,10 @@ TEST(OwnGameLogic, TheEnginesFunctionsItCallsAreCountedAsItsOwn) {
       own.replace(own.find("function progression.afterStep()\n"), 33, "function progression.afterStep()\n" + loop);
       level.folder.write("progression.lua", own);
     }
-    level.folder.write("scene.lua", std::string("return { name = 'own logic', systems = { 'scripting' }, stage = { level = "
-                                                "'cube_intro.level' }, gravity = 0.35, scripts = { preset = 'game', ") +
-                                        c.own + " = '" + c.own + ".lua', level = 'level.lua' } }\n");
+    level.folder.write("scene.lua",
+                       std::string("return { name = 'own logic', systems = { 'scripting' }, stage = { level = "
+                                   "'cube_intro.level' }, gravity = 0.35, scripts = { preset = 'game', ") +
+                           c.own + " = '" + c.own + ".lua', level = 'level.lua' } }\n");
     core::LiveScene live(level.scene, registry, false);
     const Played p = play(live, 6);
     ASSERT_FALSE(p.errors.empty()) << c.call;
@@ -893,7 +894,8 @@ TEST(OwnGameLogic, TheEnginesFunctionsItCallsAreCountedAsItsOwn) {
   // The engine's function costs its instructions and the call into another sandbox: fewer calls
   // fit the budget than of a function that does nothing (uncounted, more did).
   EXPECT_GT(calls[1], 0);
-  EXPECT_LT(calls[0], calls[1] / 2) << calls[0] << " calls of game.progression.spawnPoint, " << calls[1] << " of its own";
+  EXPECT_LT(calls[0], calls[1] / 2) << calls[0] << " calls of game.progression.spawnPoint, " << calls[1]
+                                    << " of its own";
   EXPECT_GT(calls[3], 0);
   EXPECT_LT(calls[2], calls[3] / 2) << calls[2] << " calls of game.Player.canJump, " << calls[3] << " of its own";
 }

@@ -446,10 +446,12 @@ TEST(Runaway, AMemoryStopBlamesTheScriptThatHoldsTheMost) {
     std::vector<lua::Ref> chunks;
     for (size_t i = 0; i < c.holdsMb.size(); ++i) {
       const std::string name = "@mod" + std::to_string(i + 1) + ".lua";
-      ids.push_back(host.loadString("if held then local t = {} while true do t[#t + 1] = string.rep('y', 1000) .. #t end end "
-                                    "held = {} for i = 1, " + std::to_string(c.holdsMb[i] * 1024) + " do held[i] = string.rep('x', 1000) .. '" +
-                                        name + "' .. i end",  // its own strings (equal ones are one)
-                                    name, Trust::Sandboxed));
+      ids.push_back(
+          host.loadString("if held then local t = {} while true do t[#t + 1] = string.rep('y', 1000) .. #t end end "
+                          "held = {} for i = 1, " +
+                              std::to_string(c.holdsMb[i] * 1024) + " do held[i] = string.rep('x', 1000) .. '" + name +
+                              "' .. i end",  // its own strings (equal ones are one)
+                          name, Trust::Sandboxed));
       chunks.emplace_back(host.state(), -1);
       host.beginFrame();
       ASSERT_TRUE(host.callSandboxed(ids.back(), 0, 0));
@@ -472,8 +474,7 @@ TEST(Runaway, AMemoryStopBlamesTheScriptThatHoldsTheMost) {
       EXPECT_EQ(error.rfind(blamed + ":1: script " + what, 0), 0u) << error;
     } else {
       EXPECT_EQ(error.rfind(blamed + ": script " + what, 0), 0u) << error;
-      EXPECT_NE(error.find(" MB, the most of any script (" + crossing + ":1 was running, holding "),
-                std::string::npos)
+      EXPECT_NE(error.find(" MB, the most of any script (" + crossing + ":1 was running, holding "), std::string::npos)
           << error;
     }
     EXPECT_NE(error.find(blamed + " disabled"), std::string::npos) << error;
@@ -1081,7 +1082,6 @@ TEST(Messages, PrintIsCappedAFrame) {
   EXPECT_EQ(printed.find('\x1b'), std::string::npos) << "no terminal escape reaches the console";
 }
 
-
 // Weak tables: which entries the collector clears, and when, depends on everything the Lua state
 // allocates, so no sandbox table may be weak, by any route to a metatable with __mode.
 class WeakTableRoutes : public testing::TestWithParam<const char*> {};
@@ -1127,13 +1127,14 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(WeakTables, WhatAScriptWroteStaysForTheCollector) {
   // Had any route made t weak, a full collection between the two calls would empty it.
   LuaHost host;
-  const int id = host.loadString("if not t then mt = {} t = setmetatable({}, mt) "
-                                 "pcall(function() mt.__mode = 'v' end) pcall(function() mt.__mode = 'kv' end) "
-                                 "pcall(setmetatable, mt, nil) pcall(function() mt.__mode = 'v' end) "
-                                 "for i = 1, 100 do t['k' .. i] = {} end return end "
-                                 "local n = 0 for _ in pairs(t) do n = n + 1 end assert(n == 100, n) "
-                                 "assert(next(mt) == nil)",
-                                 "@mod.lua", Trust::Sandboxed);
+  const int id = host.loadString(
+      "if not t then mt = {} t = setmetatable({}, mt) "
+      "pcall(function() mt.__mode = 'v' end) pcall(function() mt.__mode = 'kv' end) "
+      "pcall(setmetatable, mt, nil) pcall(function() mt.__mode = 'v' end) "
+      "for i = 1, 100 do t['k' .. i] = {} end return end "
+      "local n = 0 for _ in pairs(t) do n = n + 1 end assert(n == 100, n) "
+      "assert(next(mt) == nil)",
+      "@mod.lua", Trust::Sandboxed);
   const lua::Ref chunk(host.state(), -1);
   lua_pop(host.state(), 1);
   for (int call = 0; call < 2; ++call) {  // the second call counts (an error there throws)
@@ -1146,34 +1147,35 @@ TEST(WeakTables, WhatAScriptWroteStaysForTheCollector) {
 }
 
 TEST(WeakTables, MetatablesStillWorkAsInStockLua) {
-  EXPECT_EQ(runSandboxed(
-                // A class: methods added after instances, a call metamethod on the class.
-                "local Class = {} Class.__index = Class "
-                "setmetatable(Class, { __call = function(cls, x) return setmetatable({ x = x }, cls) end }) "
-                "local a = Class(1) function Class:get() return self.x end assert(a:get() == 1) "
-                "assert(getmetatable(a) == Class) assert(type(getmetatable(Class).__call) == 'function') "
-                // Inheritance two deep, each metatable used before and after it got its own.
-                "local Base = {} Base.__index = Base function Base:hello() return 'base' end "
-                "local Derived = setmetatable({}, { __index = Base }) Derived.__index = Derived "
-                "local d = setmetatable({}, Derived) assert(d:hello() == 'base') "
-                "function Derived:hello() return 'derived' end assert(d:hello() == 'derived') "
-                "local Leaf = setmetatable({}, Derived) setmetatable({}, Leaf) assert(Leaf:hello() == 'derived') "
-                // __newindex of a metatable's own metatable, a function and a table.
-                "local seen = {} local M = setmetatable({}, { __newindex = function(t, k, v) seen[#seen + 1] = k end }) "
-                "setmetatable({}, M) M.x = 1 assert(seen[1] == 'x' and rawget(M, 'x') == nil) "
-                "local sink = {} local N = setmetatable({}, { __newindex = sink }) setmetatable({}, N) "
-                "N.y = 2 assert(sink.y == 2 and rawget(N, 'y') == nil) "
-                // A metatable's own keys, as ever; a protected metatable stays protected.
-                "local mt = {} setmetatable({}, mt) mt.count = 1 mt.count = mt.count + 1 assert(mt.count == 2) "
-                "assert(getmetatable(mt) == nil) "
-                "local P = setmetatable({}, { __metatable = 'mine' }) setmetatable({}, P) "
-                "assert(getmetatable(P) == 'mine') assert(not pcall(setmetatable, P, {})) "
-                "local q = setmetatable({}, { __metatable = 'locked' }) assert(not pcall(setmetatable, q, nil)) "
-                // setmetatable's own argument errors, as stock gives them.
-                "assert(select(2, pcall(setmetatable, 1, {})):find('table expected, got number')) "
-                "assert(select(2, pcall(setmetatable, {}, 1)):find('nil or table expected')) "
-                "assert(select(2, pcall(setmetatable, {})):find('nil or table expected'))"),
-            "");
+  EXPECT_EQ(
+      runSandboxed(
+          // A class: methods added after instances, a call metamethod on the class.
+          "local Class = {} Class.__index = Class "
+          "setmetatable(Class, { __call = function(cls, x) return setmetatable({ x = x }, cls) end }) "
+          "local a = Class(1) function Class:get() return self.x end assert(a:get() == 1) "
+          "assert(getmetatable(a) == Class) assert(type(getmetatable(Class).__call) == 'function') "
+          // Inheritance two deep, each metatable used before and after it got its own.
+          "local Base = {} Base.__index = Base function Base:hello() return 'base' end "
+          "local Derived = setmetatable({}, { __index = Base }) Derived.__index = Derived "
+          "local d = setmetatable({}, Derived) assert(d:hello() == 'base') "
+          "function Derived:hello() return 'derived' end assert(d:hello() == 'derived') "
+          "local Leaf = setmetatable({}, Derived) setmetatable({}, Leaf) assert(Leaf:hello() == 'derived') "
+          // __newindex of a metatable's own metatable, a function and a table.
+          "local seen = {} local M = setmetatable({}, { __newindex = function(t, k, v) seen[#seen + 1] = k end }) "
+          "setmetatable({}, M) M.x = 1 assert(seen[1] == 'x' and rawget(M, 'x') == nil) "
+          "local sink = {} local N = setmetatable({}, { __newindex = sink }) setmetatable({}, N) "
+          "N.y = 2 assert(sink.y == 2 and rawget(N, 'y') == nil) "
+          // A metatable's own keys, as ever; a protected metatable stays protected.
+          "local mt = {} setmetatable({}, mt) mt.count = 1 mt.count = mt.count + 1 assert(mt.count == 2) "
+          "assert(getmetatable(mt) == nil) "
+          "local P = setmetatable({}, { __metatable = 'mine' }) setmetatable({}, P) "
+          "assert(getmetatable(P) == 'mine') assert(not pcall(setmetatable, P, {})) "
+          "local q = setmetatable({}, { __metatable = 'locked' }) assert(not pcall(setmetatable, q, nil)) "
+          // setmetatable's own argument errors, as stock gives them.
+          "assert(select(2, pcall(setmetatable, 1, {})):find('table expected, got number')) "
+          "assert(select(2, pcall(setmetatable, {}, 1)):find('nil or table expected')) "
+          "assert(select(2, pcall(setmetatable, {})):find('nil or table expected'))"),
+      "");
 }
 
 }  // namespace
