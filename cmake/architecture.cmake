@@ -27,6 +27,9 @@ set(PLATON_ARROWS_platon_mesh platon_files)
 set(PLATON_ARROWS_platon_package platon_core platon_files)
 # The level editor: the level document (stage's format), the picture (core's draw lists), the camera.
 set(PLATON_ARROWS_platon_editor platon_core platon_stage platon_physics platon_camera platon_files)
+# A scene played in a window and its tools: the scene and its run (core), the console and status
+# (script), the camera, the player's folders (files).
+set(PLATON_ARROWS_platon_session platon_core platon_script platon_stage platon_physics platon_camera platon_files)
 
 set(PLATON_MODULES "" CACHE INTERNAL "")
 

@@ -13,7 +13,6 @@
 
 #include "commands.h"
 #include "engine_registry.h"
-#include "game_view.h"
 #include "level_argument.h"
 #include "platon/core/data_root.h"
 #include "platon/core/fixed_step.h"
@@ -23,6 +22,7 @@
 #include "platon/editor/editor.h"
 #include "platon/files/write_file.h"
 #include "platon/script/scenario.h"
+#include "platon/session/session.h"
 #include "platon/stage/polyhedron.h"
 #include "save_file.h"
 
@@ -133,7 +133,7 @@ std::string nextTestPath(const std::string& folder) {
   }
 }
 
-struct Session {
+struct EditorWindow {
   std::string scenePath;  // as found (resolveDataPath)
   core::SystemRegistry& registry;
   core::System& window;  // the editor's rendering system: its window is shared with each play
@@ -143,7 +143,7 @@ struct Session {
 
 // Keeps a run that reached the goal as a scenario beside the level: the level saved first (the
 // scenario plays the file), the scenario written and run headless at once.
-std::string keepRun(Session& s, core::Scene& scene, const core::Replay& played, const script::GameStatus& status) {
+std::string keepRun(EditorWindow& s, core::Scene& scene, const core::Replay& played, const script::GameStatus& status) {
   editor::LevelDocument& document = s.editor.document();
   if (document.modified()) document.save();
   core::Replay replay = played;
@@ -164,90 +164,67 @@ std::string keepRun(Session& s, core::Scene& scene, const core::Replay& played, 
                        : " but it does not pass headless: " + check.message);
 }
 
-// Plays the level as edited from the editor's cursor in the same window until Esc.
-void playFromCursor(Session& s) {
-  const stage::LevelPoint start = s.editor.playStart();
-  core::LevelOverride override{s.editor.document().text(), start};
-  std::unique_ptr<core::Scene> scene;
+// Plays the level as edited from the editor's cursor in the same window until Esc: a session
+// (session.h) like the game's and `play`'s, with their tools (the console, F2, F3, F5, F12); the
+// run stops at the goal, the picture goes on (the goal's flash fades), and K keeps the run.
+void playFromCursor(EditorWindow& w) {
+  const stage::LevelPoint start = w.editor.playStart();
+  std::unique_ptr<core::LiveScene> live;
   try {
-    scene = core::loadScene(s.scenePath, s.registry, nullptr, &override);
+    live = std::make_unique<core::LiveScene>(w.scenePath, w.registry, false,
+                                             core::LevelOverride{w.editor.document().text(), start});
   } catch (const std::exception& e) {
-    s.editor.say("cannot play: " + core::visibleText(core::errorReport(e)));
+    w.editor.say("cannot play: " + core::visibleText(core::errorReport(e)));
     return;
   }
-  core::System* rendering = scene->findSystem("rendering");
+  core::System* rendering = live->scene().findSystem("rendering");
   if (!rendering) {
-    s.editor.say("cannot play here: the scene does not name \"rendering\"");
+    w.editor.say("cannot play here: the scene does not name \"rendering\"");
     return;
   }
-  rendering->carryOver(*scene, s.window);  // the same window
-  core::ReplayRecorder recorder(core::portableScenePath(s.scenePath).value_or("scene.lua"), 60);
-  recorder.setStart(core::ReplayStart{start.face, start.position.x, start.position.y});
-  core::FixedStep clock(60);
-  core::InputEdges edges;
-  core::TapCarry taps;
-  GameView view;
-  view.step(*scene, statusOf(*scene), 1.0 / clock.hz());
-  std::string kept, error;
-  bool won = false, saidWon = false;
+  rendering->carryOver(live->scene(), w.window);  // the same window
+  session::Session s(std::move(live));
+  s.run().record({core::portableScenePath(w.scenePath).value_or("scene.lua"), 60, std::nullopt,
+                  core::ReplayStart{start.face, start.position.x, start.position.y}, 100});
+  std::string kept;
+  bool saidWon = false;
   std::printf("playing from face %d (%d, %d)\n", start.face, start.position.x, start.position.y);
   std::fflush(stdout);
-  auto previous = std::chrono::steady_clock::now();
+  const auto reached = [](const script::GameStatus& status) { return status.won; };
   for (;;) {
-    const core::WindowInput events = s.display.pollEvents();
-    auto pressed = [&](core::Key k) {
-      return std::find(events.pressed.begin(), events.pressed.end(), k) != events.pressed.end();
-    };
-    if (events.closed || pressed(core::Key::Escape)) break;
-    if (pressed(core::Key::Debug)) view.setDebug(!view.debug());
-    if (pressed(core::Key::Screenshot)) {
-      std::printf("%s\n", saveScreenshot(s.display).c_str());
-      std::fflush(stdout);
-    }
-    for (const core::KeyPress& key : events.keys)
-      if (key.name == "K" && won && kept.empty()) {
+    const core::WindowInput in = s.poll();
+    if (in.closed || std::find(in.pressed.begin(), in.pressed.end(), core::Key::Escape) != in.pressed.end()) break;
+    const bool won = s.status().won;  // the run ends at the goal: what is kept is the run that reached it
+    for (const core::KeyPress& key : in.keys)
+      if (key.name == "K" && won && kept.empty() && !s.consoleOpen()) {
         try {
-          kept = keepRun(s, *scene, recorder.replay(), statusOf(*scene));
-          std::printf("%s\n", kept.c_str());
-          std::fflush(stdout);
+          kept = keepRun(w, s.scene(), *s.run().recorded(), s.status());
         } catch (const std::exception& e) {
           kept = std::string("not kept: ") + e.what();
         }
+        std::printf("%s\n", kept.c_str());
+        std::fflush(stdout);
       }
-    taps.add(events.tapped);
-    const auto now = std::chrono::steady_clock::now();
-    const int due = clock.advance(std::chrono::duration_cast<std::chrono::nanoseconds>(now - previous).count());
-    previous = now;
-    for (int i = 0; i < due && !won; ++i) {
-      const uint8_t held = taps.next(events.held);
-      try {
-        scene->step(edges.next(held));
-      } catch (const std::exception& e) {
-        error = core::errorReport(e);
-      }
-      recorder.frame(held, scene->world().stateHash());
-      const script::GameStatus status = statusOf(*scene);
-      view.step(*scene, status, 1.0 / clock.hz());
-      won = status.won;  // the run ends at the goal: what is kept is the run that reached it
+    if (!won) {
+      s.playDue(in, 100, false, reached);
+    } else {
+      for (int due = s.framesDue(); due > 0; --due) s.idle();  // the goal's flash and confetti go on
     }
-    const script::GameStatus status = statusOf(*scene);
-    core::View v = view.view(*scene, won ? 1.0 : clock.alpha());
-    v.hud = hudLines(*scene, status);
-    v.hud.push_back("play-test from face " + std::to_string(start.face) + " (" + std::to_string(start.position.x) +
-                    ", " + std::to_string(start.position.y) + "): Esc goes back to the editor");
-    if (won && !saidWon) {
+    const script::GameStatus status = s.status();
+    if (status.won && !saidWon) {
       std::printf("goal reached at frame %llu\n", static_cast<unsigned long long>(status.wonFrame));
       std::fflush(stdout);
       saidWon = true;
     }
-    if (won) v.hud.push_back(kept.empty() ? "goal reached: K keeps this run as a test beside the level" : kept);
-    v.error = error;
-    s.display.present(v, view.drawing(won ? 1.0 : clock.alpha()));
-    if (due == 0) std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    std::vector<std::string> more{"play-test from face " + std::to_string(start.face) + " (" +
+                                  std::to_string(start.position.x) + ", " + std::to_string(start.position.y) +
+                                  "): Esc goes back to the editor"};
+    if (status.won) more.push_back(kept.empty() ? "goal reached: K keeps this run as a test beside the level" : kept);
+    s.draw({}, more);
   }
-  s.editor.say(kept.empty()
-                   ? std::string(won ? "back from a run that reached the goal (not kept)" : "back from the play-test")
-                   : kept);
+  w.editor.say(kept.empty() ? std::string(s.status().won ? "back from a run that reached the goal (not kept)"
+                                                         : "back from the play-test")
+                            : kept);
 }
 
 }  // namespace
@@ -322,7 +299,7 @@ int editLevel(const LevelArgument& level, core::SystemRegistry& registry, core::
   std::printf("editing %s (the window lists the keys at its top; docs/editing.md tells more)\n",
               level.levelFile.c_str());
   std::fflush(stdout);
-  Session session{scenePath, registry, *window, *display, *editor};
+  EditorWindow session{scenePath, registry, *window, *display, *editor};
   int frames = 0;
   bool closed = false;
   for (;;) {

@@ -17,17 +17,17 @@
 #include "commands.h"
 #include "edit_command.h"
 #include "engine_registry.h"
-#include "game_view.h"
 #include "pack_command.h"
 #include "platon/core/audio.h"
 #include "platon/core/data_root.h"
 #include "platon/core/display.h"
-#include "platon/core/fixed_step.h"
 #include "platon/core/live_scene.h"
 #include "platon/core/manifest.h"
 #include "platon/core/replay.h"
+#include "platon/core/run.h"
 #include "platon/core/visible_text.h"
 #include "platon/script/script_system.h"
+#include "platon/session/session.h"
 #include "save_file.h"
 #include "settings.h"
 
@@ -49,7 +49,8 @@ class LevelRecorder {
  public:
   explicit LevelRecorder(std::string folder) : folder_(std::move(folder)) {}
   bool on() const { return !folder_.empty(); }
-  void start(const CampaignLevel& level, core::Scene& loaded, int speed) {
+  // Records `run` of `level` from its next frame on.
+  void start(const CampaignLevel& level, core::Run& run, int speed) {
     if (!on()) return;
     level_ = level.folder;
     // Named from the game's data folder or the current one (a replay names no absolute path); a
@@ -60,31 +61,22 @@ class LevelRecorder {
                    level.folder.c_str(), level.scene.c_str());
       return;
     }
-    recorder_.emplace(*scene, 60, core::sceneFilesHash(core::sceneSourceFiles(loaded)));
-    recorder_->setSpeed(speed);
+    run.record({*scene, 60, core::sceneFilesHash(core::sceneSourceFiles(run.scene())), std::nullopt, speed});
   }
-  void frame(uint8_t held, uint64_t stateHash) {
-    if (recorder_) recorder_->frame(held, stateHash);
-  }
-  void console(const std::string& code) {
-    if (recorder_) recorder_->console(code);
-  }
-  // Writes what was played since start() (nothing when no frame was); "" or what went wrong.
-  std::string finish() {
-    if (!recorder_) return "";
-    const core::Replay replay = recorder_->replay();
-    recorder_.reset();
-    if (replay.frames() == 0) return "";
+  // Writes what `run` recorded since start() (nothing when no frame was); "" or what went wrong.
+  std::string finish(core::Run& run) {
+    const std::optional<core::Replay> replay = run.stopRecording();
+    if (!replay || replay->frames() == 0) return "";
     std::string path;
     for (int n = 1; path.empty() || std::filesystem::exists(path); ++n)
       path = folder_ + "/" + level_ + (n == 1 ? "" : "-" + std::to_string(n)) + ".replay";
     try {
       std::filesystem::create_directories(folder_);
-      core::writeReplay(replay, path);
+      core::writeReplay(*replay, path);
     } catch (const std::exception& e) {
       return std::string("recording not written: ") + e.what();
     }
-    std::printf("recorded %s: %llu frames to %s\n", level_.c_str(), static_cast<unsigned long long>(replay.frames()),
+    std::printf("recorded %s: %llu frames to %s\n", level_.c_str(), static_cast<unsigned long long>(replay->frames()),
                 path.c_str());
     std::fflush(stdout);
     return "";
@@ -93,7 +85,6 @@ class LevelRecorder {
  private:
   std::string folder_;
   std::string level_;
-  std::optional<core::ReplayRecorder> recorder_;
 };
 
 class Game {
@@ -108,7 +99,7 @@ class Game {
     std::vector<std::string> problems;
     settings_ = Settings::load(settingsPath_, problems);
     for (const std::string& p : problems) std::fprintf(stderr, "%s\n", core::visibleText(p, true).c_str());
-    if (!problems.empty()) notice_ = core::visibleText(problems.front(), false);
+    for (const std::string& p : problems) say(p);
     for (const CampaignLevel& l : levels_) {  // the names players see; a broken manifest shows its folder
       try {
         names_.push_back(core::loadManifest(l.scene).name);
@@ -123,14 +114,21 @@ class Game {
 
  private:
   bool load(size_t level);
-  core::Display* display() { return live_ ? displayOf(live_->scene()) : nullptr; }
+  core::Display* display() { return session_ ? session_->display() : nullptr; }
   // The scene's audio controls, when it names "audio" (else the game is silent and nothing asks).
   core::AudioControls* audio() {
-    core::System* system = live_ ? live_->scene().findSystem("audio") : nullptr;
+    core::System* system = session_ ? session_->scene().findSystem("audio") : nullptr;
     return system ? system->audio() : nullptr;
   }
   void sound(const char* name) {
     if (core::AudioControls* a = audio()) a->playNow(name);
+  }
+  // A line under the heads-up text that fades (session.h); kept until the first level is loaded.
+  void say(const std::string& text) {
+    if (session_)
+      session_->say(text);
+    else
+      pending_.push_back(text);
   }
   // The title has its own tune; the pause menu holds effects and music; play and the level-complete
   // screen (whose goal sound is still ringing) go on.
@@ -140,50 +138,40 @@ class Game {
     a->setPaused(screen_ == Screen::Paused);
     if (screen_ == Screen::Title) a->playTune("title");
   }
-  script::GameStatus status() { return statusOf(live_->scene()); }
+  script::GameStatus status() { return session_->status(); }
   void handle(const core::WindowInput& input);
+  void menuKey(core::Key key);
   void play() {
     screen_ = Screen::Playing;
     std::printf("playing %s\n", levels_[level_].folder.c_str());
     std::fflush(stdout);
-    recording_.start(levels_[level_], live_->scene(), settings_.gameSpeed);
+    recording_.start(levels_[level_], session_->run(), settings_.gameSpeed);
   }
   void finishRecording() {
-    if (std::string error = recording_.finish(); !error.empty()) {
-      notice_ = error;
+    if (!session_) return;
+    if (std::string error = recording_.finish(session_->run()); !error.empty()) {
+      say(error);
       std::fprintf(stderr, "%s\n", error.c_str());
     }
   }
+  // After every reload (a saved file, F5, back from the editor): the frames recorded so far were
+  // played on the version before.
   void afterReload(const core::ReloadReport& r) {
-    notice_ = r.ok ? "reloaded" : "reload refused: " + r.error;
-    if (r.ok) {
-      std::printf("reloaded %s\n", levels_[level_].folder.c_str());
-      finishRecording();  // the frames so far were played on the version before
-    }
-  }
-  // F4 while playing: the editor on this level in the same window; back here, the level reloaded
-  // (the game's hot reload, which keeps the player where it was when the level still allows it).
-  void editThisLevel() {
-    std::printf("editing %s (F4)\n", levels_[level_].folder.c_str());
+    if (!r.ok) return;
+    std::printf("reloaded %s\n", levels_[level_].folder.c_str());
     std::fflush(stdout);
-    try {
-      if (editLevel(levelArgument(levels_[level_].scene), registry_, live_->scene().findSystem("rendering")) ==
-          kWindowClosed)
-        quit_ = true;
-    } catch (const std::exception& e) {
-      notice_ = e.what();
-    }
-    afterReload(live_->reload({"the editor"}));
-    std::printf("back from the editor: %s\n", core::visibleText(notice_, true).c_str());
-    std::fflush(stdout);
-    edges_.reset();
-    taps_.reset();
+    finishRecording();
   }
-  void stepSimulation(int due, uint8_t held);
-  // The console (`): a line of Lua run in the level's sandbox between frames, recorded in the
-  // replay; the level waits while it is open. True when the key was the console's.
-  bool consoleKey(core::Key key);
-  void runConsoleLine();
+  // F4 while playing: the editor on this level in the same window; back here, the session reloads
+  // the level (the game's hot reload, which keeps the player where it was when the level allows it).
+  bool editThisLevel() {
+    const bool open = editLevel(levelArgument(levels_[level_].scene), registry_,
+                                session_->scene().findSystem("rendering")) != kWindowClosed;
+    std::printf("back from the editor\n");
+    std::fflush(stdout);
+    return open;
+  }
+  void stepSimulation(const core::WindowInput& input);
   // The settings screen (from the title and the pause menu): volumes and screen shake, applied at
   // once and saved as the screen is left.
   void openSettings() {
@@ -196,11 +184,11 @@ class Game {
   void applySettings() {
     if (core::AudioControls* a = audio())
       a->setVolumes(static_cast<float>(settings_.musicVolume) / 100, static_cast<float>(settings_.effectsVolume) / 100);
-    view_.feedback().setShake(settings_.screenShake);
+    session_->view().feedback().setShake(settings_.screenShake);
     if (core::Display* d = display()) {
       try {
         for (const std::string& name : d->setBindings(settings_.keys))
-          notice_ = "settings: no key is named '" + core::visibleText(name, false) + "'; it binds nothing";
+          say("settings: no key is named '" + core::visibleText(name, false) + "'; it binds nothing");
         // Only what changed: a window made full screen again, or its swap interval set again,
         // costs a reconfiguration (and start-up time) for nothing.
         if (applied_.fullscreen != settings_.fullscreen) d->setFullscreen(settings_.fullscreen);
@@ -208,37 +196,26 @@ class Game {
         if (applied_.multisamples != settings_.multisamples) d->setMultisamples(settings_.multisamples);
         applied_ = settings_;
       } catch (const std::exception& e) {  // no display: the game says so when it opens
-        notice_ = e.what();
+        say(e.what());
       }
     }
   }
-  core::TapCarry taps_;  // taps between frames, played on the next
-  void draw(double alpha);
+  void draw();
   std::vector<std::string> titleLines() const;
 
   std::vector<CampaignLevel> levels_;
   std::vector<std::string> names_;
   Progress progress_;
   core::SystemRegistry registry_;
-  std::unique_ptr<core::LiveScene> live_;
-  GameView view_;
-  core::FixedStep clock_{60};
-  core::InputEdges edges_;
+  std::optional<session::Session> session_;  // the level loaded, its run, picture and tools
+  std::vector<std::string> pending_;         // notices from before the first level loaded
   Screen screen_ = Screen::Title;
   size_t level_ = 0;     // the level loaded (playing, or shown behind the title)
   size_t selected_ = 0;  // the title screen's cursor
   bool loaded_ = false;  // a load happened this loop: its time is not play time
   int menuItem_ = 0;
   bool quit_ = false;
-  bool showFps_ = false;
-  bool consoleOpen_ = false;
-  bool consoleTyped_ = false;  // the console was open during the latest poll
-  std::string consoleLine_;
-  std::vector<std::string> consoleLog_;  // the lines typed and their answers, the latest last
-  std::string notice_;                   // a line under the heads-up text (a failed save, a refused reload)
-  std::string lastFrameError_;           // printed once, not on every frame it repeats
   LevelRecorder recording_;
-  std::chrono::steady_clock::time_point freezeUntil_{};
   Settings settings_;
   Settings applied_;  // what the window was last told (full screen, vsync, samples): at first, how it opens
   std::string settingsPath_;
@@ -249,34 +226,30 @@ class Game {
 
 bool Game::load(size_t level) {
   finishRecording();  // the level played so far ends here, whether or not the next one loads
-  core::System* previous = live_ ? live_->scene().findSystem("rendering") : nullptr;
   std::unique_ptr<core::LiveScene> next;
   try {
     next = std::make_unique<core::LiveScene>(levels_[level].scene, registry_, true);
   } catch (const std::exception& e) {
-    notice_ = core::errorReport(e);
-    std::fprintf(stderr, "%s\n", core::visibleText(notice_, true).c_str());
+    const std::string why = core::errorReport(e);
+    std::fprintf(stderr, "%s\n", core::visibleText(why, true).c_str());
+    say(why);
     return false;
   }
-  core::System* rendering = next->scene().findSystem("rendering");
-  if (!rendering) {
-    notice_ = levels_[level].scene + ": the scene does not name \"rendering\"";
+  if (!next->scene().findSystem("rendering")) {
+    say(levels_[level].scene + ": the scene does not name \"rendering\"");
     return false;
   }
-  if (previous) rendering->carryOver(next->scene(), *previous);  // the same window
-  live_ = std::move(next);
+  if (session_) {
+    session_->replace(std::move(next));  // the same window
+  } else {
+    session_.emplace(std::move(next));
+    session_->edit = [this] { return editThisLevel(); };
+    session_->reloaded = [this](const core::ReloadReport& r) { afterReload(r); };
+    for (const std::string& notice : pending_) session_->say(notice);
+    pending_.clear();
+  }
   level_ = level;
   loaded_ = true;
-  notice_.clear();
-  lastFrameError_.clear();
-  consoleOpen_ = false;
-  consoleLog_.clear();
-  const bool debug = view_.debug();  // the overlay stays on from one level to the next
-  view_ = GameView{};
-  view_.setDebug(debug);
-  view_.step(live_->scene(), status(), 1.0 / clock_.hz());
-  edges_.reset();
-  taps_.reset();
   applySettings();
   return true;
 }
@@ -288,13 +261,13 @@ std::vector<std::string> Game::titleLines() const {
     const LevelRecord* r = progress_.record(levels_[i].folder);
     std::string line = (i == selected_ ? "> " : "  ") + std::to_string(i + 1) + ". " + names_[i];
     if (r) {
-      line += "   done " + clockText(r->bestFrames) + ", " + std::to_string(r->fewestDeaths) +
+      line += "   done " + session::clockText(r->bestFrames) + ", " + std::to_string(r->fewestDeaths) +
               (r->fewestDeaths == 1 ? " death" : " deaths");
       if (levels_[i].parFrames) line += r->bestFrames <= levels_[i].parFrames ? "  * par" : "";
     } else if (!progress_.open(levels_, i)) {
       line += "   (locked)";
     } else if (levels_[i].parFrames) {
-      line += "   par " + clockText(levels_[i].parFrames, false);
+      line += "   par " + session::clockText(levels_[i].parFrames, false);
     }
     if (i == selected_) line += " <";
     lines.push_back(line);
@@ -314,77 +287,64 @@ void Game::handle(const core::WindowInput& input) {
     std::printf("paused: the window lost the focus\n");
     std::fflush(stdout);
   }
-  consoleTyped_ = consoleOpen_;
-  if (consoleOpen_)
-    for (const char c : input.text)
-      if (c != '`' && consoleLine_.size() < 400) consoleLine_ += c;
-  for (const core::KeyPress& key : input.keys)
-    if (key.name == "F4" && screen_ == Screen::Playing && live_ && !consoleOpen_) return editThisLevel();
-  for (const core::Key key : input.pressed) {
-    if (consoleKey(key)) continue;
-    if (key == core::Key::ShowFps) showFps_ = !showFps_;
-    if (key == core::Key::Debug) view_.setDebug(!view_.debug());
-    if (key == core::Key::Screenshot)
-      if (core::Display* d = display()) {
-        notice_ = saveScreenshot(*d);
-        std::printf("%s\n", notice_.c_str());
-        std::fflush(stdout);
-      }
-    switch (screen_) {
-      case Screen::Title:
-        if (key == core::Key::Escape) quit_ = true;
-        if (key == core::Key::Settings) openSettings();
-        if ((key == core::Key::Up || key == core::Key::Down) && levels_.size() > 1) {
-          // The cursor moves whether or not the level loads (a broken one says why on the HUD);
-          // behind the title, the chosen level's stage when it does.
-          selected_ = key == core::Key::Up ? (selected_ + levels_.size() - 1) % levels_.size()
-                                           : (selected_ + 1) % levels_.size();
-          load(selected_);
-          sound("menu_move");
-        }
-        if (key == core::Key::Enter && !progress_.open(levels_, selected_)) sound("menu_move");  // locked
-        if (key == core::Key::Enter && progress_.open(levels_, selected_) && load(selected_))
-          sound("menu_select"), play();
-        break;
-      case Screen::Playing:
-        if (key == core::Key::Escape) screen_ = Screen::Paused, menuItem_ = 0;
-        if (key == core::Key::Reload) afterReload(live_->reload({"F5"}));
-        break;
-      case Screen::Paused:
-        if (key == core::Key::Escape) screen_ = Screen::Playing;
-        if (key == core::Key::Up) menuItem_ = (menuItem_ + kPauseCount - 1) % kPauseCount, sound("menu_move");
-        if (key == core::Key::Down) menuItem_ = (menuItem_ + 1) % kPauseCount, sound("menu_move");
-        if (key == core::Key::Enter) {
-          sound("menu_select");
-          if (menuItem_ == 0) screen_ = Screen::Playing;
-          if (menuItem_ == 1 && load(level_)) play();
-          if (menuItem_ == 2) finishRecording(), screen_ = Screen::Title, selected_ = level_;
-          if (menuItem_ == 3) openSettings();
-          if (menuItem_ == 4) quit_ = true;
-        }
-        break;
-      case Screen::Settings:
-        settingsKey(key);
-        break;
-      case Screen::Complete:
-        if (key == core::Key::Enter || key == core::Key::Escape) {
-          if (level_ + 1 < levels_.size() && key == core::Key::Enter) {
-            if (load(level_ + 1)) play();
-          } else {  // the level select, its cursor on the next level (now open)
-            screen_ = Screen::Title;
-            selected_ = level_ + 1 < levels_.size() ? level_ + 1 : level_;
-            load(selected_);
-          }
-        }
-        break;
-    }
-  }
+  for (const core::Key key : input.pressed) menuKey(key);
   holdSound();
+}
+
+void Game::menuKey(core::Key key) {
+  switch (screen_) {
+    case Screen::Title:
+      if (key == core::Key::Escape) quit_ = true;
+      if (key == core::Key::Settings) openSettings();
+      if ((key == core::Key::Up || key == core::Key::Down) && levels_.size() > 1) {
+        // The cursor moves whether or not the level loads (a broken one says why on the HUD);
+        // behind the title, the chosen level's stage when it does.
+        selected_ =
+            key == core::Key::Up ? (selected_ + levels_.size() - 1) % levels_.size() : (selected_ + 1) % levels_.size();
+        load(selected_);
+        sound("menu_move");
+      }
+      if (key == core::Key::Enter && !progress_.open(levels_, selected_)) sound("menu_move");  // locked
+      if (key == core::Key::Enter && progress_.open(levels_, selected_) && load(selected_))
+        sound("menu_select"), play();
+      break;
+    case Screen::Playing:
+      if (key == core::Key::Escape) screen_ = Screen::Paused, menuItem_ = 0;
+      break;
+    case Screen::Paused:
+      if (key == core::Key::Escape) screen_ = Screen::Playing, session_->hold();
+      if (key == core::Key::Up) menuItem_ = (menuItem_ + kPauseCount - 1) % kPauseCount, sound("menu_move");
+      if (key == core::Key::Down) menuItem_ = (menuItem_ + 1) % kPauseCount, sound("menu_move");
+      if (key == core::Key::Enter) {
+        sound("menu_select");
+        if (menuItem_ == 0) screen_ = Screen::Playing, session_->hold();
+        if (menuItem_ == 1 && load(level_)) play();
+        if (menuItem_ == 2) finishRecording(), screen_ = Screen::Title, selected_ = level_;
+        if (menuItem_ == 3) openSettings();
+        if (menuItem_ == 4) quit_ = true;
+      }
+      break;
+    case Screen::Settings:
+      settingsKey(key);
+      break;
+    case Screen::Complete:
+      if (key == core::Key::Enter || key == core::Key::Escape) {
+        if (level_ + 1 < levels_.size() && key == core::Key::Enter) {
+          if (load(level_ + 1)) play();
+        } else {  // the level select, its cursor on the next level (now open)
+          screen_ = Screen::Title;
+          selected_ = level_ + 1 < levels_.size() ? level_ + 1 : level_;
+          load(selected_);
+        }
+      }
+      break;
+  }
 }
 
 namespace {
 const char* const kBoundNames[core::KeyBindings::kBound] = {"Left", "Right", "Up", "Down", "Jump", "Restart"};
-constexpr int kSettingsItems = 14;  // 7 settings, 6 keys, back
+constexpr int kFirstKeyItem = 7;                                               // after the 7 settings
+constexpr int kSettingsItems = kFirstKeyItem + core::KeyBindings::kBound + 1;  // the keys, then Back
 }  // namespace
 
 void Game::settingsKey(core::Key key) {
@@ -415,15 +375,27 @@ void Game::settingsKey(core::Key key) {
       settings_.gameSpeed = std::clamp(settings_.gameSpeed + 10 * step, 50, 100);
       changed = step;
       break;
+    case 6: {  // auto (-1), off, 2x, 4x, 8x
+      static constexpr int kSamples[] = {-1, 0, 2, 4, 8};
+      const int at = static_cast<int>(std::find(std::begin(kSamples), std::end(kSamples), settings_.multisamples) -
+                                      std::begin(kSamples));
+      int next = at < 5 ? at : 0;
+      next = step ? std::clamp(next + step, 0, 4) : enter ? (next + 1) % 5 : next;
+      changed = kSamples[next] != settings_.multisamples;
+      settings_.multisamples = kSamples[next];
+      break;
+    }
     default:
       changed = false;
-      if (enter && settingsItem_ < 12) binding_ = settingsItem_ - 6;  // the next key pressed
+      // The rows after the seven settings are the buttons' keys, in kBoundNames' order.
+      if (enter && settingsItem_ >= kFirstKeyItem && settingsItem_ < kFirstKeyItem + core::KeyBindings::kBound)
+        binding_ = settingsItem_ - kFirstKeyItem;  // the next key pressed
   }
   if (changed) applySettings(), sound("menu_move");
-  if (key == core::Key::Escape || (enter && settingsItem_ == 13)) {
+  if (key == core::Key::Escape || (enter && settingsItem_ == kSettingsItems - 1)) {
     screen_ = settingsFrom_;
     if (const std::string error = settings_.save(settingsPath_); !error.empty()) {
-      notice_ = error;
+      say(error);
       std::fprintf(stderr, "%s\n", error.c_str());
     }
     std::printf("settings: music %d%%, effects %d%%, screen shake %s, game speed %d%%\n", settings_.musicVolume,
@@ -476,121 +448,60 @@ std::vector<std::string> Game::settingsLines() const {
   return lines;
 }
 
-bool Game::consoleKey(core::Key key) {
-  if (!consoleOpen_) {
-    if (key != core::Key::Console || screen_ != Screen::Playing) return false;
-    if (!dynamic_cast<script::ScriptSystem*>(live_->scene().findSystem("scripting"))) {
-      notice_ = "the console runs Lua in the level's scripts: this level has none";
-      return true;
-    }
-    consoleOpen_ = consoleTyped_ = true;
-    consoleLine_.clear();
-    return true;
-  }
-  if (key == core::Key::Screenshot || key == core::Key::ShowFps || key == core::Key::Debug) return false;
-  if (key == core::Key::Console || key == core::Key::Escape) consoleOpen_ = false;
-  if (key == core::Key::Backspace)
-    while (!consoleLine_.empty()) {  // a whole UTF-8 character
-      const auto last = static_cast<unsigned char>(consoleLine_.back());
-      consoleLine_.pop_back();
-      if ((last & 0xC0) != 0x80) break;
-    }
-  if (key == core::Key::Enter) runConsoleLine();
-  return true;  // the game's other keys wait while the console is open
-}
-
-void Game::runConsoleLine() {
-  if (consoleLine_.empty()) return;
-  auto* scripts = dynamic_cast<script::ScriptSystem*>(live_->scene().findSystem("scripting"));
-  if (!scripts) return;
-  // Run before the next frame, and recorded there: a replay runs it at the same place.
-  const script::ScriptSystem::ConsoleAnswer answer = scripts->console(consoleLine_);
-  recording_.console(consoleLine_);
-  std::printf("console> %s\n%s\n", consoleLine_.c_str(), answer.text.c_str());
-  std::fflush(stdout);
-  consoleLog_.push_back("> " + core::visibleText(consoleLine_, false));
-  if (!answer.text.empty()) {
-    std::string shown = core::visibleText(answer.text, false);
-    if (shown.size() > 160) shown = shown.substr(0, 157) + "...";
-    consoleLog_.push_back((answer.ok ? "" : "error: ") + shown);
-  }
-  if (consoleLog_.size() > 6) consoleLog_.erase(consoleLog_.begin(), consoleLog_.end() - 6);
-  consoleLine_.clear();
-}
-
-void Game::stepSimulation(int due, uint8_t held) {
+void Game::stepSimulation(const core::WindowInput& input) {
   // The level-complete screen: the picture goes on (the goal's confetti falls), the game does not.
-  if (screen_ == Screen::Complete)
-    for (int s = 0; s < due; ++s) view_.idle(live_->scene());
-  for (int s = 0; s < due && screen_ == Screen::Playing && !consoleOpen_; ++s) {
-    const uint8_t buttons = taps_.next(held);
-    if (std::optional<std::string> error = live_->step(edges_.next(buttons)); error && *error != lastFrameError_) {
-      std::fprintf(stderr, "frame error (the game goes on):\n%s\n", core::visibleText(*error, true).c_str());
-      lastFrameError_ = *error;
-    }
-    recording_.frame(buttons, live_->scene().world().stateHash());
-    const script::GameStatus st = status();
-    view_.step(live_->scene(), st, 1.0 / clock_.hz());
-    // A hard event holds the picture a moment (the simulation waits with it: no frame is lost).
-    if (const int frames = view_.feedback().takeFreeze(); frames > 0) {
-      freezeUntil_ = std::chrono::steady_clock::now() + std::chrono::milliseconds(1000 * frames / 60);
-      break;
-    }
-    if (st.won) {
-      std::printf("level complete: %s in %s with %d deaths\n", levels_[level_].folder.c_str(),
-                  clockText(st.wonFrame).c_str(), st.deaths);
-      std::fflush(stdout);
-      if (!progress_.finish(levels_[level_].folder, st.wonFrame, st.deaths)) notice_ = progress_.lastError();
-      screen_ = Screen::Complete;
-      finishRecording();
-    }
+  if (screen_ == Screen::Complete) {
+    for (int due = session_->framesDue(); due > 0; --due) session_->idle();
+    return;
   }
+  if (screen_ != Screen::Playing) {
+    session_->hold();  // a menu's time is not play time
+    return;
+  }
+  const auto reached = [](const script::GameStatus& st) { return st.won; };
+  session_->playDue(input, settings_.gameSpeed, false, reached);
+  const script::GameStatus st = status();
+  if (!st.won) return;
+  std::printf("level complete: %s in %s with %d deaths\n", levels_[level_].folder.c_str(),
+              session::clockText(st.wonFrame).c_str(), st.deaths);
+  std::fflush(stdout);
+  if (!progress_.finish(levels_[level_].folder, st.wonFrame, st.deaths)) say(progress_.lastError());
+  screen_ = Screen::Complete;
+  finishRecording();
 }
 
-void Game::draw(double alpha) {
-  core::Display* d = display();
-  if (!d) return;
-  core::Scene& scene = live_->scene();
+void Game::draw() {
   const script::GameStatus st = status();
-  core::View view = view_.view(scene, alpha);
-  view.showFps = showFps_;
-  view.error = live_->lastError();
-  if (screen_ != Screen::Title) {
-    view.hud = hudLines(scene, st);
-  }
-  if (!notice_.empty()) view.hud.push_back(notice_);
-  if (consoleOpen_) {
-    view.hud.emplace_back("console (Lua in the level's sandbox; Enter runs, ` or Esc closes):");
-    view.hud.insert(view.hud.end(), consoleLog_.begin(), consoleLog_.end());
-    view.hud.push_back("> " + core::visibleText(consoleLine_, false) + "_");
-  }
+  std::vector<std::string> centre;
   switch (screen_) {
     case Screen::Title:
-      view.centreText = titleLines();
+      centre = titleLines();
       break;
     case Screen::Paused:
-      view.centreText = {"Paused"};
+      centre = {"Paused"};
       for (int i = 0; i < kPauseCount; ++i)
-        view.centreText.push_back((i == menuItem_ ? "> " : "  ") + std::string(kPauseItems[i]) +
-                                  (i == menuItem_ ? " <" : ""));
+        centre.push_back((i == menuItem_ ? "> " : "  ") + std::string(kPauseItems[i]) + (i == menuItem_ ? " <" : ""));
       break;
-    case Screen::Complete:
-      view.centreText = {"Level complete!",
-                         clockText(st.wonFrame) + "    " + std::to_string(st.deaths) + " deaths" +
-                             (levels_[level_].parFrames == 0 ? ""
-                              : st.wonFrame <= levels_[level_].parFrames
-                                  ? "    under par (" + clockText(levels_[level_].parFrames, false) + ")!"
-                                  : "    par " + clockText(levels_[level_].parFrames, false)),
-                         level_ + 1 < levels_.size() ? "Enter: next level    Esc: level select"
-                                                     : "The campaign is done. Enter: level select"};
+    case Screen::Complete: {
+      const uint64_t par = levels_[level_].parFrames;
+      centre = {"Level complete!",
+                session::clockText(st.wonFrame) + "    " + std::to_string(st.deaths) + " deaths" +
+                    (par == 0             ? ""
+                     : st.wonFrame <= par ? "    under par (" + session::clockText(par, false) + ")!"
+                                          : "    par " + session::clockText(par, false)),
+                level_ + 1 < levels_.size() ? "Enter: next level    Esc: level select"
+                                            : "The campaign is done. Enter: level select"};
       break;
+    }
     case Screen::Settings:
-      view.centreText = settingsLines();
+      centre = settingsLines();
       break;
     case Screen::Playing:
       break;
   }
-  d->present(view, view_.drawing(alpha));
+  // The level's heads-up lines belong to the level: not behind the title or the settings.
+  const bool hud = screen_ == Screen::Playing || screen_ == Screen::Paused || screen_ == Screen::Complete;
+  session_->draw(centre, {}, hud);
 }
 
 int Game::run(bool quitAfterFirstFrame, const std::string& firstFrameShot) {
@@ -608,30 +519,20 @@ int Game::run(bool quitAfterFirstFrame, const std::string& firstFrameShot) {
     std::fprintf(stderr, "%s\n", e.what());
     return 1;
   }
-  auto previous = std::chrono::steady_clock::now();
   bool titleShown = false;
   while (!quit_) {
-    if (std::optional<core::ReloadReport> r = live_->poll(0)) afterReload(*r);
-    core::Display* d = display();
-    if (!d) return 1;
-    const core::WindowInput input = d->pollEvents();
+    session_->reloadIfSaved();
+    if (!display()) return 1;
+    // The console and the editor (F4) are for the level being played, not the menus.
+    session_->consoleAllowed = screen_ == Screen::Playing;
+    const core::WindowInput input = session_->poll();
     loaded_ = false;
     handle(input);
     if (quit_) break;
-    d = display();  // a load in handle() replaced the scene, and with it the rendering system
-    if (!d) return 1;
-    if (loaded_) previous = std::chrono::steady_clock::now();  // loading is not play time
-    const auto now = std::chrono::steady_clock::now();
-    if (now < freezeUntil_) previous = now;  // frozen: the time passes unplayed
-    // The assist mode slows the game's pace, never its frames: a slowed run replays bit for bit.
-    const int due = clock_.advance(std::chrono::duration_cast<std::chrono::nanoseconds>(now - previous).count() *
-                                   settings_.gameSpeed / 100);
-    previous = now;
-    // A menu's keys are not the game's, nor are the letters typed into the console (an R would
-    // restart the level once it closed).
-    if (screen_ == Screen::Playing && !consoleTyped_) taps_.add(input.tapped);
-    stepSimulation(due, consoleTyped_ ? 0 : input.held);
-    draw(screen_ == Screen::Playing ? clock_.alpha() : 1.0);
+    if (!display()) return 1;       // a load in handle() replaced the scene, and with it the rendering system
+    if (loaded_) session_->hold();  // loading is not play time
+    stepSimulation(input);
+    draw();
     if (!titleShown) {  // the window shows the title and reads keys from now on (tests wait for it)
       titleShown = true;
       std::printf("title screen: %zu levels\n", levels_.size());
@@ -639,14 +540,13 @@ int Game::run(bool quitAfterFirstFrame, const std::string& firstFrameShot) {
     }
     if (!firstFrameShot.empty()) {
       try {
-        d->saveScreenshot(firstFrameShot);
+        display()->saveScreenshot(firstFrameShot);
       } catch (const std::exception& e) {
         std::fprintf(stderr, "%s\n", e.what());
         return 1;
       }
     }
     if (quitAfterFirstFrame) break;
-    if (due == 0) std::this_thread::sleep_for(std::chrono::milliseconds(1));  // no vsync: do not spin
   }
   finishRecording();
   const script::GameStatus st = status();

@@ -23,15 +23,15 @@
 #include "commands.h"
 #include "edit_command.h"
 #include "engine_registry.h"
-#include "game_view.h"
 #include "level_argument.h"
 #include "platon/core/data_root.h"
 #include "platon/core/display.h"
-#include "platon/core/fixed_step.h"
 #include "platon/core/live_scene.h"
 #include "platon/core/replay.h"
+#include "platon/core/run.h"
 #include "platon/core/visible_text.h"
 #include "platon/script/script_system.h"
+#include "platon/session/session.h"
 #include "save_file.h"
 
 namespace platon::app {
@@ -130,240 +130,209 @@ bool frameCount(const char* text, uint64_t& out) {
 
 int playUsage() { return usageError("play"); }
 
-script::ScriptSystem* scriptsOf(core::Scene& scene) {
-  return dynamic_cast<script::ScriptSystem*>(scene.findSystem("scripting"));
+// What `platon play` was asked.
+struct PlayOptions {
+  std::string scenePath, inputPath, recordPath, shotPath;
+  uint64_t frames = 0;
+  bool watch = false, fast = false, headless = false;
+};
+
+// Reads the arguments; false (after saying why) when they are wrong.
+bool readPlayOptions(int argc, char** argv, PlayOptions& o) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--frames" && i + 1 < argc) {
+      if (!frameCount(argv[++i], o.frames))
+        return std::fprintf(stderr, "platon play: --frames %s: expected a whole number of frames from 1\n", argv[i]),
+               false;
+    } else if (a == "--input" && i + 1 < argc) {
+      o.inputPath = argv[++i];
+    } else if (a == "--record" && i + 1 < argc) {
+      o.recordPath = argv[++i];
+    } else if (a == "--shot" && i + 1 < argc) {
+      o.shotPath = argv[++i];
+    } else if (a == "--watch" || a == "--fast" || a == "--headless") {
+      (a == "--watch" ? o.watch : a == "--fast" ? o.fast : o.headless) = true;
+    } else if (o.scenePath.empty() && !a.empty() && a[0] != '-') {
+      o.scenePath = a;  // a level, in any of its forms (level_argument.h): made its scene.lua below
+    } else {
+      return false;
+    }
+  }
+  return !o.scenePath.empty() || !o.inputPath.empty();
 }
 
-// One picture: the stage from the camera, the scripts' shapes, the heads-up lines and the last error.
-void show(core::Display& display, core::LiveScene& live, const GameView& gameView, double alpha, bool showFps = false) {
-  core::Scene& scene = live.scene();
-  const script::GameStatus status = statusOf(scene);
-  core::View view = gameView.view(scene, alpha);
-  view.hud = hudLines(scene, status);
-  view.error = live.lastError();
-  view.showFps = showFps;
-  display.present(view, gameView.drawing(alpha));
+// The scene to play: the one named (a level's folder or .level file: its scene.lua, kept
+// relative, as a recording names it), or the replay's. "" after saying why when there is none.
+std::string sceneToPlay(const PlayOptions& o, const core::Replay& input) {
+  if (o.scenePath.empty()) return input.scene;
+  if (o.scenePath.size() >= 4 && o.scenePath.compare(o.scenePath.size() - 4, 4, ".lua") == 0) return o.scenePath;
+  try {
+    const std::string scene = levelArgument(o.scenePath).scene;
+    if (scene.empty()) std::fprintf(stderr, "platon play: no scene.lua beside the level file\n");
+    return scene;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "platon play: %s\n", e.what());
+    return "";
+  }
+}
+
+// What the level said and did, as it happens: its messages, its goal.
+class PlayReport {
+ public:
+  void after(session::Session& s) {
+    script::ScriptSystem* scripts = dynamic_cast<script::ScriptSystem*>(s.scene().findSystem("scripting"));
+    if (!scripts) return;
+    const script::GameStatus status = scripts->status();
+    const auto frame = static_cast<unsigned long long>(s.run().frame());
+    if (status.message != lastMessage_) {
+      std::printf("frame %llu: %s\n", frame, core::visibleText(status.message).c_str());  // no terminal escapes
+      lastMessage_ = status.message;
+    }
+    if (status.won && !won_) {
+      won_ = true;
+      std::printf("goal reached at frame %llu: %.2f s played, %d deaths\n",
+                  static_cast<unsigned long long>(status.wonFrame), static_cast<double>(status.time) / 60.0,
+                  status.deaths);
+    }
+  }
+  bool won() const { return won_; }
+
+ private:
+  std::string lastMessage_;
+  bool won_ = false;
+};
+
+// The play: the session's frames until --frames, the goal (unless --watch), Esc, the window's
+// close or a signal. Returns the frames that had a script error.
+uint64_t playFrames(session::Session& s, const PlayOptions& o, const core::Replay& input, bool window) {
+  core::ReplayInput replay(input);
+  PlayReport report;
+  uint64_t errorFrames = 0;
+  const bool fromReplay = !o.inputPath.empty();
+  while ((o.frames == 0 || s.run().frame() < o.frames) && !stopSignal) {
+    s.reloadIfSaved();
+    const core::WindowInput in = s.poll();
+    if (in.closed || std::find(in.pressed.begin(), in.pressed.end(), core::Key::Escape) != in.pressed.end()) break;
+    if (!fromReplay) s.tap(in.tapped);
+    const int due = s.framesDue(100, o.fast);
+    for (int f = 0; f < due && (o.frames == 0 || s.run().frame() < o.frames); ++f) {
+      uint8_t held = 0;
+      if (fromReplay) {
+        // The replay's console lines before the frame they ran before, as `platon replay` runs them.
+        held = replay.next(s.run(), [&](const std::string& code, const core::ConsoleAnswer& answer) {
+          std::printf("console before frame %llu: %s\n%s\n", static_cast<unsigned long long>(s.run().frame()) + 1,
+                      core::visibleText(code).c_str(), core::visibleText(answer.text, true).c_str());
+        });
+      } else {
+        held = s.nextButtons(in.held);
+      }
+      if (s.playFrame(held)) ++errorFrames;
+      report.after(s);
+      if (s.frozen()) break;
+      if (report.won() && o.frames == 0 && !o.watch) break;  // the play ends at the goal (--help)
+    }
+    if (window) s.draw();
+    std::fflush(stdout);
+    if (report.won() && o.frames == 0 && !o.watch) break;
+  }
+  return errorFrames;
 }
 
 }  // namespace
 
 int playCommand(int argc, char** argv) {
-  std::string scenePath, inputPath, recordPath, shotPath;
-  uint64_t frames = 0;
-  bool watch = false, fast = false, headless = false;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--frames" && i + 1 < argc) {
-      if (!frameCount(argv[++i], frames))
-        return std::fprintf(stderr, "platon play: --frames %s: expected a whole number of frames from 1\n", argv[i]),
-               playUsage();
-    } else if (a == "--input" && i + 1 < argc)
-      inputPath = argv[++i];
-    else if (a == "--record" && i + 1 < argc)
-      recordPath = argv[++i];
-    else if (a == "--watch")
-      watch = true;
-    else if (a == "--fast")
-      fast = true;
-    else if (a == "--headless")
-      headless = true;
-    else if (a == "--shot" && i + 1 < argc)
-      shotPath = argv[++i];
-    else if (scenePath.empty() && !a.empty() && a[0] != '-')
-      scenePath = a;  // a level, in any of its forms (level_argument.h): made its scene.lua below
-    else
-      return playUsage();
-  }
+  PlayOptions o;
+  if (!readPlayOptions(argc, argv, o)) return playUsage();
   core::Replay input;
-  size_t nextConsole = 0;  // the next of input's console lines to run
   try {
-    if (!inputPath.empty()) input = core::readReplay(inputPath);
+    if (!o.inputPath.empty()) input = core::readReplay(o.inputPath);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s\n", e.what());
     return 1;
   }
-  if (scenePath.empty()) {
-    if (inputPath.empty()) return playUsage();
-    scenePath = input.scene;
-  } else if (scenePath.size() < 4 || scenePath.compare(scenePath.size() - 4, 4, ".lua") != 0) {
-    try {  // a level's folder or .level file: its scene.lua (kept relative, as a recording names it)
-      scenePath = levelArgument(scenePath).scene;
-    } catch (const std::exception& e) {
-      return std::fprintf(stderr, "platon play: %s\n", e.what()), 2;
-    }
-    if (scenePath.empty()) return std::fprintf(stderr, "platon play: no scene.lua beside the level file\n"), 2;
+  const std::string scenePath = sceneToPlay(o, input);
+  if (scenePath.empty()) return 2;
+  if (!o.recordPath.empty()) {
+    if (const std::string why = whyUnrecordable(scenePath, o.recordPath); !why.empty())
+      return std::fprintf(stderr, "platon play: --record %s: %s\n", o.recordPath.c_str(), why.c_str()), 2;
   }
-  if (!recordPath.empty()) {
-    if (const std::string why = whyUnrecordable(scenePath, recordPath); !why.empty())
-      return std::fprintf(stderr, "platon play: --record %s: %s\n", recordPath.c_str(), why.c_str()), 2;
-  }
-
-  core::SystemRegistry registry = engineRegistry(headless ? Presentation::Headless : Presentation::Window);
-  std::optional<core::LiveScene> live;
+  core::SystemRegistry registry = engineRegistry(o.headless ? Presentation::Headless : Presentation::Window);
+  std::unique_ptr<core::LiveScene> live;
   try {
-    live.emplace(core::resolveDataPath(scenePath), registry, watch);
+    live = std::make_unique<core::LiveScene>(core::resolveDataPath(scenePath), registry, o.watch);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s\n", core::visibleText(core::errorReport(e), true).c_str());
     return 1;
   }
-  core::Display* display = displayOf(live->scene());
-  if (display) {
+  session::Session s(std::move(live));
+  bool window = s.display() != nullptr;
+  if (window) {
     try {
-      display->pollEvents();  // opens the window: no display shows here, in one line
+      s.display()->pollEvents();  // opens the window: no display shows here, in one line
     } catch (const std::exception& e) {
       std::printf("%s: playing headless\n", e.what());
-      display = nullptr;
+      s.withoutWindow();
+      window = false;
     }
   }
-  if (!display && !shotPath.empty()) {
+  if (!window && !o.shotPath.empty()) {
     std::fprintf(stderr, "--shot needs a window: the scene names no \"rendering\", or there is no display\n");
     return 1;
   }
-  std::printf("playing %s%s\n", core::visibleText(live->scene().manifest().name).c_str(),
-              watch ? " (watching its files: save one to reload)" : "");
+  std::printf("playing %s%s\n", core::visibleText(s.scene().manifest().name).c_str(),
+              o.watch ? " (watching its files: save one to reload)" : "");
   std::fflush(stdout);
-
-  std::optional<core::ReplayRecorder> recorder;
   bool recordFailed = false;
-  if (!recordPath.empty())
-    recorder.emplace(*core::portableScenePath(scenePath), 60,
-                     core::sceneFilesHash(core::sceneSourceFiles(live->scene())));
-  stopOnSignals();
-  uint64_t frameErrors = 0;  // frames whose scripts raised an error
-  core::FixedStep clock(60);
-  core::InputEdges edges;
-  core::TapCarry taps;  // taps between frames, played on the next
-  GameView gameView;
-  bool showFps = false;
-  if (display) gameView.step(live->scene(), statusOf(live->scene()), 1.0 / clock.hz());  // headless: no picture to keep
-  std::string lastMessage, lastError;
-  uint64_t frame = 0;
-  bool won = false;
-  auto previous = std::chrono::steady_clock::now();
-  while ((frames == 0 || frame < frames) && !stopSignal) {
-    int due = 1;
-    if (!fast) {
-      const auto now = std::chrono::steady_clock::now();
-      due = clock.advance(std::chrono::duration_cast<std::chrono::nanoseconds>(now - previous).count());
-      previous = now;
-    }
-    if (std::optional<core::ReloadReport> r = live->poll(0)) {
-      if (r->ok) {
-        std::printf("reloaded in %.1f ms (%s)\n", r->milliseconds, r->files.empty() ? "" : r->files.front().c_str());
-        if (recorder) {
-          std::printf("recording stops at frame %llu: the reload changed the scene\n",
-                      static_cast<unsigned long long>(frame));
-          std::fflush(stdout);
-          if (!writeRecording(recorder->replay(), recordPath)) recordFailed = true;
-          recorder.reset();
-        }
-      } else {
-        std::printf("reload refused, the last good version goes on:\n%s\n", core::visibleText(r->error, true).c_str());
-      }
-    }
-    uint8_t keys = 0;
-    display = displayOf(live->scene()) && display ? displayOf(live->scene()) : nullptr;  // a reload replaces it
-    if (display) {
-      const core::WindowInput events = display->pollEvents();
-      auto pressed = [&](core::Key k) {
-        return std::find(events.pressed.begin(), events.pressed.end(), k) != events.pressed.end();
-      };
-      if (events.closed || pressed(core::Key::Escape)) break;
-      if (pressed(core::Key::ShowFps)) showFps = !showFps;
-      if (pressed(core::Key::Debug)) gameView.setDebug(!gameView.debug());
-      if (pressed(core::Key::Screenshot)) std::printf("%s\n", saveScreenshot(*display).c_str());
-      const bool edit =
-          std::any_of(events.keys.begin(), events.keys.end(), [](const core::KeyPress& k) { return k.name == "F4"; });
-      if (edit && inputPath.empty()) {  // the editor in this window; back here, the level reloaded
-        std::printf("editing %s (F4)\n", scenePath.c_str());
+  if (!o.recordPath.empty())
+    s.run().record({*core::portableScenePath(scenePath), 60, core::sceneFilesHash(core::sceneSourceFiles(s.scene())),
+                    std::nullopt, 100});
+  // A reload ends the recording: the new version starts from a state no replay reproduces.
+  s.reloaded = [&](const core::ReloadReport& r) {
+    if (r.ok) {
+      std::printf("reloaded in %.1f ms (%s)\n", r.milliseconds, r.files.empty() ? "" : r.files.front().c_str());
+      if (std::optional<core::Replay> so_far = s.run().stopRecording()) {
+        std::printf("recording stops at frame %llu: the reload changed the scene\n",
+                    static_cast<unsigned long long>(s.run().frame()));
         std::fflush(stdout);
-        try {
-          if (editLevel(levelArgument(scenePath), registry, live->scene().findSystem("rendering")) == kWindowClosed)
-            break;
-        } catch (const std::exception& e) {
-          std::printf("%s\n", e.what());
-        }
-        const core::ReloadReport r = live->reload({"the editor"});
-        if (recorder && r.ok) {  // as any reload: the run recorded so far is written, and recording stops
-          if (!writeRecording(recorder->replay(), recordPath)) recordFailed = true;
-          recorder.reset();
-        }
-        std::printf(r.ok ? "reloaded after the editor\n" : "reload refused, the last good version goes on:\n%s\n",
-                    core::visibleText(r.error, true).c_str());
-        previous = std::chrono::steady_clock::now();
-        continue;
+        if (!writeRecording(*so_far, o.recordPath)) recordFailed = true;
       }
-      keys = events.held;
-      taps.add(events.tapped);
+    } else {
+      std::printf("reload refused, the last good version goes on:\n%s\n", core::visibleText(r.error, true).c_str());
     }
-    for (int s = 0; s < due && (frames == 0 || frame < frames); ++s) {
-      const uint8_t held = inputPath.empty() ? taps.next(keys) : frame < input.held.size() ? input.held[frame] : 0;
-      // The replay's console lines before the frame they ran before, as `platon replay` runs them.
-      for (; nextConsole < input.console.size() && input.console[nextConsole].frame <= frame + 1; ++nextConsole) {
-        const std::string& code = input.console[nextConsole].code;
-        if (script::ScriptSystem* scripts = scriptsOf(live->scene())) {
-          const script::ScriptSystem::ConsoleAnswer answer = scripts->console(code);
-          std::printf("console before frame %llu: %s\n%s\n", static_cast<unsigned long long>(frame) + 1,
-                      core::visibleText(code).c_str(), core::visibleText(answer.text, true).c_str());
-        }
-        if (recorder) recorder->console(code);
-      }
-      ++frame;
-      if (std::optional<std::string> error = live->step(edges.next(held))) {
-        ++frameErrors;
-        if (*error != lastError)
-          std::printf("frame %llu: error (the game goes on):\n%s\n", static_cast<unsigned long long>(frame),
-                      core::visibleText(*error, true).c_str());
-        lastError = *error;
-      }
-      if (recorder) recorder->frame(held, live->scene().world().stateHash());
-      if (display) gameView.step(live->scene(), statusOf(live->scene()), 1.0 / clock.hz());
-      script::ScriptSystem* scripts = scriptsOf(live->scene());
-      if (!scripts) continue;
-      const script::GameStatus status = scripts->status();
-      if (status.message != lastMessage) {
-        std::printf("frame %llu: %s\n", static_cast<unsigned long long>(frame),
-                    core::visibleText(status.message).c_str());  // a script's text: no terminal escapes
-        lastMessage = status.message;
-      }
-      if (status.won && !won) {
-        won = true;
-        std::printf("goal reached at frame %llu: %.2f s played, %d deaths\n",
-                    static_cast<unsigned long long>(status.wonFrame), static_cast<double>(status.time) / 60.0,
-                    status.deaths);
-      }
-    }
-    if (display) show(*display, *live, gameView, fast ? 1.0 : clock.alpha(), showFps);
     std::fflush(stdout);
-    if (won && frames == 0 && !watch && !display) break;
-    if (!fast && due == 0) std::this_thread::sleep_for(std::chrono::milliseconds(2));
-  }
+  };
+  if (o.inputPath.empty())  // the editor in this window; back here, the level reloaded
+    s.edit = [&] {
+      return editLevel(levelArgument(scenePath), registry, s.scene().findSystem("rendering")) != kWindowClosed;
+    };
+  stopOnSignals();
+  const uint64_t frameErrors = playFrames(s, o, input, window);
   alarm(0);  // the loop ended: no grace period runs out while the recording is written
   if (stopSignal)
     std::printf("stopped by signal %d at frame %llu\n", static_cast<int>(stopSignal),
-                static_cast<unsigned long long>(frame));
-  if (recorder) {
+                static_cast<unsigned long long>(s.run().frame()));
+  if (std::optional<core::Replay> recorded = s.run().stopRecording()) {
     std::fflush(stdout);
-    if (writeRecording(recorder->replay(), recordPath))
-      std::printf("recorded %llu frames to %s\n", static_cast<unsigned long long>(recorder->replay().frames()),
-                  recordPath.c_str());
+    if (writeRecording(*recorded, o.recordPath))
+      std::printf("recorded %llu frames to %s\n", static_cast<unsigned long long>(recorded->frames()),
+                  o.recordPath.c_str());
     else
       recordFailed = true;
   }
-  if (display && !shotPath.empty()) {
+  if (window && !o.shotPath.empty()) {
     try {
-      show(*display, *live, gameView, 1.0);
-      display->saveScreenshot(shotPath);
-      std::printf("screenshot: %s\n", shotPath.c_str());
+      s.draw();
+      s.display()->saveScreenshot(o.shotPath);
+      std::printf("screenshot: %s\n", o.shotPath.c_str());
     } catch (const std::exception& e) {
       std::fprintf(stderr, "%s\n", e.what());
       return 1;
     }
   }
-  std::printf("state hash %016llx after %llu frames\n",
-              static_cast<unsigned long long>(live->scene().world().stateHash()),
-              static_cast<unsigned long long>(frame));
-  if (!display && frameErrors > 0) {  // headless is how CI plays: a script error must fail it
+  std::printf("state hash %016llx after %llu frames\n", static_cast<unsigned long long>(s.scene().world().stateHash()),
+              static_cast<unsigned long long>(s.run().frame()));
+  if (!window && frameErrors > 0) {  // headless is how CI plays: a script error must fail it
     std::printf("%llu frame(s) had a script error\n", static_cast<unsigned long long>(frameErrors));
     return 1;
   }

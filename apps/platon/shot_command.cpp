@@ -11,14 +11,15 @@
 
 #include "commands.h"
 #include "engine_registry.h"
-#include "game_view.h"
 #include "level_argument.h"
 #include "platon/core/data_root.h"
 #include "platon/core/display.h"
 #include "platon/core/error.h"
 #include "platon/core/live_scene.h"
 #include "platon/core/replay.h"
+#include "platon/core/run.h"
 #include "platon/script/script_system.h"
+#include "platon/session/game_view.h"
 
 namespace platon::app {
 namespace {
@@ -67,22 +68,24 @@ int shotCommand(int argc, char** argv) {
     const std::string scene = levelArgument(level).scene;
     if (scene.empty()) throw std::runtime_error(level + ": no scene.lua beside it to play it with");
     core::LiveScene live(scene, registry, false);
-    if (!displayOf(live.scene())) throw std::runtime_error(scene + ": the scene does not name \"rendering\"");
-    core::Display& display = *displayOf(live.scene());
+    if (!session::displayOf(live.scene())) throw std::runtime_error(scene + ": the scene does not name \"rendering\"");
+    core::Display& display = *session::displayOf(live.scene());
     display.resize(width, height);
-    auto status = [&] { return statusOf(live.scene()); };
-    GameView view;
+    auto status = [&] { return session::statusOf(live.scene()); };
+    session::GameView view;
     view.setDebug(debug);
     view.step(live.scene(), status(), 1.0 / 60);
-    core::InputEdges edges;
+    // The run every way of playing drives (core/run.h): the replay's console lines too.
+    core::Run run(live);
+    core::ReplayInput replay(input);
     for (uint64_t f = 0; f < frames; ++f) {
-      if (std::optional<std::string> error = live.step(edges.next(f < input.held.size() ? input.held[f] : 0)))
+      if (std::optional<std::string> error = run.step(replay.next(run)))
         std::fprintf(stderr, "frame %llu: %s\n", static_cast<unsigned long long>(f) + 1, error->c_str());
       view.step(live.scene(), status(), 1.0 / 60);
     }
     core::View v = view.view(live.scene(), 1.0);
     const script::GameStatus st = status();
-    v.hud = hudLines(live.scene(), st);
+    v.hud = session::hudLines(live.scene(), st);
     v.error = live.lastError();
     display.present(v, view.drawing(1.0));
     int w = 0, h = 0;

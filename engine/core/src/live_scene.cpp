@@ -49,8 +49,12 @@ std::vector<std::string> sceneSourceFiles(Scene& scene) {
   return files;
 }
 
-LiveScene::LiveScene(std::string manifestPath, const SystemRegistry& registry, bool watch)
-    : path_(std::move(manifestPath)), registry_(registry), scene_(loadScene(path_, registry_)) {
+LiveScene::LiveScene(std::string manifestPath, const SystemRegistry& registry, bool watch,
+                     std::optional<LevelOverride> override)
+    : path_(std::move(manifestPath)),
+      registry_(registry),
+      override_(std::move(override)),
+      scene_(loadScene(path_, registry_, nullptr, override_ ? &*override_ : nullptr)) {
   if (watch) {
     watcher_.emplace();
     watcher_->watch(watchedFiles());
@@ -128,7 +132,7 @@ ReloadReport LiveScene::reload(std::vector<std::string> because) {
   ReloadReport report;
   report.files = std::move(because);
   try {
-    std::unique_ptr<Scene> next = loadScene(path_, registry_, scene_.get());
+    std::unique_ptr<Scene> next = loadScene(path_, registry_, scene_.get(), override_ ? &*override_ : nullptr);
     for (size_t i = 0; i < next->systemCount(); ++i)
       if (System* old = scene_->findSystem(next->systemName(i)); old && !next->systemName(i).empty())
         next->system(i).carryOver(*next, *old);

@@ -19,6 +19,7 @@
 #include "platon/core/data_root.h"
 #include "platon/core/input.h"
 #include "platon/core/live_scene.h"
+#include "platon/core/run.h"
 #include "platon/core/visible_text.h"
 #include "platon/files/read_file.h"
 #include "platon/script/script_system.h"
@@ -634,9 +635,9 @@ ScenarioResult runPlan(const std::string& path, const std::function<Plan()>& mak
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;
   };
-  std::optional<core::ReplayRecorder> recorder;
+  std::optional<core::Run> run;  // the run every way of playing drives (core/run.h)
   auto keepRecording = [&] {
-    if (recorder) result.recorded = recorder->replay();
+    if (run) result.recorded = run->recorded();
   };
   try {
     const Plan plan = makePlan();
@@ -670,22 +671,16 @@ ScenarioResult runPlan(const std::string& path, const std::function<Plan()>& mak
       if (auto* s = dynamic_cast<ScriptSystem*>(&scene->system(i))) scripts = s;
     if ((plan.goalBy || plan.deaths || !plan.faceAt.empty() || !plan.inside.empty()) && !scripts)
       return finish(false, "the scene has no scripts, so no player to check");
-    if (options.record) {
-      recorder.emplace(plan.scene, options.hashEvery, filesHash);
-      recorder->setStart(plan.start);
-    }
-    core::InputEdges edges;
+    run.emplace(*scene);
+    if (options.record) run->record({plan.scene, options.hashEvery, filesHash, plan.start, 100});
     std::string failure;
     size_t nextLine = 0;
     for (uint64_t f = 1; f <= plan.frames && failure.empty(); ++f) {
       // The console's lines where the run typed them (their answers were the player's to read).
-      for (; nextLine < plan.console.size() && plan.console[nextLine].frame == f; ++nextLine) {
-        if (scripts) (void)scripts->console(plan.console[nextLine].code);
-        if (recorder) recorder->console(plan.console[nextLine].code);
-      }
-      scene->step(edges.next(plan.held[f]));
+      for (; nextLine < plan.console.size() && plan.console[nextLine].frame == f; ++nextLine)
+        (void)run->console(plan.console[nextLine].code);
+      run->step(plan.held[f]);
       result.frames = f;
-      if (recorder) recorder->frame(plan.held[f], scene->world().stateHash());
       failure = checkFrame(plan, f, *scene, scripts, options.traceEvery, path, filesNote);
       // With the goal reached there is nothing left to see, unless a check waits for a later frame.
       if (failure.empty() && plan.goalBy && f >= plan.lastCheck() && scripts && scripts->status().won) break;

@@ -39,7 +39,10 @@ class LiveScene {
  public:
   // Loads the scene; throws as loadScene does when the first version is broken (there is no
   // last good version yet). `watch`: follow the files with inotify.
-  LiveScene(std::string manifestPath, const SystemRegistry& registry, bool watch);
+  // `override`: the level's text or start replaced, in this version and every reload (the
+  // editor's play-test of a level as edited).
+  LiveScene(std::string manifestPath, const SystemRegistry& registry, bool watch,
+            std::optional<LevelOverride> override = std::nullopt);
 
   Scene& scene() { return *scene_; }
   const std::string& manifestPath() const { return path_; }
@@ -67,6 +70,7 @@ class LiveScene {
 
   std::string path_;
   const SystemRegistry& registry_;
+  std::optional<LevelOverride> override_;
   std::unique_ptr<Scene> scene_;
   std::optional<FileWatcher> watcher_;
   std::string lastError_;

@@ -24,6 +24,19 @@ class Display;
 class AudioControls;
 struct SoundFrame;
 
+// A line of Lua typed in the game's console, and what it answered: its value as the sandboxes'
+// tostring shows it, or its error (the scripting system's, docs/scripting.md "Console").
+struct ConsoleAnswer {
+  bool ok = false;
+  std::string text;
+};
+class Console {
+ public:
+  virtual ~Console() = default;
+  // Runs `code` between frames, before the next; never throws: an error is the answer.
+  virtual ConsoleAnswer run(const std::string& code) = 0;
+};
+
 class System {
  public:
   virtual ~System() = default;
@@ -61,6 +74,8 @@ class System {
   virtual AudioControls* audio() { return nullptr; }
   // The mesh reader this system offers, for the meshes system (core/mesh_source.h).
   virtual MeshSource* meshSource() { return nullptr; }
+  // The console this system runs typed lines in, for the scripting system.
+  virtual Console* console() { return nullptr; }
 };
 
 using SystemFactory = std::function<std::unique_ptr<System>(Scene&)>;

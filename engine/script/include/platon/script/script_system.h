@@ -29,7 +29,7 @@ struct GameStatus {
   std::vector<uint32_t> openTags;  // line tags the game lets the player through now (open doors)
 };
 
-class ScriptSystem final : public core::System {
+class ScriptSystem final : public core::System, public core::Console {
  public:
   // root: the folder that holds scripts/ (engine scripts are found there).
   ScriptSystem(core::Scene& scene, std::string root);
@@ -62,11 +62,10 @@ class ScriptSystem final : public core::System {
   // with the level's `game` (what level scripts get) as `game`, under the sandboxes' budget and
   // memory limit. An expression's value is returned as the
   // sandboxes' tostring shows it. Never throws: an error is the answer.
-  struct ConsoleAnswer {
-    bool ok = false;
-    std::string text;
-  };
+  using ConsoleAnswer = core::ConsoleAnswer;
   ConsoleAnswer console(const std::string& code);
+  core::Console* console() override { return this; }
+  ConsoleAnswer run(const std::string& code) override { return console(code); }
   // The Lua language server's definitions (---@meta) of the API trusted scripts see, or sandboxed
   // ones (with the `game` level scripts get), from the live binding tables; `problems` gets each
   // binding with no definition and each definition with no binding (`platon defs`).

@@ -6,13 +6,13 @@
 #include <string>
 #include <vector>
 
-#include "feedback.h"
 #include "platon/camera/camera.h"
 #include "platon/core/display.h"
 #include "platon/core/scene.h"
 #include "platon/script/script_system.h"
+#include "platon/session/feedback.h"
 
-namespace platon::app {
+namespace platon::session {
 
 // The scene's scripting status (the default when it has no scripts) and its display (null when
 // it is not shown in a window).
@@ -61,4 +61,4 @@ class GameView {
   bool debug_ = false;
 };
 
-}  // namespace platon::app
+}  // namespace platon::session

@@ -1,9 +1,9 @@
-#include "feedback.h"
+#include "platon/session/feedback.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace platon::app {
+namespace platon::session {
 
 // Sparks start on a ring about the size of the game's player (96 units): any nearer is hidden in it.
 constexpr float kRim = 100;
@@ -94,4 +94,4 @@ void Feedback::draw(core::DrawList& out) const {
   }
 }
 
-}  // namespace platon::app
+}  // namespace platon::session

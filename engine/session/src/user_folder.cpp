@@ -1,14 +1,15 @@
-#include "save_file.h"
+#include "platon/session/user_folder.h"
 
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
 #include <exception>
-#include <fcntl.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
-namespace platon::app {
+#include "platon/files/write_file.h"
+
+namespace platon::session {
+
 std::string userFolder(const std::string& kind) {
   const bool config = kind == "config";
   const char* xdg = std::getenv(config ? "XDG_CONFIG_HOME" : "XDG_DATA_HOME");
@@ -19,7 +20,7 @@ std::string userFolder(const std::string& kind) {
 
 std::string saveScreenshot(core::Display& display) {
   const std::string folder = userFolder("data") + "/screenshots";
-  makeFolders(folder);
+  files::makeFolders(folder);
   const std::time_t now = std::time(nullptr);
   char name[64];
   std::strftime(name, sizeof name, "platon-%Y%m%d-%H%M%S", std::localtime(&now));
@@ -34,4 +35,4 @@ std::string saveScreenshot(core::Display& display) {
   }
 }
 
-}  // namespace platon::app
+}  // namespace platon::session

@@ -1,4 +1,4 @@
-#include "game_view.h"
+#include "platon/session/game_view.h"
 
 #include <cmath>
 #include <cstdio>
@@ -6,7 +6,7 @@
 
 #include "platon/core/debug_view.h"
 
-namespace platon::app {
+namespace platon::session {
 
 script::GameStatus statusOf(core::Scene& scene) {
   const auto* scripts = dynamic_cast<const script::ScriptSystem*>(scene.findSystem("scripting"));
@@ -97,4 +97,4 @@ core::View GameView::view(const core::Scene& scene, double alpha) const {
   return v;
 }
 
-}  // namespace platon::app
+}  // namespace platon::session

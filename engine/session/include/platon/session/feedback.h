@@ -14,7 +14,7 @@
 #include "platon/core/scene.h"
 #include "platon/script/script_system.h"
 
-namespace platon::app {
+namespace platon::session {
 
 // How one event reads on screen.
 struct Cue {
@@ -80,4 +80,4 @@ class Feedback {
   uint32_t random_ = 0x9e3779b9u;
 };
 
-}  // namespace platon::app
+}  // namespace platon::session
