@@ -96,11 +96,12 @@ Progress::Progress(std::string path) : path_(std::move(path)) {
   };
   while (std::getline(in, line)) {
     std::istringstream fields(line);
-    std::string folder, frames, deaths, extra;
+    std::string folder, frames, deaths, assist, extra;
     uint64_t f = 0, d = 0;
-    if (!(fields >> folder >> frames >> deaths) || (fields >> extra) || folder[0] == '#') continue;
+    if (!(fields >> folder >> frames >> deaths) || folder[0] == '#') continue;
+    if ((fields >> assist) && (assist != "assist" || (fields >> extra))) continue;
     if (!count(frames, uint64_t{1} << 53, f) || !count(deaths, 1u << 30, d)) continue;
-    records_[folder] = {f, static_cast<int>(d)};
+    records_[folder] = {f, static_cast<int>(d), assist == "assist"};
   }
 }
 
@@ -109,15 +110,20 @@ const LevelRecord* Progress::record(const std::string& folder) const {
   return it == records_.end() ? nullptr : &it->second;
 }
 
-bool Progress::finish(const std::string& folder, uint64_t frames, int deaths) {
-  auto [it, added] = records_.try_emplace(folder, LevelRecord{frames, deaths});
-  if (!added) {
-    it->second.bestFrames = std::min(it->second.bestFrames, frames);
-    it->second.fewestDeaths = std::min(it->second.fewestDeaths, deaths);
-  }
-  std::string text = "# Platon progress: level, best time in frames (60 a second), fewest deaths\n";
-  for (const auto& [name, r] : records_)
-    text += name + " " + std::to_string(r.bestFrames) + " " + std::to_string(r.fewestDeaths) + "\n";
+bool Progress::finish(const std::string& folder, uint64_t frames, int deaths, bool assisted) {
+  auto [it, added] = records_.try_emplace(folder, LevelRecord{frames, deaths, assisted});
+  LevelRecord& r = it->second;
+  if (!added && r.assisted && !assisted) {
+    r = {frames, deaths, false};  // the first full-speed finish: the assisted ones no longer count
+  } else if (!added && r.assisted == assisted) {
+    r.bestFrames = std::min(r.bestFrames, frames);
+    r.fewestDeaths = std::min(r.fewestDeaths, deaths);
+  }  // an assisted finish after a full-speed one changes nothing
+  std::string text =
+      "# Platon progress: level, best time in frames (60 a second), fewest deaths (assist: at an assist speed only)\n";
+  for (const auto& [name, rec] : records_)
+    text += name + " " + std::to_string(rec.bestFrames) + " " + std::to_string(rec.fewestDeaths) +
+            (rec.assisted ? " assist" : "") + "\n";
   lastError_ = saveWhole(path_, text, "the progress file");
   return lastError_.empty();
 }

@@ -29,9 +29,13 @@ std::vector<CampaignLevel> userLevels(const std::string& folder);
 struct LevelRecord {
   uint64_t bestFrames = 0;  // the fastest finish, in frames
   int fewestDeaths = 0;     // the fewest deaths in a finish
+  // Only finished at an assist speed (the game slowed): the level is done, but its time is no
+  // par run's. A finish at full speed replaces it.
+  bool assisted = false;
 };
 
-// Finished levels by folder. The file is plain text, one "folder frames deaths" per line; lines
+// Finished levels by folder. The file is plain text, one "folder frames deaths" per line (and
+// "assist" after a record of assisted runs only); lines
 // it cannot read are skipped (a damaged file costs records, never the game), and it is written
 // whole to a new file and renamed over the old, so a crash mid-save never leaves half a file.
 class Progress {
@@ -48,8 +52,9 @@ class Progress {
   bool done(const std::string& folder) const { return records_.count(folder) != 0; }
   const LevelRecord* record(const std::string& folder) const;
   // Keeps the better time and the fewer deaths; saves at once. False (and the reason in
-  // lastError()) when the file cannot be written: the game goes on.
-  bool finish(const std::string& folder, uint64_t frames, int deaths);
+  // lastError()) when the file cannot be written: the game goes on. An `assisted` finish (at a
+  // game speed under 100%) opens the next level but counts only where no full-speed one exists.
+  bool finish(const std::string& folder, uint64_t frames, int deaths, bool assisted = false);
   const std::string& lastError() const { return lastError_; }
   const std::string& path() const { return path_; }
 

@@ -115,7 +115,8 @@ const Command kCommands[] = {
     {"pack", "a level and a run that finishes it, as one package to share",
      "usage: platon pack LEVEL --replay run.replay [-o out.platon] [--timeout S]\n"
      "  LEVEL            the level's folder (or its scene.lua): every file in it goes in\n"
-     "  --replay F       a run that reaches the goal (platon play --record, platon game --record);\n"
+     "  --replay F       a run that reaches the goal (platon play --record, platon game --record), or\n"
+     "                   a test the editor kept with K (test_N.lua, played to its recording);\n"
      "                   replayed headless first: the level must check and the run reach its goal\n"
      "  -o F             the package (default FOLDER.platon)\n"
      "  --timeout S      the replay's wall-clock limit (default 120)\n",
@@ -129,9 +130,10 @@ const Command kCommands[] = {
      "  --timeout S      the replay's wall-clock limit (default 120)\n",
      installCommand},
     {"defs", "the Lua language server's definitions of the scripting API",
-     "usage: platon defs DIR\n"
+     "usage: platon defs DIR [--for LEVEL]\n"
      "  writes DIR/trusted (the engine's own scripts) and DIR/sandbox (level scripts and mods): ---@meta\n"
-     "  definitions made from the engine's binding tables, and a .luarc.json pointing the server at them\n",
+     "  definitions made from the engine's binding tables, and a .luarc.json pointing the server at them\n"
+     "  --for LEVEL      also LEVEL/.luarc.json, pointing at DIR/sandbox by a path from LEVEL\n",
      defsCommand},
 };
 

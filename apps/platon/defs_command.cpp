@@ -25,22 +25,34 @@ void writeFile(const fs::path& path, const std::string& text) {
   files::saveWholeOrThrow(path.string(), text, "the definitions");
 }
 
-// The server's settings for a folder of scripts of the set, to copy into it: LuaJIT, these
-// definitions (by their absolute place), and for sandboxed scripts the libraries a sandbox does
-// not have turned off (docs/scripting.md, "Sandbox").
-std::string luarc(const fs::path& definitions, bool sandboxed) {
+// The server's settings for the folder of scripts `workspace`: LuaJIT, these definitions (by a
+// path from that folder: no machine's own path goes into a file that travels), and for
+// sandboxed scripts the libraries a sandbox does not have turned off (docs/scripting.md, "Sandbox").
+std::string luarc(const fs::path& definitions, const fs::path& workspace, bool sandboxed) {
   const std::string builtins = sandboxed ? "\"io\": \"disable\", \"debug\": \"disable\", \"package\": \"disable\", "
                                            "\"ffi\": \"disable\", \"jit\": \"disable\""
                                          : "";
+  const fs::path from =
+      fs::absolute(definitions).lexically_normal().lexically_relative(fs::absolute(workspace).lexically_normal());
   return "{\n  \"runtime.version\": \"LuaJIT\",\n  \"workspace.library\": [\"" +
-         fs::absolute(definitions).lexically_normal().string() + "\"],\n  \"runtime.builtin\": {" + builtins + "}\n}\n";
+         (from.empty() ? std::string(".") : from.generic_string()) + "\"],\n  \"runtime.builtin\": {" + builtins +
+         "}\n}\n";
 }
 
 }  // namespace
 
 int defsCommand(int argc, char** argv) {
-  if (argc != 2 || argv[1][0] == '-') return usageError("defs");
-  const fs::path out = argv[1];
+  fs::path out, level;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--for" && i + 1 < argc)
+      level = argv[++i];
+    else if (out.empty() && !a.empty() && a[0] != '-')
+      out = a;
+    else
+      return usageError("defs");
+  }
+  if (out.empty()) return usageError("defs");
   try {
     // A scene with the game's scripts, for the live tables (a level's `game` is made by them).
     const fs::path scene = fs::temp_directory_path() / ("platon_defs_" + std::to_string(::getpid()));
@@ -58,9 +70,13 @@ int defsCommand(int argc, char** argv) {
     for (const std::string& p : problems) std::fprintf(stderr, "%s\n", p.c_str());
     if (!problems.empty()) return 1;
     writeFile(out / "trusted" / "platon.lua", trusted);
-    writeFile(out / "trusted" / ".luarc.json", luarc(out / "trusted", false));
+    writeFile(out / "trusted" / ".luarc.json", luarc(out / "trusted", out / "trusted", false));
     writeFile(out / "sandbox" / "platon.lua", sandboxed);
-    writeFile(out / "sandbox" / ".luarc.json", luarc(out / "sandbox", true));
+    writeFile(out / "sandbox" / ".luarc.json", luarc(out / "sandbox", out / "sandbox", true));
+    if (!level.empty()) {  // the level's folder, pointed at the sandbox's definitions from where it is
+      writeFile(level / ".luarc.json", luarc(out / "sandbox", level, true));
+      std::printf("%s: the settings for a level's scripts\n", (level / ".luarc.json").string().c_str());
+    }
     std::printf("%s: definitions for trusted scripts (trusted/) and level scripts and mods (sandbox/)\n",
                 out.string().c_str());
     return 0;

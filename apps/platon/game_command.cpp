@@ -34,7 +34,7 @@
 namespace platon::app {
 namespace {
 
-enum class Screen { Title, Playing, Paused, Complete, Settings };
+enum class Screen { Title, Playing, Paused, Complete, Settings, QuitAsked };
 
 const char* const kPauseItems[] = {"Resume", "Restart the level", "Level select", "Settings", "Quit"};
 constexpr int kPauseCount = 5;
@@ -139,6 +139,8 @@ class Game {
     if (screen_ == Screen::Title) a->playTune("title");
   }
   script::GameStatus status() { return session_->status(); }
+  // Played slowed (the assist mode): the level is done, the time is no par run (campaign.h).
+  bool assisted() const { return settings_.gameSpeed < 100; }
   void handle(const core::WindowInput& input);
   void menuKey(core::Key key);
   void play() {
@@ -174,6 +176,13 @@ class Game {
   void stepSimulation(const core::WindowInput& input);
   // The settings screen (from the title and the pause menu): volumes and screen shake, applied at
   // once and saved as the screen is left.
+  // Quitting asks first (Up from Resume is Quit, and Esc on the title is a key pressed often).
+  void askToQuit() {
+    quitFrom_ = screen_, screen_ = Screen::QuitAsked;
+    sound("menu_select");
+    std::printf("quit asked\n");
+    std::fflush(stdout);
+  }
   void openSettings() {
     settingsFrom_ = screen_, screen_ = Screen::Settings, settingsItem_ = 0;
     sound("menu_select");
@@ -220,6 +229,8 @@ class Game {
   Settings applied_;  // what the window was last told (full screen, vsync, samples): at first, how it opens
   std::string settingsPath_;
   Screen settingsFrom_ = Screen::Title;
+  Screen quitFrom_ = Screen::Title;
+  bool saidSilent_ = false;  // the game said once, on screen, why it plays silent
   int settingsItem_ = 0;
   int binding_ = -1;  // the button whose key the settings screen waits for
 };
@@ -251,6 +262,10 @@ bool Game::load(size_t level) {
   level_ = level;
   loaded_ = true;
   applySettings();
+  if (core::AudioControls* a = audio(); a && !saidSilent_ && !a->silentBecause().empty()) {
+    say(a->silentBecause() + "; the game plays silent");  // on screen: stderr is not where a player looks
+    saidSilent_ = true;
+  }
   return true;
 }
 
@@ -262,8 +277,8 @@ std::vector<std::string> Game::titleLines() const {
     std::string line = (i == selected_ ? "> " : "  ") + std::to_string(i + 1) + ". " + names_[i];
     if (r) {
       line += "   done " + session::clockText(r->bestFrames) + ", " + std::to_string(r->fewestDeaths) +
-              (r->fewestDeaths == 1 ? " death" : " deaths");
-      if (levels_[i].parFrames) line += r->bestFrames <= levels_[i].parFrames ? "  * par" : "";
+              (r->fewestDeaths == 1 ? " death" : " deaths") + (r->assisted ? " (assist)" : "");
+      if (levels_[i].parFrames && !r->assisted) line += r->bestFrames <= levels_[i].parFrames ? "  * par" : "";
     } else if (!progress_.open(levels_, i)) {
       line += "   (locked)";
     } else if (levels_[i].parFrames) {
@@ -294,7 +309,7 @@ void Game::handle(const core::WindowInput& input) {
 void Game::menuKey(core::Key key) {
   switch (screen_) {
     case Screen::Title:
-      if (key == core::Key::Escape) quit_ = true;
+      if (key == core::Key::Escape) askToQuit();
       if (key == core::Key::Settings) openSettings();
       if ((key == core::Key::Up || key == core::Key::Down) && levels_.size() > 1) {
         // The cursor moves whether or not the level loads (a broken one says why on the HUD);
@@ -321,11 +336,15 @@ void Game::menuKey(core::Key key) {
         if (menuItem_ == 1 && load(level_)) play();
         if (menuItem_ == 2) finishRecording(), screen_ = Screen::Title, selected_ = level_;
         if (menuItem_ == 3) openSettings();
-        if (menuItem_ == 4) quit_ = true;
+        if (menuItem_ == 4) askToQuit();
       }
       break;
     case Screen::Settings:
       settingsKey(key);
+      break;
+    case Screen::QuitAsked:  // Enter quits; Esc goes back where the question came from
+      if (key == core::Key::Enter) quit_ = true;
+      if (key == core::Key::Escape) screen_ = quitFrom_, sound("menu_move");
       break;
     case Screen::Complete:
       if (key == core::Key::Enter || key == core::Key::Escape) {
@@ -465,7 +484,7 @@ void Game::stepSimulation(const core::WindowInput& input) {
   std::printf("level complete: %s in %s with %d deaths\n", levels_[level_].folder.c_str(),
               session::clockText(st.wonFrame).c_str(), st.deaths);
   std::fflush(stdout);
-  if (!progress_.finish(levels_[level_].folder, st.wonFrame, st.deaths)) say(progress_.lastError());
+  if (!progress_.finish(levels_[level_].folder, st.wonFrame, st.deaths, assisted())) say(progress_.lastError());
   screen_ = Screen::Complete;
   finishRecording();
 }
@@ -484,17 +503,23 @@ void Game::draw() {
       break;
     case Screen::Complete: {
       const uint64_t par = levels_[level_].parFrames;
+      std::string parText;
+      if (par != 0 && assisted())
+        parText = "    at " + std::to_string(settings_.gameSpeed) + "% speed: par is for full speed";
+      else if (par != 0)
+        parText = st.wonFrame <= par ? "    under par (" + session::clockText(par, false) + ")!"
+                                     : "    par " + session::clockText(par, false);
       centre = {"Level complete!",
-                session::clockText(st.wonFrame) + "    " + std::to_string(st.deaths) + " deaths" +
-                    (par == 0             ? ""
-                     : st.wonFrame <= par ? "    under par (" + session::clockText(par, false) + ")!"
-                                          : "    par " + session::clockText(par, false)),
+                session::clockText(st.wonFrame) + "    " + std::to_string(st.deaths) + " deaths" + parText,
                 level_ + 1 < levels_.size() ? "Enter: next level    Esc: level select"
                                             : "The campaign is done. Enter: level select"};
       break;
     }
     case Screen::Settings:
       centre = settingsLines();
+      break;
+    case Screen::QuitAsked:
+      centre = {"Quit the game?", "", "Enter: quit    Esc: back"};
       break;
     case Screen::Playing:
       break;

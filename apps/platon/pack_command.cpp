@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "commands.h"
+#include "engine_registry.h"
 #include "level_argument.h"
 #include "platon/core/error.h"
 #include "platon/core/manifest.h"
@@ -74,6 +75,20 @@ double secondsArgument(const std::string& text) {
 
 std::string userLevelsFolder() { return userFolder("data") + "/levels"; }
 
+// The run a package carries: a replay, or a scenario (a play-test the editor kept with K,
+// test_N.lua) played headless to the recording it makes; it must pass.
+core::Replay runOf(const std::string& path) {
+  if (path.size() < 4 || path.compare(path.size() - 4, 4, ".lua") != 0) return core::readReplay(path);
+  script::RunOptions options;
+  options.record = true;
+  options.pluginFolders = pluginFolders();
+  const script::ScenarioResult r = script::runScenario(path, options);
+  if (!r.passed) throw std::runtime_error(path + ": the scenario does not pass, so its run is no finish: " + r.message);
+  if (!r.recorded) throw std::runtime_error(path + ": the scenario recorded no run");
+  std::printf("the run of %s (%llu frames)\n", path.c_str(), static_cast<unsigned long long>(r.recorded->frames()));
+  return *r.recorded;
+}
+
 int packCommand(int argc, char** argv) {
   std::string level, replayPath, out;
   double timeout = 120;
@@ -104,7 +119,7 @@ int packCommand(int argc, char** argv) {
     fs::remove_all(staging.path);
     fs::create_directories(staging.path / folder);
     fs::copy(source, staging.path / folder, fs::copy_options::recursive | fs::copy_options::copy_symlinks);
-    core::Replay replay = core::readReplay(replayPath);
+    core::Replay replay = runOf(replayPath);
     replay.scene = "scene.lua";
     fs::remove(staging.path / folder / "finish.replay");
     core::writeReplay(replay, (staging.path / folder / "finish.replay").string());

@@ -168,7 +168,7 @@ std::string sceneToPlay(const PlayOptions& o, const core::Replay& input) {
   if (o.scenePath.empty()) return input.scene;
   if (o.scenePath.size() >= 4 && o.scenePath.compare(o.scenePath.size() - 4, 4, ".lua") == 0) return o.scenePath;
   try {
-    const std::string scene = levelArgument(o.scenePath).scene;
+    std::string scene = levelArgument(o.scenePath).scene;
     if (scene.empty()) std::fprintf(stderr, "platon play: no scene.lua beside the level file\n");
     return scene;
   } catch (const std::exception& e) {

@@ -133,6 +133,32 @@ TEST(Progress, KeepsTheBestAndSurvivesADamagedFile) {
   EXPECT_FALSE(damaged.done("cube_lift"));    // one field too many
 }
 
+// An assist-speed finish opens the next level, but its time is no par run: a full-speed finish
+// replaces it whatever its time, and an assisted one never beats a full-speed record.
+TEST(Progress, AssistedRunsOpenTheNextLevelButAreNoParRuns) {
+  platon::testing::TempFolder folder("progress_assist");
+  const std::string path = folder.path("progress.txt");
+  {
+    Progress p(path);
+    ASSERT_TRUE(p.finish("a", 500, 0, true));
+    EXPECT_TRUE(p.done("a"));
+    EXPECT_TRUE(p.record("a")->assisted);
+  }
+  Progress again(path);  // kept as such in the file
+  ASSERT_NE(again.record("a"), nullptr);
+  EXPECT_TRUE(again.record("a")->assisted);
+  EXPECT_EQ(again.record("a")->bestFrames, 500u);
+  ASSERT_TRUE(again.finish("a", 900, 2));  // slower, at full speed: it is the record now
+  EXPECT_FALSE(again.record("a")->assisted);
+  EXPECT_EQ(again.record("a")->bestFrames, 900u);
+  ASSERT_TRUE(again.finish("a", 300, 0, true));  // faster, assisted: changes nothing
+  EXPECT_EQ(again.record("a")->bestFrames, 900u);
+  EXPECT_EQ(again.record("a")->fewestDeaths, 2);
+  Progress last(path);
+  EXPECT_FALSE(last.record("a")->assisted);
+  EXPECT_EQ(last.record("a")->bestFrames, 900u);
+}
+
 TEST(Progress, AFailedSaveSaysWhyAndKeepsTheOldFile) {
   platon::testing::TempFolder folder("progress");
   const std::string path = folder.path("progress.txt");

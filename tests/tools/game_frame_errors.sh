@@ -32,7 +32,7 @@ await_title
 xdotool key Return
 await "^playing broken"
 await "another error from frame 120 on"
-xdotool key Escape Down Down Down Down Return  # the pause menu: Quit
+xdotool key Escape Down Down Down Down Return Return  # the pause menu: Quit, and yes
 await_exit "Quit did not end the game"
 wait "$pid" || fail "the game failed"
 first=$(grep -c "the same error every frame" "$log" || true)

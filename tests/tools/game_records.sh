@@ -36,7 +36,7 @@ await "^playing tetra_around" 2
 xdotool keydown Right
 sleep 1
 xdotool keyup Right
-xdotool key Escape Down Down Down Down Return  # the pause menu: Quit
+xdotool key Escape Down Down Down Down Return Return  # the pause menu: Quit, and yes
 await_exit "Quit in the pause menu did not end the game"
 wait "$pid" || fail "the game failed"
 grep -q "^recorded tetra_around: .* to $rec/tetra_around-2.replay" "$log" || fail "quitting did not write the second replay"

@@ -43,7 +43,7 @@ xdotool key grave
 xdotool keydown Right
 sleep 0.5
 xdotool keyup Right
-xdotool key Escape Down Down Down Down Return  # the pause menu: Quit
+xdotool key Escape Down Down Down Down Return Return  # the pause menu: Quit, and yes
 await_exit "Quit in the pause menu did not end the game"
 wait "$pid" || fail "the game failed"
 replay="$rec/cube_intro.replay"

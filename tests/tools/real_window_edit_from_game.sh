@@ -30,7 +30,7 @@ await "^editor: saved "
 xdotool key Escape
 await "^reloaded cube_intro"
 cmp -s "$data/cube_intro/cube_intro.level" "$source_root/levels/cube_intro/cube_intro.level" && fail "the goal did not move"
-xdotool key Escape Down Down Down Down Return  # the pause menu: Quit
+xdotool key Escape Down Down Down Down Return Return  # the pause menu: Quit, and yes
 await_exit "Quit in the pause menu did not end the game"
 wait "$pid" || fail "the game failed"
 cat "$log"

@@ -10,6 +10,7 @@
 # copied there (editor_draw.png, editor_error.png, editor_play.png: docs/editing.md's).
 set -eu
 platon=$(realpath "$1")
+source_root=$(pwd)  # ctest runs it from the source tree: its .luacheckrc is the lint
 solid=$2
 pictures=${3:-}
 export SDL_VIDEODRIVER=x11  # the X server xvfb-run started: never a silent fallback to offscreen
@@ -81,5 +82,10 @@ await_exit "Esc did not quit the editor"
 wait "$pid" || fail "the editor failed"
 (cd "$level" && "$platon" run test_1.lua) > "$data/run" 2>&1 || fail "the kept test does not pass: $(cat "$data/run")"
 grep -q "^  start = { face = 0" "$level/test_1.lua" || fail "the kept test does not start where the run did"
+# The modder's next steps: the kept test passes the project's lint, and packs as the level's run.
+(cd "$source_root" && luacheck --no-color --codes --config .luacheckrc "$level/test_1.lua") > "$data/lint" 2>&1 ||
+  fail "the kept test fails the lint: $(cat "$data/lint")"
+"$platon" pack "$level" --replay "$level/test_1.lua" -o "$data/drawn.platon" > "$data/pack" 2>&1 ||
+  fail "pack refused the kept test: $(cat "$data/pack")"
 cat "$log"
 rm -rf "$data"

@@ -38,7 +38,7 @@ await "^settings: music 40%, effects 90%, screen shake off"
 grep -q "^music_volume 40" "$data/config/platon/settings.txt" || fail "the settings were not saved"
 grep -q "^screen_shake off" "$data/config/platon/settings.txt" || fail "the settings were not saved"
 xdotool key Escape  # the pause menu: resume
-xdotool key Escape Down Down Down Down Return  # the pause menu: Quit
+xdotool key Escape Down Down Down Down Return Return  # the pause menu: Quit, and yes
 await_exit "Quit in the pause menu did not end the game"
 wait "$pid" || fail "the game failed"
 cat "$log"

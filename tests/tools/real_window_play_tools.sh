@@ -23,7 +23,10 @@ await "^42$"
 xdotool type --delay 20 'game.frame() > 0'
 xdotool key Return
 await "^true$"
+xdotool type --delay 20 "game.message('typed in the console')"
+xdotool key Return
 xdotool key grave  # closed: the letters typed moved nobody
+await "^frame [0-9]*: typed in the console"  # a frame played after the lines: they are in the recording
 xdotool key F5
 await "^reloaded in "
 await "^recording stops at frame "

@@ -22,7 +22,7 @@ xdotool keydown l
 await "^level complete: cube_intro"
 xdotool keyup l
 xdotool key Escape  # the level select
-xdotool key Escape  # quit
+xdotool key Escape Return  # quit, and yes
 await_exit "Esc on the title did not end the game"
 wait "$pid" || fail "the game failed"
 grep -q "^right" "$data/runs/cube_intro.replay" || grep -q " right" "$data/runs/cube_intro.replay" ||
@@ -38,7 +38,7 @@ await "^playing tetra_around"
 xdotool keydown l
 sleep 2
 xdotool keyup l
-xdotool key Escape Down Down Down Down Return  # the pause menu: Quit
+xdotool key Escape Down Down Down Down Return Return  # the pause menu: Quit, and yes
 await_exit "Quit in the pause menu did not end the game"
 wait "$pid" || fail "the game failed"
 grep -q "^speed 50$" "$data/slow/tetra_around.replay" || fail "the slowed run does not say its speed: $(head -6 "$data/slow/tetra_around.replay")"

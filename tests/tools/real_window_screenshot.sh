@@ -18,7 +18,7 @@ await "^screenshot: "
 xdotool key Tab  # the settings
 xdotool key F12
 await "^screenshot: " 2
-xdotool key Escape Escape  # back to the title, quit
+xdotool key Escape Escape Return  # back to the title, quit, and yes
 await_exit "Esc on the title did not end the game"
 wait "$pid" || fail "the game failed"
 shots=$(ls "$data/platon/screenshots" | wc -l)

@@ -32,8 +32,14 @@ await "^settings: music"
 grep -q "^keys_jump J$" "$settings" || fail "Jump is not J in the file"
 grep -q "^keys_restart T$" "$settings" || fail "Restart is not T in the file"
 grep -q "^multisampling 0$" "$settings" || fail "multisampling did not change"
-xdotool key Escape  # quit
-await_exit "Esc on the title did not end the game"
+xdotool key Escape  # quit? asks
+await "^quit asked"
+xdotool key Escape  # no: back to the title
+xdotool key Escape  # quit? asks again
+await "^quit asked" 2
+kill -0 "$pid" || fail "the game quit without asking"
+xdotool key Return  # yes
+await_exit "Enter on the question did not end the game"
 wait "$pid" || fail "the game failed"
 echo "every row rebinds its own button"
 rm -rf "$data"

@@ -211,7 +211,7 @@ function platon.world.levelStart() end
 ---@param tag? integer
 function platon.world.line(part, x0, y0, x1, y1, tag) end
 
---- The i-th line.
+--- The i-th line, i from 1 to lineCount(part).
 ---@param part integer
 ---@param i integer
 ---@return integer x0

@@ -103,7 +103,8 @@ function world.contact(e, i)
   end
   if s ~= 0 then fail(s, "an entity", e) end
   if out[0] == -2 then return end  -- past the last contact: nothing, as ipairs-style loops expect
-  local other = out[6]
+  local line, other = out[5], out[6]
+  if line < 0 then line = nil end  -- against a body
   if other < 0 then other = nil end
-  return out[0], out[1], out[2], KINDS[out[3]], out[4], out[5], other
+  return out[0], out[1], out[2], KINDS[out[3]], out[4], line, other
 end

@@ -134,7 +134,7 @@ struct alignas(16) BlockHeader {
 static_assert(sizeof(BlockHeader) == 16);
 
 int64_t& heldBy(LuaHost::Shared& s, int owner) {
-  const size_t at = static_cast<size_t>(owner + 1);
+  const size_t at = static_cast<size_t>(owner) + 1;  // kNoSandbox (-1): the engine's, [0]
   return at < s.heldBytes.size() ? s.heldBytes[at] : s.heldBytes[0];
 }
 }  // namespace

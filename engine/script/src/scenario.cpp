@@ -214,7 +214,7 @@ class PlanReader {
   Plan read(const DataValue& root) {
     if (root.kind != DataValue::Kind::Table)
       fail(root, "scenario", "a scenario returns a table, got " + core::describeData(root));
-    knownKeys(root, "scenario", {"scene", "frames", "start", "input", "expect"});
+    knownKeys(root, "scenario", {"scene", "frames", "start", "input", "console", "expect"});
     Plan plan;
     const DataValue* scene = field(root, "scene");
     if (!scene) fail(root, "scenario", "'scene' (the manifest's path) is missing");
@@ -235,6 +235,7 @@ class PlanReader {
     plan.held.assign(plan.frames + 1, 0);
     if (const DataValue* start = field(root, "start")) readStart(*start, plan);
     if (const DataValue* input = field(root, "input")) readInput(*input, plan);
+    if (const DataValue* console = field(root, "console")) readConsole(*console, plan);
     if (const DataValue* expect = field(root, "expect")) readExpect(*expect, plan);
     return plan;
   }
@@ -370,6 +371,29 @@ class PlanReader {
         fail(item, where, "give hold = \"button\" (from, to) or press = \"button\" (at, frames)");
       }
       for (uint64_t f = from; f <= to; ++f) plan.held[f] |= core::InputFrame::bit(b);
+    }
+  }
+
+  // Lines typed in the console, each run before its frame (a replay's, in a kept play-test):
+  // console = { { at = F, code = "..." }, ... }, frames that do not decrease.
+  void readConsole(const DataValue& console, Plan& plan) const {
+    const std::vector<const DataValue*> items = list(console, "console", "{ at = frame, code = \"Lua\" }");
+    uint64_t last = 1;
+    for (size_t i = 0; i < items.size(); ++i) {
+      const DataValue& item = *items[i];
+      const std::string where = "console[" + std::to_string(i + 1) + "]";
+      knownKeys(item, where, {"at", "code"});
+      const DataValue& atFrame = required(item, "at", where);
+      const uint64_t frame = wholeNumber(atFrame, where + ".at", 1, static_cast<double>(plan.frames));
+      if (frame < last)
+        fail(atFrame, where + ".at",
+             "frame " + std::to_string(frame) + " is before the line above's, " + std::to_string(last) +
+                 " (lines run in the order typed)");
+      const DataValue& code = required(item, "code", where);
+      if (code.kind != DataValue::Kind::String)
+        fail(code, where + ".code", "expected the line of Lua (a string), got " + core::describeData(code));
+      plan.console.push_back({frame, code.text});
+      last = frame;
     }
   }
 
@@ -760,8 +784,11 @@ std::string oneLine(std::string text) {
 }  // namespace
 
 std::string scenarioFromReplay(const core::Replay& replay, const ScenarioResult& outcome, const std::string& name) {
+  // Every line within the project's lint (120 characters): the name is cut if need be.
+  std::string from = oneLine(name);
+  if (from.size() > 100) from = from.substr(0, 97) + "...";
   std::string out =
-      "-- Made by `platon scenario` from " + oneLine(name) + ": the recorded input, and what that run reached.\n";
+      "-- Made by `platon scenario`: the recorded input, and what that run reached.\n-- From " + from + ".\n";
   out += "return {\n  scene = " + core::luaQuoted(replay.scene) + ",\n  frames = " + std::to_string(replay.frames()) +
          ",\n";
   if (replay.start)
@@ -782,19 +809,30 @@ std::string scenarioFromReplay(const core::Replay& replay, const ScenarioResult&
       i = j;
     }
   }
-  out += "  },\n  expect = {\n";
+  out += "  },\n";
+  if (!replay.console.empty()) {  // what was typed, where it ran: part of the input
+    out += "  console = {\n";
+    for (const core::ReplayConsole& line : replay.console)
+      out += "    { at = " + std::to_string(line.frame) + ", code = " + core::luaQuoted(line.code) + " },\n";
+    out += "  },\n";
+  }
+  out += "  expect = {\n";
   if (outcome.status) {
     const GameStatus& s = *outcome.status;
     if (s.won) out += "    goal_by = " + std::to_string(s.wonFrame) + ",\n";
     out += "    deaths = " + std::to_string(s.deaths) + ",\n";
     out += "    face = { [" + std::to_string(outcome.frames) + "] = " + std::to_string(s.face) + " },\n";
   }
-  out += "    hash = {";
+  // Three hashes a line: the lines stay within the project's lint (120 characters).
+  out += "    hash = {\n";
+  int onLine = 0;
   for (const core::ReplayHash& h : replay.hashes) {
     if (h.frame > outcome.frames) break;
-    out += " [" + std::to_string(h.frame) + "] = \"" + hex(h.hash) + "\",";
+    out += std::string(onLine == 0 ? "     " : "") + " [" + std::to_string(h.frame) + "] = \"" + hex(h.hash) + "\",";
+    if (++onLine == 3) out += "\n", onLine = 0;
   }
-  out += " },\n  },\n}\n";
+  if (onLine) out += "\n";
+  out += "    },\n  },\n}\n";
   return out;
 }
 

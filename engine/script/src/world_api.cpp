@@ -320,8 +320,10 @@ int contactCount(lua_State* L) {
   return 1;
 }
 
-// contact(e, i) -> nx, ny (unit normal, away from the line), tag, kind, part, line index, other
-// entity or nil. i from 1 to contactCount(e): the solid contacts of the latest frame.
+// contact(e, i) -> nx, ny (unit normal, away from the line), tag, kind, part, line (1 to
+// lineCount(part), as lineAt takes it; nil against a body), other entity or nil. i from 1 to
+// contactCount(e): the solid contacts of the latest frame. Lua counts from 1, so every index the
+// API hands out or takes does (lines, contacts, instances, faces).
 int contact(lua_State* L) {
   const auto contacts = worldOf(L).entity(checkEntity(L, 1)).contacts();
   const int64_t i = lua::checkInteger(L, 2, 1, static_cast<int64_t>(contacts.size()) + 1);
@@ -334,7 +336,10 @@ int contact(lua_State* L) {
   lua_pushnumber(L, c.line.tag);
   lua_pushstring(L, c.line.index == physics::kNoLine ? "entity" : kindName(c.line.kind));
   lua_pushnumber(L, c.part);
-  lua_pushnumber(L, c.line.index);
+  if (c.line.index == physics::kNoLine)
+    lua_pushnil(L);
+  else
+    lua_pushnumber(L, static_cast<double>(c.line.index) + 1);
   pushEntity(L, c.other);
   return 7;
 }
@@ -391,10 +396,10 @@ int lineCount(lua_State* L) {
   return 1;
 }
 
-// lineAt(part, i) -> x0, y0, x1, y1, tag, kind; i from 0, as the world counts lines.
+// lineAt(part, i) -> x0, y0, x1, y1, tag, kind; i from 1 to lineCount(part), as Lua counts.
 int lineAt(lua_State* L) {
   const physics::MapPart& map = worldOf(L).mapPart(checkPart(L, 1));
-  const int64_t i = lua::checkInteger(L, 2, 0, static_cast<int64_t>(map.lines().size()) - 1);
+  const int64_t i = lua::checkInteger(L, 2, 1, static_cast<int64_t>(map.lines().size())) - 1;
   const physics::Segment& s = map.segments()[static_cast<size_t>(i)];
   lua_pushnumber(L, s.a.x);
   lua_pushnumber(L, s.a.y);

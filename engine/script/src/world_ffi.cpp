@@ -137,7 +137,7 @@ int ffiContact(void* context, double handle, double i, double* out) {
     out[2] = c.line.tag;
     out[3] = c.line.index == physics::kNoLine ? 3 : static_cast<int>(c.line.kind);
     out[4] = c.part;
-    out[5] = c.line.index;
+    out[5] = c.line.index == physics::kNoLine ? -1 : static_cast<double>(c.line.index) + 1;  // from 1, as lineAt
     out[6] = c.other.isSet() ? static_cast<double>(c.other.index) + 16777216.0 * static_cast<double>(c.other.generation)
                              : -1;
     return static_cast<int>(kOk);

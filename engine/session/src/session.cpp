@@ -11,9 +11,6 @@ namespace platon::session {
 
 namespace {
 
-// A notice is read in this long, then fades over the next second.
-constexpr auto kNoticeShown = std::chrono::seconds(4);
-constexpr auto kNoticeFade = std::chrono::seconds(1);
 constexpr size_t kConsoleLog = 6;  // lines of the console kept on screen
 constexpr size_t kConsoleLineBytes = 400;
 
@@ -229,7 +226,9 @@ void Session::draw(const std::vector<std::string>& centre, const std::vector<std
   if (hud) view.hud = hudLines(scene(), st);
   view.hud.insert(view.hud.end(), more.begin(), more.end());
   const auto now = std::chrono::steady_clock::now();
-  std::erase_if(notices_, [&](const Notice& n) { return now - n.shown > kNoticeShown + kNoticeFade; });
+  // Read in noticeSeconds, then gone after a second more (noticeSeconds 0: at the next picture).
+  const auto shownFor = std::chrono::duration<double>(noticeSeconds + (noticeSeconds > 0 ? 1 : 0));
+  std::erase_if(notices_, [&](const Notice& n) { return now - n.shown >= shownFor; });
   for (const Notice& n : notices_) view.hud.push_back(n.text);
   if (consoleOpen_) {
     view.hud.emplace_back("console (Lua in the level's sandbox; Enter runs, ` or Esc closes):");

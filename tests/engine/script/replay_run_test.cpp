@@ -101,6 +101,13 @@ TEST(Replay, TurnsIntoAScenarioThatPasses) {
     core::Replay input = randomRun(rng, 1200, 60);
     if (trial == 0)  // one run that reaches the goal
       for (uint8_t& h : input.held) h = InputFrame::bit(Button::Right);
+    // Lines typed in the console are part of the input (a play-test kept with K may carry them);
+    // a long one too, with quotes (the scenario quotes it whole).
+    if (trial % 2 == 1) {
+      input.console.push_back({static_cast<uint64_t>(rng.between(2, 400)),
+                               "game.world.setVelocity(game.player(), 0, -9) -- \"up\" " + std::string(150, 'x')});
+      input.console.push_back({input.console.back().frame + 5, "game.message('typed')"});
+    }
     const core::Replay recorded = record(folder, input, "run.replay");
     const std::string replayPath = folder.write("run.replay", core::formatReplay(recorded));
     const ScenarioResult outcome = runReplay(replayPath);
@@ -111,6 +118,18 @@ TEST(Replay, TurnsIntoAScenarioThatPasses) {
     }
     const ScenarioResult r = runScenario(folder.write("scenario.lua", text));
     ASSERT_TRUE(r.passed) << r.message << "\n" << text;
+    if (!input.console.empty()) {
+      EXPECT_NE(text.find("console = {"), std::string::npos) << text;
+    }
+    // Every line within the project's lint, but a console line's own (it is quoted whole).
+    for (size_t begin = 0; begin < text.size();) {
+      const size_t end = text.find('\n', begin);
+      const std::string line = text.substr(begin, end - begin);
+      if (line.find("code = ") == std::string::npos) {
+        EXPECT_LE(line.size(), 120u) << line;
+      }
+      begin = end == std::string::npos ? text.size() : end + 1;
+    }
     // A scenario that expects the goal stops there; otherwise it ends where the replay did.
     if (!outcome.status->won) {
       EXPECT_EQ(r.hash, outcome.hash);

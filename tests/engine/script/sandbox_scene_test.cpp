@@ -97,7 +97,7 @@ const char* kTellsWhatItSees =
     "return { build = function(game) game.message((io and 'io ' or 'no io ') .. (require and 'require' or 'no "
     "require')) end }\n";
 
-TEST(Finding1, ALevelOpenedThroughAPathUnderScriptsIsStillSandboxed) {
+TEST(Trust, ALevelOpenedThroughAPathUnderScriptsIsStillSandboxed) {
   Level level("f1_path", kTellsWhatItSees);
   // "scripts/../../../tmp/.../scene.lua" from the engine's root: the same file, a path that starts
   // with scripts/ (tests run in the source root).
@@ -113,7 +113,7 @@ TEST(Finding1, ALevelOpenedThroughAPathUnderScriptsIsStillSandboxed) {
   EXPECT_EQ(scriptsOf(live).status().message, "no io no require");
 }
 
-TEST(Finding1, ALinkOutOfTheLevelsFolderIsRefused) {
+TEST(Trust, ALinkOutOfTheLevelsFolderIsRefused) {
   Folder outside("f1_outside");
   const std::string target = outside.write("evil.lua", kTellsWhatItSees);
   Level level("f1_link", "return {}\n");
@@ -131,7 +131,7 @@ TEST(Finding1, ALinkOutOfTheLevelsFolderIsRefused) {
 }
 
 // An engine script is looked for under the engine's root, and must stay under its scripts/.
-TEST(Finding1, AnEngineScriptLinkedFromOutsideTheEnginesScriptsIsRefused) {
+TEST(Trust, AnEngineScriptLinkedFromOutsideTheEnginesScriptsIsRefused) {
   Folder root("f1_root");
   for (const char* file :
        {"scripts/scene.lua", "scripts/player.lua", "scripts/progression.lua", "scripts/rules/game.lua"})
@@ -155,7 +155,7 @@ TEST(Finding1, AnEngineScriptLinkedFromOutsideTheEnginesScriptsIsRefused) {
   }
 }
 
-TEST(Finding1, ReplaysAndScenariosMayNotNameASceneWithDotDot) {
+TEST(Trust, ReplaysAndScenariosMayNotNameASceneWithDotDot) {
   try {
     core::parseReplay(
         "platon replay 1\nscene \"scripts/../../../tmp/x/scene.lua\"\nframes 1\nhash_every 60\ninput\n1 -\nend\n",
@@ -180,7 +180,7 @@ TEST(Finding1, ReplaysAndScenariosMayNotNameASceneWithDotDot) {
 
 // --- 2, 16: the game's API checks what a sandbox hands it ---
 
-TEST(Finding2, BadSwitchIdsAreErrorsAtTheCallersLineAndTheGameGoesOn) {
+TEST(SwitchIds, BadSwitchIdsAreErrorsAtTheCallersLineAndTheGameGoesOn) {
   for (const char* bad :
        {"{}", "0", "0/0", "setmetatable({}, {__add = function() error('planted') end})", "1.5", "1000", "'3'"}) {
     Level level("f2_toggle", std::string("return { tick = function(game, frame)\n  if frame == 5 then game.toggle(") +
@@ -206,7 +206,7 @@ TEST(Finding2, BadSwitchIdsAreErrorsAtTheCallersLineAndTheGameGoesOn) {
       << p.errors[0];
 }
 
-TEST(Finding16, ABadCheckpointIsAnErrorAtItsLineAndDeathsStillRespawn) {
+TEST(PlayerSafety, ABadCheckpointIsAnErrorAtItsLineAndDeathsStillRespawn) {
   Level level("f16_checkpoint",
               "return { tick = function(game, frame)\n"
               "  if frame == 5 then game.checkpoint(99, 0, 0) end\n"
@@ -228,7 +228,7 @@ TEST(Finding16, ABadCheckpointIsAnErrorAtItsLineAndDeathsStillRespawn) {
 
 // A checkpoint inside a wall: the respawn falls back to the level's start (the old player is
 // destroyed only once the new one stands).
-TEST(Finding16, ACheckpointInAWallRespawnsAtTheLevelStart) {
+TEST(PlayerSafety, ACheckpointInAWallRespawnsAtTheLevelStart) {
   Level level("f16_wall",
               "return {\n"
               "  build = function(game) game.world.line(0, 2000, 400, 2000, 1400) end,\n"
@@ -245,7 +245,7 @@ TEST(Finding16, ACheckpointInAWallRespawnsAtTheLevelStart) {
   EXPECT_EQ(live.scene().world().entityCount(), 1u);
 }
 
-TEST(Finding16, ASandboxMayNotDestroyOrEraseThePlayer) {
+TEST(PlayerSafety, ASandboxMayNotDestroyOrEraseThePlayer) {
   for (const char* call : {"game.world.destroyEntity(game.player())", "game.world.erase(game.player(), 0)",
                            "platon.world.destroyEntity(game.player())"}) {
     Level level("f16_destroy",
@@ -264,7 +264,7 @@ TEST(Finding16, ASandboxMayNotDestroyOrEraseThePlayer) {
 
 // If the player's entity is gone all the same (here: trusted code destroyed it), the player comes
 // back once, with a message, instead of an error on every frame.
-TEST(Finding16, ALostPlayerRespawnsOnce) {
+TEST(PlayerSafety, ALostPlayerRespawnsOnce) {
   Level level("f16_lost", "return {}\n");
   const core::SystemRegistry registry = scripting();
   core::LiveScene live(level.scene, registry, false);
@@ -278,7 +278,7 @@ TEST(Finding16, ALostPlayerRespawnsOnce) {
 
 // --- 3: status() and draw() never throw ---
 
-TEST(Finding3, AnErrorInStatusIsReportedWithTheNextFrameAndTheLastGoodStatusStays) {
+TEST(StatusAndDraw, AnErrorInStatusIsReportedWithTheNextFrameAndTheLastGoodStatusStays) {
   Level level("f3_status", "return {}\n");
   const core::SystemRegistry registry = scripting();
   core::LiveScene live(level.scene, registry, false);
@@ -294,7 +294,7 @@ TEST(Finding3, AnErrorInStatusIsReportedWithTheNextFrameAndTheLastGoodStatusStay
       << after.errors[0];
 }
 
-TEST(Finding3, AnErrorInLevelDrawLeavesAnEmptyPictureAndIsReported) {
+TEST(StatusAndDraw, AnErrorInLevelDrawLeavesAnEmptyPictureAndIsReported) {
   Level level(
       "f3_draw",
       "return { draw = function(game, draw) draw.circle(0, 1, 1, 5, 0xffffff) error('an ordinary bug') end }\n");
@@ -312,7 +312,7 @@ TEST(Finding3, AnErrorInLevelDrawLeavesAnEmptyPictureAndIsReported) {
 
 // --- 4, 5: sandboxes get read-only views of the engine's tables ---
 
-TEST(Finding4, TheEnginesTablesAreReadOnlyInEverySandbox) {
+TEST(EngineTables, TheEnginesTablesAreReadOnlyInEverySandbox) {
   const char* attempts[][2] = {
       {"game.message = 1", "game is read-only (tried to set message)"},
       {"game.world.valid = function() end", "game.world is read-only (tried to set valid)"},
@@ -341,7 +341,7 @@ TEST(Finding4, TheEnginesTablesAreReadOnlyInEverySandbox) {
   EXPECT_NE(p.errors[0].find("level.lua:1: draw is read-only (tried to set circle)"), std::string::npos) << p.errors[0];
 }
 
-TEST(Finding5, SandboxedRulesGetTheLevelsViewAndTheGamesSetters) {
+TEST(SandboxedRules, SandboxedRulesGetTheLevelsViewAndTheGamesSetters) {
   const char* rules =
       "local game = ...\n"
       "assert(game.Player == nil and game.progression == nil and game.switches == nil, 'the trusted game table')\n"
@@ -360,7 +360,7 @@ TEST(Finding5, SandboxedRulesGetTheLevelsViewAndTheGamesSetters) {
 
 // --- 6, 7, 18: patterns ---
 
-TEST(Finding6, StringMethodsAreTheCountedPatternFunctionsToo) {
+TEST(StringMethods, StringMethodsAreTheCountedPatternFunctionsToo) {
   Level level("f6_method",
               "return { build = function(game)\n"
               "  local ok, e = pcall(function() local r = (string.rep('a', 200)):find('.-.-.-.-b') return r end)\n"
@@ -372,7 +372,7 @@ TEST(Finding6, StringMethodsAreTheCountedPatternFunctionsToo) {
             std::string("level.lua") + ":2: pattern too costly (more than 2000000 steps) / dump: nil");
 }
 
-TEST(Finding7, CostlyPatternsAreRefusedWhateverTheirShape) {
+TEST(CostlyPatterns, CostlyPatternsAreRefusedWhateverTheirShape) {
   struct Case {
     const char* code;
     const char* result;
@@ -397,7 +397,7 @@ TEST(Finding7, CostlyPatternsAreRefusedWhateverTheirShape) {
 
 // --- 8: a loop of slow C calls is stopped by the work they are charged ---
 
-TEST(Finding8, ALoopOfSlowCallsIsStoppedByTheirWork) {
+TEST(SlowCalls, ALoopOfSlowCallsIsStoppedByTheirWork) {
   // Each search of 4 MB is charged the bytes it passes (250,000 steps), and so was making the
   // string: the loop runs 39 times, not the 10^6 its instructions alone would allow.
   const char* level =
@@ -420,7 +420,7 @@ TEST(Finding8, ALoopOfSlowCallsIsStoppedByTheirWork) {
 // Whole-world queries cost what they do: a loop of them spends the frame's budget by their work
 // (the overlap check's pairs and index nodes, the hash's entities), not one step a call. Without
 // the charge each loop ran about ten times as long before the budget stopped it.
-TEST(Finding8, ALoopOfWholeWorldQueriesIsStoppedByTheirWork) {
+TEST(SlowCalls, ALoopOfWholeWorldQueriesIsStoppedByTheirWork) {
   for (const std::string query : {"countOverlaps", "stateHash"}) {
     SCOPED_TRACE(query);
     const std::string level =
@@ -445,7 +445,7 @@ TEST(Finding8, ALoopOfWholeWorldQueriesIsStoppedByTheirWork) {
 
 // --- 9: a level's manifest may lower the limits, never raise them ---
 
-TEST(Finding9, AManifestCannotRaiseTheLimits) {
+TEST(ManifestLimits, AManifestCannotRaiseTheLimits) {
   Level level("f9_limits", "return {}\n", "return { tick = function() while true do end end }\n", "",
               ", limits = { memory_mb = 4096, steps = 1e9, deadline_ms = 60000 }");
   const core::SystemRegistry registry = scripting();
@@ -467,7 +467,7 @@ TEST(Finding9, AManifestCannotRaiseTheLimits) {
 
 // --- 10: one budget a frame for every sandboxed call, rules callbacks included ---
 
-TEST(Finding10, RulesCallbacksShareTheFramesBudget) {
+TEST(FrameBudget, RulesCallbacksShareTheFramesBudget) {
   const char* level =
       "return { tick = function(game, frame)\n"
       "  if frame == 1 then for i = 0, 19 do local e = game.world.createEntity { circle = 40 }\n"
@@ -494,7 +494,7 @@ TEST(Finding10, RulesCallbacksShareTheFramesBudget) {
 
 // --- 11: a runaway module is disabled; each module's hooks have their own error boundary ---
 
-TEST(Finding11, ARunawayModIsDisabledAndTheOthersGoOn) {
+TEST(RunawayMods, ARunawayModIsDisabledAndTheOthersGoOn) {
   const char* levelScript = "return { tick = function(game, frame) error('the level fails every frame') end }\n";
   const char* mod =
       "return { tick = function(game, frame)\n"
@@ -522,7 +522,7 @@ TEST(Finding11, ARunawayModIsDisabledAndTheOthersGoOn) {
 
 // --- 12: hot reload's copy of save() data ---
 
-TEST(Finding12, SavedDataIsCopiedOnceCyclesKeptAndTooMuchRefused) {
+TEST(ReloadCarry, SavedDataIsCopiedOnceCyclesKeptAndTooMuchRefused) {
   // A DAG of 60 levels (2^60 paths), a cycle and a shared table.
   const std::string hooks =
       "local saved\n"
@@ -555,7 +555,7 @@ TEST(Finding12, SavedDataIsCopiedOnceCyclesKeptAndTooMuchRefused) {
 
 // Past the copy's bounds (entries, bytes of distinct strings, depth) the reload is refused with the
 // reason, and the old version goes on: its state and its scripts, frame after frame.
-TEST(Finding12, TooMuchToCarryOverKeepsTheOldVersion) {
+TEST(ReloadCarry, TooMuchToCarryOverKeepsTheOldVersion) {
   const std::pair<const char*, const char*> saves[] = {
       {"local t = {} for i = 1, 1100000 do t[i] = true end return t", "more than 1000000 table entries"},
       {"local t = {} for i = 1, 40 do t[i] = string.rep(string.char(64 + i), 1024 * 1024) end return t",
@@ -585,7 +585,7 @@ TEST(Finding12, TooMuchToCarryOverKeepsTheOldVersion) {
 
 // --- 13, 14: what Lua makes in C++ is capped ---
 
-TEST(Finding13, EntitiesAndPlatformsMadeFromLuaAreCapped) {
+TEST(CreationCaps, EntitiesAndPlatformsMadeFromLuaAreCapped) {
   Level level("f13_flood",
               "return { tick = function(game, frame)\n"
               "  for i = 1, 1000 do game.world.createEntity { circle = 10 } end\n"
@@ -900,6 +900,38 @@ TEST(OwnGameLogic, TheEnginesFunctionsItCallsAreCountedAsItsOwn) {
   EXPECT_LT(calls[2], calls[3] / 2) << calls[2] << " calls of game.Player.canJump, " << calls[3] << " of its own";
 }
 
+// Every index the API takes or hands out counts from 1, as Lua does: the line a contact names is
+// the one lineAt gives for it (lineAt counted from 0, contacts and faces from 1), on the classic
+// path a sandbox calls and the FFI path the engine's own scripts call.
+TEST(Indices, ALinesIndexCountsFromOneAndAContactNamesIt) {
+  const char* probe =
+      "local w = game.world or platon.world\n"
+      "local p = game.player and (type(game.player) == 'function' and game.player() or game.player.entity)\n"
+      "local out = {}\n"
+      "for i = 1, w.contactCount(p) do\n"
+      "  local _, ny, _, kind, part, line = w.contact(p, i)\n"
+      "  if kind ~= 'entity' and ny > 0.5 then\n"
+      "    local x0, y0, x1, y1 = w.lineAt(part, line)\n"
+      "    local _, py = w.position(p)\n"
+      "    out[#out + 1] = (y0 == y1 and y0 < py and x0 <= 600 and x1 >= 600) and 'floor' or ('not ' .. y0 .. ' ' .. "
+      "y1)\n"
+      "    out[#out + 1] = tostring(pcall(w.lineAt, part, 0)) .. ' ' .. tostring(pcall(w.lineAt, part, "
+      "w.lineCount(part)))"
+      " .. ' ' .. tostring(pcall(w.lineAt, part, w.lineCount(part) + 1))\n"
+      "  end\n"
+      "end\n";
+  Level level("indices", std::string("return { tick = function(game, frame) if frame == 40 then ") + probe +
+                             " game.message(table.concat(out, ';')) end end }\n");
+  const core::SystemRegistry registry = scripting();
+  core::LiveScene live(level.scene, registry, false);
+  const Played p = play(live, 41, 0);
+  EXPECT_TRUE(p.errors.empty()) << joined(p.errors);
+  EXPECT_EQ(p.status.message, "floor;false true false") << "sandboxed, classic path";
+  const std::string trusted =
+      scriptsOf(live).evaluate(std::string("local game = ... ") + probe + " return table.concat(out, ';')", "=t");
+  EXPECT_EQ(trusted, "floor;false true false") << "trusted, the FFI path";
+}
+
 // A rules table whose callback is not a function names the rules script (it named nothing).
 TEST(RulesScript, ACallbackThatIsNoFunctionNamesTheScript) {
   Level level("rules_not_fn", "return {}\n", "", "return { pierce = function() return true end, contact = 5 }\n");
@@ -979,7 +1011,7 @@ TEST(Manifests, AMissingModIsNamedAtTheManifestsPlace) {
   }
 }
 
-TEST(Finding14, MessagesAndDrawingAreCapped) {
+TEST(OutputCaps, MessagesAndDrawingAreCapped) {
   Level level(
       "f14_caps",
       "return {\n"
@@ -1003,7 +1035,7 @@ TEST(Finding14, MessagesAndDrawingAreCapped) {
 
 // --- 15: a mod at the memory ceiling leaves the engine's scripts their reserve ---
 
-TEST(Finding15, AModAtTheMemoryCeilingDoesNotStarveThePlayer) {
+TEST(MemoryCeiling, AModAtTheMemoryCeilingDoesNotStarveThePlayer) {
   const char* mod =
       "hoard = {}\n"
       "return { tick = function(game, frame)\n"
@@ -1062,7 +1094,7 @@ uint64_t hashInAChildProcess(const std::string& scene) {
 // (LuaJIT seeds its string hashes per process, so tables resize and the collector runs at other
 // moments; the JIT is not the cause: turned off, runs still differed), and that flood counts its
 // place into face 5's gravity, so a later stop shows as a larger count (docs/scripting.md, Limits).
-TEST(Finding15, AMemoryFloodIsStoppedInTheSameFrameOfEveryProcess) {
+TEST(MemoryCeiling, AMemoryFloodIsStoppedInTheSameFrameOfEveryProcess) {
   const char* level =
       "hoard = {}\n"
       "return { tick = function(game, frame)\n"
@@ -1099,7 +1131,7 @@ TEST(Finding15, AMemoryFloodIsStoppedInTheSameFrameOfEveryProcess) {
   EXPECT_LT(scriptsOf(live).luaMemoryBytes(), size_t{8} << 20);  // the hoard was collected
 }
 
-TEST(Finding17, PairsClocksAndAddressesGiveTheSameRunInEveryProcess) {
+TEST(Determinism, PairsClocksAndAddressesGiveTheSameRunInEveryProcess) {
   const char* script =
       "local keys = {}\n"
       "for i = 1, 8 do keys['k' .. i] = i end\n"
@@ -1142,7 +1174,7 @@ TEST(Finding17, PairsClocksAndAddressesGiveTheSameRunInEveryProcess) {
 
 // --- 19: error messages say where, and who ---
 
-TEST(Finding19, ErrorsNameTheSandboxedFileAndLine) {
+TEST(ErrorMessages, ErrorsNameTheSandboxedFileAndLine) {
   struct Case {
     const char* tick;
     const char* message;
@@ -1176,7 +1208,7 @@ TEST(Finding19, ErrorsNameTheSandboxedFileAndLine) {
 }
 
 // The velocity's range is the world's, the same with the FFI path (the default) and without.
-TEST(Finding19, TheVelocityRangeIsTheWorldsOnBothPaths) {
+TEST(ErrorMessages, TheVelocityRangeIsTheWorldsOnBothPaths) {
   for (const bool ffi : {true, false}) {
     if (ffi)
       unsetenv("PLATON_NO_FFI");
@@ -1203,7 +1235,7 @@ TEST(Finding19, TheVelocityRangeIsTheWorldsOnBothPaths) {
 
 // A sandboxed rules script that spends the frame inside a trusted call (the player's spawn asks
 // pierce): the stop names the rules script, not the engine's code that happened to run.
-TEST(Finding19, ABudgetStopBlamesTheSandboxThatSpentIt) {
+TEST(ErrorMessages, ABudgetStopBlamesTheSandboxThatSpentIt) {
   const char* rules =
       "local rules = {}\n"
       "function rules.pierce(entity, tag, kind)\n"
@@ -1227,7 +1259,7 @@ TEST(Finding19, ABudgetStopBlamesTheSandboxThatSpentIt) {
 
 // --- 20: table.sort runs in C: a bound on what it sorts ---
 
-TEST(Finding20, SortRefusesHugeTables) {
+TEST(SortBound, SortRefusesHugeTables) {
   Level level("f20_sort",
               "return { build = function(game)\n"
               "  local t = {} for i = 1, 1000001 do t[i] = -i end\n"
@@ -1542,7 +1574,7 @@ namespace {
 // with pcall), its tracebacks' names and what it computes from them name the file from the level's
 // folder ("mods/m.lua:2:"), never the player's folders; the same level in two places of different
 // depths plays to the same message and the same state hash.
-TEST(Finding19, ASandboxSeesTheSameNamesWhereverItsLevelIs) {
+TEST(ErrorMessages, ASandboxSeesTheSameNamesWhereverItsLevelIs) {
   const std::string level =
       "return { tick = function(game, frame)\n"
       "  local ok, e = pcall(function() error('x') end)\n"

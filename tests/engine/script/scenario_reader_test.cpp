@@ -47,6 +47,13 @@ TEST(ScenarioReader, EveryMalformedValueIsRefusedAtItsLineAndColumn) {
        "input[1]: expected { hold = \"button\", from =, to = } or { press = \"button\", at =, frames = }, got 5"},
       {"  expect = { inside = { 5 } },", "5",
        "expect.inside[1]: expected { frame =, face =, box = { x0, y0, x1, y1 } }, got 5"},
+      // The console's lines: { at = frame, code = "Lua" }, in the order typed.
+      {"  console = { { at = 5 } },", "{ at = 5 }", "console[1]: 'code' is missing"},
+      {"  console = { { at = 500, code = 'x = 1' } },", "500", "console[1].at: 500 is outside 1..100"},
+      {"  console = { { at = 5, code = 7 } },", "7", "console[1].code: expected the line of Lua (a string), got 7"},
+      {"  console = { { at = 9, code = 'a' }, { at = 3, code = 'b' } },", "3",
+       "console[2].at: frame 3 is before the line above's, 9 (lines run in the order typed)"},
+      {"  console = { { at = 5, code = 'a', when = 1 } },", "when", "console[1]: unknown key 'when' (known: at, code)"},
       // C2: unknown keys, with the known ones.
       {"  expect = { goal_bye = 10 },", "goal_bye",
        "expect: unknown key 'goal_bye' (known: goal_by, deaths, face, inside, hash, sounds, switches, checkpoint)"},
@@ -62,7 +69,7 @@ TEST(ScenarioReader, EveryMalformedValueIsRefusedAtItsLineAndColumn) {
       {"  expect = { checkpoint = { [50] = { 0, 1.5, 2 } } },", "1.5",
        "expect.checkpoint[50][2]: expected a whole number in -1073741823..1073741823, got 1.5"},
       {"  expcet = { goal_by = 10 },", "expcet",
-       "scenario: unknown key 'expcet' (known: scene, frames, start, input, expect)"},
+       "scenario: unknown key 'expcet' (known: scene, frames, start, input, console, expect)"},
       // The start: { face, x, y } where the run starts, on the stage and clear of walls.
       {"  start = 5,", "5", "start: expected { face = F, x = X, y = Y }, got 5"},
       {"  start = { face = 0, x = 600 },", "{ face", "start: 'y' is missing"},

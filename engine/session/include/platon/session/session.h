@@ -81,8 +81,9 @@ class Session {
   // The picture goes on without the game (the level-complete screen: the confetti falls).
   void idle();
 
-  // A line under the heads-up text for a few seconds, then it fades.
+  // A line under the heads-up text for `noticeSeconds`, then it fades (in one more second).
   void say(const std::string& text);
+  double noticeSeconds = 4;
   // Shows the frame: the stage, the scripts' picture, the heads-up lines (when `hud`), `more`
   // lines under them, the notices and the console, `centre` text over it all.
   void draw(const std::vector<std::string>& centre = {}, const std::vector<std::string>& more = {}, bool hud = true);
