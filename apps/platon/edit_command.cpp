@@ -164,6 +164,32 @@ std::string keepRun(EditorWindow& s, core::Scene& scene, const core::Replay& pla
                        : " but it does not pass headless: " + check.message);
 }
 
+// The play-test's lines under the heads-up text.
+std::vector<std::string> playTestLines(const stage::LevelPoint& start, bool won, const std::string& kept) {
+  std::vector<std::string> lines{"play-test from face " + std::to_string(start.face) + " (" +
+                                 std::to_string(start.position.x) + ", " + std::to_string(start.position.y) +
+                                 "): Esc goes back to the editor"};
+  if (won) lines.push_back(kept.empty() ? "goal reached: K keeps this run as a test beside the level" : kept);
+  return lines;
+}
+
+bool pressedK(const core::WindowInput& in) {
+  return std::any_of(in.keys.begin(), in.keys.end(), [](const core::KeyPress& k) { return k.name == "K"; });
+}
+
+// K on a run that reached the goal: what keepRun says, or why it could not.
+std::string keep(EditorWindow& w, session::Session& s) {
+  std::string kept;
+  try {
+    kept = keepRun(w, s.scene(), *s.run().recorded(), s.status());
+  } catch (const std::exception& e) {
+    kept = std::string("not kept: ") + e.what();
+  }
+  std::printf("%s\n", kept.c_str());
+  std::fflush(stdout);
+  return kept;
+}
+
 // Plays the level as edited from the editor's cursor in the same window until Esc: a session
 // (session.h) like the game's and `play`'s, with their tools (the console, F2, F3, F5, F12); the
 // run stops at the goal, the picture goes on (the goal's flash fades), and K keeps the run.
@@ -195,16 +221,7 @@ void playFromCursor(EditorWindow& w) {
     const core::WindowInput in = s.poll();
     if (in.closed || std::find(in.pressed.begin(), in.pressed.end(), core::Key::Escape) != in.pressed.end()) break;
     const bool won = s.status().won;  // the run ends at the goal: what is kept is the run that reached it
-    for (const core::KeyPress& key : in.keys)
-      if (key.name == "K" && won && kept.empty() && !s.consoleOpen()) {
-        try {
-          kept = keepRun(w, s.scene(), *s.run().recorded(), s.status());
-        } catch (const std::exception& e) {
-          kept = std::string("not kept: ") + e.what();
-        }
-        std::printf("%s\n", kept.c_str());
-        std::fflush(stdout);
-      }
+    if (won && kept.empty() && !s.consoleOpen() && pressedK(in)) kept = keep(w, s);
     if (!won) {
       s.playDue(in, 100, false, reached);
     } else {
@@ -216,11 +233,7 @@ void playFromCursor(EditorWindow& w) {
       std::fflush(stdout);
       saidWon = true;
     }
-    std::vector<std::string> more{"play-test from face " + std::to_string(start.face) + " (" +
-                                  std::to_string(start.position.x) + ", " + std::to_string(start.position.y) +
-                                  "): Esc goes back to the editor"};
-    if (status.won) more.push_back(kept.empty() ? "goal reached: K keeps this run as a test beside the level" : kept);
-    s.draw({}, more);
+    s.draw({}, playTestLines(start, status.won, kept));
   }
   w.editor.say(kept.empty() ? std::string(s.status().won ? "back from a run that reached the goal (not kept)"
                                                          : "back from the play-test")

@@ -143,6 +143,9 @@ class Game {
   bool assisted() const { return settings_.gameSpeed < 100; }
   void handle(const core::WindowInput& input);
   void menuKey(core::Key key);
+  void titleKey(core::Key key);
+  void pausedKey(core::Key key);
+  void completeKey(core::Key key);
   void play() {
     screen_ = Screen::Playing;
     std::printf("playing %s\n", levels_[level_].folder.c_str());
@@ -188,6 +191,8 @@ class Game {
     sound("menu_select");
   }
   void settingsKey(core::Key key);
+  bool changeSetting(int item, int step, bool enter);
+  void leaveSettings();
   bool bindKey(const core::WindowInput& input);
   std::vector<std::string> settingsLines() const;
   void applySettings() {
@@ -211,6 +216,7 @@ class Game {
   }
   void draw();
   std::vector<std::string> titleLines() const;
+  std::string levelLine(size_t i) const;
 
   std::vector<CampaignLevel> levels_;
   std::vector<std::string> names_;
@@ -269,23 +275,28 @@ bool Game::load(size_t level) {
   return true;
 }
 
+// A level's line on the title: its number and name, and done (best time, deaths, par), locked, or
+// its par.
+std::string Game::levelLine(size_t i) const {
+  std::string line = (i == selected_ ? "> " : "  ") + std::to_string(i + 1) + ". " + names_[i];
+  const uint64_t par = levels_[i].parFrames;
+  if (const LevelRecord* r = progress_.record(levels_[i].folder)) {
+    line += "   done " + session::clockText(r->bestFrames) + ", " + std::to_string(r->fewestDeaths) +
+            (r->fewestDeaths == 1 ? " death" : " deaths") + (r->assisted ? " (assist)" : "");
+    if (par && !r->assisted && r->bestFrames <= par) line += "  * par";
+  } else if (!progress_.open(levels_, i)) {
+    line += "   (locked)";
+  } else if (par) {
+    line += "   par " + session::clockText(par, false);
+  }
+  return i == selected_ ? line + " <" : line;
+}
+
 std::vector<std::string> Game::titleLines() const {
   std::vector<std::string> lines{"PLATON", "a platformer on the faces of the solids", ""};
   for (size_t i = 0; i < levels_.size(); ++i) {
     if (levels_[i].yours && (i == 0 || !levels_[i - 1].yours)) lines.push_back("your levels:");
-    const LevelRecord* r = progress_.record(levels_[i].folder);
-    std::string line = (i == selected_ ? "> " : "  ") + std::to_string(i + 1) + ". " + names_[i];
-    if (r) {
-      line += "   done " + session::clockText(r->bestFrames) + ", " + std::to_string(r->fewestDeaths) +
-              (r->fewestDeaths == 1 ? " death" : " deaths") + (r->assisted ? " (assist)" : "");
-      if (levels_[i].parFrames && !r->assisted) line += r->bestFrames <= levels_[i].parFrames ? "  * par" : "";
-    } else if (!progress_.open(levels_, i)) {
-      line += "   (locked)";
-    } else if (levels_[i].parFrames) {
-      line += "   par " + session::clockText(levels_[i].parFrames, false);
-    }
-    if (i == selected_) line += " <";
-    lines.push_back(line);
+    lines.push_back(levelLine(i));
   }
   lines.push_back("");
   lines.push_back(progress_.open(levels_, selected_) ? "Up/Down choose, Enter play, Tab settings, Esc quit"
@@ -309,35 +320,13 @@ void Game::handle(const core::WindowInput& input) {
 void Game::menuKey(core::Key key) {
   switch (screen_) {
     case Screen::Title:
-      if (key == core::Key::Escape) askToQuit();
-      if (key == core::Key::Settings) openSettings();
-      if ((key == core::Key::Up || key == core::Key::Down) && levels_.size() > 1) {
-        // The cursor moves whether or not the level loads (a broken one says why on the HUD);
-        // behind the title, the chosen level's stage when it does.
-        selected_ =
-            key == core::Key::Up ? (selected_ + levels_.size() - 1) % levels_.size() : (selected_ + 1) % levels_.size();
-        load(selected_);
-        sound("menu_move");
-      }
-      if (key == core::Key::Enter && !progress_.open(levels_, selected_)) sound("menu_move");  // locked
-      if (key == core::Key::Enter && progress_.open(levels_, selected_) && load(selected_))
-        sound("menu_select"), play();
+      titleKey(key);
       break;
     case Screen::Playing:
       if (key == core::Key::Escape) screen_ = Screen::Paused, menuItem_ = 0;
       break;
     case Screen::Paused:
-      if (key == core::Key::Escape) screen_ = Screen::Playing, session_->hold();
-      if (key == core::Key::Up) menuItem_ = (menuItem_ + kPauseCount - 1) % kPauseCount, sound("menu_move");
-      if (key == core::Key::Down) menuItem_ = (menuItem_ + 1) % kPauseCount, sound("menu_move");
-      if (key == core::Key::Enter) {
-        sound("menu_select");
-        if (menuItem_ == 0) screen_ = Screen::Playing, session_->hold();
-        if (menuItem_ == 1 && load(level_)) play();
-        if (menuItem_ == 2) finishRecording(), screen_ = Screen::Title, selected_ = level_;
-        if (menuItem_ == 3) openSettings();
-        if (menuItem_ == 4) askToQuit();
-      }
+      pausedKey(key);
       break;
     case Screen::Settings:
       settingsKey(key);
@@ -347,17 +336,52 @@ void Game::menuKey(core::Key key) {
       if (key == core::Key::Escape) screen_ = quitFrom_, sound("menu_move");
       break;
     case Screen::Complete:
-      if (key == core::Key::Enter || key == core::Key::Escape) {
-        if (level_ + 1 < levels_.size() && key == core::Key::Enter) {
-          if (load(level_ + 1)) play();
-        } else {  // the level select, its cursor on the next level (now open)
-          screen_ = Screen::Title;
-          selected_ = level_ + 1 < levels_.size() ? level_ + 1 : level_;
-          load(selected_);
-        }
-      }
+      completeKey(key);
       break;
   }
+}
+
+void Game::titleKey(core::Key key) {
+  if (key == core::Key::Escape) askToQuit();
+  if (key == core::Key::Settings) openSettings();
+  if ((key == core::Key::Up || key == core::Key::Down) && levels_.size() > 1) {
+    // The cursor moves whether or not the level loads (a broken one says why on the HUD);
+    // behind the title, the chosen level's stage when it does.
+    const size_t n = levels_.size();
+    selected_ = key == core::Key::Up ? (selected_ + n - 1) % n : (selected_ + 1) % n;
+    load(selected_);
+    sound("menu_move");
+  }
+  if (key != core::Key::Enter) return;
+  if (!progress_.open(levels_, selected_))
+    sound("menu_move");  // locked
+  else if (load(selected_))
+    sound("menu_select"), play();
+}
+
+void Game::pausedKey(core::Key key) {
+  if (key == core::Key::Escape) screen_ = Screen::Playing, session_->hold();
+  if (key == core::Key::Up) menuItem_ = (menuItem_ + kPauseCount - 1) % kPauseCount, sound("menu_move");
+  if (key == core::Key::Down) menuItem_ = (menuItem_ + 1) % kPauseCount, sound("menu_move");
+  if (key != core::Key::Enter) return;
+  sound("menu_select");
+  if (menuItem_ == 0) screen_ = Screen::Playing, session_->hold();
+  if (menuItem_ == 1 && load(level_)) play();
+  if (menuItem_ == 2) finishRecording(), screen_ = Screen::Title, selected_ = level_;
+  if (menuItem_ == 3) openSettings();
+  if (menuItem_ == 4) askToQuit();
+}
+
+void Game::completeKey(core::Key key) {
+  if (key != core::Key::Enter && key != core::Key::Escape) return;
+  if (level_ + 1 < levels_.size() && key == core::Key::Enter) {
+    if (load(level_ + 1)) play();
+    return;
+  }
+  // The level select, its cursor on the next level (now open).
+  screen_ = Screen::Title;
+  selected_ = level_ + 1 < levels_.size() ? level_ + 1 : level_;
+  load(selected_);
 }
 
 namespace {
@@ -366,62 +390,64 @@ constexpr int kFirstKeyItem = 7;                                               /
 constexpr int kSettingsItems = kFirstKeyItem + core::KeyBindings::kBound + 1;  // the keys, then Back
 }  // namespace
 
+// Changes the settings row `item` by `step` (Left -1, Right 1) or Enter; whether it changed.
+bool Game::changeSetting(int item, int step, bool enter) {
+  const bool flip = step != 0 || enter;
+  switch (item) {
+    case 0:
+      settings_.musicVolume = std::clamp(settings_.musicVolume + 10 * step, 0, 100);
+      return step != 0;
+    case 1:
+      settings_.effectsVolume = std::clamp(settings_.effectsVolume + 10 * step, 0, 100);
+      return step != 0;
+    case 2:
+      if (flip) settings_.screenShake = !settings_.screenShake;
+      return flip;
+    case 3:
+      if (flip) settings_.fullscreen = !settings_.fullscreen;
+      return flip;
+    case 4:
+      if (flip) settings_.vsync = !settings_.vsync;
+      return flip;
+    case 5:
+      settings_.gameSpeed = std::clamp(settings_.gameSpeed + 10 * step, 50, 100);
+      return step != 0;
+    case 6: {  // auto (-1), off, 2x, 4x, 8x
+      static constexpr int kSamples[] = {-1, 0, 2, 4, 8};
+      const auto found = std::find(std::begin(kSamples), std::end(kSamples), settings_.multisamples);
+      const int at = found == std::end(kSamples) ? 0 : static_cast<int>(found - std::begin(kSamples));
+      const int next = step ? std::clamp(at + step, 0, 4) : enter ? (at + 1) % 5 : at;
+      const bool changed = kSamples[next] != settings_.multisamples;
+      settings_.multisamples = kSamples[next];
+      return changed;
+    }
+    default:
+      return false;
+  }
+}
+
 void Game::settingsKey(core::Key key) {
   if (key == core::Key::Up) settingsItem_ = (settingsItem_ + kSettingsItems - 1) % kSettingsItems, sound("menu_move");
   if (key == core::Key::Down) settingsItem_ = (settingsItem_ + 1) % kSettingsItems, sound("menu_move");
   const int step = key == core::Key::Right ? 1 : key == core::Key::Left ? -1 : 0;
   const bool enter = key == core::Key::Enter;
-  bool changed = true;
-  switch (settingsItem_) {
-    case 0:
-      settings_.musicVolume = std::clamp(settings_.musicVolume + 10 * step, 0, 100);
-      changed = step;
-      break;
-    case 1:
-      settings_.effectsVolume = std::clamp(settings_.effectsVolume + 10 * step, 0, 100);
-      changed = step;
-      break;
-    case 2:
-      if ((changed = step || enter)) settings_.screenShake = !settings_.screenShake;
-      break;
-    case 3:
-      if ((changed = step || enter)) settings_.fullscreen = !settings_.fullscreen;
-      break;
-    case 4:
-      if ((changed = step || enter)) settings_.vsync = !settings_.vsync;
-      break;
-    case 5:
-      settings_.gameSpeed = std::clamp(settings_.gameSpeed + 10 * step, 50, 100);
-      changed = step;
-      break;
-    case 6: {  // auto (-1), off, 2x, 4x, 8x
-      static constexpr int kSamples[] = {-1, 0, 2, 4, 8};
-      const int at = static_cast<int>(std::find(std::begin(kSamples), std::end(kSamples), settings_.multisamples) -
-                                      std::begin(kSamples));
-      int next = at < 5 ? at : 0;
-      next = step ? std::clamp(next + step, 0, 4) : enter ? (next + 1) % 5 : next;
-      changed = kSamples[next] != settings_.multisamples;
-      settings_.multisamples = kSamples[next];
-      break;
-    }
-    default:
-      changed = false;
-      // The rows after the seven settings are the buttons' keys, in kBoundNames' order.
-      if (enter && settingsItem_ >= kFirstKeyItem && settingsItem_ < kFirstKeyItem + core::KeyBindings::kBound)
-        binding_ = settingsItem_ - kFirstKeyItem;  // the next key pressed
+  if (changeSetting(settingsItem_, step, enter)) applySettings(), sound("menu_move");
+  // The rows after the seven settings are the buttons' keys, in kBoundNames' order.
+  if (enter && settingsItem_ >= kFirstKeyItem && settingsItem_ < kFirstKeyItem + core::KeyBindings::kBound)
+    binding_ = settingsItem_ - kFirstKeyItem;  // the next key pressed
+  if (key == core::Key::Escape || (enter && settingsItem_ == kSettingsItems - 1)) leaveSettings();
+}
+
+void Game::leaveSettings() {
+  screen_ = settingsFrom_;
+  if (const std::string error = settings_.save(settingsPath_); !error.empty()) {
+    say(error);
+    std::fprintf(stderr, "%s\n", error.c_str());
   }
-  if (changed) applySettings(), sound("menu_move");
-  if (key == core::Key::Escape || (enter && settingsItem_ == kSettingsItems - 1)) {
-    screen_ = settingsFrom_;
-    if (const std::string error = settings_.save(settingsPath_); !error.empty()) {
-      say(error);
-      std::fprintf(stderr, "%s\n", error.c_str());
-    }
-    std::printf("settings: music %d%%, effects %d%%, screen shake %s, game speed %d%%\n", settings_.musicVolume,
-                settings_.effectsVolume, settings_.screenShake ? "on" : "off", settings_.gameSpeed);
-    std::fflush(stdout);
-    sound("menu_select");
-  }
+  std::printf("settings: music %d%%, effects %d%%, screen shake %s, game speed %d%%\n", settings_.musicVolume,
+              settings_.effectsVolume, settings_.screenShake ? "on" : "off", settings_.gameSpeed);
+  std::fflush(stdout);
+  sound("menu_select");
 }
 
 // While a key is being bound, the next key pressed is it (Escape keeps the old keys).

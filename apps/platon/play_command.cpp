@@ -135,24 +135,38 @@ struct PlayOptions {
   std::string scenePath, inputPath, recordPath, shotPath;
   uint64_t frames = 0;
   bool watch = false, fast = false, headless = false;
+  // Whether `played` frames are all that --frames asked for.
+  bool enough(uint64_t played) const { return frames != 0 && played >= frames; }
 };
 
-// Reads the arguments; false (after saying why) when they are wrong.
+// The option that takes a value, and where it goes (null: none of them).
+std::string* valueOf(PlayOptions& o, const std::string& flag) {
+  if (flag == "--input") return &o.inputPath;
+  if (flag == "--record") return &o.recordPath;
+  if (flag == "--shot") return &o.shotPath;
+  return nullptr;
+}
+bool* switchOf(PlayOptions& o, const std::string& flag) {
+  if (flag == "--watch") return &o.watch;
+  if (flag == "--fast") return &o.fast;
+  if (flag == "--headless") return &o.headless;
+  return nullptr;
+}
+
+// Reads the arguments; false (after saying why, for --frames) when they are wrong.
 bool readPlayOptions(int argc, char** argv, PlayOptions& o) {
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--frames" && i + 1 < argc) {
-      if (!frameCount(argv[++i], o.frames))
-        return std::fprintf(stderr, "platon play: --frames %s: expected a whole number of frames from 1\n", argv[i]),
-               false;
-    } else if (a == "--input" && i + 1 < argc) {
-      o.inputPath = argv[++i];
-    } else if (a == "--record" && i + 1 < argc) {
-      o.recordPath = argv[++i];
-    } else if (a == "--shot" && i + 1 < argc) {
-      o.shotPath = argv[++i];
-    } else if (a == "--watch" || a == "--fast" || a == "--headless") {
-      (a == "--watch" ? o.watch : a == "--fast" ? o.fast : o.headless) = true;
+    const bool hasValue = i + 1 < argc;
+    if (a == "--frames" && hasValue) {
+      if (frameCount(argv[++i], o.frames)) continue;
+      std::fprintf(stderr, "platon play: --frames %s: expected a whole number of frames from 1\n", argv[i]);
+      return false;
+    }
+    if (std::string* value = valueOf(o, a); value && hasValue) {
+      *value = argv[++i];
+    } else if (bool* on = switchOf(o, a)) {
+      *on = true;
     } else if (o.scenePath.empty() && !a.empty() && a[0] != '-') {
       o.scenePath = a;  // a level, in any of its forms (level_argument.h): made its scene.lua below
     } else {
@@ -204,122 +218,104 @@ class PlayReport {
 };
 
 // The play: the session's frames until --frames, the goal (unless --watch), Esc, the window's
-// close or a signal. Returns the frames that had a script error.
-uint64_t playFrames(session::Session& s, const PlayOptions& o, const core::Replay& input, bool window) {
-  core::ReplayInput replay(input);
-  PlayReport report;
-  uint64_t errorFrames = 0;
-  const bool fromReplay = !o.inputPath.empty();
-  while ((o.frames == 0 || s.run().frame() < o.frames) && !stopSignal) {
-    s.reloadIfSaved();
-    const core::WindowInput in = s.poll();
-    if (in.closed || std::find(in.pressed.begin(), in.pressed.end(), core::Key::Escape) != in.pressed.end()) break;
-    if (!fromReplay) s.tap(in.tapped);
-    const int due = s.framesDue(100, o.fast);
-    for (int f = 0; f < due && (o.frames == 0 || s.run().frame() < o.frames); ++f) {
-      uint8_t held = 0;
-      if (fromReplay) {
-        // The replay's console lines before the frame they ran before, as `platon replay` runs them.
-        held = replay.next(s.run(), [&](const std::string& code, const core::ConsoleAnswer& answer) {
-          std::printf("console before frame %llu: %s\n%s\n", static_cast<unsigned long long>(s.run().frame()) + 1,
-                      core::visibleText(code).c_str(), core::visibleText(answer.text, true).c_str());
-        });
-      } else {
-        held = s.nextButtons(in.held);
-      }
-      if (s.playFrame(held)) ++errorFrames;
-      report.after(s);
-      if (s.frozen()) break;
-      if (report.won() && o.frames == 0 && !o.watch) break;  // the play ends at the goal (--help)
+// close or a signal.
+class Play {
+ public:
+  Play(session::Session& s, const PlayOptions& o, const core::Replay& input, bool window)
+      : s_(s), o_(o), replay_(input), fromReplay_(!o.inputPath.empty()), window_(window) {}
+  // Returns the frames that had a script error.
+  uint64_t run() {
+    while (!o_.enough(s_.run().frame()) && !stopSignal && !over()) {
+      s_.reloadIfSaved();
+      const core::WindowInput in = s_.poll();
+      if (in.closed || std::find(in.pressed.begin(), in.pressed.end(), core::Key::Escape) != in.pressed.end()) break;
+      if (!fromReplay_) s_.tap(in.tapped);
+      playDue(in);
+      if (window_) s_.draw();
+      std::fflush(stdout);
     }
-    if (window) s.draw();
-    std::fflush(stdout);
-    if (report.won() && o.frames == 0 && !o.watch) break;
+    return errorFrames_;
   }
-  return errorFrames;
-}
 
-}  // namespace
+ private:
+  // The play ends at the goal (--help), unless it watches its files or counts its frames.
+  bool over() const { return report_.won() && o_.frames == 0 && !o_.watch; }
+  void playDue(const core::WindowInput& in) {
+    for (int due = s_.framesDue(100, o_.fast); due > 0 && !o_.enough(s_.run().frame()); --due) {
+      if (s_.playFrame(nextButtons(in))) ++errorFrames_;
+      report_.after(s_);
+      if (s_.frozen() || over()) break;
+    }
+  }
+  // The window's buttons, or the replay's (its console lines before the frame they ran before, as
+  // `platon replay` runs them).
+  uint8_t nextButtons(const core::WindowInput& in) {
+    if (!fromReplay_) return s_.nextButtons(in.held);
+    return replay_.next(s_.run(), [&](const std::string& code, const core::ConsoleAnswer& answer) {
+      std::printf("console before frame %llu: %s\n%s\n", static_cast<unsigned long long>(s_.run().frame()) + 1,
+                  core::visibleText(code).c_str(), core::visibleText(answer.text, true).c_str());
+    });
+  }
 
-int playCommand(int argc, char** argv) {
-  PlayOptions o;
-  if (!readPlayOptions(argc, argv, o)) return playUsage();
-  core::Replay input;
-  try {
-    if (!o.inputPath.empty()) input = core::readReplay(o.inputPath);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "%s\n", e.what());
-    return 1;
-  }
-  const std::string scenePath = sceneToPlay(o, input);
-  if (scenePath.empty()) return 2;
-  if (!o.recordPath.empty()) {
-    if (const std::string why = whyUnrecordable(scenePath, o.recordPath); !why.empty())
-      return std::fprintf(stderr, "platon play: --record %s: %s\n", o.recordPath.c_str(), why.c_str()), 2;
-  }
-  core::SystemRegistry registry = engineRegistry(o.headless ? Presentation::Headless : Presentation::Window);
+  session::Session& s_;
+  const PlayOptions& o_;
+  core::ReplayInput replay_;
+  PlayReport report_;
+  uint64_t errorFrames_ = 0;
+  bool fromReplay_, window_;
+};
+
+// The scene played, in its window when it has one and a display shows it; null (after saying
+// why) when it does not load.
+std::unique_ptr<session::Session> openSession(const std::string& scenePath, const core::SystemRegistry& registry,
+                                              const PlayOptions& o, bool& window) {
   std::unique_ptr<core::LiveScene> live;
   try {
     live = std::make_unique<core::LiveScene>(core::resolveDataPath(scenePath), registry, o.watch);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s\n", core::visibleText(core::errorReport(e), true).c_str());
-    return 1;
+    return nullptr;
   }
-  session::Session s(std::move(live));
-  bool window = s.display() != nullptr;
-  if (window) {
-    try {
-      s.display()->pollEvents();  // opens the window: no display shows here, in one line
-    } catch (const std::exception& e) {
-      std::printf("%s: playing headless\n", e.what());
-      s.withoutWindow();
-      window = false;
-    }
+  auto s = std::make_unique<session::Session>(std::move(live));
+  window = s->display() != nullptr;
+  if (!window) return s;
+  try {
+    s->display()->pollEvents();  // opens the window: no display shows here, in one line
+  } catch (const std::exception& e) {
+    std::printf("%s: playing headless\n", e.what());
+    s->withoutWindow();
+    window = false;
   }
-  if (!window && !o.shotPath.empty()) {
-    std::fprintf(stderr, "--shot needs a window: the scene names no \"rendering\", or there is no display\n");
-    return 1;
-  }
-  std::printf("playing %s%s\n", core::visibleText(s.scene().manifest().name).c_str(),
-              o.watch ? " (watching its files: save one to reload)" : "");
+  return s;
+}
+
+// Writes what the run recorded, if it was recording; false when that failed (it said why).
+bool keepRecording(session::Session& s, const std::string& path) {
+  const std::optional<core::Replay> recorded = s.run().stopRecording();
+  if (!recorded) return true;
   std::fflush(stdout);
-  bool recordFailed = false;
-  if (!o.recordPath.empty())
-    s.run().record({*core::portableScenePath(scenePath), 60, core::sceneFilesHash(core::sceneSourceFiles(s.scene())),
-                    std::nullopt, 100});
-  // A reload ends the recording: the new version starts from a state no replay reproduces.
-  s.reloaded = [&](const core::ReloadReport& r) {
-    if (r.ok) {
-      std::printf("reloaded in %.1f ms (%s)\n", r.milliseconds, r.files.empty() ? "" : r.files.front().c_str());
-      if (std::optional<core::Replay> so_far = s.run().stopRecording()) {
-        std::printf("recording stops at frame %llu: the reload changed the scene\n",
-                    static_cast<unsigned long long>(s.run().frame()));
-        std::fflush(stdout);
-        if (!writeRecording(*so_far, o.recordPath)) recordFailed = true;
-      }
-    } else {
-      std::printf("reload refused, the last good version goes on:\n%s\n", core::visibleText(r.error, true).c_str());
+  if (!writeRecording(*recorded, path)) return false;
+  std::printf("recorded %llu frames to %s\n", static_cast<unsigned long long>(recorded->frames()), path.c_str());
+  return true;
+}
+
+// A reload ends the recording: the new version starts from a state no replay reproduces.
+void sayReload(session::Session& s, const core::ReloadReport& r, const std::string& recordPath, bool& recordFailed) {
+  if (!r.ok) {
+    std::printf("reload refused, the last good version goes on:\n%s\n", core::visibleText(r.error, true).c_str());
+  } else {
+    std::printf("reloaded in %.1f ms (%s)\n", r.milliseconds, r.files.empty() ? "" : r.files.front().c_str());
+    if (s.run().recording()) {
+      std::printf("recording stops at frame %llu: the reload changed the scene\n",
+                  static_cast<unsigned long long>(s.run().frame()));
+      if (!keepRecording(s, recordPath)) recordFailed = true;
     }
-    std::fflush(stdout);
-  };
-  if (o.inputPath.empty())  // the editor in this window; back here, the level reloaded
-    s.edit = [&] {
-      return editLevel(levelArgument(scenePath), registry, s.scene().findSystem("rendering")) != kWindowClosed;
-    };
-  stopOnSignals();
-  const uint64_t frameErrors = playFrames(s, o, input, window);
-  alarm(0);  // the loop ended: no grace period runs out while the recording is written
-  if (stopSignal)
-    std::printf("stopped by signal %d at frame %llu\n", static_cast<int>(stopSignal),
-                static_cast<unsigned long long>(s.run().frame()));
-  if (std::optional<core::Replay> recorded = s.run().stopRecording()) {
-    std::fflush(stdout);
-    if (writeRecording(*recorded, o.recordPath))
-      std::printf("recorded %llu frames to %s\n", static_cast<unsigned long long>(recorded->frames()),
-                  o.recordPath.c_str());
-    else
-      recordFailed = true;
   }
+  std::fflush(stdout);
+}
+
+// The end: the screenshot asked for, the state hash, and the exit code.
+int finishPlay(session::Session& s, const PlayOptions& o, bool window, uint64_t frameErrors, bool recordFailed) {
   if (window && !o.shotPath.empty()) {
     try {
       s.draw();
@@ -338,6 +334,61 @@ int playCommand(int argc, char** argv) {
   }
   if (recordFailed) return 1;
   return stopSignal ? 128 + stopSignal : 0;
+}
+
+// The input replay (empty without --input) and the scene to play: 0, or the exit code after
+// saying why (1: a replay that does not read, 2: no scene).
+int readInputAndScene(const PlayOptions& o, core::Replay& input, std::string& scenePath) {
+  try {
+    if (!o.inputPath.empty()) input = core::readReplay(o.inputPath);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 1;
+  }
+  scenePath = sceneToPlay(o, input);
+  return scenePath.empty() ? 2 : 0;
+}
+
+}  // namespace
+
+int playCommand(int argc, char** argv) {
+  PlayOptions o;
+  if (!readPlayOptions(argc, argv, o)) return playUsage();
+  core::Replay input;
+  std::string scenePath;
+  if (const int failed = readInputAndScene(o, input, scenePath)) return failed;
+  if (!o.recordPath.empty()) {
+    if (const std::string why = whyUnrecordable(scenePath, o.recordPath); !why.empty())
+      return std::fprintf(stderr, "platon play: --record %s: %s\n", o.recordPath.c_str(), why.c_str()), 2;
+  }
+  core::SystemRegistry registry = engineRegistry(o.headless ? Presentation::Headless : Presentation::Window);
+  bool window = false;
+  const std::unique_ptr<session::Session> s = openSession(scenePath, registry, o, window);
+  if (!s) return 1;
+  if (!window && !o.shotPath.empty()) {
+    std::fprintf(stderr, "--shot needs a window: the scene names no \"rendering\", or there is no display\n");
+    return 1;
+  }
+  std::printf("playing %s%s\n", core::visibleText(s->scene().manifest().name).c_str(),
+              o.watch ? " (watching its files: save one to reload)" : "");
+  std::fflush(stdout);
+  bool recordFailed = false;
+  if (!o.recordPath.empty())
+    s->run().record({*core::portableScenePath(scenePath), 60, core::sceneFilesHash(core::sceneSourceFiles(s->scene())),
+                     std::nullopt, 100});
+  s->reloaded = [&](const core::ReloadReport& r) { sayReload(*s, r, o.recordPath, recordFailed); };
+  if (o.inputPath.empty())  // the editor in this window; back here, the level reloaded
+    s->edit = [&] {
+      return editLevel(levelArgument(scenePath), registry, s->scene().findSystem("rendering")) != kWindowClosed;
+    };
+  stopOnSignals();
+  const uint64_t frameErrors = Play(*s, o, input, window).run();
+  alarm(0);  // the loop ended: no grace period runs out while the recording is written
+  if (stopSignal)
+    std::printf("stopped by signal %d at frame %llu\n", static_cast<int>(stopSignal),
+                static_cast<unsigned long long>(s->run().frame()));
+  if (!keepRecording(*s, o.recordPath)) recordFailed = true;
+  return finishPlay(*s, o, window, frameErrors, recordFailed);
 }
 
 }  // namespace platon::app
