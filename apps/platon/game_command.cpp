@@ -37,6 +37,13 @@ namespace {
 enum class Screen { Title, Playing, Paused, Complete, Settings, QuitAsked };
 
 const char* const kPauseItems[] = {"Resume", "Restart the level", "Level select", "Settings", "Quit"};
+const char* const kBoundNames[core::KeyBindings::kBound] = {"Left", "Right", "Up", "Down", "Jump", "Restart"};
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string out;
+  for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
 constexpr int kPauseCount = 5;
 
 // With --record DIR: one replay per level played, DIR/<folder>.replay (then <folder>-2.replay,
@@ -201,8 +208,8 @@ class Game {
     session_->view().feedback().setShake(settings_.screenShake);
     if (core::Display* d = display()) {
       try {
-        for (const std::string& name : d->setBindings(settings_.keys))
-          say("settings: no key is named '" + core::visibleText(name, false) + "'; it binds nothing");
+        if (const std::vector<std::string> unknown = d->setBindings(settings_.keys); !unknown.empty())
+          d->setBindings(withoutUnknownKeys(unknown));
         // Only what changed: a window made full screen again, or its swap interval set again,
         // costs a reconfiguration (and start-up time) for nothing.
         if (applied_.fullscreen != settings_.fullscreen) d->setFullscreen(settings_.fullscreen);
@@ -213,6 +220,27 @@ class Game {
         say(e.what());
       }
     }
+  }
+  // The settings' keys without the names no key or pad button has, each said; a button left with
+  // none keeps its default (README: a line the game cannot read keeps its default).
+  const core::KeyBindings& withoutUnknownKeys(const std::vector<std::string>& unknown) {
+    const core::KeyBindings defaults;
+    for (const std::string& name : unknown) {
+      std::string message = "settings: no key or pad button is named '" + core::visibleText(name, false) + "'";
+      for (int b = 0; b < core::KeyBindings::kBound; ++b) {
+        for (auto* list : {&settings_.keys.keys[b], &settings_.keys.pad[b]}) {
+          const auto gone = std::remove(list->begin(), list->end(), name);
+          if (gone == list->end()) continue;
+          list->erase(gone, list->end());
+          if (!list->empty()) continue;
+          *list = list == &settings_.keys.keys[b] ? defaults.keys[b] : defaults.pad[b];
+          message += std::string("; ") + kBoundNames[b] + " keeps its default (" + joined(*list) + ")";
+        }
+      }
+      std::fprintf(stderr, "%s\n", message.c_str());
+      say(message);
+    }
+    return settings_.keys;
   }
   void draw();
   std::vector<std::string> titleLines() const;
@@ -385,7 +413,6 @@ void Game::completeKey(core::Key key) {
 }
 
 namespace {
-const char* const kBoundNames[core::KeyBindings::kBound] = {"Left", "Right", "Up", "Down", "Jump", "Restart"};
 constexpr int kFirstKeyItem = 7;                                               // after the 7 settings
 constexpr int kSettingsItems = kFirstKeyItem + core::KeyBindings::kBound + 1;  // the keys, then Back
 }  // namespace

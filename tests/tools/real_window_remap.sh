@@ -10,12 +10,17 @@ export SDL_VIDEODRIVER=x11  # the X server xvfb-run started: never a silent fall
 data=$(mktemp -d)
 log="$data/log"
 mkdir -p "$data/config/platon"
-printf 'keys_right L\ngame_speed 100\n' > "$data/config/platon/settings.txt"
+# Names no key has: each is said, and a button left with none keeps its default (Jump: Space).
+printf 'keys_right L\nkeys_left Left, Bogus\nkeys_jump Nonsense, AlsoNot\ngame_speed 100\n' > "$data/config/platon/settings.txt"
 XDG_DATA_HOME="$data" XDG_CONFIG_HOME="$data/config" "$platon" game --record "$data/runs" > "$log" 2>&1 &
 pid=$!
 fail() { echo "$1"; cat "$log"; kill "$pid" 2>/dev/null; xdotool keyup l 2>/dev/null; rm -rf "$data"; exit 1; }
 . "$(dirname "$0")/window_test.sh"
 await_title
+grep -q "no key or pad button is named 'Bogus'$" "$log" || fail "Bogus was not said (or Left lost its default)"
+grep -q "no key or pad button is named 'Nonsense'$" "$log" || fail "Nonsense was not said"
+grep -q "no key or pad button is named 'AlsoNot'; Jump keeps its default (Space)$" "$log" ||
+  fail "Jump did not keep its default"
 xdotool key Return
 await "^playing cube_intro"
 xdotool keydown l
