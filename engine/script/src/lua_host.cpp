@@ -236,6 +236,20 @@ int LuaHost::newSandbox(const std::string& chunkName) {
   return addSandbox(chunkName, false);
 }
 
+void LuaHost::refreshSandboxApi() {
+  lua::StackGuard guard(L_);
+  for (const Sandbox& box : shared_->sandboxes) {
+    if (box.disabled || box.borrowsEnv || !box.env.isSet()) continue;
+    box.env.push();
+    lua_getfield(L_, LUA_REGISTRYINDEX, "platon.readonly");
+    pushSandboxApi();
+    lua_pushliteral(L_, "platon");
+    call(2, 1);
+    lua_setfield(L_, -2, "platon");
+    lua_pop(L_, 1);
+  }
+}
+
 int LuaHost::addSandbox(const std::string& chunkName, bool borrowsEnv) {
   Sandbox box;
   box.name = nameOfChunk(chunkName);

@@ -138,6 +138,10 @@ class LuaHost {
   // functions where trusted code calls FFI wrappers the JIT compiles: a sandbox's calls must cost
   // the same steps in every run).
   void setSandboxOverride(const char* name);
+  // Gives every sandbox made so far a new view of the API (its `platon`): what the engine added
+  // since (the scene's tags, known once every mod declared its own) is in it. A view is a copy made
+  // when it is made, so a mod loaded to declare its tags saw no tags at all, not even the game's.
+  void refreshSandboxApi();
   // Pushes readonly(t, name) of the prelude: a read-only view of the table at `index` (nested
   // tables are views too), for the engine's tables that sandboxes are handed.
   void pushReadOnly(int index, std::string_view name);

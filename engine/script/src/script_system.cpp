@@ -513,6 +513,7 @@ void ScriptSystem::setTagsApi(const stage::TagTable& tags) {
     lua_rawseti(L, -2, ++i);
   }
   tagsSet_ = true;
+  state_->host.refreshSandboxApi();  // the mods, loaded before the tags were known, see them too
 }
 
 void ScriptSystem::declareTags(core::Scene& scene, stage::TagTable& tags) {

@@ -105,6 +105,53 @@ TEST(Tags, AModsWordInTheLevelFileLaunchesThePlayer) {
   EXPECT_EQ(withSpring.last.deaths, 0);
 }
 
+// A conveyor: its line carries what stands on it. `contact` runs where a move meets a line; a body
+// at rest is not moved, so it meets nothing and no `contact` runs for it (a belt switched on under
+// a player who has long stood still did not start it). What acts on what rests on a line reads the
+// contacts in `tick`: the documented way (docs/scripting.md, Tags), which starts a standing player.
+TEST(Tags, AConveyorStartsAPlayerStandingOnItFromItsTick) {
+  const std::string on = "game.frame() >= 200";  // switched on once the player has long stood still
+  const std::string byContact =
+      "return { tags = { conveyor = { color = '#56b4e9',\n"
+      "  contact = function(game, entity)\n"
+      "    if not (" +
+      on +
+      ") then return nil end\n"
+      "    local _, vy = game.world.velocity(entity)\n"
+      "    game.world.setVelocity(entity, 6, vy)\n"
+      "    return { keepVelocity = true }\n"
+      "  end } } }\n";
+  const std::string byTick =
+      "local CONVEYOR\n"
+      "return { tags = { conveyor = { color = '#56b4e9' } },\n"
+      "  tick = function(game)\n"
+      "    CONVEYOR = CONVEYOR or platon.tags.conveyor\n"
+      "    local w, p = game.world, game.player()\n"
+      "    if not p or not (" +
+      on +
+      ") then return end\n"
+      "    for i = 1, w.contactCount(p) do\n"
+      "      local _, _, tag = w.contact(p, i)\n"
+      "      if tag == CONVEYOR then\n"
+      "        local _, vy = w.velocity(p)\n"
+      "        w.setVelocity(p, 6, vy)  -- along the belt, whatever the player did\n"
+      "        return\n"
+      "      end\n"
+      "    end\n"
+      "  end }\n";
+  const core::SystemRegistry registry = scripting();
+  ModLevel contactBelt("tags_conveyor_contact", "conveyor", "", {byContact});
+  core::LiveScene resting(contactBelt.scene, registry, false);
+  EXPECT_LT(play(resting, 400, false).farthest, 700) << "contact ran for a body at rest (docs say it does not)";
+  ModLevel tickBelt("tags_conveyor_tick", "conveyor", "", {byTick});
+  core::LiveScene carried(tickBelt.scene, registry, false);
+  const Played run = play(carried, 400, false);
+  EXPECT_GT(run.farthest, 1500) << "the belt's tick did not start the standing player";
+  ModLevel plain("tags_conveyor_plain", "solid", "", {byTick});
+  core::LiveScene still(plain.scene, registry, false);
+  EXPECT_LT(play(still, 400, false).farthest, 700) << "off the belt the player stands";
+}
+
 TEST(Tags, TheModsTagIsInTheTableWithItsLookAndNumberForTheRendererAndLua) {
   ModLevel level("tags_look", "spring", "", {kSprings});
   const core::SystemRegistry registry = scripting();
