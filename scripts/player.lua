@@ -42,7 +42,7 @@ function Player.spawn(_, face, x, y, degrees)
   end
   look(e, Player.COLOUR, "ball")  -- the engine draws it, once, however many faces it spans
   return setmetatable({ entity = e, coyote = 0, buffer = 0, grounded = false, wall = 0, jumping = false, face = face,
-                        fall = 0, squash = 1 }, Player)
+                        fall = 0, squash = 1, facing = 1, downX = 0, downY = -1, rightX = 1, rightY = 0 }, Player)
 end
 
 local function approach(value, target, step)
@@ -58,6 +58,8 @@ function Player.tick(self, input)
   local dx, dy = 0, -1  -- down
   if g > 0 then dx, dy = gx / g, gy / g end
   local rx, ry = -dy, dx  -- right
+  -- The face's directions this frame, for what extends the player (a dash goes along right).
+  self.downX, self.downY, self.rightX, self.rightY = dx, dy, rx, ry
 
   -- Over an edge: the world turned, and the player hears it.
   if part ~= self.face then
@@ -90,6 +92,7 @@ function Player.tick(self, input)
   local fall = vx * dx + vy * dy  -- > 0: falling
 
   local dir = (input.right and 1 or 0) - (input.left and 1 or 0)
+  if dir ~= 0 then self.facing = dir end
   local accel = self.grounded and Player.GROUND_ACCEL or Player.AIR_ACCEL
   if dir ~= 0 then
     along = approach(along, dir * Player.WALK_SPEED, accel)
@@ -109,6 +112,7 @@ function Player.tick(self, input)
     fall = -Player.JUMP_CUT
   end
 
+  along, fall = self:move(input, along, fall)
   setVelocity(e, rx * along + dx * fall, ry * along + dy * fall)
   self.fall = fall
   -- Squash and stretch: the picture's, eased back to round (a look is never the simulation's).
@@ -128,6 +132,12 @@ function Player.canJump(self) return self.coyote > 0 end
 -- The jump: the speed along the face (+ right) and the fall speed (- up) it starts with, from the
 -- speed along the face before it. A wall jump overrides it to push off the wall.
 function Player.jump(_, along) return along, -Player.JUMP_SPEED end
+
+-- The frame's last word on the speeds, after walking, the jump and its cut: along the face (+
+-- right) and the fall (- up), returned as they are to be. Walking takes `along` back towards the
+-- walk speed by GROUND_ACCEL (in the air AIR_ACCEL) a frame, and braking by GROUND_BRAKE with no
+-- direction held; gravity adds to `fall` after it. A dash, a glide or a dive overrides it.
+function Player.move(_, _, along, fall) return along, fall end
 
 -- The engine draws the player's body by its look (set in spawn): a player that wants more (a
 -- face, a trail) draws it here with platon.draw.

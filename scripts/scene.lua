@@ -82,6 +82,58 @@ local function tagsOf(m, tags, path)
   end
 end
 
+-- A mod's actions (docs/scripting.md, "Actions"): actions = { dash = { keys =, pad =, label =,
+-- does = } }, read raw in name order and checked here; the engine's action table takes the names
+-- (ScriptSystem::declareTags refuses one taken), and the `input` table has them from then on.
+local MAX_ACTIONS = 8
+
+local function namesOf(v, bad, field)
+  if type(v) ~= "table" then bad(field, "a list of names", v) end
+  local out = {}
+  for i = 1, 9 do
+    local name = rawget(v, i)
+    if name == nil then break end
+    if type(name) ~= "string" or #name > 40 then
+      bad(field .. "[" .. i .. "]", "a name (\"Left Shift\", \"x\")", name)
+    end
+    if i == 9 then bad(field, "at most 8 names", v) end
+    out[i] = name
+  end
+  return out
+end
+
+local function actionsOf(m, actions, path)
+  if actions == nil then return end
+  if type(actions) ~= "table" then
+    error(path .. ": actions: expected a table of action names, got a " .. type(actions), 0)
+  end
+  local names = {}
+  for name in next, actions do
+    if type(name) ~= "string" then error(path .. ": actions: the keys are action names, got a " .. type(name), 0) end
+    names[#names + 1] = name
+    if #names > MAX_ACTIONS then error(path .. ": actions: more than " .. MAX_ACTIONS .. " actions", 0) end
+  end
+  table.sort(names)
+  m.actions = {}
+  for _, name in ipairs(names) do
+    local t = rawget(actions, name)
+    local function bad(field, expected, v)
+      error(path .. ": actions." .. name .. (field and "." .. field or "") .. ": expected " .. expected .. ", got "
+            .. (type(v) == "string" and string.format("%q", v:sub(1, 40)) or "a " .. type(v)), 0)
+    end
+    if type(t) ~= "table" then bad(nil, "a table { keys =, pad =, label =, does = }", t) end
+    local a = { owner = path, name = name, label = name, does = "", keys = {}, pad = {} }
+    for field, v in next, t do
+      if field == "keys" or field == "pad" then a[field] = namesOf(v, bad, field)
+      elseif field == "label" or field == "does" then
+        if type(v) ~= "string" or #v > 80 then bad(field, "a string of at most 80 bytes", v) end
+        a[field] = v
+      else bad(field, "one of keys, pad, label, does", field) end
+    end
+    m.actions[#m.actions + 1] = a
+  end
+end
+
 local function sandboxedModule(t, path, id)
   if t == nil then return { id = id, name = path } end
   if type(t) ~= "table" then error(path .. ": a level script or mod returns a table", 0) end
@@ -96,6 +148,7 @@ local function sandboxedModule(t, path, id)
                 y = tonumber(rawget(start, "y")) }
   end
   tagsOf(m, rawget(t, "tags"), path)
+  actionsOf(m, rawget(t, "actions"), path)
   return m
 end
 
@@ -177,13 +230,22 @@ local function load(path, trusted, ...)
   return engine.load(path, trusted, ...)
 end
 
--- The buttons, by their InputFrame bits (core/input.h): left 1, right 2, up 4, down 8, jump 16,
--- restart 32, pause 64, reload 128. Written out with constant keys, which the JIT turns into
--- direct slots (a loop over names costs a hash lookup each).
-local function decode(t, bits)
-  t.left, t.right, t.up, t.down = band(bits, 1) ~= 0, band(bits, 2) ~= 0, band(bits, 4) ~= 0, band(bits, 8) ~= 0
-  t.jump, t.restart = band(bits, 16) ~= 0, band(bits, 32) ~= 0
-  t.pause, t.reload = band(bits, 64) ~= 0, band(bits, 128) ~= 0
+-- The `input` table's names, by their InputFrame bits: the engine's actions (core/actions.h), then
+-- those the mods add. The decoder is compiled from the names with constant keys, which the JIT
+-- turns into direct slots (a loop over names costs a hash lookup each).
+local function decoder(names)
+  local lines = { "local band = ... return function(t, bits)" }
+  for i, name in ipairs(names) do lines[#lines + 1] = ("t[%q] = band(bits, %d) ~= 0"):format(name, 2 ^ (i - 1)) end
+  lines[#lines + 1] = "end"
+  return assert(loadstring(table.concat(lines, "\n"), "=input decoder"))(band)
+end
+local ACTIONS = {}
+for i, name in ipairs(setup.actions) do ACTIONS[i] = name end
+local decode = decoder(ACTIONS)
+local function newInput()
+  local input = { pressed = {} }
+  for _, name in ipairs(ACTIONS) do input[name], input.pressed[name] = false, false end
+  return input
 end
 
 local game = {
@@ -194,10 +256,7 @@ local game = {
   openSwitches = {},   -- the ids of the switches on, increasing (progression keeps it)
   pendingToggles = {}, -- switch ids toggled during the frame, applied after it
   killed = false,
-  input = { pressed = { left = false, right = false, up = false, down = false, jump = false, restart = false,
-                        pause = false, reload = false },
-            left = false, right = false, up = false, down = false, jump = false, restart = false, pause = false,
-            reload = false },
+  input = newInput(),
 }
 
 -- With a level's own player or progression script (sandboxed, handed `game`), the game state's
@@ -403,14 +462,25 @@ local function loadMods()
   end
 end
 
--- What the mods declare of their tags, in the manifest's order, for the engine's tag table.
+-- What the mods declare of their tags and actions, in the manifest's order, for the engine's tag
+-- and action tables.
 function scene.declare()
   loadMods()
-  local out = {}
+  local out, actions = {}, {}
   for _, m in ipairs(Mods) do
     for _, d in ipairs(m.declared or {}) do out[#out + 1] = d end
+    for _, a in ipairs(m.actions or {}) do actions[#actions + 1] = a end
   end
-  return out
+  return out, actions
+end
+
+-- The engine took the mods' actions (in declare's order, after its own): `input` has them now.
+function scene.setActions(names)
+  for i = #setup.actions + 1, #names do
+    ACTIONS[i] = names[i]
+    game.input[names[i]], game.input.pressed[names[i]] = false, false
+  end
+  decode = decoder(ACTIONS)
 end
 
 -- `frames`: the level's frames played so far, carried over a hot reload (0 on a fresh load), so
@@ -724,5 +794,12 @@ function scene.game() return game end
 function scene.levelView() return levelView end  -- the game's console hands it to what is typed
 function scene.levelSandbox() return Level.id end  -- and runs it in the level script's globals
 function scene.frame() return game.time end
+-- What `platon defs` writes besides the bindings: the `input` table's names, the hooks a level
+-- script or mod may return, a tag's handlers, and the game's player (a fresh copy: its constants
+-- and the functions a level's own player replaces).
+function scene.definitionsData()
+  return { actions = ACTIONS, hooks = HOOKS, tagHandlers = TAG_HANDLERS,
+           player = engine.load("scripts/player.lua", true, game) }
+end
 
 return scene

@@ -36,8 +36,9 @@ namespace {
 
 enum class Screen { Title, Playing, Paused, Complete, Settings, QuitAsked };
 
+constexpr int kFirstKeyItem = 7;  // the settings screen's rows: 7 settings, the actions' keys, Back
+
 const char* const kPauseItems[] = {"Resume", "Restart the level", "Level select", "Settings", "Quit"};
-const char* const kBoundNames[core::KeyBindings::kBound] = {"Left", "Right", "Up", "Down", "Jump", "Restart"};
 
 std::string joined(const std::vector<std::string>& names) {
   std::string out;
@@ -208,8 +209,8 @@ class Game {
     session_->view().feedback().setShake(settings_.screenShake);
     if (core::Display* d = display()) {
       try {
-        if (const std::vector<std::string> unknown = d->setBindings(settings_.keys); !unknown.empty())
-          d->setBindings(withoutUnknownKeys(unknown));
+        if (const std::vector<std::string> unknown = session_->bindKeys(settings_.keys); !unknown.empty())
+          session_->bindKeys(withoutUnknownKeys(unknown));
         // Only what changed: a window made full screen again, or its swap interval set again,
         // costs a reconfiguration (and start-up time) for nothing.
         if (applied_.fullscreen != settings_.fullscreen) d->setFullscreen(settings_.fullscreen);
@@ -221,20 +222,26 @@ class Game {
       }
     }
   }
-  // The settings' keys without the names no key or pad button has, each said; a button left with
+  // The settings' keys without the names no key or pad button has, each said; an action left with
   // none keeps its default (README: a line the game cannot read keeps its default).
-  const core::KeyBindings& withoutUnknownKeys(const std::vector<std::string>& unknown) {
-    const core::KeyBindings defaults;
+  const core::BindingChoices& withoutUnknownKeys(const std::vector<std::string>& unknown) {
+    const std::vector<core::Action>& actions = session_->actions();
     for (const std::string& name : unknown) {
       std::string message = "settings: no key or pad button is named '" + core::visibleText(name, false) + "'";
-      for (int b = 0; b < core::KeyBindings::kBound; ++b) {
-        for (auto* list : {&settings_.keys.keys[b], &settings_.keys.pad[b]}) {
-          const auto gone = std::remove(list->begin(), list->end(), name);
-          if (gone == list->end()) continue;
-          list->erase(gone, list->end());
-          if (!list->empty()) continue;
-          *list = list == &settings_.keys.keys[b] ? defaults.keys[b] : defaults.pad[b];
-          message += std::string("; ") + kBoundNames[b] + " keeps its default (" + joined(*list) + ")";
+      for (const bool pad : {false, true}) {
+        auto& chosen = pad ? settings_.keys.pad : settings_.keys.keys;
+        for (auto it = chosen.begin(); it != chosen.end();) {
+          std::vector<std::string>& list = it->second;
+          const auto gone = std::remove(list.begin(), list.end(), name);
+          if (gone == list.end() || (list.erase(gone, list.end()), !list.empty())) {
+            ++it;
+            continue;
+          }
+          const std::optional<int> i = core::actionIndex(actions, it->first);
+          const core::Action* a = i ? &actions[static_cast<size_t>(*i)] : nullptr;
+          message += "; " + (a ? a->label : it->first) + " keeps its default (" +
+                     (a ? joined(pad ? a->pad : a->keys) : std::string("none")) + ")";
+          it = chosen.erase(it);
         }
       }
       std::fprintf(stderr, "%s\n", message.c_str());
@@ -242,6 +249,14 @@ class Game {
     }
     return settings_.keys;
   }
+  // The settings screen's key rows: the scene's actions a player binds (a mod's too).
+  std::vector<const core::Action*> keyRows() const {
+    std::vector<const core::Action*> rows;
+    for (const core::Action& a : session_->actions())
+      if (a.bindable) rows.push_back(&a);
+    return rows;
+  }
+  int settingsItems() const { return kFirstKeyItem + static_cast<int>(keyRows().size()) + 1; }  // then Back
   void draw();
   std::vector<std::string> titleLines() const;
   std::string levelLine(size_t i) const;
@@ -412,11 +427,6 @@ void Game::completeKey(core::Key key) {
   load(selected_);
 }
 
-namespace {
-constexpr int kFirstKeyItem = 7;                                               // after the 7 settings
-constexpr int kSettingsItems = kFirstKeyItem + core::KeyBindings::kBound + 1;  // the keys, then Back
-}  // namespace
-
 // Changes the settings row `item` by `step` (Left -1, Right 1) or Enter; whether it changed.
 bool Game::changeSetting(int item, int step, bool enter) {
   const bool flip = step != 0 || enter;
@@ -454,15 +464,16 @@ bool Game::changeSetting(int item, int step, bool enter) {
 }
 
 void Game::settingsKey(core::Key key) {
-  if (key == core::Key::Up) settingsItem_ = (settingsItem_ + kSettingsItems - 1) % kSettingsItems, sound("menu_move");
-  if (key == core::Key::Down) settingsItem_ = (settingsItem_ + 1) % kSettingsItems, sound("menu_move");
+  const int items = settingsItems();
+  if (key == core::Key::Up) settingsItem_ = (settingsItem_ + items - 1) % items, sound("menu_move");
+  if (key == core::Key::Down) settingsItem_ = (settingsItem_ + 1) % items, sound("menu_move");
   const int step = key == core::Key::Right ? 1 : key == core::Key::Left ? -1 : 0;
   const bool enter = key == core::Key::Enter;
   if (changeSetting(settingsItem_, step, enter)) applySettings(), sound("menu_move");
-  // The rows after the seven settings are the buttons' keys, in kBoundNames' order.
-  if (enter && settingsItem_ >= kFirstKeyItem && settingsItem_ < kFirstKeyItem + core::KeyBindings::kBound)
-    binding_ = settingsItem_ - kFirstKeyItem;  // the next key pressed
-  if (key == core::Key::Escape || (enter && settingsItem_ == kSettingsItems - 1)) leaveSettings();
+  // The rows after the seven settings are the actions' keys, in keyRows' order.
+  if (enter && settingsItem_ >= kFirstKeyItem && settingsItem_ < items - 1)
+    binding_ = settingsItem_ - kFirstKeyItem;  // the next key or pad button pressed
+  if (key == core::Key::Escape || (enter && settingsItem_ == items - 1)) leaveSettings();
 }
 
 void Game::leaveSettings() {
@@ -479,11 +490,15 @@ void Game::leaveSettings() {
 
 // While a key is being bound, the next key pressed is it (Escape keeps the old keys).
 bool Game::bindKey(const core::WindowInput& input) {
-  if (screen_ != Screen::Settings || binding_ < 0 || input.lastKey.empty()) return false;
-  if (input.lastKey != "Escape") {
-    settings_.keys.keys[binding_] = {input.lastKey};
+  const bool pad = input.lastKey.empty() && !input.lastPadButton.empty();
+  if (screen_ != Screen::Settings || binding_ < 0 || (input.lastKey.empty() && !pad)) return false;
+  const std::vector<const core::Action*> rows = keyRows();
+  if (input.lastKey != "Escape" && binding_ < static_cast<int>(rows.size())) {
+    const core::Action& action = *rows[static_cast<size_t>(binding_)];
+    const std::string& name = pad ? input.lastPadButton : input.lastKey;
+    (pad ? settings_.keys.pad : settings_.keys.keys)[action.name] = {name};
     applySettings();
-    std::printf("settings: %s is %s\n", kBoundNames[binding_], input.lastKey.c_str());
+    std::printf("settings: %s is %s%s\n", action.label.c_str(), pad ? "pad " : "", name.c_str());
     std::fflush(stdout);
   }
   binding_ = -1;
@@ -492,10 +507,12 @@ bool Game::bindKey(const core::WindowInput& input) {
 }
 
 std::vector<std::string> Game::settingsLines() const {
-  auto keys = [&](int b) {
-    std::string list;
-    for (const std::string& k : settings_.keys.keys[b]) list += (list.empty() ? "" : ", ") + k;
-    return binding_ == b ? std::string("press a key (Esc: keep ") + list + ")" : list;
+  const std::vector<const core::Action*> rows = keyRows();
+  const core::KeyBindings bound = core::bindingsFor(session_->actions(), settings_.keys);
+  auto keys = [&](size_t row) {
+    const auto i = static_cast<size_t>(rows[row] - session_->actions().data());
+    const std::string list = joined(bound.keys[i]) + "   pad " + (bound.pad[i].empty() ? "-" : joined(bound.pad[i]));
+    return binding_ == static_cast<int>(row) ? "press a key or pad button (Esc: keep " + list + ")" : list;
   };
   std::vector<std::string> items = {"Music volume   < " + std::to_string(settings_.musicVolume) + "% >",
                                     "Effects volume   < " + std::to_string(settings_.effectsVolume) + "% >",
@@ -508,15 +525,14 @@ std::vector<std::string> Game::settingsLines() const {
                                          : settings_.multisamples == 0 ? std::string("off")
                                                                        : std::to_string(settings_.multisamples) + "x") +
                                         " >"};
-  for (int b = 0; b < core::KeyBindings::kBound; ++b)
-    items.push_back(std::string(kBoundNames[b]) + " key   " + keys(b));
+  for (size_t row = 0; row < rows.size(); ++row) items.push_back(rows[row]->label + "   " + keys(row));
   items.push_back("Back");
   std::vector<std::string> lines{"Settings", ""};
-  for (int i = 0; i < kSettingsItems; ++i)
+  for (int i = 0; i < static_cast<int>(items.size()); ++i)
     lines.push_back((i == settingsItem_ ? "> " : "  ") + items[static_cast<size_t>(i)] +
                     (i == settingsItem_ ? " <" : ""));
   lines.push_back("");
-  lines.push_back("Up/Down choose, Left/Right change, Enter set a key, Esc back");
+  lines.push_back("Up/Down choose, Left/Right change, Enter sets a key or pad button, Esc back");
   return lines;
 }
 

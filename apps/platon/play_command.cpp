@@ -222,7 +222,7 @@ class PlayReport {
 class Play {
  public:
   Play(session::Session& s, const PlayOptions& o, const core::Replay& input, bool window)
-      : s_(s), o_(o), replay_(input), fromReplay_(!o.inputPath.empty()), window_(window) {}
+      : s_(s), o_(o), replay_(input, s.scene()), fromReplay_(!o.inputPath.empty()), window_(window) {}
   // Returns the frames that had a script error.
   uint64_t run() {
     while (!o_.enough(s_.run().frame()) && !stopSignal && !over()) {
@@ -249,7 +249,7 @@ class Play {
   }
   // The window's buttons, or the replay's (its console lines before the frame they ran before, as
   // `platon replay` runs them).
-  uint8_t nextButtons(const core::WindowInput& in) {
+  core::Buttons nextButtons(const core::WindowInput& in) {
     if (!fromReplay_) return s_.nextButtons(in.held);
     return replay_.next(s_.run(), [&](const std::string& code, const core::ConsoleAnswer& answer) {
       std::printf("console before frame %llu: %s\n%s\n", static_cast<unsigned long long>(s_.run().frame()) + 1,

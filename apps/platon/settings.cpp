@@ -29,8 +29,8 @@ const Field kFields[] = {
     {"game_speed", Kind::Speed, &Settings::gameSpeed},
     {"multisampling", Kind::Samples, &Settings::multisamples},
 };
-// The binding lines: keys_<button> and pad_<button>, SDL's names, commas between.
-const char* const kButtons[core::KeyBindings::kBound] = {"left", "right", "up", "down", "jump", "restart"};
+// The binding lines: keys_<action> and pad_<action>, SDL's names, commas between.
+constexpr std::string_view kKeysPrefix = "keys_", kPadPrefix = "pad_";
 
 // A whole number within [low, high], or nothing.
 bool wholeIn(const std::string& word, int low, int high, int& out) {
@@ -93,13 +93,27 @@ std::vector<std::string> names(const std::string& list) {
   return out;
 }
 
-// The binding a line's name is (keys_jump: the keys of Jump), or nullptr.
-std::vector<std::string>* bindingOf(const std::string& name, Settings& s) {
-  for (int b = 0; b < core::KeyBindings::kBound; ++b) {
-    if (name == std::string("keys_") + kButtons[b]) return &s.keys.keys[b];
-    if (name == std::string("pad_") + kButtons[b]) return &s.keys.pad[b];
+// The binding a line's name is (keys_jump: the keys of jump; keys_dash: a mod's action's), or
+// nullptr; `why` says why a binding line is not one (an action of the engine's no player binds).
+std::vector<std::string>* bindingOf(const std::string& name, Settings& s, std::string& why) {
+  const bool keys = name.rfind(kKeysPrefix, 0) == 0, pad = name.rfind(kPadPrefix, 0) == 0;
+  if (!keys && !pad) return nullptr;
+  const std::string action = name.substr((keys ? kKeysPrefix : kPadPrefix).size());
+  if (!core::isActionName(action)) return nullptr;
+  if (const std::optional<int> i = core::actionIndex(core::engineActions(), action);
+      i && !core::engineActions()[static_cast<size_t>(*i)].bindable) {
+    why = action + " is not the player's to bind (" + core::engineActions()[static_cast<size_t>(*i)].does + ")";
+    return nullptr;
   }
-  return nullptr;
+  return keys ? &s.keys.keys[action] : &s.keys.pad[action];
+}
+
+// The settings file's list of the bindable actions: keys_left ... keys_restart, pad_left ... pad_restart.
+std::string bindingNames() {
+  std::string first, last;
+  for (const core::Action& a : core::engineActions())
+    if (a.bindable) (first.empty() ? first : last) = a.name;
+  return "keys_" + first + " ... keys_" + last + ", pad_" + first + " ... pad_" + last + ", or a mod's keys_dash";
 }
 
 }  // namespace
@@ -126,15 +140,22 @@ Settings Settings::load(const std::string& path, std::vector<std::string>& probl
     words >> name >> value >> more;
     if (name.empty()) continue;
     const std::string at = path + ":" + std::to_string(number) + ": ";
-    if (std::vector<std::string>* binding = bindingOf(name, s)) {
+    std::string why;
+    if (std::vector<std::string>* binding = bindingOf(name, s, why)) {
       const std::vector<std::string> bound = names(content.substr(content.find(name) + name.size()));
-      if (bound.empty())
+      if (bound.empty()) {
         problems.push_back(at + "'" + line + "': " + name +
-                           (name.rfind("pad_", 0) == 0 ? " names one button or more (a, dpleft)"
-                                                       : " names one key or more (Left, A)") +
+                           (name.rfind(kPadPrefix, 0) == 0 ? " names one button or more (a, dpleft)"
+                                                           : " names one key or more (Left, A)") +
                            "; its default is used");
-      else
+        (name.rfind(kPadPrefix, 0) == 0 ? s.keys.pad : s.keys.keys).erase(name.substr(name.find('_') + 1));
+      } else {
         *binding = bound;
+      }
+      continue;
+    }
+    if (!why.empty()) {
+      problems.push_back(at + name + ": " + why + "; the line is ignored");
       continue;
     }
     const Field* field = nullptr;
@@ -143,8 +164,8 @@ Settings Settings::load(const std::string& path, std::vector<std::string>& probl
     if (!field) {
       std::string known;
       for (const Field& f : kFields) known += std::string(f.name) + ", ";
-      problems.push_back(at + "unknown setting '" + name + "' (known: " + known +
-                         "keys_left ... keys_restart, pad_left ... pad_restart); the line is ignored");
+      problems.push_back(at + "unknown setting '" + name + "' (known: " + known + bindingNames() +
+                         "); the line is ignored");
     } else if (!more.empty() || !readField(*field, value, s)) {
       problems.push_back(at + "'" + line + "': " + name + " is " + expected(field->kind) + "; its default is used");
     }
@@ -155,13 +176,20 @@ Settings Settings::load(const std::string& path, std::vector<std::string>& probl
 std::string Settings::text() const {
   std::string text = "# Platon settings (the game writes this file; a line it cannot read keeps its default)\n";
   for (const Field& f : kFields) text += std::string(f.name) + " " + written(f, *this) + "\n";
-  for (const char* prefix : {"keys_", "pad_"})
-    for (int b = 0; b < core::KeyBindings::kBound; ++b) {
-      const std::vector<std::string>& bound = prefix[0] == 'k' ? keys.keys[b] : keys.pad[b];
-      text += prefix + std::string(kButtons[b]);
-      for (size_t i = 0; i < bound.size(); ++i) text += (i ? ", " : " ") + bound[i];
-      text += "\n";
-    }
+  // Every action a player binds, with its keys as chosen or by default, then a mod's chosen ones.
+  const core::KeyBindings bound = core::bindingsFor(core::engineActions(), keys);
+  auto line = [&](std::string_view prefix, const std::string& action, const std::vector<std::string>& names) {
+    text += std::string(prefix) + action;
+    for (size_t i = 0; i < names.size(); ++i) text += (i ? ", " : " ") + names[i];
+    text += "\n";
+  };
+  for (const bool pad : {false, true}) {
+    for (size_t i = 0; i < core::engineActions().size(); ++i)
+      if (core::engineActions()[i].bindable)
+        line(pad ? kPadPrefix : kKeysPrefix, core::engineActions()[i].name, pad ? bound.pad[i] : bound.keys[i]);
+    for (const auto& [action, names] : pad ? keys.pad : keys.keys)
+      if (!core::actionIndex(core::engineActions(), action)) line(pad ? kPadPrefix : kKeysPrefix, action, names);
+  }
   return text;
 }
 

@@ -18,7 +18,9 @@ struct Settings {
   int gameSpeed = 100;  // percent, 50..100: the assist mode (pacing only; recorded in replays)
   int multisamples =
       -1;  // samples a pixel: -1 auto (4; none on a software rasterizer), 0, 2, 4, 8 (from the next frame)
-  core::KeyBindings keys;  // keys_left Left, A ... (SDL's key names, commas between)
+  // keys_jump Space, pad_jump a, b ...: SDL's names, commas between, by action name (an action a
+  // mod adds too: keys_dash); an action with none keeps its defaults (core/actions.h).
+  core::BindingChoices keys;
 
   // $XDG_CONFIG_HOME/platon/settings.txt, or ~/.config/platon/settings.txt.
   static std::string defaultPath();

@@ -77,7 +77,7 @@ int shotCommand(int argc, char** argv) {
     view.step(live.scene(), status(), 1.0 / 60);
     // The run every way of playing drives (core/run.h): the replay's console lines too.
     core::Run run(live);
-    core::ReplayInput replay(input);
+    core::ReplayInput replay(input, live.scene());
     for (uint64_t f = 0; f < frames; ++f) {
       if (std::optional<std::string> error = run.step(replay.next(run)))
         std::fprintf(stderr, "frame %llu: %s\n", static_cast<unsigned long long>(f) + 1, error->c_str());

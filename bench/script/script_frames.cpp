@@ -29,8 +29,8 @@ namespace {
 
 // Walk right and left in turns of 300 frames, a jump held 20 frames in every 70: the player runs
 // along floors, falls off them, jumps onto platforms and crosses the cube's edges.
-uint8_t heldOn(uint64_t frame) {
-  uint8_t held =
+core::Buttons heldOn(uint64_t frame) {
+  core::Buttons held =
       (frame / 300) % 2 == 0 ? core::InputFrame::bit(core::Button::Right) : core::InputFrame::bit(core::Button::Left);
   if (frame % 70 < 20) held |= core::InputFrame::bit(core::Button::Jump);
   return held;

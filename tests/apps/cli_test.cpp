@@ -187,7 +187,7 @@ bool contains(const std::string& text, const std::string& part) { return text.fi
 TEST(Run, ATimeLimitHoldsAtJ1AndTheNextScenarioStillRuns) {
   Folder folder("cli_timeout");
   const std::string scene = sceneWith(folder, "s");
-  folder.write("hang.lua", "return { scene = '" + scene + "', frames = 100000000 }\n");
+  folder.write("hang.lua", "return { scene = '" + scene + "', frames = 30000000 }\n");
   scenario(folder, "ok.lua", scene);
   const Ran r = platon({"run", "--timeout", "5", "hang.lua", "ok.lua"}, folder.path(), 120);
   EXPECT_EQ(r.status, 1) << r.out << r.err;
@@ -200,7 +200,7 @@ TEST(Run, ATimeLimitHoldsAtJ1AndTheNextScenarioStillRuns) {
 TEST(Run, ACrashingWorkerFailsOnlyItsScenarioAtAnyJ) {
   Folder folder("cli_crash");
   const std::string scene = sceneWith(folder, "s");
-  folder.write("segv.lua", "return { scene = '" + scene + "', frames = 100000000 }\n");
+  folder.write("segv.lua", "return { scene = '" + scene + "', frames = 30000000 }\n");
   scenario(folder, "a.lua", scene), scenario(folder, "b.lua", scene), scenario(folder, "c.lua", scene);
   for (const char* jobs : {"1", "2", "3"}) {
     Process run({"run", "-j", jobs, "--timeout", "300", "--junit", "report.xml", "a.lua", "segv.lua", "b.lua", "c.lua"},

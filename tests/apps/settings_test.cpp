@@ -16,9 +16,11 @@ TEST(Settings, ASavedFileReadsBackTheSame) {
   Settings changed;
   changed.musicVolume = 0, changed.effectsVolume = 100, changed.screenShake = false, changed.fullscreen = true;
   changed.vsync = false, changed.gameSpeed = 50, changed.multisamples = 0;
-  changed.keys.keys[4] = {"L", "Keypad 0"};  // jump on two keys, one with a space in its name
-  changed.keys.keys[0] = {"J"};
-  changed.keys.pad[4] = {"x", "rightshoulder"};
+  changed.keys.keys["jump"] = {"L", "Keypad 0"};  // jump on two keys, one with a space in its name
+  changed.keys.keys["left"] = {"J"};
+  changed.keys.pad["jump"] = {"x", "rightshoulder"};
+  changed.keys.keys["dash"] = {"Left Shift"};  // a mod's action, kept for the scenes that have it
+  changed.keys.pad["dash"] = {"y"};
   for (const Settings& s : {Settings{}, changed}) {
     const std::string path = folder.path("config/platon/settings.txt");
     ASSERT_EQ(s.save(path), "");
@@ -32,10 +34,12 @@ TEST(Settings, ASavedFileReadsBackTheSame) {
     EXPECT_EQ(back.vsync, s.vsync);
     EXPECT_EQ(back.gameSpeed, s.gameSpeed);
     EXPECT_EQ(back.multisamples, s.multisamples);
-    for (int b = 0; b < platon::core::KeyBindings::kBound; ++b) {
-      EXPECT_EQ(back.keys.keys[b], s.keys.keys[b]) << b;
-      EXPECT_EQ(back.keys.pad[b], s.keys.pad[b]) << b;
-    }
+    std::vector<platon::core::Action> actions = platon::core::engineActions();
+    platon::core::addAction(actions, {"dash", "Dash", {"X"}, {"x"}, "", true, "dash.lua"});
+    const platon::core::KeyBindings a = platon::core::bindingsFor(actions, back.keys);
+    const platon::core::KeyBindings b = platon::core::bindingsFor(actions, s.keys);
+    EXPECT_EQ(a.keys, b.keys);
+    EXPECT_EQ(a.pad, b.pad);
   }
 }
 
@@ -57,12 +61,13 @@ TEST(Settings, ADamagedFileKeepsTheDefaultsOfWhatItCannotRead) {
                                         "vsync sometimes\n"
                                         "keys_jump   # none\n"
                                         "keys_left J, K\n"
-                                        "multisampling 3\n");
+                                        "multisampling 3\n"
+                                        "keys_reload Q\n");
   const Settings s = Settings::load(path, problems);
   EXPECT_EQ(s.musicVolume, Settings{}.musicVolume);
   EXPECT_EQ(s.effectsVolume, 40);  // the good line is kept
   EXPECT_EQ(s.screenShake, Settings{}.screenShake);
-  ASSERT_EQ(problems.size(), 9u);
+  ASSERT_EQ(problems.size(), 10u);
   EXPECT_EQ(problems[0].rfind(path + ":1: 'music_volume 150': music_volume is a whole number 0..100", 0), 0u)
       << problems[0];
   EXPECT_EQ(problems[1].rfind(path + ":3: 'screen_shake maybe': screen_shake is on or off", 0), 0u) << problems[1];
@@ -76,9 +81,11 @@ TEST(Settings, ADamagedFileKeepsTheDefaultsOfWhatItCannotRead) {
       << problems[7];
   EXPECT_EQ(problems[8].rfind(path + ":11: 'multisampling 3': multisampling is auto, 0, 2, 4 or 8", 0), 0u)
       << problems[8];
+  EXPECT_EQ(problems[9].rfind(path + ":12: keys_reload: reload is not the player's to bind", 0), 0u) << problems[9];
   EXPECT_EQ(s.gameSpeed, Settings{}.gameSpeed);
-  EXPECT_EQ(s.keys.keys[4], Settings{}.keys.keys[4]);
-  EXPECT_EQ(s.keys.keys[0], (std::vector<std::string>{"J", "K"}));
+  EXPECT_EQ(s.keys.keys.count("jump"), 0u) << "jump keeps its default";
+  EXPECT_EQ(s.keys.keys.at("left"), (std::vector<std::string>{"J", "K"}));
+  EXPECT_EQ(s.keys.keys.count("reload"), 0u);
 
   problems.clear();
   const Settings folderInstead = Settings::load(folder.path(), problems);

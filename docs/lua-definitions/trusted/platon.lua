@@ -329,3 +329,111 @@ function platon.world.valid(entity) end
 ---@return number vx
 ---@return number vy
 function platon.world.velocity(entity) end
+
+--- The actions held this frame (a player's tick's `input`), the engine's and the scene's mods':
+--- `input.jump`; `input.pressed.jump` went down on this frame.
+---@class platon.Input
+---@field left boolean walks left along the face (its own left, as gravity turns)
+---@field right boolean walks right along the face
+---@field up boolean up, for scripts that use it (the game's player does not)
+---@field down boolean down, for scripts that use it (the game's player does not)
+---@field jump boolean jumps; held longer, higher (the jump is cut when it is let go)
+---@field restart boolean back to the level's start (a death)
+---@field pause boolean held by scripts and scenarios only: the game's Esc pauses the window
+---@field reload boolean F5: the level's files read again (the tool's key, not bindable)
+---@field pressed platon.Input the actions that went down on this frame
+
+--- A mod's action (its table's `actions`): keys and pad buttons by SDL's names.
+---@class platon.ActionDeclaration
+---@field keys? string[] default keys ("Left Shift", "X"), at most 8
+---@field pad? string[] default pad buttons ("x", "rightshoulder"), at most 8
+---@field label? string the settings screen's name for it (default: its name)
+---@field does? string one line: what it does
+
+--- A tag a mod declares (its table's `tags`): its look, its passage and its handlers.
+---@class platon.TagDeclaration
+---@field color? string "#rrggbb"
+---@field glow? boolean drawn unlit and bright
+---@field spikes? boolean a row of spikes along its top
+---@field numbered? boolean the word takes a number 1..999
+---@field passable? boolean|fun(game: platon.Game, entity: integer, tag: integer, kind: integer): boolean
+---@field contact? fun(game: platon.Game, entity: integer, tag: integer, kind: integer, ...): table?
+---@field beginContact? fun(game: platon.Game, entity: integer, tag: integer, kind: integer, ...): table?
+---@field overContact? fun(game: platon.Game, entity: integer, tag: integer, kind: integer, ...): table?
+---@field endContact? fun(game: platon.Game, entity: integer, tag: integer, kind: integer, ...): table?
+---@field touchContact? fun(game: platon.Game, entity: integer, tag: integer, kind: integer, ...): table?
+
+--- What a level script or a mod returns.
+---@class platon.Module
+---@field build? fun(game: platon.Game, ...): any the build hook
+---@field tick? fun(game: platon.Game, ...): any the tick hook
+---@field draw? fun(game: platon.Game, ...): any the draw hook
+---@field save? fun(game: platon.Game, ...): any the save hook
+---@field onReload? fun(game: platon.Game, ...): any the onReload hook
+---@field start? {face: integer, x: number, y: number} where the player starts
+---@field tags? table<string, platon.TagDeclaration> a mod's line tags
+---@field actions? table<string, platon.ActionDeclaration> a mod's actions
+
+--- The game's player (scripts/player.lua): a level's own player is handed a copy to extend.
+---@class platon.Player
+---@field entity integer its body
+---@field grounded boolean it stands on something
+---@field wall integer the way off a wall it touches: 1 right, -1 left, 0 none
+---@field facing integer the way it last walked: 1 right, -1 left
+---@field downX number the face's down this frame (a unit vector)
+---@field downY number
+---@field rightX number the face's right this frame (down turned a quarter)
+---@field rightY number
+---@field jumping boolean rising from its own jump (the jump cut applies)
+---@field coyote integer frames a jump still works after leaving a ledge
+---@field buffer integer frames a pressed jump waits for the ground
+---@field fall number the fall speed last frame (+ down)
+local Player = {}
+Player.AIR_ACCEL = 0.35
+Player.BUFFER_FRAMES = 6
+Player.COLOUR = 15909198
+Player.COYOTE_FRAMES = 6
+Player.GROUND_ACCEL = 0.6
+Player.GROUND_BRAKE = 0.9
+Player.GROUND_COS = 0.64
+Player.JUMP_CUT = 4
+Player.JUMP_SPEED = 11
+Player.JUMP_STRETCH = 1.3
+Player.LAND_SPEED = 2.5
+Player.LAND_SQUASH = 0.7
+Player.RADIUS = 96
+Player.SQUASH_EASE = 0.7
+Player.WALK_SPEED = 9
+Player.WALL_COS = 0.9
+
+---@param self platon.Player
+---@return boolean
+function Player.canJump(self) end
+
+---@param self platon.Player
+---@param draw platon.draw
+function Player.draw(self, draw) end
+
+---@param self platon.Player
+---@param along number
+---@return number along, number fall
+function Player.jump(self, along) end
+
+---@param self platon.Player
+---@param input platon.Input
+---@param along number
+---@param fall number
+---@return number along, number fall
+function Player.move(self, input, along, fall) end
+
+---@param game platon.Game
+---@param face integer
+---@param x number
+---@param y number
+---@param degrees? number
+---@return platon.Player
+function Player.spawn(game, face, x, y, degrees) end
+
+---@param self platon.Player
+---@param input platon.Input
+function Player.tick(self, input) end

@@ -14,7 +14,7 @@
 namespace platon::core {
 namespace {
 
-constexpr uint64_t kMaxFrames = uint64_t{1} << 26;  // 12 days at 60 Hz: a bound on what a file can allocate
+constexpr uint64_t kMaxFrames = uint64_t{1} << 25;  // 6 days at 60 Hz: a bound on what a file can allocate (64 MB)
 
 struct Word {
   std::string text;
@@ -69,6 +69,8 @@ class LineReader {
   }
 
   int line() const { return line_; }
+  // "file:line:column" of a column on the current line.
+  std::string at(int column) const { return file_ + ":" + std::to_string(line_) + ":" + std::to_string(column); }
   [[noreturn]] void failAt(int line, int column, const std::string& reason) const {
     throw std::runtime_error(file_ + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " +
                              visibleText(reason));
@@ -123,15 +125,15 @@ void readInput(LineReader& in, std::vector<Word>& w, uint64_t frames, Replay& r)
     const uint64_t count = in.number(w[0], kMaxFrames, "frame count");
     if (count == 0) in.fail(w[0].column, "a run of 0 frames");
     if (w.size() < 2) in.fail(w[0].column, "expected 'count buttons...' ('-' for none)");
-    uint8_t held = 0;
+    Buttons held = 0;
     for (size_t i = 1; i < w.size(); ++i) {
       if (w[i].text == "-" && w.size() == 2) continue;
-      Button b{};
-      if (!buttonFromName(w[i].text, b))
-        in.fail(w[i].column, "unknown button '" + w[i].text +
-                                 "' (left, right, up, down, jump, restart, pause, reload, or - for none)");
-      if (held & InputFrame::bit(b)) in.fail(w[i].column, "'" + w[i].text + "' is given twice");
-      held |= InputFrame::bit(b);
+      const std::optional<int> b = r.actions.bitOf(w[i].text, in.at(w[i].column));
+      if (!b)
+        in.fail(w[i].column, "'" + w[i].text + "' is no action (" + actionList(engineActions()) +
+                                 ", an action a mod adds, or - for none)");
+      if (held >> *b & 1) in.fail(w[i].column, "'" + w[i].text + "' is given twice");
+      held |= static_cast<Buttons>(1u << *b);
     }
     if (r.held.size() + count > frames)
       in.fail(w[0].column, "the input runs past frame " + std::to_string(frames) + " given by 'frames'");
@@ -296,8 +298,8 @@ std::string formatReplay(const Replay& r) {
     while (j < r.held.size() && r.held[j] == r.held[i]) ++j;
     out += std::to_string(j - i);
     if (r.held[i] == 0) out += " -";
-    for (int b = 0; b < kButtonCount; ++b)
-      if (r.held[i] >> b & 1) (out += ' ') += buttonName(static_cast<Button>(b));
+    for (size_t b = 0; b < r.actions.names.size(); ++b)
+      if (r.held[i] >> b & 1) (out += ' ') += r.actions.names[b];
     out += '\n';
     i = j;
   }
@@ -344,7 +346,7 @@ ReplayRecorder::ReplayRecorder(std::string scene, uint64_t hashEvery, std::optio
 
 void ReplayRecorder::console(const std::string& code) { replay_.console.push_back({replay_.frames() + 1, code}); }
 
-void ReplayRecorder::frame(uint8_t held, uint64_t stateHashAfter) {
+void ReplayRecorder::frame(Buttons held, uint64_t stateHashAfter) {
   replay_.held.push_back(held);
   lastHash_ = stateHashAfter;
   const uint64_t f = replay_.held.size();

@@ -22,8 +22,8 @@ std::optional<ConsoleAnswer> Run::console(const std::string& code) {
   return std::nullopt;
 }
 
-std::optional<std::string> Run::step(uint8_t held) {
-  const InputFrame input{held, static_cast<uint8_t>(held & ~previous_)};
+std::optional<std::string> Run::step(Buttons held) {
+  const InputFrame input{held, static_cast<Buttons>(held & ~previous_)};
   previous_ = held;
   ++frame_;
   std::optional<std::string> error;
@@ -39,6 +39,7 @@ void Run::record(const RunRecording& how) {
   recorder_.emplace(how.scene, how.hashEvery, how.sceneFiles);
   recorder_->setStart(how.start);
   recorder_->setSpeed(how.speed);
+  recorder_->setActions(ActionNames(scene().actions()));
 }
 
 std::optional<Replay> Run::stopRecording() {
@@ -52,14 +53,17 @@ std::optional<Replay> Run::recorded() const {
   return recorder_->replay();
 }
 
-uint8_t ReplayInput::next(Run& run, const std::function<void(const std::string&, const ConsoleAnswer&)>& typed) {
+ReplayInput::ReplayInput(const Replay& replay, const Scene& scene)
+    : replay_(replay), map_(replay.actions, scene.actions()) {}
+
+Buttons ReplayInput::next(Run& run, const std::function<void(const std::string&, const ConsoleAnswer&)>& typed) {
   const uint64_t coming = run.frame() + 1;
   for (; nextLine_ < replay_.console.size() && replay_.console[nextLine_].frame <= coming; ++nextLine_) {
     const std::string& code = replay_.console[nextLine_].code;
     const std::optional<ConsoleAnswer> answer = run.console(code);
     if (typed) typed(code, answer.value_or(ConsoleAnswer{false, "this scene has no console (no scripts)"}));
   }
-  return coming <= replay_.frames() ? replay_.held[coming - 1] : 0;
+  return coming <= replay_.frames() ? map_(replay_.held[coming - 1]) : 0;
 }
 
 }  // namespace platon::core

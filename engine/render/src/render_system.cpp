@@ -61,7 +61,7 @@ void RenderSystem::carryOver(core::Scene&, core::System& previous) {
 core::WindowInput RenderSystem::pollEvents() { return gl().window.pollEvents(); }
 
 std::vector<std::string> RenderSystem::setBindings(const core::KeyBindings& bindings) {
-  return gl().window.setBindings(bindings);
+  return gl().window.setBindings(bindings);  // opens the window: SDL names keys only once it is up
 }
 
 void RenderSystem::setFullscreen(bool on) { gl().window.setFullscreen(on); }

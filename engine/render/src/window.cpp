@@ -75,8 +75,8 @@ Window::Window(const std::string& title, int width, int height) {
   glGetIntegerv(GL_MAX_SAMPLES, &maxSamples_);
   const char* wanted = std::getenv("PLATON_MULTISAMPLE");  // tools and tests; the game's settings say later
   setMultisamples(wanted && *wanted ? std::atoi(wanted) : -1);
-  SDL_GL_SetSwapInterval(1);         // vsync when the driver has it; no error otherwise
-  setBindings(core::KeyBindings{});  // the default keys until the settings say others
+  SDL_GL_SetSwapInterval(1);  // vsync when the driver has it; no error otherwise
+  // No key holds an action until the bindings come (session::Session binds the scene's actions).
   // Gamepads: those present now arrive as "added" events on the first poll, later ones when
   // plugged in. No gamepad support (no such subsystem) is not an error.
   SDL_InitSubSystem(SDL_INIT_GAMECONTROLLER);
@@ -159,10 +159,10 @@ std::optional<core::Key> keyOf(SDL_GameControllerButton button) {
 
 }  // namespace
 
-uint8_t Window::heldButtons() const {
+core::Buttons Window::heldButtons() const {
   int count = 0;
   const Uint8* keys = SDL_GetKeyboardState(&count);
-  uint8_t held = 0;
+  core::Buttons held = 0;
   for (int k = 0; k < count; ++k)
     if (keys[k]) held |= buttonOf(static_cast<SDL_Scancode>(k));
   return held;
@@ -170,19 +170,20 @@ uint8_t Window::heldButtons() const {
 
 namespace {
 
-// Fills `table` (indexed by SDL's code for a key or a pad button) with the bit of each button the
-// names bind; `code` turns a name into that code, or returns `none`. Unknown names go to `unknown`.
+// Fills `table` (indexed by SDL's code for a key or a pad button) with the bit of each action the
+// names bind (names[i]: action i's); `code` turns a name into that code, or returns `none`. Unknown
+// names go to `unknown`.
 template <size_t N, class Code>
-void bindNames(uint8_t (&table)[N], const std::array<std::vector<std::string>, core::KeyBindings::kBound>& names,
-               Code code, int none, std::vector<std::string>& unknown) {
-  std::fill(std::begin(table), std::end(table), uint8_t{0});
-  for (int b = 0; b < core::KeyBindings::kBound; ++b)
+void bindNames(core::Buttons (&table)[N], const std::vector<std::vector<std::string>>& names, Code code, int none,
+               std::vector<std::string>& unknown) {
+  std::fill(std::begin(table), std::end(table), core::Buttons{0});
+  for (size_t b = 0; b < names.size() && b < core::kMaxActions; ++b)
     for (const std::string& name : names[b]) {
       const int c = static_cast<int>(code(name.c_str()));
       if (c == none || c < 0 || c >= static_cast<int>(N))
         unknown.push_back(name);
       else
-        table[c] |= InputFrame::bit(static_cast<Button>(b));
+        table[c] |= static_cast<core::Buttons>(1u << b);
     }
 }
 
@@ -191,7 +192,6 @@ void bindNames(uint8_t (&table)[N], const std::array<std::vector<std::string>, c
 std::vector<std::string> Window::setBindings(const core::KeyBindings& bindings) {
   std::vector<std::string> unknown;
   bindNames(buttons_, bindings.keys, SDL_GetScancodeFromName, SDL_SCANCODE_UNKNOWN, unknown);
-  buttons_[SDL_SCANCODE_F5] |= InputFrame::bit(Button::Reload);  // F5 reloads whatever the bindings say
   bindNames(padButtons_, bindings.pad, SDL_GameControllerGetButtonFromString, SDL_CONTROLLER_BUTTON_INVALID, unknown);
   return unknown;
 }
@@ -201,11 +201,11 @@ void Window::setFullscreen(bool on) { SDL_SetWindowFullscreen(window_, on ? SDL_
 void Window::setVsync(bool on) { SDL_GL_SetSwapInterval(on ? 1 : 0); }
 
 // A gamepad's buttons (as bound) and its left stick past a third of its travel, as the engine's.
-uint8_t Window::padButtons(SDL_GameController* pad) const {
+core::Buttons Window::padButtons(SDL_GameController* pad) const {
   constexpr Sint16 kDead = 11000;
   const Sint16 x = SDL_GameControllerGetAxis(pad, SDL_CONTROLLER_AXIS_LEFTX);
   const Sint16 y = SDL_GameControllerGetAxis(pad, SDL_CONTROLLER_AXIS_LEFTY);
-  uint8_t held = 0;
+  core::Buttons held = 0;
   if (x < -kDead) held |= InputFrame::bit(Button::Left);
   if (x > kDead) held |= InputFrame::bit(Button::Right);
   if (y < -kDead) held |= InputFrame::bit(Button::Up);
@@ -272,6 +272,9 @@ core::WindowInput Window::pollEvents() {
         break;
       case SDL_CONTROLLERBUTTONDOWN:
         if (event.cbutton.button < SDL_CONTROLLER_BUTTON_MAX) input.tapped |= padButtons_[event.cbutton.button];
+        if (const char* name =
+                SDL_GameControllerGetStringForButton(static_cast<SDL_GameControllerButton>(event.cbutton.button)))
+          input.lastPadButton = name;
         if (const auto key = keyOf(static_cast<SDL_GameControllerButton>(event.cbutton.button)))
           input.pressed.push_back(*key);
         break;

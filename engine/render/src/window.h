@@ -45,12 +45,12 @@ class Window {
   void setVsync(bool on);
 
  private:
-  uint8_t buttonOf(SDL_Scancode key) const { return key >= 0 && key < SDL_NUM_SCANCODES ? buttons_[key] : 0; }
-  uint8_t heldButtons() const;
-  uint8_t padButtons(SDL_GameController* pad) const;
+  core::Buttons buttonOf(SDL_Scancode key) const { return key >= 0 && key < SDL_NUM_SCANCODES ? buttons_[key] : 0; }
+  core::Buttons heldButtons() const;
+  core::Buttons padButtons(SDL_GameController* pad) const;
 
-  uint8_t buttons_[SDL_NUM_SCANCODES] = {};             // by scancode: the InputFrame bits it holds
-  uint8_t padButtons_[SDL_CONTROLLER_BUTTON_MAX] = {};  // by gamepad button: likewise
+  core::Buttons buttons_[SDL_NUM_SCANCODES] = {};             // by scancode: the InputFrame bits it holds
+  core::Buttons padButtons_[SDL_CONTROLLER_BUTTON_MAX] = {};  // by gamepad button: likewise
   void freeSamples();
 
   struct SampledFrame {

@@ -3,7 +3,7 @@
 -- and the `game` level scripts and mods are handed) with each function's entry in
 -- api_signatures.lua. Returns the text and the problems: a binding with no entry, an entry with
 -- no binding. Run by `platon defs` (ScriptSystem::definitions).
-local api, levelApi, signatures, sandboxed = ...
+local api, levelApi, signatures, sandboxed, data, actionDocs = ...
 local out, problems, seen = {}, {}, {}
 local function emit(line) out[#out + 1] = line end
 
@@ -104,6 +104,93 @@ if sandboxed then
   emit("local Game = {}")
   for _, name in ipairs(sortedKeys(levelApi)) do
     if type(levelApi[name]) == "function" then functionOf("game." .. name, "Game", name) end
+  end
+end
+
+-- The `input` table a player's tick is handed: the scene's actions (core/actions.h), by name.
+emit("")
+emit("--- The actions held this frame (a player's tick's `input`), the engine's and the scene's mods':")
+emit("--- `input.jump`; `input.pressed.jump` went down on this frame.")
+emit("---@class platon.Input")
+for i, name in ipairs(data.actions) do emit("---@field " .. name .. " boolean " .. (actionDocs[i] or "")) end
+emit("---@field pressed platon.Input the actions that went down on this frame")
+emit("")
+emit("--- A mod's action (its table's `actions`): keys and pad buttons by SDL's names.")
+emit("---@class platon.ActionDeclaration")
+emit("---@field keys? string[] default keys (\"Left Shift\", \"X\"), at most 8")
+emit("---@field pad? string[] default pad buttons (\"x\", \"rightshoulder\"), at most 8")
+emit("---@field label? string the settings screen's name for it (default: its name)")
+emit("---@field does? string one line: what it does")
+
+-- What a level script or mod returns (docs/scripting.md, "The level script", "Tags", "Actions").
+emit("")
+emit("--- A tag a mod declares (its table's `tags`): its look, its passage and its handlers.")
+emit("---@class platon.TagDeclaration")
+emit("---@field color? string \"#rrggbb\"")
+emit("---@field glow? boolean drawn unlit and bright")
+emit("---@field spikes? boolean a row of spikes along its top")
+emit("---@field numbered? boolean the word takes a number 1..999")
+emit("---@field passable? boolean|fun(game: platon.Game, entity: integer, tag: integer, kind: integer): boolean")
+for _, name in ipairs(data.tagHandlers) do
+  emit("---@field " .. name .. "? fun(game: platon.Game, entity: integer, tag: integer, kind: integer, ...): table?")
+end
+emit("")
+emit("--- What a level script or a mod returns.")
+emit("---@class platon.Module")
+for _, name in ipairs(data.hooks) do
+  emit("---@field " .. name .. "? fun(game: platon.Game, ...): any the " .. name .. " hook")
+end
+emit("---@field start? {face: integer, x: number, y: number} where the player starts")
+emit("---@field tags? table<string, platon.TagDeclaration> a mod's line tags")
+emit("---@field actions? table<string, platon.ActionDeclaration> a mod's actions")
+
+-- The game's player, which a level's own player is handed to extend (docs/scripting.md, "The player").
+emit("")
+emit("--- The game's player (scripts/player.lua): a level's own player is handed a copy to extend.")
+emit("---@class platon.Player")
+emit("---@field entity integer its body")
+emit("---@field grounded boolean it stands on something")
+emit("---@field wall integer the way off a wall it touches: 1 right, -1 left, 0 none")
+emit("---@field facing integer the way it last walked: 1 right, -1 left")
+emit("---@field downX number the face's down this frame (a unit vector)")
+emit("---@field downY number")
+emit("---@field rightX number the face's right this frame (down turned a quarter)")
+emit("---@field rightY number")
+emit("---@field jumping boolean rising from its own jump (the jump cut applies)")
+emit("---@field coyote integer frames a jump still works after leaving a ledge")
+emit("---@field buffer integer frames a pressed jump waits for the ground")
+emit("---@field fall number the fall speed last frame (+ down)")
+emit("local Player = {}")
+for _, name in ipairs(sortedKeys(data.player)) do
+  local v = data.player[name]
+  if type(v) == "number" then
+    emit("Player." .. name .. " = " .. tostring(v))
+  end
+end
+local PLAYER_FUNCTIONS = {
+  spawn = { "game: platon.Game, face: integer, x: number, y: number, degrees?: number", "platon.Player" },
+  tick = { "self: platon.Player, input: platon.Input", "" },
+  canJump = { "self: platon.Player", "boolean" },
+  jump = { "self: platon.Player, along: number", "number along, number fall" },
+  move = { "self: platon.Player, input: platon.Input, along: number, fall: number", "number along, number fall" },
+  draw = { "self: platon.Player, draw: platon.draw", "" },
+}
+for _, name in ipairs(sortedKeys(data.player)) do
+  if type(data.player[name]) == "function" then
+    local f = PLAYER_FUNCTIONS[name]
+    if not f then
+      problems[#problems + 1] = "Player." .. name .. ": a player function with no definition (definitions.lua)"
+    else
+      emit("")
+      local names = {}
+      for _, p in ipairs(split(f[1])) do
+        local n, optional, t = p:match("^([%w_]+)(%??):%s*(.+)$")
+        emit("---@param " .. n .. optional .. " " .. t)
+        names[#names + 1] = n
+      end
+      if f[2] ~= "" then emit("---@return " .. f[2]) end
+      emit("function Player." .. name .. "(" .. table.concat(names, ", ") .. ") end")
+    end
   end
 end
 

@@ -171,7 +171,8 @@ struct Plan {
   std::string scene;
   std::string sceneAt;  // "file:line:column" where the scene was named, for errors about its file
   uint64_t frames = 0;
-  std::vector<uint8_t> held;  // per frame, from frame 1
+  std::vector<core::Buttons> held;  // per frame, from frame 1: bit i is actions.names[i]
+  core::ActionNames actions;        // the engine's, then the names the file adds (a mod's)
   std::optional<uint64_t> goalBy;
   std::optional<int> deaths;
   std::map<uint64_t, physics::MapPartId> faceAt;
@@ -202,7 +203,7 @@ struct Plan {
   }
 };
 
-constexpr double kMaxFrames = 1e8;
+constexpr double kMaxFrames = 33554432;           // 2^25, 6 days at 60 Hz, as a replay: 64 MB of input at most
 constexpr double kMaxCoordinate = (1 << 30) - 1;  // positions, as the world takes them
 
 // Checks a scenario's table against what a scenario may hold, and turns it into a plan. Every
@@ -328,13 +329,17 @@ class PlanReader {
     return wholeNumber(key.line ? key : value, where + " (a frame)", 1, static_cast<double>(plan.frames));
   }
 
-  core::Button button(const DataValue& d, const std::string& where) const {
-    core::Button b{};
-    if (d.kind != DataValue::Kind::String || !core::buttonFromName(d.text, b))
+  // The bit of the action `d` names: the engine's, or another name, which the scene must have.
+  int action(const DataValue& d, const std::string& where, Plan& plan) const {
+    const std::string place = at(d, where);  // "file:line:column: where: "
+    const std::optional<int> b = d.kind == DataValue::Kind::String
+                                     ? plan.actions.bitOf(d.text, place.substr(0, place.size() - 2))
+                                     : std::nullopt;
+    if (!b)
       fail(d, where,
-           "unknown button " + (d.kind == DataValue::Kind::String ? core::dataKeyText(d) : core::describeData(d)) +
-               " (left, right, up, down, jump, restart, pause, reload)");
-    return b;
+           "unknown action " + (d.kind == DataValue::Kind::String ? core::dataKeyText(d) : core::describeData(d)) +
+               " (" + core::actionList(core::engineActions()) + ", or one a mod adds)");
+    return *b;
   }
 
   void readInput(const DataValue& input, Plan& plan) const {
@@ -348,10 +353,10 @@ class PlanReader {
       if (hold && press) fail(*press, where, "give hold or press, not both");
       const auto last = static_cast<double>(plan.frames);
       uint64_t from = 0, to = 0;
-      core::Button b{};
+      int b = 0;
       if (hold) {
         knownKeys(item, where, {"hold", "from", "to"});
-        b = button(*hold, where);
+        b = action(*hold, where + ".hold", plan);
         from = wholeNumber(required(item, "from", where), where + ".from", 1, last);
         to = wholeNumber(required(item, "to", where), where + ".to", 1, last);
         if (to < from)
@@ -359,7 +364,7 @@ class PlanReader {
                "frame " + std::to_string(to) + " is before from = " + std::to_string(from));
       } else if (press) {
         knownKeys(item, where, {"press", "at", "frames"});
-        b = button(*press, where);
+        b = action(*press, where + ".press", plan);
         from = wholeNumber(required(item, "at", where), where + ".at", 1, last);
         const DataValue* count = field(item, "frames");
         to = from + (count ? wholeNumber(*count, where + ".frames", 1, last) : 1) - 1;
@@ -370,7 +375,7 @@ class PlanReader {
       } else {
         fail(item, where, "give hold = \"button\" (from, to) or press = \"button\" (at, frames)");
       }
-      for (uint64_t f = from; f <= to; ++f) plan.held[f] |= core::InputFrame::bit(b);
+      for (uint64_t f = from; f <= to; ++f) plan.held[f] |= static_cast<core::Buttons>(1u << b);
     }
   }
 
@@ -695,6 +700,7 @@ ScenarioResult runPlan(const std::string& path, const std::function<Plan()>& mak
       if (auto* s = dynamic_cast<ScriptSystem*>(&scene->system(i))) scripts = s;
     if ((plan.goalBy || plan.deaths || !plan.faceAt.empty() || !plan.inside.empty()) && !scripts)
       return finish(false, "the scene has no scripts, so no player to check");
+    const core::ActionMap actions(plan.actions, scene->actions());  // a name the scene lacks: at its place
     run.emplace(*scene);
     if (options.record) run->record({plan.scene, options.hashEvery, filesHash, plan.start, 100});
     std::string failure;
@@ -703,7 +709,7 @@ ScenarioResult runPlan(const std::string& path, const std::function<Plan()>& mak
       // The console's lines where the run typed them (their answers were the player's to read).
       for (; nextLine < plan.console.size() && plan.console[nextLine].frame == f; ++nextLine)
         (void)run->console(plan.console[nextLine].code);
-      run->step(plan.held[f]);
+      run->step(actions(plan.held[f]));
       result.frames = f;
       failure = checkFrame(plan, f, *scene, scripts, options.traceEvery, path, filesNote);
       // With the goal reached there is nothing left to see, unless a check waits for a later frame.
@@ -761,6 +767,7 @@ ScenarioResult runReplay(const std::string& path, const RunOptions& options) {
         plan.frames = replay.frames();
         plan.held.assign(1, 0);
         plan.held.insert(plan.held.end(), replay.held.begin(), replay.held.end());
+        plan.actions = replay.actions;
         for (const core::ReplayHash& h : replay.hashes) plan.hashAt[h.frame] = hex(h.hash);
         plan.sceneFilesHash = replay.sceneFiles;
         plan.start = replay.start;
@@ -795,8 +802,8 @@ std::string scenarioFromReplay(const core::Replay& replay, const ScenarioResult&
     out += "  start = { face = " + std::to_string(replay.start->face) + ", x = " + std::to_string(replay.start->x) +
            ", y = " + std::to_string(replay.start->y) + " },\n";
   out += "  input = {\n";
-  for (int b = 0; b < core::kButtonCount; ++b) {
-    const std::string button(core::buttonName(static_cast<core::Button>(b)));
+  for (size_t b = 0; b < replay.actions.names.size(); ++b) {
+    const std::string& button = replay.actions.names[b];
     for (size_t i = 0; i < replay.held.size();) {
       if (!(replay.held[i] >> b & 1)) {
         ++i;

@@ -469,6 +469,13 @@ void ScriptSystem::prepare(core::Scene& scene) {
     lua_rawseti(L, -2, static_cast<int>(i + 1));
   }
   lua_setfield(L, -2, "mods");
+  lua_newtable(L);  // the engine's actions, by bit: the `input` table's names
+  for (size_t i = 0; i < core::engineActions().size(); ++i) {
+    const std::string& name = core::engineActions()[i].name;
+    lua_pushlstring(L, name.data(), name.size());
+    lua_rawseti(L, -2, static_cast<int>(i + 1));
+  }
+  lua_setfield(L, -2, "actions");
   lua_pushnumber(L, m.seed);
   lua_setfield(L, -2, "seed");
   state_->host.call(2, 1);
@@ -521,8 +528,10 @@ void ScriptSystem::declareTags(core::Scene& scene, stage::TagTable& tags) {
   lua_State* L = state_->host.state();
   lua::StackGuard guard(L);
   state_->host.beginFrame();
-  state_->callDriver("declare", 0, 1);  // loads the mods: a list of { owner =, word =, ... }
+  state_->callDriver("declare", 0, 2);  // loads the mods: { owner =, word =, ... }s, { owner =, name =, ... }s
   state_->throwKeptErrors();
+  declareActions(scene, lua_gettop(L));
+  lua_pop(L, 1);
   const int list = lua_gettop(L);
   for (int i = 1;; ++i) {
     lua_rawgeti(L, list, i);
@@ -576,6 +585,63 @@ void ScriptSystem::declareTags(core::Scene& scene, stage::TagTable& tags) {
     lua_pop(L, 1);
   }
   setTagsApi(tags);
+}
+
+namespace {
+
+// The string at t[key] (t on the top of the stack), or "".
+std::string textField(lua_State* L, const char* key) {
+  lua_getfield(L, -1, key);
+  std::string v = lua_isstring(L, -1) ? lua_tostring(L, -1) : "";
+  lua_pop(L, 1);
+  return v;
+}
+
+// The strings of the list at t[key] (t on the top of the stack).
+std::vector<std::string> textList(lua_State* L, const char* key) {
+  std::vector<std::string> out;
+  lua_getfield(L, -1, key);
+  for (int i = 1; lua_istable(L, -1); ++i) {
+    lua_rawgeti(L, -1, i);
+    const bool more = lua_isstring(L, -1);
+    if (more) out.emplace_back(lua_tostring(L, -1));
+    lua_pop(L, 1);
+    if (!more) break;
+  }
+  lua_pop(L, 1);
+  return out;
+}
+
+}  // namespace
+
+// The mods' actions (the list at `list`, checked by scene.lua) after the engine's, into the scene's
+// table; scene.lua's `input` takes the names in the same order.
+void ScriptSystem::declareActions(core::Scene& scene, int list) {
+  lua_State* L = state_->host.state();
+  std::vector<core::Action> actions = core::engineActions();
+  for (int i = 1;; ++i) {
+    lua_rawgeti(L, list, i);
+    if (!lua_istable(L, -1)) break;
+    core::Action a{textField(L, "name"), textField(L, "label"), textList(L, "keys"),
+                   textList(L, "pad"),   textField(L, "does"),  true,
+                   textField(L, "owner")};
+    lua_pop(L, 1);
+    try {
+      core::addAction(actions, a);
+    } catch (const std::runtime_error& e) {
+      throw ScriptError(a.owner + ": actions." + a.name + ": " + e.what(), "");
+    }
+  }
+  lua_pop(L, 1);
+  if (actions.size() == core::engineActions().size()) return;
+  lua_createtable(L, static_cast<int>(actions.size()), 0);
+  for (size_t i = 0; i < actions.size(); ++i) {
+    lua_pushlstring(L, actions[i].name.data(), actions[i].name.size());
+    lua_rawseti(L, -2, static_cast<int>(i + 1));
+  }
+  state_->callDriver("setActions", 1, 0);
+  state_->throwKeptErrors();
+  scene.setActions(std::move(actions));
 }
 
 void ScriptSystem::build(core::Scene& scene) {
@@ -833,7 +899,14 @@ std::string ScriptSystem::definitions(bool sandboxed, std::vector<std::string>& 
   state_->host.loadString(embedded_lua::api_signatures, "=platon/api_signatures", Trust::Trusted);
   state_->host.call(0, 1);
   lua_pushboolean(L, sandboxed);
-  state_->host.call(4, 2);
+  state_->callDriver("definitionsData", 0, 1);
+  lua_createtable(L, static_cast<int>(state_->scene->actions().size()), 0);  // what each action does
+  for (size_t i = 0; i < state_->scene->actions().size(); ++i) {
+    const std::string& does = state_->scene->actions()[i].does;
+    lua_pushlstring(L, does.data(), does.size());
+    lua_rawseti(L, -2, static_cast<int>(i + 1));
+  }
+  state_->host.call(6, 2);
   for (int i = 1;; ++i) {
     lua_rawgeti(L, -1, i);
     if (!lua_isstring(L, -1)) break;

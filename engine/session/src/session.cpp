@@ -35,6 +35,28 @@ void Session::replace(std::unique_ptr<core::LiveScene> live) {
   hold();
 }
 
+std::vector<std::string> Session::bindKeys(const core::BindingChoices& choices) {
+  choices_ = choices;
+  boundActions_.clear();
+  core::Display* d = display();
+  if (!d) return {};
+  boundActions_ = scene().actions();
+  return d->setBindings(core::bindingsFor(boundActions_, choices_));
+}
+
+// Binds the window for the scene's actions when it is not yet (the first poll, a scene with a
+// mod's dash after one without).
+void Session::applyBindings() {
+  core::Display* d = display();
+  const std::vector<core::Action>& now = scene().actions();
+  const auto sameName = [](const core::Action& a, const core::Action& b) { return a.name == b.name; };
+  if (!d || (!boundActions_.empty() &&
+             std::equal(now.begin(), now.end(), boundActions_.begin(), boundActions_.end(), sameName)))
+    return;
+  boundActions_ = scene().actions();
+  (void)d->setBindings(core::bindingsFor(boundActions_, choices_));  // unknown names were said at bindKeys
+}
+
 core::Display* Session::display() { return windowless_ ? nullptr : displayOf(scene()); }
 
 script::GameStatus Session::status() { return statusOf(scene()); }
@@ -42,6 +64,7 @@ script::GameStatus Session::status() { return statusOf(scene()); }
 core::WindowInput Session::poll() {
   core::Display* d = display();
   if (!d) return {};
+  applyBindings();  // a scene with other actions (a mod's dash; another level) than the window's
   core::WindowInput input = d->pollEvents();
   const bool typing = consoleOpen_;  // letters typed into the console are not the game's buttons
   if (consoleOpen_)
@@ -191,7 +214,7 @@ int Session::playDue(const core::WindowInput& input, int speedPercent, bool fast
   return played;
 }
 
-std::optional<std::string> Session::playFrame(uint8_t held) {
+std::optional<std::string> Session::playFrame(core::Buttons held) {
   std::optional<std::string> error = run_->step(held);
   if (error && *error != lastError_) {
     std::printf("frame %llu: error (the game goes on):\n%s\n", static_cast<unsigned long long>(run_->frame()),

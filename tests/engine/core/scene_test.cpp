@@ -82,12 +82,50 @@ TEST(SystemRegistry, CreatesOnlyWhatIsNamedAndNamesWhatIsKnown) {
   }
 }
 
-TEST(Input, ButtonNamesRoundTrip) {
-  for (int i = 0; i < core::kButtonCount; ++i) {
-    core::Button b{};
-    ASSERT_TRUE(core::buttonFromName(core::buttonName(static_cast<core::Button>(i)), b));
-    EXPECT_EQ(static_cast<int>(b), i);
+TEST(Actions, TheEnginesAreInButtonsOrderAndAModAddsItsOwnByName) {
+  const std::vector<core::Action>& engine = core::engineActions();
+  ASSERT_EQ(engine.size(), static_cast<size_t>(core::kButtonCount));
+  EXPECT_EQ(core::actionIndex(engine, "jump"), static_cast<int>(core::Button::Jump));
+  EXPECT_EQ(core::actionIndex(engine, "reload"), static_cast<int>(core::Button::Reload));
+  EXPECT_EQ(core::actionIndex(engine, "fire"), std::nullopt);
+  for (const core::Action& a : engine) EXPECT_TRUE(core::isActionName(a.name)) << a.name;
+  std::vector<core::Action> actions = engine;
+  core::addAction(actions, {"dash", "", {"X"}, {"x"}, "a dash", true, "dash.lua"});
+  EXPECT_EQ(actions.back().label, "dash");  // none given: its name
+  const std::pair<core::Action, std::string> refused[] = {
+      {{"jump", "", {}, {}, "", true, "m.lua"}, "the action 'jump' is the engine's"},
+      {{"dash", "", {}, {}, "", true, "m.lua"}, "the action 'dash' is dash.lua's"},
+      {{"2fast", "", {}, {}, "", true, "m.lua"}, "'2fast' is no action name"},
+      {{"pressed", "", {}, {}, "", true, "m.lua"}, "'pressed' is input.pressed"},
+      {{"", "", {}, {}, "", true, "m.lua"}, "'' is no action name"},
+  };
+  for (const auto& [action, error] : refused) {
+    try {
+      core::addAction(actions, action);
+      ADD_FAILURE() << action.name << " was added";
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find(error), std::string::npos) << e.what();
+    }
   }
-  core::Button b{};
-  EXPECT_FALSE(core::buttonFromName("fire", b));
+  for (int i = 0; i < 7; ++i) core::addAction(actions, {"a" + std::to_string(i), "", {}, {}, "", true, "m.lua"});
+  try {
+    core::addAction(actions, {"one_more", "", {}, {}, "", true, "m.lua"});
+    ADD_FAILURE() << "a 17th action was added";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("more than 8 actions added"), std::string::npos) << e.what();
+  }
+}
+
+// The settings' choices replace an action's defaults, never a tool's (reload stays F5).
+TEST(Actions, BindingsAreTheDefaultsWithThePlayersChoices) {
+  core::BindingChoices choices;
+  choices.keys["jump"] = {"K"};
+  choices.pad["left"] = {"leftshoulder"};
+  choices.keys["reload"] = {"Q"};
+  const core::KeyBindings b = core::bindingsFor(core::engineActions(), choices);
+  EXPECT_EQ(b.keys[static_cast<size_t>(core::Button::Jump)], std::vector<std::string>{"K"});
+  EXPECT_EQ(b.pad[static_cast<size_t>(core::Button::Jump)], (std::vector<std::string>{"a", "b"}));
+  EXPECT_EQ(b.pad[static_cast<size_t>(core::Button::Left)], std::vector<std::string>{"leftshoulder"});
+  EXPECT_EQ(b.keys[static_cast<size_t>(core::Button::Left)], (std::vector<std::string>{"Left", "A"}));
+  EXPECT_EQ(b.keys[static_cast<size_t>(core::Button::Reload)], std::vector<std::string>{"F5"});
 }

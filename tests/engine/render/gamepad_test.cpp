@@ -32,7 +32,8 @@ TEST(Gamepad, PluggedInWhileRunningItDrivesTheMenusAndThePlayer) {
   auto scene =
       core::loadScene(folder.write("scene.lua", "return { name = 'pad', systems = { 'rendering' } }"), registry);
   core::Display& display = *scene->findSystem("rendering")->display();
-  display.pollEvents();  // the window is open, no pad yet
+  display.setBindings(core::bindingsFor(core::engineActions()));  // what a Session binds
+  display.pollEvents();                                           // the window is open, no pad yet
   ASSERT_EQ(SDL_InitSubSystem(SDL_INIT_JOYSTICK), 0) << SDL_GetError();
 
   SDL_VirtualJoystickDesc desc{};
@@ -57,6 +58,7 @@ TEST(Gamepad, PluggedInWhileRunningItDrivesTheMenusAndThePlayer) {
   SDL_JoystickUpdate();
   core::WindowInput in = display.pollEvents();
   EXPECT_TRUE(has(in, core::Key::Enter)) << "A is Enter in the menus";
+  EXPECT_EQ(in.lastPadButton, "a") << "the settings screen binds the button it names";
   EXPECT_TRUE(in.held & core::InputFrame::bit(core::Button::Jump)) << "A held is Jump";
   EXPECT_TRUE(in.held & core::InputFrame::bit(core::Button::Right)) << "the stick right is Right";
   EXPECT_FALSE(in.held & core::InputFrame::bit(core::Button::Left));
@@ -80,13 +82,19 @@ TEST(Gamepad, PluggedInWhileRunningItDrivesTheMenusAndThePlayer) {
   // Rebound (the player's settings): X jumps and A no longer does (it still is Enter for the menus);
   // a name SDL does not know binds nothing and is returned.
   SDL_JoystickSetVirtualButton(pad, SDL_CONTROLLER_BUTTON_DPAD_LEFT, 0);
-  core::KeyBindings bindings;
-  bindings.pad[4] = {"x", "nosuchbutton"};
-  EXPECT_EQ(display.setBindings(bindings), std::vector<std::string>{"nosuchbutton"});
+  // A mod's action (bit 8) is bound like the engine's.
+  core::BindingChoices choices;
+  choices.pad["jump"] = {"x", "nosuchbutton"};
+  std::vector<core::Action> actions = core::engineActions();
+  core::addAction(actions, {"dash", "Dash", {"X"}, {"rightshoulder"}, "", true, "dash.lua"});
+  EXPECT_EQ(display.setBindings(core::bindingsFor(actions, choices)), std::vector<std::string>{"nosuchbutton"});
   SDL_JoystickSetVirtualButton(pad, SDL_CONTROLLER_BUTTON_X, 1);
+  SDL_JoystickSetVirtualButton(pad, SDL_CONTROLLER_BUTTON_RIGHTSHOULDER, 1);
   SDL_JoystickUpdate();
   in = display.pollEvents();
   EXPECT_TRUE(in.held & core::InputFrame::bit(core::Button::Jump)) << "X bound to Jump";
+  EXPECT_TRUE(in.held & (1u << 8)) << "the right shoulder holds the mod's dash";
+  SDL_JoystickSetVirtualButton(pad, SDL_CONTROLLER_BUTTON_RIGHTSHOULDER, 0);
   SDL_JoystickSetVirtualButton(pad, SDL_CONTROLLER_BUTTON_X, 0);
   SDL_JoystickSetVirtualButton(pad, SDL_CONTROLLER_BUTTON_A, 1);
   SDL_JoystickUpdate();
@@ -95,7 +103,7 @@ TEST(Gamepad, PluggedInWhileRunningItDrivesTheMenusAndThePlayer) {
   EXPECT_TRUE(has(in, core::Key::Enter)) << "A is still Enter in the menus";
   SDL_JoystickSetVirtualButton(pad, SDL_CONTROLLER_BUTTON_A, 0);
   SDL_JoystickUpdate();
-  display.setBindings(core::KeyBindings{});
+  display.setBindings(core::bindingsFor(core::engineActions()));
   const SDL_JoystickID id = SDL_JoystickInstanceID(pad);
   SDL_JoystickClose(pad);
   ASSERT_EQ(SDL_JoystickDetachVirtual(device), 0) << SDL_GetError();
@@ -116,7 +124,8 @@ TEST(Taps, APressAndReleaseBetweenTwoPollsIsATap) {
   auto scene =
       core::loadScene(folder.write("scene.lua", "return { name = 'taps', systems = { 'rendering' } }"), registry);
   core::Display& display = *scene->findSystem("rendering")->display();
-  display.pollEvents();  // the window is open
+  display.setBindings(core::bindingsFor(core::engineActions()));  // what a Session binds
+  display.pollEvents();                                           // the window is open
   const std::pair<SDL_Scancode, core::Button> keys[] = {{SDL_SCANCODE_SPACE, core::Button::Jump},
                                                         {SDL_SCANCODE_A, core::Button::Left},
                                                         {SDL_SCANCODE_RIGHT, core::Button::Right},
@@ -131,7 +140,7 @@ TEST(Taps, APressAndReleaseBetweenTwoPollsIsATap) {
       ASSERT_EQ(SDL_PushEvent(&e), 1) << SDL_GetError();
     }
     const core::WindowInput in = display.pollEvents();
-    const uint8_t bit = core::InputFrame::bit(button);
+    const core::Buttons bit = core::InputFrame::bit(button);
     EXPECT_FALSE(in.held & bit) << scancode << ": released before the poll";
     EXPECT_TRUE(in.tapped & bit) << scancode << ": the tap is lost";
     core::TapCarry carry;

@@ -57,11 +57,14 @@ TEST(Definitions, ABindingWithoutADefinitionAndADefinitionWithoutABindingAreName
       fileText(root + "api_signatures.lua") + "]==])()\n" +
       "signatures['platon.world.position'] = nil\n"
       "signatures['platon.world.teleport'] = { 'entity: integer', '', 'no such binding' }\n"
-      "local _, problems = make(platon, game.levelApi, signatures, false)\n"
+      "local data = { actions = { 'left' }, hooks = { 'tick' }, tagHandlers = { 'contact' },\n"
+      "  player = { tick = function() end, fly = function() end } }\n"
+      "local _, problems = make(platon, game.levelApi, signatures, false, data, {})\n"
       "return table.concat(problems, '\\n')\n";
   const std::string problems = game.scripts().evaluate(code, "=definitions check");
   EXPECT_NE(problems.find("platon.world.position: a binding with no definition"), std::string::npos) << problems;
   EXPECT_NE(problems.find("platon.world.teleport: a definition with no binding"), std::string::npos) << problems;
+  EXPECT_NE(problems.find("Player.fly: a player function with no definition"), std::string::npos) << problems;
 }
 
 // docs/lua-definitions/ is what `platon defs` writes now (PLATON_UPDATE_DEFINITIONS=1 writes it).

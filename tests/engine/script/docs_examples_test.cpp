@@ -65,8 +65,8 @@ void play(const std::string& manifest) {
   core::LiveScene live(manifest, registry, false);
   core::InputEdges edges;
   for (int f = 0; f < 400; ++f) {
-    const uint8_t held = core::InputFrame::bit(f % 200 < 100 ? core::Button::Right : core::Button::Left) |
-                         (f % 50 < 5 ? core::InputFrame::bit(core::Button::Jump) : 0);
+    const core::Buttons held = core::InputFrame::bit(f % 200 < 100 ? core::Button::Right : core::Button::Left) |
+                               (f % 50 < 5 ? core::InputFrame::bit(core::Button::Jump) : 0);
     const std::optional<std::string> error = live.step(edges.next(held));
     ASSERT_FALSE(error.has_value()) << *error;
   }

@@ -11,6 +11,8 @@
 
 #include "platon/core/display.h"
 #include "platon/core/live_scene.h"
+#include "platon/core/replay.h"
+#include "platon/core/run.h"
 #include "platon/script/script_system.h"
 #include "platon/stage/level.h"
 #include "platon/testing/temp_folder.h"
@@ -68,8 +70,8 @@ Played play(core::LiveScene& live, int frames, bool right, const std::set<int>& 
   Played run;
   core::InputEdges edges;
   for (int f = 0; f < frames; ++f) {
-    const uint8_t held = (right ? core::InputFrame::bit(core::Button::Right) : 0) |
-                         (jumps.count(f) ? core::InputFrame::bit(core::Button::Jump) : 0);
+    const core::Buttons held = (right ? core::InputFrame::bit(core::Button::Right) : 0) |
+                               (jumps.count(f) ? core::InputFrame::bit(core::Button::Jump) : 0);
     const std::optional<std::string> error = live.step(edges.next(held));
     EXPECT_FALSE(error.has_value()) << *error;
     run.last = scriptsOf(live).status();
@@ -399,6 +401,123 @@ TEST(Tags, AModsBadContactAnswerIsTheModsError) {
         0u)
         << errors;
     EXPECT_EQ(errors.find("0x"), std::string::npos) << "an address in the report:\n" << errors;
+  }
+}
+
+}  // namespace
+}  // namespace platon::script
+
+namespace platon::script {
+namespace {
+
+// The ```lua block of `kind` that first follows `heading` in docs/scripting.md.
+std::string docsBlock(const std::string& heading, const std::string& kind) {
+  std::ifstream in(std::string(PLATON_SOURCE_ROOT) + "/docs/scripting.md");
+  std::string line, code;
+  bool after = false, inside = false;
+  while (std::getline(in, line)) {
+    if (line == heading) after = true;
+    if (inside && line == "```") return code;
+    if (inside) code += line + "\n";
+    if (after && line == "```lua " + kind) inside = true;
+  }
+  return "";
+}
+
+// The docs' table of the engine's actions is the code's: names, keys, pad buttons, what they do.
+TEST(Actions, TheDocsListTheEnginesActions) {
+  std::ifstream in(std::string(PLATON_SOURCE_ROOT) + "/docs/scripting.md");
+  std::vector<std::string> rows;
+  bool after = false;
+  for (std::string line; std::getline(in, line);) {
+    if (line == "## Actions")
+      after = true;
+    else if (after && line.rfind("## ", 0) == 0)
+      break;
+    if (after && line.rfind("| `", 0) == 0) rows.push_back(line);
+  }
+  auto list = [](const std::vector<std::string>& names) {
+    std::string out;
+    for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
+    return out.empty() ? std::string("-") : out;
+  };
+  const std::vector<core::Action>& actions = core::engineActions();
+  ASSERT_EQ(rows.size(), actions.size());
+  for (size_t i = 0; i < actions.size(); ++i) {
+    const core::Action& a = actions[i];
+    EXPECT_EQ(rows[i], "| `" + a.name + "` | " + list(a.keys) + " | " + list(a.pad) + " | " + a.does + " |");
+  }
+}
+
+// The docs' dash (a mod's action and the level's player that uses it) dashes, and a recorded run
+// of it plays back by the action's name.
+TEST(Actions, TheDocumentedDashDashes) {
+  const std::string mod = docsBlock("## Actions", "mod"), player = docsBlock("## Actions", "player");
+  ASSERT_NE(mod.find("dash"), std::string::npos) << "the docs' dash mod is gone";
+  ASSERT_NE(player.find("Player.move"), std::string::npos) << "the docs' dash player is gone";
+  ModLevel level("actions_dash", "solid", "", {mod}, player);
+  const core::SystemRegistry registry = scripting();
+  auto walk = [&](bool dash, std::optional<core::Replay>* recorded) {
+    core::LiveScene live(level.scene, registry, false);
+    const std::optional<int> bit = core::actionIndex(live.scene().actions(), "dash");
+    EXPECT_EQ(bit, 8) << "the mod's action follows the engine's eight";
+    core::Run run(live);
+    if (recorded) run.record({"scene.lua", 10, std::nullopt, std::nullopt, 100});
+    for (int f = 1; f <= 60; ++f) {
+      const core::Buttons held = core::InputFrame::bit(core::Button::Right) |
+                                 (dash && bit && f >= 20 && f < 23 ? core::Buttons(1u << *bit) : core::Buttons(0));
+      const std::optional<std::string> error = run.step(held);
+      EXPECT_FALSE(error.has_value()) << *error;
+    }
+    if (recorded) *recorded = run.stopRecording();
+    return scriptsOf(live).status().x;
+  };
+  std::optional<core::Replay> replay;
+  const int32_t walked = walk(false, nullptr), dashed = walk(true, &replay);
+  EXPECT_GT(dashed, walked + 150) << "the dash carried the player no farther than walking";
+  ASSERT_TRUE(replay.has_value());
+  const std::string text = core::formatReplay(*replay);
+  EXPECT_NE(text.find(" right dash\n"), std::string::npos) << text;
+  const core::Replay back = core::parseReplay(text, "dash.replay");
+  core::LiveScene again(level.scene, registry, false);
+  core::Run playback(again);
+  core::ReplayInput input(back, again.scene());
+  while (!input.over(playback.frame())) playback.step(input.next(playback));
+  EXPECT_EQ(again.scene().world().stateHash(), back.hashes.back().hash);
+  EXPECT_EQ(scriptsOf(again).status().x, dashed);
+}
+
+// A mod's action that cannot be is the mod's error by name, when the scene loads.
+TEST(Actions, AModsActionThatCannotBeIsItsErrorByName) {
+  const std::pair<std::string, std::string> cases[] = {
+      {"return { actions = { jump = {} } }", "mod1.lua: actions.jump: the action 'jump' is the engine's"},
+      {"return { actions = { dash = { keys = 'X' } } }", "mod1.lua: actions.dash.keys: expected a list of names"},
+      {"return { actions = { dash = { speed = 3 } } }",
+       "mod1.lua: actions.dash.speed: expected one of keys, pad, label, does"},
+      {"return { actions = { ['2x'] = {} } }", "mod1.lua: actions.2x: '2x' is no action name"},
+      {"return { actions = { pressed = {} } }", "mod1.lua: actions.pressed: 'pressed' is input.pressed"},
+      {"return { actions = { a = {}, b = {}, c = {}, d = {}, e = {}, f = {}, g = {}, h = {}, i = {} } }",
+       "mod1.lua: actions: more than 8 actions"},
+  };
+  const core::SystemRegistry registry = scripting();
+  for (const auto& [code, error] : cases) {
+    ModLevel level("actions_bad", "solid", "", {code});
+    try {
+      core::LiveScene live(level.scene, registry, false);
+      ADD_FAILURE() << code << " loaded";
+    } catch (const std::exception& e) {
+      EXPECT_NE(std::string(e.what()).find(error), std::string::npos) << e.what();
+    }
+  }
+  // Two mods may not take one name.
+  ModLevel twice("actions_twice", "solid", "",
+                 {"return { actions = { dash = {} } }", "return { actions = { dash = {} } }"});
+  try {
+    core::LiveScene live(twice.scene, registry, false);
+    ADD_FAILURE() << "two dashes loaded";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("mod2.lua: actions.dash: the action 'dash' is "), std::string::npos)
+        << e.what();
   }
 }
 

@@ -47,7 +47,7 @@ core::SystemRegistry scriptingOnly() {
   return registry;
 }
 
-void run(core::LiveScene& live, int frames, uint8_t held) {
+void run(core::LiveScene& live, int frames, core::Buttons held) {
   core::InputEdges edges;
   for (int f = 0; f < frames; ++f) ASSERT_FALSE(live.step(edges.next(held)).has_value()) << live.lastError();
 }

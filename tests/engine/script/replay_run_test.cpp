@@ -18,7 +18,7 @@ core::Replay randomRun(testing::Rng& rng, int frames, uint64_t hashEvery) {
   core::Replay r;
   r.scene = "levels/cube_intro/scene.lua";
   r.hashEvery = hashEvery;
-  uint8_t held = 0;
+  core::Buttons held = 0;
   for (int f = 0; f < frames; ++f) {
     if (rng.between(0, 30) == 0) {
       held = 0;
@@ -67,7 +67,7 @@ TEST(Replay, AChangedInputFailsAtTheFirstHashAfterIt) {
   for (int trial = 0; trial < 12; ++trial) {
     core::Replay input = randomRun(rng, 900, 10);
     // Keep the player walking right so that a changed direction always changes the state.
-    for (uint8_t& h : input.held) h = InputFrame::bit(Button::Right);
+    for (core::Buttons& h : input.held) h = InputFrame::bit(Button::Right);
     const core::Replay recorded = record(folder, input, "run.replay");
     core::Replay changed = recorded;
     // Before the goal (frame 336 walking right): once won, the level ignores input.
@@ -100,7 +100,7 @@ TEST(Replay, TurnsIntoAScenarioThatPasses) {
   for (int trial = 0; trial < 6; ++trial) {
     core::Replay input = randomRun(rng, 1200, 60);
     if (trial == 0)  // one run that reaches the goal
-      for (uint8_t& h : input.held) h = InputFrame::bit(Button::Right);
+      for (core::Buttons& h : input.held) h = InputFrame::bit(Button::Right);
     // Lines typed in the console are part of the input (a play-test kept with K may carry them);
     // a long one too, with quotes (the scenario quotes it whole).
     if (trial % 2 == 1) {

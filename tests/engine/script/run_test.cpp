@@ -29,11 +29,11 @@ struct PushLevel {
 };
 
 // Buttons over 240 frames (right, a jump pressed twice, left) and three console lines.
-uint8_t buttons(uint64_t frame) {
-  const uint8_t right = InputFrame::bit(Button::Right), left = InputFrame::bit(Button::Left);
-  const uint8_t jump = InputFrame::bit(Button::Jump);
+core::Buttons buttons(uint64_t frame) {
+  const core::Buttons right = InputFrame::bit(Button::Right), left = InputFrame::bit(Button::Left);
+  const core::Buttons jump = InputFrame::bit(Button::Jump);
   if (frame < 60) return right;
-  if (frame < 70 || (frame >= 90 && frame < 95)) return static_cast<uint8_t>(right | jump);
+  if (frame < 70 || (frame >= 90 && frame < 95)) return static_cast<core::Buttons>(right | jump);
   if (frame < 150) return right;
   return left;
 }
@@ -74,7 +74,7 @@ TEST(Run, EveryWayOfPlayingGivesTheSameFrames) {
   // recorded hash on its frame, and the same end.
   LiveScene again(level.scene, level.registry, false);
   core::Run playback(again);
-  ReplayInput input(replay);
+  ReplayInput input(replay, playback.scene());
   for (uint64_t f = 1; !input.over(playback.frame()); ++f) {
     playback.step(input.next(playback));
     EXPECT_EQ(playback.scene().world().stateHash(), replay.hashes[f - 1].hash) << "frame " << f;
@@ -93,7 +93,7 @@ TEST(Run, AButtonHeldAcrossAPauseIsPressedAgain) {
   PushLevel level;
   LiveScene live(level.scene, level.registry, false);
   core::Run run(live);
-  const uint8_t jump = InputFrame::bit(Button::Jump);
+  const core::Buttons jump = InputFrame::bit(Button::Jump);
   run.step(jump);
   run.step(jump);  // held: no press
   run.releaseButtons();

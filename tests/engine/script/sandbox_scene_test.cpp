@@ -74,7 +74,7 @@ struct Played {
 };
 
 // Plays `frames` frames holding `held`, asking for the status after each (as the game loop does).
-Played play(core::LiveScene& live, int frames, uint8_t held = InputFrame::bit(Button::Right)) {
+Played play(core::LiveScene& live, int frames, core::Buttons held = InputFrame::bit(Button::Right)) {
   Played p;
   core::InputEdges edges;
   for (int f = 1; f <= frames; ++f) {
@@ -781,7 +781,7 @@ TEST(SoundApi, SoundsNeverEnterTheStateHash) {
   core::InputEdges edgesA, edgesB;
   size_t heard = 0;
   for (int f = 1; f <= 400; ++f) {
-    const uint8_t held = InputFrame::bit(Button::Right) | (f % 50 < 10 ? InputFrame::bit(Button::Jump) : 0);
+    const core::Buttons held = InputFrame::bit(Button::Right) | (f % 50 < 10 ? InputFrame::bit(Button::Jump) : 0);
     ASSERT_FALSE(withSound.step(edgesA.next(held)));
     ASSERT_FALSE(without.step(edgesB.next(held)));
     heard += withSound.scene().sounds().thisFrame().size();
@@ -832,8 +832,8 @@ TEST(OwnPlayer, WhatItWritesInGameIsNeverCalledOutsideItsLimits) {
   EXPECT_EQ(scriptsOf(live).status().message, "false false false false");
   Played p;
   for (int i = 0; i < 60; ++i) {  // Restart pressed every other frame: a respawn each time
-    for (const uint8_t held :
-         {uint8_t(InputFrame::bit(Button::Right) | InputFrame::bit(Button::Restart)), InputFrame::bit(Button::Right)}) {
+    for (const core::Buttons held : {core::Buttons(InputFrame::bit(Button::Right) | InputFrame::bit(Button::Restart)),
+                                     InputFrame::bit(Button::Right)}) {
       const Played one = play(live, 1, held);
       p.errors.insert(p.errors.end(), one.errors.begin(), one.errors.end());
       p.status = one.status;

@@ -133,8 +133,12 @@ TEST(ScenarioReader, EveryMalformedValueIsRefusedAtItsLineAndColumn) {
        "input[1].frames: the press runs to frame 104, past"},
       {"  input = { { hold = 'right', from = 1, to = 2, press = 'jump', at = 1 } },", "'jump'",
        "input[1]: give hold or press, not both"},
-      {"  input = { { hold = 'fly', from = 1, to = 2 } },", "'fly'",
-       "input[1]: unknown button 'fly' (left, right, up, down, jump, restart, pause, reload)"},
+      // A name no scene could have, then one this scene does not have (a mod's, elsewhere).
+      {"  input = { { hold = 'f-ly', from = 1, to = 2 } },", "'f-ly'",
+       "input[1].hold: unknown action 'f-ly' (left, right, up, down, jump, restart, pause, reload, or one a mod adds)"},
+      {"  input = { { press = 'fly', at = 1 } },", "'fly'",
+       "input[1].press: no action 'fly' in this scene (its actions: left, right, up, down, jump, restart, pause, "
+       "reload)"},
       {"  input = { { hold = 'right', from = 1, to = 2 }, nil, { hold = 'left', from = 1, to = 2 } },", "nil",
        "input[2]: expected { hold"},
       {"  expect = { face = { [50] = 7 } },", "7",
@@ -170,14 +174,14 @@ TEST(ScenarioReader, TopLevelFieldsAreChecked) {
   const std::string scene = "scene = '" + kScene + "'";
   const Top cases[] = {
       {"return { " + scene + ", frames = '100' }", "sc.lua:1:"},
-      {"return { " + scene + ", frames = 10.5 }", "frames: expected a whole number in 1..100000000, got 10.5"},
-      {"return { " + scene + ", frames = 0 }", "frames: 0 is outside 1..100000000"},
+      {"return { " + scene + ", frames = 10.5 }", "frames: expected a whole number in 1..33554432, got 10.5"},
+      {"return { " + scene + ", frames = 0 }", "frames: 0 is outside 1..33554432"},
       {"return { " + scene + " }", "scenario: 'frames' (how many frames to run) is missing"},
       {"return { frames = 10 }", "sc.lua:1:8: scenario: 'scene' (the manifest's path) is missing"},
       {"return { scene = 5, frames = 10 }", "sc.lua:1:18: scene: expected the manifest's path (a string), got 5"},
       {"return 42", "sc.lua:1:8: scenario: a scenario returns a table, got 42"},
       // Not a literal: the file runs as Lua, and its line of `return` is the position.
-      {"return { " + scene + ", frames = 0/0 }", "sc.lua:1: frames: expected a whole number in 1..100000000, got nan"},
+      {"return { " + scene + ", frames = 0/0 }", "sc.lua:1: frames: expected a whole number in 1..33554432, got nan"},
       {"local n = 100\nreturn { " + scene + ", frames = n, expect = { goal_bye = 1 } }",
        "sc.lua:2: expect: unknown key 'goal_bye' (known: goal_by, deaths, face, inside, hash, sounds, switches, "
        "checkpoint)"},

@@ -273,7 +273,7 @@ TEST(Scenarios, FailWhenTheirExpectationsDoNotHold) {
   EXPECT_NE(face.message.find("frame 5: player on face 0, expected face 3"), std::string::npos) << face.message;
   const ScenarioResult bad =
       runScenario(scenarioFor(folder, scene, "frames = 10, input = { { hold = 'fly', from = 1, to = 2 } }"));
-  EXPECT_NE(bad.message.find("input[1]: unknown button"), std::string::npos) << bad.message;
+  EXPECT_NE(bad.message.find("input[1].hold: no action 'fly' in this scene"), std::string::npos) << bad.message;
 }
 
 TEST(Scenarios, TheSameRunGivesTheSameHash) {

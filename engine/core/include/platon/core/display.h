@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "platon/camera/camera.h"
+#include "platon/core/actions.h"
 #include "platon/core/draw_list.h"
 #include "platon/physics/ids.h"
 #include "platon/physics/world.h"
@@ -99,18 +100,10 @@ enum class Key : uint8_t {
   Backspace  // repeats while held
 };
 
-// The keys and gamepad buttons that hold each of the player's buttons (Left, Right, Up, Down, Jump,
-// Restart), by SDL's names for them (keys: "Left", "A", "Space", "Keypad 4"; pad buttons: "a",
-// "dpleft", "back", "leftshoulder"), as the player's settings bind them. The pad's left stick always
-// moves; the menus' own keys and buttons (arrows, WASD, Enter, Esc; A, B, Start) stay as they are,
-// so no binding can lock a player out.
-struct KeyBindings {
-  static constexpr int kBound = 6;  // Button::Left .. Button::Restart
-  std::array<std::vector<std::string>, kBound> keys = {
-      {{"Left", "A"}, {"Right", "D"}, {"Up", "W"}, {"Down", "S"}, {"Space"}, {"R"}}};
-  std::array<std::vector<std::string>, kBound> pad = {
-      {{"dpleft"}, {"dpright"}, {"dpup"}, {"dpdown"}, {"a", "b"}, {"back"}}};
-};
+// The keys and pad buttons that hold the actions are core::KeyBindings (core/actions.h), by SDL's
+// names (keys: "Left", "A", "Space", "Keypad 4"; pad buttons: "a", "dpleft", "back",
+// "leftshoulder"). The pad's left stick always moves; the menus' own keys and buttons (arrows,
+// WASD, Enter, Esc; A, B, Start) stay as they are, so no binding can lock a player out.
 
 // A key as SDL names it ("Z", "Delete", "Return", "F5"), with the modifiers held as it went down:
 // the editor's shortcuts (the game reads `pressed` and the held buttons).
@@ -131,12 +124,13 @@ struct MouseEvent {
 
 // What the window's devices (keyboard, mouse, gamepads) did since the last poll.
 struct WindowInput {
-  uint8_t held = 0;               // InputFrame bits of the buttons held now
-  uint8_t tapped = 0;             // and of those pressed since the last call, held now or not (TapCarry)
+  Buttons held = 0;               // InputFrame bits of the actions held now
+  Buttons tapped = 0;             // and of those pressed since the last call, held now or not (TapCarry)
   std::vector<Key> pressed;       // in order
   bool closed = false;            // the window was closed
   bool focusLost = false;         // the window lost the keyboard (the game pauses)
   std::string lastKey;            // SDL's name of the last key pressed ("Space"), for binding one
+  std::string lastPadButton;      // and of the last pad button pressed ("a", "leftshoulder")
   std::string text;               // the text typed since the last call (UTF-8), for the console
   std::vector<KeyPress> keys;     // every key pressed, in order (repeats of a held key included)
   std::vector<MouseEvent> mouse;  // in order

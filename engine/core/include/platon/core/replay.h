@@ -29,6 +29,8 @@
 #include <string>
 #include <vector>
 
+#include "platon/core/actions.h"
+
 namespace platon::core {
 
 struct ReplayHash {
@@ -62,7 +64,8 @@ struct Replay {
   // their hashes are the same at any speed; kept so a run can be watched as it was played.
   int speed = 100;
   std::optional<ReplayStart> start;    // none: the level's own start
-  std::vector<uint8_t> held;           // held[f - 1]: the buttons held on frame f (InputFrame::held bits)
+  std::vector<Buttons> held;           // held[f - 1]: the actions held on frame f, bit i actions.names[i]
+  ActionNames actions;                 // the scene's when recorded; read: the engine's, then the file's others
   uint64_t hashEvery = 60;             // frames between recorded hashes (0: none)
   std::vector<ReplayHash> hashes;      // increasing frames
   std::vector<ReplayConsole> console;  // frames that do not decrease
@@ -92,7 +95,9 @@ uint64_t sceneFilesHash(const std::vector<std::string>& files);
 class ReplayRecorder {
  public:
   ReplayRecorder(std::string scene, uint64_t hashEvery, std::optional<uint64_t> sceneFiles = std::nullopt);
-  void frame(uint8_t held, uint64_t stateHashAfter);
+  void frame(Buttons held, uint64_t stateHashAfter);
+  // The names of the bits frame() is given: the scene's actions (the engine's by default).
+  void setActions(ActionNames names) { replay_.actions = std::move(names); }
   // A console line, run before the next frame.
   void console(const std::string& code);
   // The game speed the run is played at (Replay::speed).

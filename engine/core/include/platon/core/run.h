@@ -40,9 +40,9 @@ class Run {
   // A line typed in the console: run now, before the next frame, and recorded there. nullopt when
   // no system of the scene has a console (no scripts).
   std::optional<ConsoleAnswer> console(const std::string& code);
-  // Plays the next frame with `held` buttons down (InputFrame bits); their presses are the ones
-  // not down on the frame before. The frame's error (a live scene's), or nullopt.
-  std::optional<std::string> step(uint8_t held);
+  // Plays the next frame with `held` actions down (InputFrame bits, the scene's actions); their
+  // presses are the ones not down on the frame before. The frame's error (a live scene's), or nullopt.
+  std::optional<std::string> step(Buttons held);
   // After a pause, a menu or the editor: a button still held is pressed anew on the next frame.
   void releaseButtons() { previous_ = 0; }
 
@@ -59,22 +59,26 @@ class Run {
   LiveScene* live_ = nullptr;
   Scene* scene_ = nullptr;
   uint64_t frame_ = 0;
-  uint8_t previous_ = 0;
+  Buttons previous_ = 0;
   std::optional<ReplayRecorder> recorder_;
 };
 
 // A replay as a run's input: before each frame the console lines typed there, then its buttons.
 class ReplayInput {
  public:
-  explicit ReplayInput(const Replay& replay) : replay_(replay) {}
+  // The replay's actions are matched to `scene`'s by name (a mod's action may have another bit in
+  // another version of the scene); throws std::runtime_error "file:line:column: no action ..."
+  // for one the scene does not have.
+  ReplayInput(const Replay& replay, const Scene& scene);
   // Whether the replay has no frame left after `frame` frames.
   bool over(uint64_t frame) const { return frame >= replay_.frames(); }
   // Runs in `run` the console lines due before its next frame (each told to `typed`, with its
   // answer) and returns that frame's buttons: none past the replay's end.
-  uint8_t next(Run& run, const std::function<void(const std::string&, const ConsoleAnswer&)>& typed = {});
+  Buttons next(Run& run, const std::function<void(const std::string&, const ConsoleAnswer&)>& typed = {});
 
  private:
   const Replay& replay_;
+  ActionMap map_;
   size_t nextLine_ = 0;
 };
 

@@ -5,6 +5,7 @@
 #include <optional>
 #include <vector>
 
+#include "platon/core/actions.h"
 #include "platon/core/look.h"
 #include "platon/core/manifest.h"
 #include "platon/core/mesh_source.h"
@@ -32,6 +33,9 @@ class Scene {
   // words its level file was read with and the looks the renderer gives them.
   void setTags(std::shared_ptr<const stage::TagTable> tags) { tags_ = std::move(tags); }
   const std::shared_ptr<const stage::TagTable>& tags() const { return tags_; }
+  // The player's actions in this scene: the engine's, then those its mods added (core/actions.h).
+  void setActions(std::vector<Action> actions) { actions_ = std::move(actions); }
+  const std::vector<Action>& actions() const { return actions_; }
 
   // The manifest the scene was loaded from (empty for scenes built in code).
   const SceneManifest& manifest() const { return manifest_; }
@@ -63,6 +67,7 @@ class Scene {
   SceneManifest manifest_;
   physics::World world_;
   std::shared_ptr<const stage::TagTable> tags_ = stage::gameTags();
+  std::vector<Action> actions_ = engineActions();
   std::optional<stage::Stage> stage_;
   std::optional<stage::Level> level_;
   Looks looks_;

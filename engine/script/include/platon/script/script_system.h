@@ -76,6 +76,7 @@ class ScriptSystem final : public core::System, public core::Console {
  private:
   GameStatus readStatus() const;
   void prepare(core::Scene& scene);
+  void declareActions(core::Scene& scene, int list);
   void setTagsApi(const stage::TagTable& tags);
   bool tagsSet_ = false;
   bool consoleOpenedFrame_ = false;  // console lines began the coming frame's budget (console, beforeStep)

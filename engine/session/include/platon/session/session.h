@@ -35,6 +35,8 @@ class Session {
 
   core::LiveScene& live() { return *live_; }
   core::Scene& scene() { return live_->scene(); }
+  // The scene's actions (the engine's, then its mods'): what the window binds.
+  const std::vector<core::Action>& actions() const { return live_->scene().actions(); }
   core::Run& run() { return *run_; }
   GameView& view() { return view_; }
   // The scene's window, or null (headless, or its scene names no "rendering").
@@ -58,20 +60,24 @@ class Session {
   void reloadIfSaved();
   void reload(const std::string& because);
   bool consoleOpen() const { return consoleOpen_; }
+  // The player's keys: the scene's actions (the engine's and its mods'), each with the keys and
+  // pad buttons the player chose for it, else its own; kept for the scenes that follow (a mod's
+  // action is bound when a scene has it). Returns the names the window does not know.
+  std::vector<std::string> bindKeys(const core::BindingChoices& choices);
 
   // The frames the clock says are due since the last call, at `speedPercent` of real time (`fast`:
   // one, whatever the clock). None while the console is open or a hard event holds the picture.
   int framesDue(int speedPercent = 100, bool fast = false);
   // Buttons tapped between two polls count once, on the next frame played (core/input.h).
-  void tap(uint8_t tapped) { taps_.add(tapped); }
-  uint8_t nextButtons(uint8_t held) { return taps_.next(held); }
+  void tap(core::Buttons tapped) { taps_.add(tapped); }
+  core::Buttons nextButtons(core::Buttons held) { return taps_.next(held); }
   // The frames due, holding `input`'s buttons, its taps counted once: the window modes' loop.
   // `stopAt(status)`, when given, ends the call after the frame it says. Returns the frames played.
   int playDue(const core::WindowInput& input, int speedPercent = 100, bool fast = false,
               const std::function<bool(const script::GameStatus&)>& stopAt = {});
   // One frame now, with `held` (a replay's buttons, headless play): the run's step and the
   // picture's; a repeated error is printed once. Returns the frame's error.
-  std::optional<std::string> playFrame(uint8_t held);
+  std::optional<std::string> playFrame(core::Buttons held);
   // A hard event (a death, the goal) holds the picture a moment; the frames wait with it.
   bool frozen() const { return std::chrono::steady_clock::now() < freezeUntil_; }
   // The window could not open: the scene is played with no picture.
@@ -94,8 +100,12 @@ class Session {
   void runConsoleLine();
   void afterReload(const core::ReloadReport& report);
 
+  void applyBindings();
+
   std::unique_ptr<core::LiveScene> live_;
   std::optional<core::Run> run_;
+  core::BindingChoices choices_;
+  std::vector<core::Action> boundActions_;  // what the window was last bound for (none yet)
   GameView view_;
   core::FixedStep clock_{60};
   core::TapCarry taps_;
