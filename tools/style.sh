@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The repository's declared style, checked: every C and C++ file as .clang-format writes it, and the
-# clang-tidy checks of .clang-tidy (bugprone, performance) clean on the code that ships.
+# clang-tidy checks of .clang-tidy (bugprone, performance, function size) clean on the code that ships.
 #   tools/style.sh [BUILD_DIR]      (default build/: its compile_commands.json tells clang-tidy how
 #                                    each file is compiled)
 # `tools/style.sh --fix` rewrites the files clang-format would change instead of failing.

@@ -295,92 +295,83 @@ int badValue(const char* option, const char* value, const char* expected) {
   return runUsage();
 }
 
-}  // namespace
-
-int runCommand(int argc, char** argv) {
-  calledAs = std::strcmp(argv[0], "replay") == 0 ? "replay" : "run";
+// What `platon run` (or replay) was asked for: its options and its files, as given.
+struct RunArgs {
   uint64_t jobs = 1;
   double timeout = 600;
   std::string junit, shardFlag, shardsFlag, durationsPath;
   bool list = false;
   script::RunOptions options;
-  options.pluginFolders = pluginFolders();
   std::string recordDir;
   std::vector<std::string> files;
+};
+
+// --record's folder, made if it is missing: nothing, or the exit status once it said why not (the
+// option reads the next word, so a scenario given first would be taken for the folder).
+std::optional<int> makeRecordFolder(const std::string& recordDir) {
+  // `--record a.lua b.lua` would take the first scenario for the folder and fail every run.
+  std::error_code error;
+  if (endsWith(recordDir, ".lua") || endsWith(recordDir, ".replay") ||
+      (std::filesystem::exists(recordDir, error) && !std::filesystem::is_directory(recordDir, error)))
+    return badValue("--record", recordDir.c_str(), "a folder for the replays (platon run --record DIR file...)");
+  std::filesystem::create_directories(recordDir, error);
+  if (error) {
+    std::fprintf(stderr, "platon %s: --record %s: cannot make the folder: %s\n", calledAs, recordDir.c_str(),
+                 error.message().c_str());
+    return 2;
+  }
+  return std::nullopt;
+}
+
+// The command line into `args`, in one pass (an option's value is the next word, or -jN's own
+// digits): nothing, or the exit status once the first wrong word was said.
+std::optional<int> readRunArgs(int argc, char** argv, RunArgs& args) {
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     const bool hasValue = i + 1 < argc;
     if ((a == "-j" && hasValue) || (a.rfind("-j", 0) == 0 && a.size() > 2)) {
       const char* value = a == "-j" ? argv[++i] : argv[i] + 2;
-      if (!wholeNumber(value, 1, 256, jobs)) return badValue("-j", value, "a whole number from 1 to 256");
+      if (!wholeNumber(value, 1, 256, args.jobs)) return badValue("-j", value, "a whole number from 1 to 256");
     } else if (a == "--junit" && hasValue) {
-      junit = argv[++i];
+      args.junit = argv[++i];
     } else if (a == "--timeout" && hasValue) {
-      if (!seconds(argv[++i], timeout)) return badValue("--timeout", argv[i], "a number of seconds above 0");
+      if (!seconds(argv[++i], args.timeout)) return badValue("--timeout", argv[i], "a number of seconds above 0");
     } else if (a == "--trace" && hasValue) {
-      if (!wholeNumber(argv[++i], 1, UINT64_MAX, options.traceEvery))
+      if (!wholeNumber(argv[++i], 1, UINT64_MAX, args.options.traceEvery))
         return badValue("--trace", argv[i], "a whole number of frames from 1");
     } else if (a == "--record" && hasValue) {
-      recordDir = argv[++i], options.record = true;
-      // `--record a.lua b.lua` would take the first scenario for the folder and fail every run.
-      std::error_code error;
-      if (endsWith(recordDir, ".lua") || endsWith(recordDir, ".replay") ||
-          (std::filesystem::exists(recordDir, error) && !std::filesystem::is_directory(recordDir, error)))
-        return badValue("--record", recordDir.c_str(), "a folder for the replays (platon run --record DIR file...)");
-      std::filesystem::create_directories(recordDir, error);
-      if (error) {
-        std::fprintf(stderr, "platon %s: --record %s: cannot make the folder: %s\n", calledAs, recordDir.c_str(),
-                     error.message().c_str());
-        return 2;
-      }
+      args.recordDir = argv[++i], args.options.record = true;
+      if (const std::optional<int> status = makeRecordFolder(args.recordDir)) return status;
     } else if (a == "--shard" && hasValue) {
-      shardFlag = argv[++i];
+      args.shardFlag = argv[++i];
     } else if (a == "--shards" && hasValue) {
-      shardsFlag = argv[++i];
+      args.shardsFlag = argv[++i];
     } else if (a == "--durations" && hasValue) {
-      durationsPath = argv[++i];
+      args.durationsPath = argv[++i];
     } else if (a == "--list") {
-      list = true;
+      args.list = true;
     } else if (a == "--hash-every" && hasValue) {
-      if (!wholeNumber(argv[++i], 0, UINT64_MAX, options.hashEvery))
+      if (!wholeNumber(argv[++i], 0, UINT64_MAX, args.options.hashEvery))
         return badValue("--hash-every", argv[i], "a whole number of frames (0: only the last frame's hash)");
     } else if (!a.empty() && a[0] == '-') {
       return runUsage();
     } else {
-      files.push_back(a);
+      args.files.push_back(a);
     }
   }
-  if (files.empty()) return runUsage();
-  // Bazel names the report it wants, and a file to touch that says sharding is understood.
-  if (junit.empty()) junit = text(std::getenv("XML_OUTPUT_FILE"));
-  for (const char* status : {"TEST_SHARD_STATUS_FILE", "GTEST_SHARD_STATUS_FILE"})
-    if (const char* path = std::getenv(status); path && *path) std::ofstream(path, std::ios::app);
-  const std::vector<std::string> suite = files;
-  std::optional<Shard> shard;
-  try {
-    shard = askedShard(shardFlag, shardsFlag, [](const char* name) { return std::getenv(name); });
-    if (shard) files = shardFiles(suite, *shard, durationsPath);
-    if (!shard && !durationsPath.empty())
-      std::fprintf(stderr, "platon run: --durations %s: no shard was asked for, so every scenario runs\n",
-                   durationsPath.c_str());
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "platon run: %s\n", e.what());
-    return 2;
-  }
-  if (list) {
-    for (const std::string& f : files) std::printf("%s\n", f.c_str());
-    return 0;
-  }
-  const auto start = Clock::now();
-  std::vector<Outcome> outcomes(files.size());
-  runInWorkers(files, options, recordPaths(files, recordDir), static_cast<int>(jobs), timeout, outcomes);
+  return std::nullopt;
+}
 
-  const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+// The results in the order given, the summary line, and the JUnit report when one was asked for;
+// the command's exit status. `suite`: every file given, before sharding.
+int reportRun(const RunArgs& args, const std::vector<std::string>& suite, const std::optional<Shard>& shard,
+              const std::vector<Outcome>& outcomes, double elapsed) {
+  const std::vector<std::string>& files = args.files;
   int failed = 0;
   JunitReport report;
   report.seconds = elapsed;
   for (size_t i = 0; i < files.size(); ++i) {
-    Outcome& o = outcomes[i];
+    const Outcome& o = outcomes[i];
     failed += o.result.passed ? 0 : 1;
     printResult(files[i], o.result);
     report.cases.push_back({files[i], o.result.seconds, o.result.passed, capped(o.result.message)});
@@ -390,17 +381,53 @@ int runCommand(int argc, char** argv) {
                        std::to_string(suite.size()) + ", from " + shard->from + ")")
                           .c_str()
                     : "",
-              failed, elapsed, static_cast<unsigned long long>(jobs));
+              failed, elapsed, static_cast<unsigned long long>(args.jobs));
   std::fflush(stdout);
   // What `platon merge` checks the shards by: which shard this is, of which suite.
   report.properties["platon.suite"] = suiteIdentity(suite);
   report.properties["platon.shard"] =
       shard ? std::to_string(shard->index + 1) + "/" + std::to_string(shard->total) : "1/1";
-  if (!junit.empty() && !writeJunit(junit, report)) {
-    std::fprintf(stderr, "%s: cannot write the JUnit report\n", junit.c_str());
+  if (!args.junit.empty() && !writeJunit(args.junit, report)) {
+    std::fprintf(stderr, "%s: cannot write the JUnit report\n", args.junit.c_str());
     return 1;
   }
   return failed ? 1 : 0;
+}
+
+}  // namespace
+
+int runCommand(int argc, char** argv) {
+  calledAs = std::strcmp(argv[0], "replay") == 0 ? "replay" : "run";
+  RunArgs args;
+  args.options.pluginFolders = pluginFolders();
+  if (const std::optional<int> status = readRunArgs(argc, argv, args)) return *status;
+  if (args.files.empty()) return runUsage();
+  // Bazel names the report it wants, and a file to touch that says sharding is understood.
+  if (args.junit.empty()) args.junit = text(std::getenv("XML_OUTPUT_FILE"));
+  for (const char* status : {"TEST_SHARD_STATUS_FILE", "GTEST_SHARD_STATUS_FILE"})
+    if (const char* path = std::getenv(status); path && *path) std::ofstream(path, std::ios::app);
+  const std::vector<std::string> suite = args.files;
+  std::optional<Shard> shard;
+  try {
+    shard = askedShard(args.shardFlag, args.shardsFlag, [](const char* name) { return std::getenv(name); });
+    if (shard) args.files = shardFiles(suite, *shard, args.durationsPath);
+    if (!shard && !args.durationsPath.empty())
+      std::fprintf(stderr, "platon run: --durations %s: no shard was asked for, so every scenario runs\n",
+                   args.durationsPath.c_str());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "platon run: %s\n", e.what());
+    return 2;
+  }
+  if (args.list) {
+    for (const std::string& f : args.files) std::printf("%s\n", f.c_str());
+    return 0;
+  }
+  const auto start = Clock::now();
+  std::vector<Outcome> outcomes(args.files.size());
+  runInWorkers(args.files, args.options, recordPaths(args.files, args.recordDir), static_cast<int>(args.jobs),
+               args.timeout, outcomes);
+  const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+  return reportRun(args, suite, shard, outcomes, elapsed);
 }
 
 int scenarioCommand(int argc, char** argv) {

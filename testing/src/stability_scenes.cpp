@@ -40,133 +40,155 @@ Scene restOnFloor(std::string name, std::string what, double gravity, std::vecto
 
 Outcome runWarpCorner(double upm);
 
+Scene maxSpeedScene() {
+  Scene s;
+  s.name = "max-speed";
+  s.what = "a 0.2 m box at 6 km/s (100 m per frame) towards three 1 mm-apart walls 1 km away";
+  s.solids = {{1000, -5, 1000, 5}, {1000.001, -5, 1000.001, 5}, {1000.002, -5, 1000.002, 5}};
+  s.shape = box(0.1, 0.1);
+  s.vx = 6000;
+  s.frames = 60;
+  s.settleFrames = 30;
+  s.targetX = 999.9;  // against the first wall
+  s.allowed = [](const Pose& p) { return p.x < 1000; };
+  return s;
+}
+
+Scene slideChainScene() {
+  Scene s;
+  s.name = "slide-chain";
+  s.what = "a 0.5 m box driven at 5 m/s along 200 collinear 0.25 m segments";
+  for (int i = 0; i < 200; ++i) s.solids.push_back({i * 0.25 - 1, 0, (i + 1) * 0.25 - 1, 0});
+  s.gravityY = -9.81;
+  s.shape = box(0.25, 0.25);
+  s.start = {0, 0.25, 0};
+  s.vx = 5;
+  s.drive = true;
+  s.frames = 480;
+  s.minSpeedX = 5;
+  s.allowed = [](const Pose& p) { return p.y > 0; };
+  return s;
+}
+
+// An octagon dropped into a V of this half-angle, in degrees: the narrower, the harder to rest.
+Scene wedgeScene(double halfAngle) {
+  Scene s;
+  s.name = "wedge-" + std::to_string(halfAngle).substr(0, std::to_string(halfAngle).find('.') + 2) + "deg";
+  s.what = "a 0.2 m octagon dropped into a V of half-angle " + std::to_string(halfAngle).substr(0, 4) + " degrees";
+  const double t = std::tan(halfAngle * kPi / 180);
+  s.solids = {{-t * 1000, 1000, 0, 0}, {0, 0, t * 1000, 1000}};
+  s.gravityY = -9.81;
+  s.shape = regular(8, 0.1);
+  s.start = {0, 0.1 / t + 1, 0};
+  s.frames = 1200;
+  s.settleFrames = 900;
+  s.allowed = [](const Pose& p) { return p.y > 0; };
+  return s;
+}
+
+Scene starHubScene() {
+  Scene s;
+  s.name = "star-hub";
+  s.what = "a 0.2 m octagon dropped into a star of 64 lines meeting at one point";
+  for (int i = 0; i < 64; ++i)
+    s.solids.push_back({0, 0, 3 * std::cos(2 * kPi * (i + 0.5) / 64), 3 * std::sin(2 * kPi * (i + 0.5) / 64)});
+  s.gravityY = -9.81;
+  s.shape = regular(8, 0.1);
+  s.start = {0.013, 3.5, 0};
+  s.frames = 900;
+  s.settleFrames = 600;
+  s.allowed = [](const Pose& p) { return p.y > 0; };
+  return s;
+}
+
+Scene denseParallelScene() {
+  Scene s;
+  s.name = "dense-parallel";
+  s.what = "a 0.5 m box at 50 g driven at 3 m/s over 200 lines 1 mm apart";
+  for (int i = 0; i < 200; ++i) s.solids.push_back({-10, -i * 0.001, 40, -i * 0.001});
+  s.gravityY = -490;
+  s.shape = box(0.25, 0.25);
+  s.start = {0, 0.3, 0};
+  s.vx = 3;
+  s.drive = true;
+  s.frames = 600;
+  s.allowed = [](const Pose& p) { return p.y > 0; };
+  return s;
+}
+
+Scene spinCorridorScene() {
+  Scene s;
+  s.name = "spin-corridor";
+  s.what = "a 1 m x 0.1 m stick spinning at 10 rad/s, driven at 1 m/s in a 0.3 m corridor";
+  s.solids = {{-5, 0.15, 40, 0.15}, {40, -0.15, -5, -0.15}};
+  s.shape = box(0.5, 0.05);
+  s.vx = 1;
+  s.drive = true;
+  s.spin = 10;
+  s.rotates = true;
+  s.frames = 600;
+  s.allowed = [](const Pose& p) { return std::fabs(p.y) < 0.15; };
+  return s;
+}
+
+Scene fastTriggerScene() {
+  Scene s;
+  s.name = "fast-trigger";
+  s.what = "a 0.2 m box at 96 m/s (1.6 m per frame) through 10 trigger lines 4.7 m apart";
+  for (int i = 0; i < 10; ++i) s.triggers.push_back({10.3 + 4.7 * i, -5, 10.3 + 4.7 * i, 5});
+  s.shape = box(0.1, 0.1);
+  s.vx = 96;
+  s.frames = 45;
+  s.targetX = 72;
+  s.expectedCrossings = 10;
+  s.allowed = [](const Pose&) { return true; };
+  return s;
+}
+
+// Platon's own: a body across a warp of two faces (no other engine has one to compare).
+Scene warpCornerScene() {
+  Scene s;
+  s.name = "warp-corner";
+  s.what = "a 0.5 m box straddling a cube edge, pressed into a corner on both faces, 10^4 frames";
+  s.frames = 10000;
+  s.platonOnly = [](double upm) { return runWarpCorner(upm); };
+  return s;
+}
+
+// The scene moved by `offset` metres in x and y: its lines, its start, its target and what it
+// allows (which still sees the scene's own coordinates).
+void offsetScene(Scene& s, double offset) {
+  for (Seg& g : s.solids) g = {g[0] + offset, g[1] + offset, g[2] + offset, g[3] + offset};
+  for (Seg& g : s.triggers) g = {g[0] + offset, g[1] + offset, g[2] + offset, g[3] + offset};
+  s.start.x += offset;
+  s.start.y += offset;
+  s.targetX += offset;
+  s.allowed = [inner = s.allowed, offset](const Pose& p) { return inner({p.x - offset, p.y - offset, p.angle}); };
+}
+
 }  // namespace
 
 std::vector<Scene> stabilityScenes(double offset) {
   std::vector<Scene> scenes;
   scenes.push_back(
       restOnFloor("high-gravity", "100 g: a 0.5 m box dropped from 10 m onto a floor", 981, box(0.25, 0.25), 10, 600));
-  {
-    Scene s;
-    s.name = "max-speed";
-    s.what = "a 0.2 m box at 6 km/s (100 m per frame) towards three 1 mm-apart walls 1 km away";
-    s.solids = {{1000, -5, 1000, 5}, {1000.001, -5, 1000.001, 5}, {1000.002, -5, 1000.002, 5}};
-    s.shape = box(0.1, 0.1);
-    s.vx = 6000;
-    s.frames = 60;
-    s.settleFrames = 30;
-    s.targetX = 999.9;  // against the first wall
-    s.allowed = [](const Pose& p) { return p.x < 1000; };
-    scenes.push_back(s);
-  }
+  scenes.push_back(maxSpeedScene());
   scenes.push_back(
       restOnFloor("thin-stick", "a 20 m x 2 cm stick falling flat onto a floor", 9.81, box(10, 0.01), 3, 600));
   scenes.push_back(restOnFloor("tiny-body", "a 3 mm triangle falling onto a floor", 9.81,
                                {{-0.0015, -0.001}, {0.0015, -0.001}, {0, 0.002}}, 1, 600));
-  {
-    Scene s;
-    s.name = "slide-chain";
-    s.what = "a 0.5 m box driven at 5 m/s along 200 collinear 0.25 m segments";
-    for (int i = 0; i < 200; ++i) s.solids.push_back({i * 0.25 - 1, 0, (i + 1) * 0.25 - 1, 0});
-    s.gravityY = -9.81;
-    s.shape = box(0.25, 0.25);
-    s.start = {0, 0.25, 0};
-    s.vx = 5;
-    s.drive = true;
-    s.frames = 480;
-    s.minSpeedX = 5;
-    s.allowed = [](const Pose& p) { return p.y > 0; };
-    scenes.push_back(s);
-  }
-  for (const double halfAngle : {10.0, 1.0, 0.1}) {
-    Scene s;
-    s.name = "wedge-" + std::to_string(halfAngle).substr(0, std::to_string(halfAngle).find('.') + 2) + "deg";
-    s.what = "a 0.2 m octagon dropped into a V of half-angle " + std::to_string(halfAngle).substr(0, 4) + " degrees";
-    const double t = std::tan(halfAngle * kPi / 180);
-    s.solids = {{-t * 1000, 1000, 0, 0}, {0, 0, t * 1000, 1000}};
-    s.gravityY = -9.81;
-    s.shape = regular(8, 0.1);
-    s.start = {0, 0.1 / t + 1, 0};
-    s.frames = 1200;
-    s.settleFrames = 900;
-    s.allowed = [](const Pose& p) { return p.y > 0; };
-    scenes.push_back(s);
-  }
-  {
-    Scene s;
-    s.name = "star-hub";
-    s.what = "a 0.2 m octagon dropped into a star of 64 lines meeting at one point";
-    for (int i = 0; i < 64; ++i)
-      s.solids.push_back({0, 0, 3 * std::cos(2 * kPi * (i + 0.5) / 64), 3 * std::sin(2 * kPi * (i + 0.5) / 64)});
-    s.gravityY = -9.81;
-    s.shape = regular(8, 0.1);
-    s.start = {0.013, 3.5, 0};
-    s.frames = 900;
-    s.settleFrames = 600;
-    s.allowed = [](const Pose& p) { return p.y > 0; };
-    scenes.push_back(s);
-  }
-  {
-    Scene s;
-    s.name = "dense-parallel";
-    s.what = "a 0.5 m box at 50 g driven at 3 m/s over 200 lines 1 mm apart";
-    for (int i = 0; i < 200; ++i) s.solids.push_back({-10, -i * 0.001, 40, -i * 0.001});
-    s.gravityY = -490;
-    s.shape = box(0.25, 0.25);
-    s.start = {0, 0.3, 0};
-    s.vx = 3;
-    s.drive = true;
-    s.frames = 600;
-    s.allowed = [](const Pose& p) { return p.y > 0; };
-    scenes.push_back(s);
-  }
-  {
-    Scene s;
-    s.name = "spin-corridor";
-    s.what = "a 1 m x 0.1 m stick spinning at 10 rad/s, driven at 1 m/s in a 0.3 m corridor";
-    s.solids = {{-5, 0.15, 40, 0.15}, {40, -0.15, -5, -0.15}};
-    s.shape = box(0.5, 0.05);
-    s.vx = 1;
-    s.drive = true;
-    s.spin = 10;
-    s.rotates = true;
-    s.frames = 600;
-    s.allowed = [](const Pose& p) { return std::fabs(p.y) < 0.15; };
-    scenes.push_back(s);
-  }
-  {
-    Scene s;
-    s.name = "fast-trigger";
-    s.what = "a 0.2 m box at 96 m/s (1.6 m per frame) through 10 trigger lines 4.7 m apart";
-    for (int i = 0; i < 10; ++i) s.triggers.push_back({10.3 + 4.7 * i, -5, 10.3 + 4.7 * i, 5});
-    s.shape = box(0.1, 0.1);
-    s.vx = 96;
-    s.frames = 45;
-    s.targetX = 72;
-    s.expectedCrossings = 10;
-    s.allowed = [](const Pose&) { return true; };
-    scenes.push_back(s);
-  }
-  {
-    Scene s;
-    s.name = "warp-corner";
-    s.what = "a 0.5 m box straddling a cube edge, pressed into a corner on both faces, 10^4 frames";
-    s.frames = 10000;
-    s.platonOnly = [](double upm) { return runWarpCorner(upm); };
-    scenes.push_back(s);
-  }
+  scenes.push_back(slideChainScene());
+  for (const double halfAngle : {10.0, 1.0, 0.1}) scenes.push_back(wedgeScene(halfAngle));
+  scenes.push_back(starHubScene());
+  scenes.push_back(denseParallelScene());
+  scenes.push_back(spinCorridorScene());
+  scenes.push_back(fastTriggerScene());
+  scenes.push_back(warpCornerScene());
   scenes.push_back(
       restOnFloor("rest-1e6", "a 0.5 m box resting on a floor for 10^6 frames", 9.81, box(0.25, 0.25), 0.25, 1000000));
   scenes.back().settleFrames = 1000;
-  for (Scene& s : scenes) {
-    if (offset == 0) continue;
-    for (Seg& g : s.solids) g = {g[0] + offset, g[1] + offset, g[2] + offset, g[3] + offset};
-    for (Seg& g : s.triggers) g = {g[0] + offset, g[1] + offset, g[2] + offset, g[3] + offset};
-    s.start.x += offset;
-    s.start.y += offset;
-    s.targetX += offset;
-    s.allowed = [inner = s.allowed, offset](const Pose& p) { return inner({p.x - offset, p.y - offset, p.angle}); };
-  }
+  for (Scene& s : scenes)
+    if (offset != 0) offsetScene(s, offset);
   return scenes;
 }
 

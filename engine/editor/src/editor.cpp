@@ -31,6 +31,76 @@ double pointSegmentPixels(const Eigen::Vector2d& p, const Eigen::Vector2d& a, co
 
 core::Color colorOf(stage::TagStyle style) { return {style.r, style.g, style.b, 255}; }
 
+// The level as the game would build it: the segments inside their faces (one that is not is an
+// error the check draws), the goal's square moved onto its face if it hangs over an edge.
+stage::Level editorBuiltLevel(const stage::Level& level, const stage::Stage& solid) {
+  stage::Level built = level;
+  for (size_t f = 0; f < built.faces.size(); ++f)
+    std::erase_if(built.faces[f].lines, [&](const stage::LevelLine& l) {
+      return !insideExactly(solid.faces[f].corners, l.a) || !insideExactly(solid.faces[f].corners, l.b);
+    });
+  const auto& goalCorners = solid.faces[static_cast<size_t>(built.goal.face)].corners;
+  const int32_t h = stage::goalHalfSide(built);
+  for (int step = 0; step < 20; ++step) {
+    const physics::Vec2 g = built.goal.position;
+    if (insideExactly(goalCorners, {g.x - h, g.y - h}) && insideExactly(goalCorners, {g.x + h, g.y - h}) &&
+        insideExactly(goalCorners, {g.x + h, g.y + h}) && insideExactly(goalCorners, {g.x - h, g.y + h}))
+      break;
+    int64_t cx = 0, cy = 0;
+    for (const physics::Vec2 c : goalCorners) cx += c.x, cy += c.y;
+    const auto n = static_cast<int64_t>(goalCorners.size());
+    built.goal.position = {static_cast<int32_t>((g.x + cx / n) / 2), static_cast<int32_t>((g.y + cy / n) / 2)};
+  }
+  return built;
+}
+
+// A finding where its line is: the start's, the goal's, a face's or a segment's (the last of them
+// that has the line wins); on the level as a whole otherwise.
+Marker findingMarker(const stage::Finding& finding, bool error, const stage::Level& level) {
+  Marker m{Marker::On::Level, {}, -1, error, finding.message};
+  const int line = finding.where.line;
+  if (line == level.start.sourceLine)
+    m.on = Marker::On::Start, m.face = level.start.face;
+  else if (line == level.goal.sourceLine)
+    m.on = Marker::On::Goal, m.face = level.goal.face;
+  for (size_t f = 0; f < level.faces.size() && line > 0; ++f) {
+    if (level.faces[f].sourceLine == line) m.on = Marker::On::Face, m.face = static_cast<int>(f);
+    for (size_t i = 0; i < level.faces[f].lines.size(); ++i)
+      if (level.faces[f].lines[i].sourceLine == line)
+        m.on = Marker::On::Segment, m.face = static_cast<int>(f),
+        m.segment = {static_cast<int>(f), static_cast<int>(i)};
+  }
+  return m;
+}
+
+// "faces 2, 3, 4 have no lines" is one finding at the first of them: each is outlined.
+void markFacesWithoutLines(const stage::Level& level, const stage::CheckReport& report, std::vector<Marker>& markers) {
+  for (const stage::Finding& w : report.warnings) {
+    if (w.message.find("no lines") == std::string::npos) continue;
+    for (size_t f = 0; f < level.faces.size(); ++f) {
+      const int face = static_cast<int>(f);
+      if (!level.faces[f].lines.empty() || face == level.start.face || face == level.goal.face) continue;
+      if (std::none_of(markers.begin(), markers.end(),
+                       [&](const Marker& m) { return m.on == Marker::On::Face && m.face == face; }))
+        markers.push_back({Marker::On::Face, {}, face, false, w.message});
+    }
+  }
+}
+
+// The check stops at the first segment off its face (the level would not load); every such
+// segment (a file edited by hand) is marked, so all of them show at once.
+void markSegmentsOffFaces(const stage::Level& level, const stage::Stage& solid, std::vector<Marker>& markers) {
+  for (size_t f = 0; f < level.faces.size(); ++f)
+    for (size_t i = 0; i < level.faces[f].lines.size(); ++i) {
+      const stage::LevelLine& l = level.faces[f].lines[i];
+      if (insideExactly(solid.faces[f].corners, l.a) && insideExactly(solid.faces[f].corners, l.b)) continue;
+      const SegmentRef ref{static_cast<int>(f), static_cast<int>(i)};
+      if (std::none_of(markers.begin(), markers.end(), [&](const Marker& m) { return m.segment == ref; }))
+        markers.push_back(
+            {Marker::On::Segment, ref, static_cast<int>(f), true, "the segment leaves face " + std::to_string(f)});
+    }
+}
+
 }  // namespace
 
 Editor::Editor(LevelDocument document, stage::Stage solid, int64_t defaultGravityQ16)
@@ -86,25 +156,7 @@ void Editor::lookAt(int face, double x, double y) {
 void Editor::rebuild() {
   const auto began = std::chrono::steady_clock::now();
   const stage::Level& level = document_.level();
-  // What the game would build: the segments inside their faces (one that is not is an error the
-  // check draws), the goal's square moved onto its face if it hangs over an edge.
-  stage::Level built = level;
-  for (size_t f = 0; f < built.faces.size(); ++f)
-    std::erase_if(built.faces[f].lines, [&](const stage::LevelLine& l) {
-      return !insideExactly(solid_.faces[f].corners, l.a) || !insideExactly(solid_.faces[f].corners, l.b);
-    });
-  const auto& goalCorners = solid_.faces[static_cast<size_t>(built.goal.face)].corners;
-  const int32_t h = stage::goalHalfSide(built);
-  for (int step = 0; step < 20; ++step) {
-    const physics::Vec2 g = built.goal.position;
-    if (insideExactly(goalCorners, {g.x - h, g.y - h}) && insideExactly(goalCorners, {g.x + h, g.y - h}) &&
-        insideExactly(goalCorners, {g.x + h, g.y + h}) && insideExactly(goalCorners, {g.x - h, g.y + h}))
-      break;
-    int64_t cx = 0, cy = 0;
-    for (const physics::Vec2 c : goalCorners) cx += c.x, cy += c.y;
-    const auto n = static_cast<int64_t>(goalCorners.size());
-    built.goal.position = {static_cast<int32_t>((g.x + cx / n) / 2), static_cast<int32_t>((g.y + cy / n) / 2)};
-  }
+  stage::Level built = editorBuiltLevel(level, solid_);
   auto world = std::make_unique<physics::World>();
   stage::Stage solid = solid_;
   stage::buildLevel(built, solid, *world, 0, gravity_);
@@ -121,46 +173,10 @@ void Editor::rebuild() {
   }
   report_ = stage::checkLevel(level, solid_);
   markers_.clear();
-  auto mark = [&](const stage::Finding& finding, bool error) {
-    Marker m{Marker::On::Level, {}, -1, error, finding.message};
-    const int line = finding.where.line;
-    if (line == level.start.sourceLine)
-      m.on = Marker::On::Start, m.face = level.start.face;
-    else if (line == level.goal.sourceLine)
-      m.on = Marker::On::Goal, m.face = level.goal.face;
-    for (size_t f = 0; f < level.faces.size() && line > 0; ++f) {
-      if (level.faces[f].sourceLine == line) m.on = Marker::On::Face, m.face = static_cast<int>(f);
-      for (size_t i = 0; i < level.faces[f].lines.size(); ++i)
-        if (level.faces[f].lines[i].sourceLine == line)
-          m.on = Marker::On::Segment, m.face = static_cast<int>(f),
-          m.segment = {static_cast<int>(f), static_cast<int>(i)};
-    }
-    markers_.push_back(std::move(m));
-  };
-  for (const stage::Finding& f : report_.errors) mark(f, true);
-  for (const stage::Finding& f : report_.warnings) mark(f, false);
-  // "faces 2, 3, 4 have no lines" is one finding at the first of them: each is outlined.
-  for (const stage::Finding& w : report_.warnings) {
-    if (w.message.find("no lines") == std::string::npos) continue;
-    for (size_t f = 0; f < level.faces.size(); ++f) {
-      const int face = static_cast<int>(f);
-      if (!level.faces[f].lines.empty() || face == level.start.face || face == level.goal.face) continue;
-      if (std::none_of(markers_.begin(), markers_.end(),
-                       [&](const Marker& m) { return m.on == Marker::On::Face && m.face == face; }))
-        markers_.push_back({Marker::On::Face, {}, face, false, w.message});
-    }
-  }
-  // The check stops at the first segment off its face (the level would not load); every such
-  // segment (a file edited by hand) is marked, so all of them show at once.
-  for (size_t f = 0; f < level.faces.size(); ++f)
-    for (size_t i = 0; i < level.faces[f].lines.size(); ++i) {
-      const stage::LevelLine& l = level.faces[f].lines[i];
-      if (insideExactly(solid_.faces[f].corners, l.a) && insideExactly(solid_.faces[f].corners, l.b)) continue;
-      const SegmentRef ref{static_cast<int>(f), static_cast<int>(i)};
-      if (std::none_of(markers_.begin(), markers_.end(), [&](const Marker& m) { return m.segment == ref; }))
-        markers_.push_back(
-            {Marker::On::Segment, ref, static_cast<int>(f), true, "the segment leaves face " + std::to_string(f)});
-    }
+  for (const stage::Finding& f : report_.errors) markers_.push_back(findingMarker(f, true, level));
+  for (const stage::Finding& f : report_.warnings) markers_.push_back(findingMarker(f, false, level));
+  markFacesWithoutLines(level, report_, markers_);
+  markSegmentsOffFaces(level, solid_, markers_);
   std::erase_if(selection_, [&](SegmentRef s) {
     return s.face < 0 || s.face >= static_cast<int>(level.faces.size()) || s.index < 0 ||
            s.index >= static_cast<int>(level.faces[static_cast<size_t>(s.face)].lines.size());
@@ -646,22 +662,7 @@ std::vector<std::string> Editor::hud() const {
 void Editor::draw(core::DrawList& out) const {
   const stage::Level& level = document_.level();
   const float unit = static_cast<float>(level.size) / 4096.0f;  // overlay widths scale with the solid
-  // The findings where they are.
-  for (const Marker& m : markers_) {
-    const core::Color c = m.error ? kError : kWarning;
-    if (m.on == Marker::On::Segment) {
-      const stage::LevelLine& l = level.faces[static_cast<size_t>(m.face)].lines[static_cast<size_t>(m.segment.index)];
-      drawSegment(out, m.face, l.a, l.b, 70 * unit, c);
-    } else if (m.on == Marker::On::Face) {
-      const auto& corners = solid_.faces[static_cast<size_t>(m.face)].corners;
-      for (size_t i = 0; i < corners.size(); ++i)
-        drawSegment(out, m.face, corners[i], corners[(i + 1) % corners.size()], 60 * unit, c);
-    } else if (m.on == Marker::On::Start || m.on == Marker::On::Goal) {
-      const physics::Vec2 p = m.on == Marker::On::Start ? level.start.position : level.goal.position;
-      out.circle(core::Place::overlayOnFace(solid_.part(static_cast<size_t>(m.face))), {float(p.x), float(p.y)},
-                 180 * unit, {c.r, c.g, c.b, 110});
-    }
-  }
+  drawMarkers(out, unit);
   // The start (the player's disk) and the goal's square.
   out.circle(core::Place::overlayOnFace(solid_.part(static_cast<size_t>(level.start.face))),
              {float(level.start.position.x), float(level.start.position.y)}, 96, {kStart.r, kStart.g, kStart.b, 150});
@@ -680,33 +681,63 @@ void Editor::draw(core::DrawList& out) const {
       out.circle(core::Place::overlayOnFace(solid_.part(static_cast<size_t>(s.face))), {float(p.x), float(p.y)},
                  36 * unit, kSelected);
   }
-  if (dragTo_ && drag_.what != Drag::What::None) {
-    const physics::Vec2 a = whole(drag_.from), b = whole(*dragTo_);
-    if (drag_.what == Drag::What::Draw) {
-      drawSegment(out, drag_.from.face, a, b, 30 * unit, colorOf(document_.tags()->style(currentTag())));
-    } else if (drag_.what == Drag::What::MoveEnd) {
-      const stage::LevelLine& l =
-          level.faces[static_cast<size_t>(drag_.segment.face)].lines[static_cast<size_t>(drag_.segment.index)];
-      drawSegment(out, drag_.segment.face, drag_.endB ? l.a : b, drag_.endB ? b : l.b, 30 * unit, kSelected);
-    } else if (drag_.what == Drag::What::MoveStart || drag_.what == Drag::What::MoveGoal) {
-      const core::Place at = core::Place::overlayOnFace(solid_.part(static_cast<size_t>(dragTo_->face)));
-      const float r = drag_.what == Drag::What::MoveStart ? 96 : static_cast<float>(stage::goalHalfSide(level));
-      out.circle(at, {float(b.x), float(b.y)}, r, drag_.what == Drag::What::MoveStart ? kStart : kGoal);
-    } else if (drag_.what == Drag::What::MoveSegments) {
-      for (const SegmentRef s : selection_) {
-        if (s.face != drag_.from.face) continue;
-        const stage::LevelLine& l = level.faces[static_cast<size_t>(s.face)].lines[static_cast<size_t>(s.index)];
-        drawSegment(out, s.face, {l.a.x + b.x - a.x, l.a.y + b.y - a.y}, {l.b.x + b.x - a.x, l.b.y + b.y - a.y},
-                    30 * unit, kSelected);
-      }
-    }
-  }
+  if (dragTo_ && drag_.what != Drag::What::None) drawDragPreview(out, unit);
   if (cursor_) {
     const core::Place place = core::Place::overlayOnFace(solid_.part(static_cast<size_t>(cursor_->point.face)));
     const float r = cursor_->kind == Snapped::Kind::End ? 60 * unit : 32 * unit;
     out.circle(place, {float(cursor_->point.x), float(cursor_->point.y)}, r, kCursor);
   }
-  // The palette.
+  drawPalette(out);
+}
+
+// The findings where they are: a segment's drawn over, a face's outlined, the start's or the
+// goal's circled.
+void Editor::drawMarkers(core::DrawList& out, float unit) const {
+  const stage::Level& level = document_.level();
+  for (const Marker& m : markers_) {
+    const core::Color c = m.error ? kError : kWarning;
+    if (m.on == Marker::On::Segment) {
+      const stage::LevelLine& l = level.faces[static_cast<size_t>(m.face)].lines[static_cast<size_t>(m.segment.index)];
+      drawSegment(out, m.face, l.a, l.b, 70 * unit, c);
+    } else if (m.on == Marker::On::Face) {
+      const auto& corners = solid_.faces[static_cast<size_t>(m.face)].corners;
+      for (size_t i = 0; i < corners.size(); ++i)
+        drawSegment(out, m.face, corners[i], corners[(i + 1) % corners.size()], 60 * unit, c);
+    } else if (m.on == Marker::On::Start || m.on == Marker::On::Goal) {
+      const physics::Vec2 p = m.on == Marker::On::Start ? level.start.position : level.goal.position;
+      out.circle(core::Place::overlayOnFace(solid_.part(static_cast<size_t>(m.face))), {float(p.x), float(p.y)},
+                 180 * unit, {c.r, c.g, c.b, 110});
+    }
+  }
+}
+
+// What the drag under way would make: the segment being drawn, the end, the start, the goal or
+// the selected segments where they would go.
+void Editor::drawDragPreview(core::DrawList& out, float unit) const {
+  const stage::Level& level = document_.level();
+  const physics::Vec2 a = whole(drag_.from), b = whole(*dragTo_);
+  if (drag_.what == Drag::What::Draw) {
+    drawSegment(out, drag_.from.face, a, b, 30 * unit, colorOf(document_.tags()->style(currentTag())));
+  } else if (drag_.what == Drag::What::MoveEnd) {
+    const stage::LevelLine& l =
+        level.faces[static_cast<size_t>(drag_.segment.face)].lines[static_cast<size_t>(drag_.segment.index)];
+    drawSegment(out, drag_.segment.face, drag_.endB ? l.a : b, drag_.endB ? b : l.b, 30 * unit, kSelected);
+  } else if (drag_.what == Drag::What::MoveStart || drag_.what == Drag::What::MoveGoal) {
+    const core::Place at = core::Place::overlayOnFace(solid_.part(static_cast<size_t>(dragTo_->face)));
+    const float r = drag_.what == Drag::What::MoveStart ? 96 : static_cast<float>(stage::goalHalfSide(level));
+    out.circle(at, {float(b.x), float(b.y)}, r, drag_.what == Drag::What::MoveStart ? kStart : kGoal);
+  } else if (drag_.what == Drag::What::MoveSegments) {
+    for (const SegmentRef s : selection_) {
+      if (s.face != drag_.from.face) continue;
+      const stage::LevelLine& l = level.faces[static_cast<size_t>(s.face)].lines[static_cast<size_t>(s.index)];
+      drawSegment(out, s.face, {l.a.x + b.x - a.x, l.a.y + b.y - a.y}, {l.b.x + b.x - a.x, l.b.y + b.y - a.y},
+                  30 * unit, kSelected);
+    }
+  }
+}
+
+// The palette: a panel at the top right, a swatch and a word for each tag, the current one marked.
+void Editor::drawPalette(core::DrawList& out) const {
   const float right = static_cast<float>(lens_.width) - 12, left = right - 190, top = kPaletteTop, row = 26;
   const core::Point2 panel[] = {{left - 6, top - 30},
                                 {right + 6, top - 30},

@@ -354,19 +354,7 @@ void StageMesh::addShapes(const core::DrawList& draw, physics::MapPartId onlyFac
     std::vector<LitVertex>& into = s.place.overlay ? overlay : out;
     if (s.color.a == kGlow || s.color.a == kTiled) s.color.a = 255;  // the stage's own markers, not the scripts'
     if (s.kind == core::ShapeKind::Circle && s.place.overlay) {      // a flat dot over the walls
-      const Frame* f = frameOf(s.place.face);
-      if (!f) continue;
-      constexpr int kSides = 12;
-      for (int k = 0; k < kSides; ++k) {
-        const float a0 = static_cast<float>(2 * M_PI * k / kSides),
-                    a1 = static_cast<float>(2 * M_PI * (k + 1) / kSides);
-        auto on = [&](float a) {
-          return Vector3f(f->origin + (s.at.x + s.size * std::cos(a)) * f->xAxis +
-                          (s.at.y + s.size * std::sin(a)) * f->yAxis + 0.004f * edge_ * f->normal);
-        };
-        const Vector3f c = f->origin + s.at.x * f->xAxis + s.at.y * f->yAxis + 0.004f * edge_ * f->normal;
-        addTriangle(into, c, on(a0), on(a1), f->normal, {s.color.r, s.color.g, s.color.b, kGlow});
-      }
+      if (const Frame* f = frameOf(s.place.face)) addOverlayDot(*f, s, into);
       continue;
     }
     if (s.kind == core::ShapeKind::Circle && s.body != 0 && !flat_) {
@@ -393,44 +381,65 @@ void StageMesh::addShapes(const core::DrawList& draw, physics::MapPartId onlyFac
       addBodyPolygon(*f, s, points, into);
       continue;
     }
-    auto at = [&](core::Point2 p, float lift) {
-      return Vector3f(f->origin + p.x * f->xAxis + p.y * f->yAxis + lift * edge_ * f->normal);
+    addFlatShape(*f, s, points, into);
+  }
+}
+
+// A dot of the debug overlay: a flat disc a little above its face, glowing.
+void StageMesh::addOverlayDot(const Frame& f, const core::DrawShape& s, std::vector<LitVertex>& into) const {
+  constexpr int kSides = 12;
+  for (int k = 0; k < kSides; ++k) {
+    const float a0 = static_cast<float>(2 * M_PI * k / kSides), a1 = static_cast<float>(2 * M_PI * (k + 1) / kSides);
+    auto on = [&](float a) {
+      return Vector3f(f.origin + (s.at.x + s.size * std::cos(a)) * f.xAxis + (s.at.y + s.size * std::sin(a)) * f.yAxis +
+                      0.004f * edge_ * f.normal);
     };
-    switch (s.kind) {
-      case core::ShapeKind::Circle: {
-        // A ball resting on the face.
-        const float r = s.size * scale_;
-        const Vector3f centre = at(s.at, 0) + r * f->normal;
-        const auto& sphere = unitSphere();
-        for (const Vector3f& v : sphere) {
-          const Vector3f p = centre + r * v;
-          into.push_back({p.x(), p.y(), p.z(), v.x(), v.y(), v.z(), s.color.r, s.color.g, s.color.b, s.color.a});
-        }
-        break;
+    const Vector3f c = f.origin + s.at.x * f.xAxis + s.at.y * f.yAxis + 0.004f * edge_ * f.normal;
+    addTriangle(into, c, on(a0), on(a1), f.normal, {s.color.r, s.color.g, s.color.b, kGlow});
+  }
+}
+
+// A shape the scripts drew on a face that is neither a wall nor a body: a circle as a ball resting
+// on it, a polygon or a line flat a little above it.
+void StageMesh::addFlatShape(const Frame& f, const core::DrawShape& s, std::span<const core::Point2> points,
+                             std::vector<LitVertex>& into) const {
+  auto at = [&](core::Point2 p, float lift) {
+    return Vector3f(f.origin + p.x * f.xAxis + p.y * f.yAxis + lift * edge_ * f.normal);
+  };
+  switch (s.kind) {
+    case core::ShapeKind::Circle: {
+      // A ball resting on the face.
+      const float r = s.size * scale_;
+      const Vector3f centre = at(s.at, 0) + r * f.normal;
+      const auto& sphere = unitSphere();
+      for (const Vector3f& v : sphere) {
+        const Vector3f p = centre + r * v;
+        into.push_back({p.x(), p.y(), p.z(), v.x(), v.y(), v.z(), s.color.r, s.color.g, s.color.b, s.color.a});
       }
-      case core::ShapeKind::Polygon:
-        for (uint32_t i = 1; i + 1 < s.count; ++i)
-          addTriangle(into, at(points[s.first], 0.003f), at(points[s.first + i], 0.003f),
-                      at(points[s.first + i + 1], 0.003f), f->normal, s.color);
-        break;
-      case core::ShapeKind::Line: {
-        const float lift = 0.004f;
-        core::Color color = s.color;  // the overlay's glow: it reads the same in any light
-        if (s.place.overlay) color.a = kGlow;
-        for (uint32_t i = 1; i < s.count; ++i) {
-          const core::Point2 p = points[s.first + i - 1], q = points[s.first + i];
-          const float dx = q.x - p.x, dy = q.y - p.y, len = std::hypot(dx, dy);
-          if (len <= 0) continue;
-          const float hx = -dy / len * s.size / 2, hy = dx / len * s.size / 2;
-          quad(into, at({p.x - hx, p.y - hy}, lift), at({q.x - hx, q.y - hy}, lift), at({q.x + hx, q.y + hy}, lift),
-               at({p.x + hx, p.y + hy}, lift), f->normal, color);
-        }
-        break;
-      }
-      case core::ShapeKind::Text:
-      case core::ShapeKind::Wall:
-        break;
+      break;
     }
+    case core::ShapeKind::Polygon:
+      for (uint32_t i = 1; i + 1 < s.count; ++i)
+        addTriangle(into, at(points[s.first], 0.003f), at(points[s.first + i], 0.003f),
+                    at(points[s.first + i + 1], 0.003f), f.normal, s.color);
+      break;
+    case core::ShapeKind::Line: {
+      const float lift = 0.004f;
+      core::Color color = s.color;  // the overlay's glow: it reads the same in any light
+      if (s.place.overlay) color.a = kGlow;
+      for (uint32_t i = 1; i < s.count; ++i) {
+        const core::Point2 p = points[s.first + i - 1], q = points[s.first + i];
+        const float dx = q.x - p.x, dy = q.y - p.y, len = std::hypot(dx, dy);
+        if (len <= 0) continue;
+        const float hx = -dy / len * s.size / 2, hy = dx / len * s.size / 2;
+        quad(into, at({p.x - hx, p.y - hy}, lift), at({q.x - hx, q.y - hy}, lift), at({q.x + hx, q.y + hy}, lift),
+             at({p.x + hx, p.y + hy}, lift), f.normal, color);
+      }
+      break;
+    }
+    case core::ShapeKind::Text:
+    case core::ShapeKind::Wall:
+      break;
   }
 }
 

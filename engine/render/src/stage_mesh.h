@@ -61,6 +61,9 @@ class StageMesh {
   void addBall(std::span<const core::DrawShape> instances, std::vector<LitVertex>& out) const;
   void addBodyPolygon(const Frame& f, const core::DrawShape& s, std::span<const core::Point2> points,
                       std::vector<LitVertex>& out) const;
+  void addOverlayDot(const Frame& f, const core::DrawShape& s, std::vector<LitVertex>& into) const;
+  void addFlatShape(const Frame& f, const core::DrawShape& s, std::span<const core::Point2> points,
+                    std::vector<LitVertex>& into) const;
   const Frame* frameOf(physics::MapPartId part) const;
   float outsideHeight(const Frame& f, const Eigen::Vector3f& p) const;
   void addFace(const core::ViewFace& face, size_t index);

@@ -377,6 +377,24 @@ void LuaHost::afterFailedCall(int status, int below) {
   throw error;
 }
 
+namespace {
+
+// The bookkeeping of an outermost sandboxed call as it starts: its clock, the deadline's timer, the
+// sandbox's hook rate, and the tick it pays up front.
+inline void beginOutermostSandboxedCall(LuaHost::Shared& s, Sandbox& box) {
+  s.enteredAt = coarseNanoseconds();
+  if (!s.timerArmed) armTimer(s, s.frameDeadline() - s.frameSpent);
+  // The count starts again here, and the call pays one tick for the instructions of its last
+  // tick, which no look counts: so its charge depends on nothing that ran before it.
+  hookForSandbox(s);
+  s.callbackDepth = 0;
+  s.stopMessage.clear();  // a stopped trusted call's, which a memory stop would take for its own
+  s.frameSteps += kTickSteps;
+  box.spent += kTickSteps;
+}
+
+}  // namespace
+
 bool LuaHost::callSandboxed(int sandbox, int nargs, int nresults) {
   Shared& s = *shared_;
   if (sandbox < 0 || sandbox >= static_cast<int>(s.sandboxes.size())) {
@@ -393,26 +411,10 @@ bool LuaHost::callSandboxed(int sandbox, int nargs, int nresults) {
     const bool late = s.frameSpent >= s.frameDeadline();
     if (late || s.frameSteps >= s.limits.frameSteps) {  // the frame's budget is spent: skipped
       lua_pop(L_, nargs + 1);
-      if (!s.skipNoted && !s.stopNoted)
-        keepError(
-            ScriptError(box.name + ": skipped: " +
-                            (late ? "the frame's deadline of " + milliseconds(s.frameDeadline()) + " has passed"
-                                  : "the frame's script budget of " + stepsText(s.limits.frameSteps) + " is spent") +
-                            " (the level's scripts and mods share it; their other calls this frame are "
-                            "skipped)",
-                        ""));
-      s.skipNoted = true;
+      noteSkippedCall(sandbox, late);
       return false;
     }
-    s.enteredAt = coarseNanoseconds();
-    if (!s.timerArmed) armTimer(s, s.frameDeadline() - s.frameSpent);
-    // The count starts again here, and the call pays one tick for the instructions of its last
-    // tick, which no look counts: so its charge depends on nothing that ran before it.
-    hookForSandbox(s);
-    s.callbackDepth = 0;
-    s.stopMessage.clear();  // a stopped trusted call's, which a memory stop would take for its own
-    s.frameSteps += kTickSteps;
-    box.spent += kTickSteps;
+    beginOutermostSandboxedCall(s, box);
   }
   s.current = sandbox;
   int below = 0;
@@ -442,38 +444,76 @@ bool LuaHost::callSandboxed(int sandbox, int nargs, int nresults) {
   hookForTrusted(s);
   if (status == 0 && !stopped) [[likely]]
     return true;
-  // An error, or a stop. A stop disables the sandbox that ran over: the one whose allocation was
-  // refused, or the one that spent the most of the frame's steps.
-  std::string message, traceback;
-  if (status != 0 && !stopped) {  // its unwinding is work too (a rules callback failing on every contact)
-    s.frameSteps += kErrorSteps;
-    box.spent += kErrorSteps;
-  }
-  if (status != 0) {
-    ScriptError error = errorFromStack(L_, status, s);
-    message = error.what();
-    traceback = error.traceback();
-    lua_settop(L_, below);
-    if (message.find("stack overflow") != std::string::npos || status == LUA_ERRERR) {
-      // LuaJIT may not run the handler after an overflow in a metamethod (it says "stack
-      // overflow", with no place and no traceback), and leaves the stack grown: a collection
-      // shrinks it back.
-      if (!located(message.c_str()))
-        message = box.name + ": " + message + " (a function or metamethod that calls itself without end?)";
-      lua_gc(L_, LUA_GCCOLLECT, 0);
-    } else if (!located(message.c_str()) && message.rfind(box.name + ": ", 0) != 0) {
-      message = box.name + ": " + message;
-    }
-  } else {
-    lua_settop(L_, below);  // its results: a stopped sandbox's call gives none
-    message = s.stopMessage;
-  }
+  failSandboxedCall(sandbox, status, below, stopped);
+}
+
+// A call skipped because the frame's budget is spent: said once a frame (and not after a stop,
+// whose message already says the rest is skipped).
+void LuaHost::noteSkippedCall(int sandbox, bool late) {
+  Shared& s = *shared_;
+  if (!s.skipNoted && !s.stopNoted)
+    keepError(ScriptError(s.sandboxes[static_cast<size_t>(sandbox)].name + ": skipped: " +
+                              (late ? "the frame's deadline of " + milliseconds(s.frameDeadline()) + " has passed"
+                                    : "the frame's script budget of " + stepsText(s.limits.frameSteps) + " is spent") +
+                              " (the level's scripts and mods share it; their other calls this frame are "
+                              "skipped)",
+                          ""));
+  s.skipNoted = true;
+}
+
+// An outermost sandboxed call that failed or was stopped: the error (or the stop's message) with
+// the sandbox named, the stack back to `below`, the sandbox that ran over disabled, and the error
+// thrown.
+void LuaHost::failSandboxedCall(int sandbox, int status, int below, bool stopped) {
+  Shared& s = *shared_;
+  std::string traceback;
+  std::string message = failedCallMessage(sandbox, status, below, stopped, traceback);
   // A refusal that unwound the sandbox before it ran another instruction: no place is known, but
   // for the one the hook found before a later allocation failed (a pcall's unwinding grew the stack).
   if (s.memoryStop != kNoSandbox && (status == LUA_ERRMEM || message.empty()))
     message = !s.stopMessage.empty() ? s.stopMessage
                                      : s.sandboxes[static_cast<size_t>(s.memoryStop)].name + ": " + memoryStopText(s);
   if (s.memoryStop != kNoSandbox) blameTheBiggestHolder(s, message);
+  disableAfterStop(sandbox, message);
+  throw ScriptError(message, traceback);
+}
+
+// What a failed outermost call says: its error, named after its sandbox, or the stop's message;
+// the stack is set back to `below`. An error's unwinding is charged as work (a rules callback
+// failing on every contact).
+std::string LuaHost::failedCallMessage(int sandbox, int status, int below, bool stopped, std::string& traceback) {
+  Shared& s = *shared_;
+  Sandbox& box = s.sandboxes[static_cast<size_t>(sandbox)];
+  if (status != 0 && !stopped) {
+    s.frameSteps += kErrorSteps;
+    box.spent += kErrorSteps;
+  }
+  if (status == 0) {
+    lua_settop(L_, below);  // its results: a stopped sandbox's call gives none
+    return s.stopMessage;
+  }
+  ScriptError error = errorFromStack(L_, status, s);
+  std::string message = error.what();
+  traceback = error.traceback();
+  lua_settop(L_, below);
+  if (message.find("stack overflow") != std::string::npos || status == LUA_ERRERR) {
+    // LuaJIT may not run the handler after an overflow in a metamethod (it says "stack
+    // overflow", with no place and no traceback), and leaves the stack grown: a collection
+    // shrinks it back.
+    if (!located(message.c_str()))
+      message = box.name + ": " + message + " (a function or metamethod that calls itself without end?)";
+    lua_gc(L_, LUA_GCCOLLECT, 0);
+  } else if (!located(message.c_str()) && message.rfind(box.name + ": ", 0) != 0) {
+    message = box.name + ": " + message;
+  }
+  return message;
+}
+
+// A stop disables the sandbox that ran over: the one whose allocation was refused, or the one
+// that spent the most of the frame's steps; after a budget stop the frame's other calls are
+// skipped. The stop's state is cleared for the next call.
+void LuaHost::disableAfterStop(int sandbox, std::string& message) {
+  Shared& s = *shared_;
   int off = kNoSandbox;
   if (s.memoryStop != kNoSandbox)
     off = s.memoryStop;
@@ -496,7 +536,6 @@ bool LuaHost::callSandboxed(int sandbox, int nargs, int nresults) {
     message += "; " + s.sandboxes[static_cast<size_t>(off)].name + " disabled: fix it and save to reload";
     if (s.stopNoted && off == sandbox) message += " (the frame's other sandboxed calls are skipped)";
   }
-  throw ScriptError(message, traceback);
 }
 
 // A memory stop is the fault of what holds the memory, not of the allocation that crossed the

@@ -233,6 +233,11 @@ class LuaHost {
   void callNested(int nargs, int nresults);
   int protectedCall(int nargs, int nresults, int& below);
   [[gnu::cold]] void afterFailedCall(int status, int below);
+  // callSandboxed's slow paths: a skipped call said, a failed or stopped call turned into its error.
+  [[gnu::cold]] void noteSkippedCall(int sandbox, bool late);
+  [[noreturn, gnu::cold]] void failSandboxedCall(int sandbox, int status, int below, bool stopped);
+  std::string failedCallMessage(int sandbox, int status, int below, bool stopped, std::string& traceback);
+  void disableAfterStop(int sandbox, std::string& message);
   static int luaCallSandboxed(lua_State* L);
 };
 

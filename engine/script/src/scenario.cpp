@@ -416,112 +416,128 @@ class PlanReader {
     if (const DataValue* goal = field(expect, "goal_by")) plan.goalBy = wholeNumber(*goal, "expect.goal_by", 1, last);
     if (const DataValue* deaths = field(expect, "deaths"))
       plan.deaths = static_cast<int>(wholeNumber(*deaths, "expect.deaths", 0, 2147483647.0));
-    if (const DataValue* face = field(expect, "face")) {
-      if (face->kind != DataValue::Kind::Table)
-        fail(*face, "expect.face", "expected { [frame] = face, ... }, got " + core::describeData(*face));
-      for (const auto& [key, value] : face->entries) {
-        const std::string where = "expect.face[" + core::dataKeyText(key) + "]";
-        const uint64_t f = frameKey(key, value, where, plan);
-        plan.faceAt[f] = static_cast<physics::MapPartId>(wholeNumber(value, where, 0, 4095));
-        plan.faceWhere[f] = at(value, where);
-      }
-    }
-    if (const DataValue* hash = field(expect, "hash")) {
-      if (hash->kind != DataValue::Kind::Table)
-        fail(*hash, "expect.hash", "expected { [frame] = \"16 hex digits\", ... }, got " + core::describeData(*hash));
-      for (const auto& [key, value] : hash->entries) {
-        const std::string where = "expect.hash[" + core::dataKeyText(key) + "]";
-        const uint64_t f = frameKey(key, value, where, plan);
-        if (value.kind != DataValue::Kind::String || value.text.size() != 16 ||
-            value.text.find_first_not_of("0123456789abcdef") != std::string::npos)
-          fail(value, where,
-               "frame " + std::to_string(f) + ": state hash " + core::describeData(value) +
-                   " is not 16 lower-case hex digits");
-        plan.hashAt[f] = value.text;
-      }
-    }
-    if (const DataValue* sounds = field(expect, "sounds")) {
-      if (sounds->kind != DataValue::Kind::Table)
-        fail(*sounds, "expect.sounds",
-             "expected { [frame] = \"name\" or { \"name\", ... }, ... }, got " + core::describeData(*sounds));
-      for (const auto& [key, value] : sounds->entries) {
-        const std::string where = "expect.sounds[" + core::dataKeyText(key) + "]";
-        const uint64_t f = frameKey(key, value, where, plan);
-        std::vector<const DataValue*> names;
-        if (value.kind == DataValue::Kind::String)
-          names.push_back(&value);
-        else
-          names = list(value, where, "sounds' names", DataValue::Kind::String);
-        for (size_t i = 0; i < names.size(); ++i) {
-          const std::string named =
-              value.kind == DataValue::Kind::String ? where : where + "[" + std::to_string(i + 1) + "]";
-          plan.soundsAt[f].push_back(names[i]->text);
-          plan.soundsWhere[f].push_back(at(*names[i], named));
-        }
-      }
-    }
-    if (const DataValue* switches = field(expect, "switches")) {
-      if (switches->kind != DataValue::Kind::Table)
-        fail(*switches, "expect.switches",
-             "expected { [frame] = { id, ... }, ... }, got " + core::describeData(*switches));
-      for (const auto& [key, value] : switches->entries) {
-        const std::string where = "expect.switches[" + core::dataKeyText(key) + "]";
-        const uint64_t f = frameKey(key, value, where, plan);
-        std::vector<uint32_t>& on = plan.switchesAt[f];
-        const std::vector<const DataValue*> ids = list(value, where, "switch ids", DataValue::Kind::Number);
-        for (size_t i = 0; i < ids.size(); ++i)
-          on.push_back(static_cast<uint32_t>(wholeNumber(*ids[i], where + "[" + std::to_string(i + 1) + "]", 1, 999)));
-        std::sort(on.begin(), on.end());
-        if (std::adjacent_find(on.begin(), on.end()) != on.end()) fail(value, where, "a switch id given twice");
-      }
-    }
-    if (const DataValue* checkpoint = field(expect, "checkpoint")) {
-      if (checkpoint->kind != DataValue::Kind::Table)
-        fail(*checkpoint, "expect.checkpoint",
-             "expected { [frame] = { face, x, y } or false, ... }, got " + core::describeData(*checkpoint));
-      for (const auto& [key, value] : checkpoint->entries) {
-        const std::string where = "expect.checkpoint[" + core::dataKeyText(key) + "]";
-        const uint64_t f = frameKey(key, value, where, plan);
-        if (value.kind == DataValue::Kind::Boolean && !value.boolean) {
-          plan.checkpointAt[f] = std::nullopt;
-          continue;
-        }
-        const std::vector<const DataValue*> v =
-            list(value, where, "face, x, y (or false: none)", DataValue::Kind::Number);
-        if (v.size() != 3)
-          fail(value, where, "expected { face, x, y } (or false: none), got " + std::to_string(v.size()) + " values");
-        plan.checkpointAt[f] = std::array<int64_t, 3>{
-            static_cast<int64_t>(wholeNumber(*v[0], where + "[1]", 0, 4095)),
-            static_cast<int64_t>(wholeNumber(*v[1], where + "[2]", -1073741823.0, 1073741823.0)),
-            static_cast<int64_t>(wholeNumber(*v[2], where + "[3]", -1073741823.0, 1073741823.0))};
-      }
-    }
+    if (const DataValue* face = field(expect, "face")) readExpectedFaces(*face, plan);
+    if (const DataValue* hash = field(expect, "hash")) readExpectedHashes(*hash, plan);
+    if (const DataValue* sounds = field(expect, "sounds")) readExpectedSounds(*sounds, plan);
+    if (const DataValue* switches = field(expect, "switches")) readExpectedSwitches(*switches, plan);
+    if (const DataValue* checkpoint = field(expect, "checkpoint")) readExpectedCheckpoints(*checkpoint, plan);
     if (const DataValue* inside = field(expect, "inside")) {
       const std::vector<const DataValue*> items =
           list(*inside, "expect.inside", "{ frame =, face =, box = { x0, y0, x1, y1 } }");
-      for (size_t i = 0; i < items.size(); ++i) {
-        const DataValue& item = *items[i];
-        const std::string where = "expect.inside[" + std::to_string(i + 1) + "]";
-        knownKeys(item, where, {"frame", "face", "box"});
-        Box b{};
-        b.frame = wholeNumber(required(item, "frame", where), where + ".frame", 1, last);
-        b.face = static_cast<physics::MapPartId>(wholeNumber(required(item, "face", where), where + ".face", 0, 4095));
-        b.where = at(*field(item, "face"), where + ".face");
-        const DataValue& box = required(item, "box", where);
-        const std::vector<DataEntry>& corners = box.entries;
-        bool isList = box.kind == DataValue::Kind::Table && corners.size() == 4;
-        for (size_t k = 0; isList && k < 4; ++k)
-          isList =
-              corners[k].key.kind == DataValue::Kind::Number && corners[k].key.number == static_cast<double>(k + 1);
-        if (!isList) fail(box, where + ".box", "expected { x0, y0, x1, y1 }, got " + core::describeData(box));
-        int32_t* out[] = {&b.x0, &b.y0, &b.x1, &b.y1};
-        for (size_t k = 0; k < 4; ++k)
-          *out[k] = coordinate(corners[k].value, where + ".box[" + std::to_string(k + 1) + "]");
-        if (b.x1 < b.x0 || b.y1 < b.y0)
-          fail(box, where + ".box", "an inverted box: x0 <= x1 and y0 <= y1 (corners lower left, upper right)");
-        plan.inside.push_back(b);
+      for (size_t i = 0; i < items.size(); ++i)
+        plan.inside.push_back(insideBox(*items[i], "expect.inside[" + std::to_string(i + 1) + "]", last));
+    }
+  }
+
+  // expect.face = { [frame] = face, ... }: the face the player is on at those frames.
+  void readExpectedFaces(const DataValue& face, Plan& plan) const {
+    if (face.kind != DataValue::Kind::Table)
+      fail(face, "expect.face", "expected { [frame] = face, ... }, got " + core::describeData(face));
+    for (const auto& [key, value] : face.entries) {
+      const std::string where = "expect.face[" + core::dataKeyText(key) + "]";
+      const uint64_t f = frameKey(key, value, where, plan);
+      plan.faceAt[f] = static_cast<physics::MapPartId>(wholeNumber(value, where, 0, 4095));
+      plan.faceWhere[f] = at(value, where);
+    }
+  }
+
+  // expect.hash = { [frame] = "16 hex digits", ... }: the world's state hash at those frames.
+  void readExpectedHashes(const DataValue& hash, Plan& plan) const {
+    if (hash.kind != DataValue::Kind::Table)
+      fail(hash, "expect.hash", "expected { [frame] = \"16 hex digits\", ... }, got " + core::describeData(hash));
+    for (const auto& [key, value] : hash.entries) {
+      const std::string where = "expect.hash[" + core::dataKeyText(key) + "]";
+      const uint64_t f = frameKey(key, value, where, plan);
+      if (value.kind != DataValue::Kind::String || value.text.size() != 16 ||
+          value.text.find_first_not_of("0123456789abcdef") != std::string::npos)
+        fail(value, where,
+             "frame " + std::to_string(f) + ": state hash " + core::describeData(value) +
+                 " is not 16 lower-case hex digits");
+      plan.hashAt[f] = value.text;
+    }
+  }
+
+  // expect.sounds = { [frame] = "name" or { "name", ... }, ... }: effects that play at those frames.
+  void readExpectedSounds(const DataValue& sounds, Plan& plan) const {
+    if (sounds.kind != DataValue::Kind::Table)
+      fail(sounds, "expect.sounds",
+           "expected { [frame] = \"name\" or { \"name\", ... }, ... }, got " + core::describeData(sounds));
+    for (const auto& [key, value] : sounds.entries) {
+      const std::string where = "expect.sounds[" + core::dataKeyText(key) + "]";
+      const uint64_t f = frameKey(key, value, where, plan);
+      std::vector<const DataValue*> names;
+      if (value.kind == DataValue::Kind::String)
+        names.push_back(&value);
+      else
+        names = list(value, where, "sounds' names", DataValue::Kind::String);
+      for (size_t i = 0; i < names.size(); ++i) {
+        const std::string named =
+            value.kind == DataValue::Kind::String ? where : where + "[" + std::to_string(i + 1) + "]";
+        plan.soundsAt[f].push_back(names[i]->text);
+        plan.soundsWhere[f].push_back(at(*names[i], named));
       }
     }
+  }
+
+  // expect.switches = { [frame] = { id, ... }, ... }: the switches on at those frames, each once.
+  void readExpectedSwitches(const DataValue& switches, Plan& plan) const {
+    if (switches.kind != DataValue::Kind::Table)
+      fail(switches, "expect.switches", "expected { [frame] = { id, ... }, ... }, got " + core::describeData(switches));
+    for (const auto& [key, value] : switches.entries) {
+      const std::string where = "expect.switches[" + core::dataKeyText(key) + "]";
+      const uint64_t f = frameKey(key, value, where, plan);
+      std::vector<uint32_t>& on = plan.switchesAt[f];
+      const std::vector<const DataValue*> ids = list(value, where, "switch ids", DataValue::Kind::Number);
+      for (size_t i = 0; i < ids.size(); ++i)
+        on.push_back(static_cast<uint32_t>(wholeNumber(*ids[i], where + "[" + std::to_string(i + 1) + "]", 1, 999)));
+      std::sort(on.begin(), on.end());
+      if (std::adjacent_find(on.begin(), on.end()) != on.end()) fail(value, where, "a switch id given twice");
+    }
+  }
+
+  // expect.checkpoint = { [frame] = { face, x, y } or false, ... }: the checkpoint at those frames.
+  void readExpectedCheckpoints(const DataValue& checkpoint, Plan& plan) const {
+    if (checkpoint.kind != DataValue::Kind::Table)
+      fail(checkpoint, "expect.checkpoint",
+           "expected { [frame] = { face, x, y } or false, ... }, got " + core::describeData(checkpoint));
+    for (const auto& [key, value] : checkpoint.entries) {
+      const std::string where = "expect.checkpoint[" + core::dataKeyText(key) + "]";
+      const uint64_t f = frameKey(key, value, where, plan);
+      if (value.kind == DataValue::Kind::Boolean && !value.boolean) {
+        plan.checkpointAt[f] = std::nullopt;
+        continue;
+      }
+      const std::vector<const DataValue*> v =
+          list(value, where, "face, x, y (or false: none)", DataValue::Kind::Number);
+      if (v.size() != 3)
+        fail(value, where, "expected { face, x, y } (or false: none), got " + std::to_string(v.size()) + " values");
+      plan.checkpointAt[f] =
+          std::array<int64_t, 3>{static_cast<int64_t>(wholeNumber(*v[0], where + "[1]", 0, 4095)),
+                                 static_cast<int64_t>(wholeNumber(*v[1], where + "[2]", -1073741823.0, 1073741823.0)),
+                                 static_cast<int64_t>(wholeNumber(*v[2], where + "[3]", -1073741823.0, 1073741823.0))};
+    }
+  }
+
+  // One of expect.inside: { frame =, face =, box = { x0, y0, x1, y1 } }, the player inside the box
+  // (corners lower left, upper right) on that face at that frame. `last`: the scenario's last frame.
+  Box insideBox(const DataValue& item, const std::string& where, double last) const {
+    knownKeys(item, where, {"frame", "face", "box"});
+    Box b{};
+    b.frame = wholeNumber(required(item, "frame", where), where + ".frame", 1, last);
+    b.face = static_cast<physics::MapPartId>(wholeNumber(required(item, "face", where), where + ".face", 0, 4095));
+    b.where = at(*field(item, "face"), where + ".face");
+    const DataValue& box = required(item, "box", where);
+    const std::vector<DataEntry>& corners = box.entries;
+    bool isList = box.kind == DataValue::Kind::Table && corners.size() == 4;
+    for (size_t k = 0; isList && k < 4; ++k)
+      isList = corners[k].key.kind == DataValue::Kind::Number && corners[k].key.number == static_cast<double>(k + 1);
+    if (!isList) fail(box, where + ".box", "expected { x0, y0, x1, y1 }, got " + core::describeData(box));
+    int32_t* out[] = {&b.x0, &b.y0, &b.x1, &b.y1};
+    for (size_t k = 0; k < 4; ++k)
+      *out[k] = coordinate(corners[k].value, where + ".box[" + std::to_string(k + 1) + "]");
+    if (b.x1 < b.x0 || b.y1 < b.y0)
+      fail(box, where + ".box", "an inverted box: x0 <= x1 and y0 <= y1 (corners lower left, upper right)");
+    return b;
   }
 
   std::string path_;
@@ -652,6 +668,64 @@ std::string checkFrame(const Plan& plan, uint64_t f, core::Scene& scene, ScriptS
 
 namespace {
 
+// The scene's script system (the last one, were there several); none when it has no scripts.
+ScriptSystem* scriptSystemOf(core::Scene& scene) {
+  ScriptSystem* scripts = nullptr;
+  for (size_t i = 0; i < scene.systemCount(); ++i)
+    if (auto* s = dynamic_cast<ScriptSystem*>(&scene.system(i))) scripts = s;
+  return scripts;
+}
+
+// Said before a hash mismatch when the scene's files are not the ones a replay was recorded with
+// (its hashes may no longer hold); "" when they are, or nothing was recorded.
+std::string filesChangedNote(const Plan& plan, uint64_t filesHash) {
+  return plan.sceneFilesHash && *plan.sceneFilesHash != filesHash
+             ? "the scene's files changed since the recording (files " + hex(filesHash) + ", recorded with " +
+                   hex(*plan.sceneFilesHash) + "): "
+             : "";
+}
+
+struct PlanVerdict {
+  bool passed;
+  std::string message;
+};
+
+// The verdict on a run whose every frame passed its checks: the goal by its frame and the deaths
+// (for a scene with scripts: `status` is the game's at the end, else null), and what was shown.
+PlanVerdict planVerdict(const Plan& plan, const GameStatus* status) {
+  if (!status) return {true, plan.hashAt.empty() ? "ok" : std::to_string(plan.hashAt.size()) + " hashes matched"};
+  const GameStatus& s = *status;
+  if (plan.goalBy && (!s.won || s.wonFrame > *plan.goalBy))
+    return {false, "goal not reached by frame " + std::to_string(*plan.goalBy) + " (player on face " +
+                       std::to_string(s.face) + " at " + std::to_string(s.x) + ", " + std::to_string(s.y) + ")"};
+  if (plan.deaths && s.deaths != *plan.deaths)
+    return {false, std::to_string(s.deaths) + " deaths, expected " + std::to_string(*plan.deaths)};
+  if (!plan.hashAt.empty() && !plan.goalBy)
+    return {true, std::to_string(plan.hashAt.size()) + " hashes matched" +
+                      (s.won ? ", goal at frame " + std::to_string(s.wonFrame) : "")};
+  return {true, s.won ? "goal at frame " + std::to_string(s.wonFrame) : "ok"};
+}
+
+// Plays the plan's frames on `run`, each frame's checks after it: the first failure, "" when none.
+// `frames`: the frames played, kept up to date as they go (a run that throws says how far it got).
+std::string playPlanFrames(const Plan& plan, core::Run& run, core::Scene& scene, ScriptSystem* scripts,
+                           const core::ActionMap& actions, const RunOptions& options, const std::string& path,
+                           const std::string& filesNote, uint64_t& frames) {
+  std::string failure;
+  size_t nextLine = 0;
+  for (uint64_t f = 1; f <= plan.frames && failure.empty(); ++f) {
+    // The console's lines where the run typed them (their answers were the player's to read).
+    for (; nextLine < plan.console.size() && plan.console[nextLine].frame == f; ++nextLine)
+      (void)run.console(plan.console[nextLine].code);
+    run.step(actions(plan.held[f]));
+    frames = f;
+    failure = checkFrame(plan, f, scene, scripts, options.traceEvery, path, filesNote);
+    // With the goal reached there is nothing left to see, unless a check waits for a later frame.
+    if (failure.empty() && plan.goalBy && f >= plan.lastCheck() && scripts && scripts->status().won) break;
+  }
+  return failure;
+}
+
 // Runs a plan: the scene, its input, every check on every frame.
 ScenarioResult runPlan(const std::string& path, const std::function<Plan()>& makePlan, const RunOptions& options) {
   const auto start = std::chrono::steady_clock::now();
@@ -691,30 +765,15 @@ ScenarioResult runPlan(const std::string& path, const std::function<Plan()>& mak
     }
     checkFaces(plan, *scene);
     const uint64_t filesHash = core::sceneFilesHash(core::sceneSourceFiles(*scene));
-    const std::string filesNote = plan.sceneFilesHash && *plan.sceneFilesHash != filesHash
-                                      ? "the scene's files changed since the recording (files " + hex(filesHash) +
-                                            ", recorded with " + hex(*plan.sceneFilesHash) + "): "
-                                      : "";
-    ScriptSystem* scripts = nullptr;
-    for (size_t i = 0; i < scene->systemCount(); ++i)
-      if (auto* s = dynamic_cast<ScriptSystem*>(&scene->system(i))) scripts = s;
+    const std::string filesNote = filesChangedNote(plan, filesHash);
+    ScriptSystem* const scripts = scriptSystemOf(*scene);
     if ((plan.goalBy || plan.deaths || !plan.faceAt.empty() || !plan.inside.empty()) && !scripts)
       return finish(false, "the scene has no scripts, so no player to check");
     const core::ActionMap actions(plan.actions, scene->actions());  // a name the scene lacks: at its place
     run.emplace(*scene);
     if (options.record) run->record({plan.scene, options.hashEvery, filesHash, plan.start, 100});
-    std::string failure;
-    size_t nextLine = 0;
-    for (uint64_t f = 1; f <= plan.frames && failure.empty(); ++f) {
-      // The console's lines where the run typed them (their answers were the player's to read).
-      for (; nextLine < plan.console.size() && plan.console[nextLine].frame == f; ++nextLine)
-        (void)run->console(plan.console[nextLine].code);
-      run->step(actions(plan.held[f]));
-      result.frames = f;
-      failure = checkFrame(plan, f, *scene, scripts, options.traceEvery, path, filesNote);
-      // With the goal reached there is nothing left to see, unless a check waits for a later frame.
-      if (failure.empty() && plan.goalBy && f >= plan.lastCheck() && scripts && scripts->status().won) break;
-    }
+    const std::string failure =
+        playPlanFrames(plan, *run, *scene, scripts, actions, options, path, filesNote, result.frames);
     // The last frame played is traced too (the goal's, a failure's), whatever the period.
     if (options.traceEvery > 0 && scripts && result.frames % options.traceEvery != 0)
       std::fprintf(stderr, "%s: frame %llu: %s\n", path.c_str(), static_cast<unsigned long long>(result.frames),
@@ -726,20 +785,8 @@ ScenarioResult runPlan(const std::string& path, const std::function<Plan()>& mak
     // An error the last frame's checks met (status() keeps its errors for the next frame).
     if (scripts)
       if (std::optional<std::string> error = scripts->takeError()) return finish(false, *error);
-    if (scripts) {
-      const GameStatus& s = *result.status;
-      if (plan.goalBy && (!s.won || s.wonFrame > *plan.goalBy))
-        return finish(false, "goal not reached by frame " + std::to_string(*plan.goalBy) + " (player on face " +
-                                 std::to_string(s.face) + " at " + std::to_string(s.x) + ", " + std::to_string(s.y) +
-                                 ")");
-      if (plan.deaths && s.deaths != *plan.deaths)
-        return finish(false, std::to_string(s.deaths) + " deaths, expected " + std::to_string(*plan.deaths));
-      if (!plan.hashAt.empty() && !plan.goalBy)
-        return finish(true, std::to_string(plan.hashAt.size()) + " hashes matched" +
-                                (s.won ? ", goal at frame " + std::to_string(s.wonFrame) : ""));
-      return finish(true, s.won ? "goal at frame " + std::to_string(s.wonFrame) : "ok");
-    }
-    return finish(true, plan.hashAt.empty() ? "ok" : std::to_string(plan.hashAt.size()) + " hashes matched");
+    PlanVerdict verdict = planVerdict(plan, scripts ? &*result.status : nullptr);
+    return finish(verdict.passed, std::move(verdict.message));
   } catch (const ScriptError& e) {
     keepRecording();
     return finish(false, e.report());

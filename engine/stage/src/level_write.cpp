@@ -129,6 +129,45 @@ LineRoles rolesOf(const Level& before, const std::vector<TextLine>& lines) {
   return r;
 }
 
+// Where the level's segments go in the rewritten text: `kept[i]`, the segment written over line
+// i + 1 (null: none); `added[f]`, face f's segments written as new lines.
+struct SegmentPlaces {
+  std::vector<const LevelLine*> kept;
+  std::vector<std::vector<const LevelLine*>> added;
+};
+
+// Each edited segment that still stands on its original line, and the rest, new, by face. The
+// text must read back in the level's order: a segment keeps its line only while the face's
+// segments so far did too, in the file's order; from the first that cannot, all are written new.
+SegmentPlaces segmentPlaces(const Level& level, const std::vector<TextLine>& lines, const LineRoles& roles) {
+  SegmentPlaces places{std::vector<const LevelLine*>(lines.size(), nullptr),
+                       std::vector<std::vector<const LevelLine*>>(level.faces.size())};
+  for (size_t f = 0; f < level.faces.size(); ++f) {
+    int last = 0;
+    for (const LevelLine& l : level.faces[f].lines) {
+      const int at = l.sourceLine - 1;
+      const bool own = places.added[f].empty() && l.sourceLine > last && at < static_cast<int>(lines.size()) &&
+                       roles.role[at] == Role::Segment && roles.face[at] == static_cast<int>(f);
+      if (own)
+        places.kept[at] = &l, last = l.sourceLine;
+      else
+        places.added[f].push_back(&l);
+    }
+  }
+  return places;
+}
+
+// The line each face's new segments follow: its last segment line in the original (or its '%'
+// line). `faces`: the level's face count (the original's, checked by the caller).
+std::vector<int> segmentInsertLines(const Level& before, size_t faces) {
+  std::vector<int> insertAfter(faces);
+  for (size_t f = 0; f < before.faces.size(); ++f) {
+    insertAfter[f] = before.faces[f].sourceLine;
+    for (const LevelLine& l : before.faces[f].lines) insertAfter[f] = std::max(insertAfter[f], l.sourceLine);
+  }
+  return insertAfter;
+}
+
 }  // namespace
 
 std::string writeLevel(const Level& level, std::string_view original) {
@@ -144,29 +183,10 @@ std::string writeLevel(const Level& level, std::string_view original) {
   const LineRoles roles = rolesOf(before, lines);
   const std::string newLine = original.find("\r\n") != std::string_view::npos ? "\r\n" : "\n";
 
-  // Each edited segment that still stands on its original line, and the rest, new, by face. The
-  // text must read back in the level's order: a segment keeps its line only while the face's
-  // segments so far did too, in the file's order; from the first that cannot, all are written new.
-  std::vector<const LevelLine*> kept(lines.size(), nullptr);
-  std::vector<std::vector<const LevelLine*>> added(level.faces.size());
-  for (size_t f = 0; f < level.faces.size(); ++f) {
-    int last = 0;
-    for (const LevelLine& l : level.faces[f].lines) {
-      const int at = l.sourceLine - 1;
-      const bool own = added[f].empty() && l.sourceLine > last && at < static_cast<int>(lines.size()) &&
-                       roles.role[at] == Role::Segment && roles.face[at] == static_cast<int>(f);
-      if (own)
-        kept[at] = &l, last = l.sourceLine;
-      else
-        added[f].push_back(&l);
-    }
-  }
-  // New segments follow their face's last segment line (or its '%' line).
-  std::vector<int> insertAfter(level.faces.size());
-  for (size_t f = 0; f < before.faces.size(); ++f) {
-    insertAfter[f] = before.faces[f].sourceLine;
-    for (const LevelLine& l : before.faces[f].lines) insertAfter[f] = std::max(insertAfter[f], l.sourceLine);
-  }
+  const SegmentPlaces places = segmentPlaces(level, lines, roles);
+  const std::vector<const LevelLine*>& kept = places.kept;
+  const std::vector<std::vector<const LevelLine*>>& added = places.added;
+  const std::vector<int> insertAfter = segmentInsertLines(before, level.faces.size());
 
   std::string out;
   out.reserve(original.size() + 64);

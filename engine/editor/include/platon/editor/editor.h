@@ -140,6 +140,9 @@ class Editor {
   bool clickPalette(float x, float y);
   void drawSegment(core::DrawList& out, int face, physics::Vec2 a, physics::Vec2 b, float width,
                    core::Color color) const;
+  void drawMarkers(core::DrawList& out, float unit) const;
+  void drawDragPreview(core::DrawList& out, float unit) const;
+  void drawPalette(core::DrawList& out) const;
   std::vector<std::string> hud() const;
 
   LevelDocument document_;
