@@ -492,6 +492,7 @@ void Game::leaveSettings() {
 bool Game::bindKey(const core::WindowInput& input) {
   const bool pad = input.lastKey.empty() && !input.lastPadButton.empty();
   if (screen_ != Screen::Settings || binding_ < 0 || (input.lastKey.empty() && !pad)) return false;
+  if (session::Session::isToolKey(input.lastKey)) return false;  // it did its tool's work (F12: a screenshot)
   const std::vector<const core::Action*> rows = keyRows();
   if (input.lastKey != "Escape" && binding_ < static_cast<int>(rows.size())) {
     const core::Action& action = *rows[static_cast<size_t>(binding_)];

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "platon/files/read_file.h"
+#include "platon/session/session.h"
 #include "save_file.h"
 
 namespace platon::app {
@@ -142,7 +143,13 @@ Settings Settings::load(const std::string& path, std::vector<std::string>& probl
     const std::string at = path + ":" + std::to_string(number) + ": ";
     std::string why;
     if (std::vector<std::string>* binding = bindingOf(name, s, why)) {
-      const std::vector<std::string> bound = names(content.substr(content.find(name) + name.size()));
+      std::vector<std::string> bound = names(content.substr(content.find(name) + name.size()));
+      for (const std::string& key : bound)
+        if (name.rfind(kKeysPrefix, 0) == 0 && session::Session::isToolKey(key))
+          problems.push_back(at + name + ": " + key + " is a tool's key (F2, F3, F4, F5, F11, F12, `), no action's");
+      std::erase_if(bound, [&](const std::string& key) {
+        return name.rfind(kKeysPrefix, 0) == 0 && session::Session::isToolKey(key);
+      });
       if (bound.empty()) {
         problems.push_back(at + "'" + line + "': " + name +
                            (name.rfind(kPadPrefix, 0) == 0 ? " names one button or more (a, dpleft)"

@@ -62,12 +62,13 @@ TEST(Settings, ADamagedFileKeepsTheDefaultsOfWhatItCannotRead) {
                                         "keys_jump   # none\n"
                                         "keys_left J, K\n"
                                         "multisampling 3\n"
-                                        "keys_reload Q\n");
+                                        "keys_reload Q\n"
+                                        "keys_down F12, S\n");
   const Settings s = Settings::load(path, problems);
   EXPECT_EQ(s.musicVolume, Settings{}.musicVolume);
   EXPECT_EQ(s.effectsVolume, 40);  // the good line is kept
   EXPECT_EQ(s.screenShake, Settings{}.screenShake);
-  ASSERT_EQ(problems.size(), 10u);
+  ASSERT_EQ(problems.size(), 11u);
   EXPECT_EQ(problems[0].rfind(path + ":1: 'music_volume 150': music_volume is a whole number 0..100", 0), 0u)
       << problems[0];
   EXPECT_EQ(problems[1].rfind(path + ":3: 'screen_shake maybe': screen_shake is on or off", 0), 0u) << problems[1];
@@ -86,6 +87,8 @@ TEST(Settings, ADamagedFileKeepsTheDefaultsOfWhatItCannotRead) {
   EXPECT_EQ(s.keys.keys.count("jump"), 0u) << "jump keeps its default";
   EXPECT_EQ(s.keys.keys.at("left"), (std::vector<std::string>{"J", "K"}));
   EXPECT_EQ(s.keys.keys.count("reload"), 0u);
+  EXPECT_EQ(problems[10].rfind(path + ":13: keys_down: F12 is a tool's key", 0), 0u) << problems[10];
+  EXPECT_EQ(s.keys.keys.at("down"), std::vector<std::string>{"S"});
 
   problems.clear();
   const Settings folderInstead = Settings::load(folder.path(), problems);

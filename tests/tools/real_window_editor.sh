@@ -4,7 +4,8 @@
 # mouse; the draw is undone and redone; the start put into the floor is shown as an error and its
 # save refused; the level is saved (its comments kept), checked by `platon check`, played from the
 # cursor in the same window and finished by holding Right; K keeps the run as a test beside the
-# level, which `platon run` passes. Run by ctest as
+# level, which `platon run` passes, the lint passes, `pack` packs, `install` installs (its run
+# replays) and the game's title lists under "your levels". Run by ctest as
 #   with_xvfb.sh real_window_editor.sh PLATON SOLID [SCREENSHOT_FOLDER]
 # With a folder, F12's pictures of the drawn floor, the refused start and the finished play-test are
 # copied there (editor_draw.png, editor_error.png, editor_play.png: docs/editing.md's).
@@ -87,5 +88,23 @@ grep -q "^  start = { face = 0" "$level/test_1.lua" || fail "the kept test does 
   fail "the kept test fails the lint: $(cat "$data/lint")"
 "$platon" pack "$level" --replay "$level/test_1.lua" -o "$data/drawn.platon" > "$data/pack" 2>&1 ||
   fail "pack refused the kept test: $(cat "$data/pack")"
+# Installed into the player's levels (as someone who got the package would), its run replays, and
+# the game's title screen lists it under "your levels", after the campaign, in the same window system.
+XDG_DATA_HOME="$data/player" "$platon" install "$data/drawn.platon" > "$data/install" 2>&1 ||
+  fail "install refused the package: $(cat "$data/install")"
+"$platon" replay "$data/player/platon/levels/drawn/finish.replay" > "$data/replayed" 2>&1 ||
+  fail "the installed run does not replay: $(cat "$data/replayed")"
+log="$data/game_log"
+PLATON_PRINT_SCREEN=1 XDG_DATA_HOME="$data/player" XDG_CONFIG_HOME="$data/config" "$platon" game > "$log" 2>&1 &
+pid=$!
+await_title
+await "^screen> your levels:"
+campaign=$(sed 's/#.*//' "$source_root/levels/campaign.txt" | grep -c '[^[:space:]]')
+await "^screen>   $((campaign + 1))\. "
+xdotool key Escape  # quit? asks
+await "^quit asked"
+xdotool key Return
+await_exit "the game did not quit"
+wait "$pid" || fail "the game failed"
 cat "$log"
 rm -rf "$data"

@@ -446,6 +446,16 @@ Player.SQUASH_EASE = 0.7
 Player.WALK_SPEED = 9
 Player.WALL_COS = 0.9
 
+--- Optional: the new version's player given what save returned.
+---@param self platon.Player
+---@param state table
+function Player.onReload(self, state) end
+
+--- Optional: what a hot reload carries to the new version (default: its plain fields).
+---@param self platon.Player
+---@return table
+function Player.save(self) end
+
 ---@param self platon.Player
 ---@return boolean
 function Player.canJump(self) end

@@ -175,6 +175,26 @@ local PLAYER_FUNCTIONS = {
   move = { "self: platon.Player, input: platon.Input, along: number, fall: number", "number along, number fall" },
   draw = { "self: platon.Player, draw: platon.draw", "" },
 }
+-- Hooks the game's player has none of, which a level's own may define (scene.lua asks for them).
+local OPTIONAL = {
+  save = { "self: platon.Player", "table", "what a hot reload carries to the new version (default: its plain fields)" },
+  onReload = { "self: platon.Player, state: table", "", "the new version's player given what save returned" },
+}
+for _, name in ipairs(sortedKeys(OPTIONAL)) do
+  local f = OPTIONAL[name]
+  if data.player[name] == nil then
+    emit("")
+    emit("--- Optional: " .. f[3] .. ".")
+    local names = {}
+    for _, p in ipairs(split(f[1])) do
+      local n, t = p:match("^([%w_]+):%s*(.+)$")
+      emit("---@param " .. n .. " " .. t)
+      names[#names + 1] = n
+    end
+    if f[2] ~= "" then emit("---@return " .. f[2]) end
+    emit("function Player." .. name .. "(" .. table.concat(names, ", ") .. ") end")
+  end
+end
 for _, name in ipairs(sortedKeys(data.player)) do
   if type(data.player[name]) == "function" then
     local f = PLAYER_FUNCTIONS[name]

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <thread>
 
 #include "platon/core/visible_text.h"
@@ -42,6 +43,11 @@ std::vector<std::string> Session::bindKeys(const core::BindingChoices& choices) 
   if (!d) return {};
   boundActions_ = scene().actions();
   return d->setBindings(core::bindingsFor(boundActions_, choices_));
+}
+
+bool Session::isToolKey(const std::string& name) {
+  static const char* const kTools[] = {"F2", "F3", "F4", "F5", "F11", "F12", "`"};
+  return std::any_of(std::begin(kTools), std::end(kTools), [&](const char* k) { return name == k; });
 }
 
 // Binds the window for the scene's actions when it is not yet (the first poll, a scene with a
@@ -237,6 +243,17 @@ void Session::say(const std::string& text) {
   if (notices_.size() > 3) notices_.erase(notices_.begin());
 }
 
+// With PLATON_PRINT_SCREEN set, the screen's text (menus, questions, level lists) is printed as it
+// changes, "screen> " before each line: what a person reads there, for the journey tests.
+void Session::printScreen(const std::vector<std::string>& centre) {
+  static const bool wanted = std::getenv("PLATON_PRINT_SCREEN") != nullptr;
+  if (!wanted || centre == printedScreen_) return;
+  printedScreen_ = centre;
+  std::printf("screen>\n");
+  for (const std::string& line : centre) std::printf("screen> %s\n", core::visibleText(line, false).c_str());
+  std::fflush(stdout);
+}
+
 void Session::draw(const std::vector<std::string>& centre, const std::vector<std::string>& more, bool hud) {
   core::Display* d = display();
   if (!d) return;
@@ -259,6 +276,7 @@ void Session::draw(const std::vector<std::string>& centre, const std::vector<std
     view.hud.push_back("> " + core::visibleText(consoleLine_, false) + "_");
   }
   view.centreText = centre;
+  printScreen(centre);
   d->present(view, view_.drawing(alpha));
 }
 

@@ -2,6 +2,8 @@
 // the live binding tables: every binding has a definition and every definition a binding, in the
 // trusted set and the sandboxed one, and the shipped definitions are what the engine makes now.
 #include <fstream>
+#include <regex>
+#include <set>
 #include <sstream>
 
 #include <gtest/gtest.h>
@@ -65,6 +67,34 @@ TEST(Definitions, ABindingWithoutADefinitionAndADefinitionWithoutABindingAreName
   EXPECT_NE(problems.find("platon.world.position: a binding with no definition"), std::string::npos) << problems;
   EXPECT_NE(problems.find("platon.world.teleport: a definition with no binding"), std::string::npos) << problems;
   EXPECT_NE(problems.find("Player.fly: a player function with no definition"), std::string::npos) << problems;
+}
+
+// Every name docs/scripting.md uses of the API (platon.world.x, game.world.x, game.x(...),
+// Player.x, platon.x) is in the sandbox's definitions: a documented name `platon defs` lacks fails.
+TEST(Definitions, EveryNameTheDocsUseIsDefined) {
+  Game game;
+  std::vector<std::string> problems;
+  const std::string defs = game.scripts().definitions(true, problems);
+  const std::string docs = fileText(std::string(PLATON_SOURCE_ROOT) + "/docs/scripting.md");
+  // Names the docs' own examples make (a constant of the dash's), not the API's.
+  const std::set<std::string> examples = {"Player.DASH_SPEED"};
+  const std::pair<std::regex, std::string> uses[] = {
+      {std::regex(R"(\b(?:platon|game)\.(world|draw|sound)\.([A-Za-z_]+))"), "platon.$1.$2("},
+      {std::regex(R"(\bgame\.([a-z][A-Za-z_]*)\()"), "Game.$1("},
+      {std::regex(R"(\bPlayer\.([A-Za-z_]+))"), "Player.$1"},
+      {std::regex(R"(\bplaton\.(tags|tagKinds|Input|Player|Game|Module|TagDeclaration|ActionDeclaration)\b)"),
+       "platon.$1"},
+  };
+  size_t checked = 0;
+  for (const auto& [use, defined] : uses) {
+    for (auto it = std::sregex_iterator(docs.begin(), docs.end(), use); it != std::sregex_iterator(); ++it) {
+      if (examples.count(it->str())) continue;
+      ++checked;
+      EXPECT_NE(defs.find(it->format(defined)), std::string::npos)
+          << it->str() << " is in docs/scripting.md, " << it->format(defined) << " not in platon defs";
+    }
+  }
+  EXPECT_GT(checked, 40u) << "the docs' names were not found";
 }
 
 // docs/lua-definitions/ is what `platon defs` writes now (PLATON_UPDATE_DEFINITIONS=1 writes it).

@@ -64,6 +64,9 @@ class Session {
   // pad buttons the player chose for it, else its own; kept for the scenes that follow (a mod's
   // action is bound when a scene has it). Returns the names the window does not know.
   std::vector<std::string> bindKeys(const core::BindingChoices& choices);
+  // Whether a key (SDL's name) is a tool's (F2, F3, F4, F5, F11, F12, `): the tools take it in
+  // every mode, so no action may be bound to it.
+  static bool isToolKey(const std::string& name);
 
   // The frames the clock says are due since the last call, at `speedPercent` of real time (`fast`:
   // one, whatever the clock). None while the console is open or a hard event holds the picture.
@@ -101,6 +104,7 @@ class Session {
   void afterReload(const core::ReloadReport& report);
 
   void applyBindings();
+  void printScreen(const std::vector<std::string>& centre);
 
   std::unique_ptr<core::LiveScene> live_;
   std::optional<core::Run> run_;
@@ -121,7 +125,8 @@ class Session {
     std::chrono::steady_clock::time_point shown;
   };
   std::vector<Notice> notices_;
-  std::string lastError_;  // a frame's error, printed once however many frames repeat it
+  std::vector<std::string> printedScreen_;  // PLATON_PRINT_SCREEN: the text printed last
+  std::string lastError_;                   // a frame's error, printed once however many frames repeat it
 };
 
 }  // namespace platon::session
