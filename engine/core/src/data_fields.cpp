@@ -48,12 +48,16 @@ double wholeField(const std::string& file, const DataValue& table, const char* k
 }
 
 void checkKeys(const std::string& file, const DataValue& table, std::initializer_list<const char*> known) {
+  checkKeys(file, table, std::vector<std::string>(known.begin(), known.end()));
+}
+
+void checkKeys(const std::string& file, const DataValue& table, const std::vector<std::string>& known) {
   for (const DataEntry& e : table.entries) {
     bool ok = false;
-    for (const char* k : known) ok = ok || (e.key.isString() && e.key.text == k);
+    for (const std::string& k : known) ok = ok || (e.key.isString() && e.key.text == k);
     if (!ok) {
       std::string list;
-      for (const char* k : known) list += std::string(list.empty() ? "" : ", ") + k;
+      for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
       const std::string name = e.key.isString() ? dataKeyText(e.key) : "[" + dataKeyText(e.key) + "]";
       fieldError(file, e.key.line ? e.key : e.value, "unknown field " + name + " (known: " + list + ")");
     }

@@ -3,6 +3,7 @@
 #pragma once
 #include <initializer_list>
 #include <string>
+#include <vector>
 
 #include "platon/core/lua_data.h"
 
@@ -22,5 +23,6 @@ double wholeField(const std::string& file, const DataValue& table, const char* k
                   double high);
 // Every key of `table` is one of `known`, or an error at the first that is not, listing them.
 void checkKeys(const std::string& file, const DataValue& table, std::initializer_list<const char*> known);
+void checkKeys(const std::string& file, const DataValue& table, const std::vector<std::string>& known);
 
 }  // namespace platon::core

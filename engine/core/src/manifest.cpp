@@ -1,6 +1,7 @@
 #include "platon/core/manifest.h"
 
 #include <cmath>
+#include <cstring>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -35,6 +36,83 @@ std::string insideFolder(const std::string& manifest, const std::string& folder,
   return file;
 }
 
+// The manifest's keys, in the docs' order. Ranges and defaults are the reader's: nothing else
+// says them.
+const std::vector<ManifestKey> kManifestKeys{
+    {"name", "string", 0, 0, 0, "the manifest's path", "the scene's name: titles, the HUD, messages"},
+    {"systems", "systems", 0, 0, 0, "-", "what the scene needs: scripting, rendering, meshes, audio"},
+    {"stage", "table", 0, 0, 0, "-", "the solid: { level = } or { solid =, edge = }"},
+    {"stage.level", "file", 0, 0, 0, "-", "a level file (docs/level-format.md): the solid, lines, start and goal"},
+    {"stage.solid", "string", 0, 0, 0, "cube", "tetrahedron, cube, octahedron, dodecahedron or icosahedron"},
+    {"stage.edge", "whole number", 64, 1 << 24, 4096, "4096", "a face's edge, in units"},
+    {"gravity", "number", 0, 1000, 0.35, "0.35", "units per frame per frame, along each face's -y"},
+    {"seed", "whole number", 0, 4294967295.0, 1, "1", "the scene's random seed"},
+    {"music", "string", 0, 0, 0, "-", "the tune of the sound bank played from the start (docs/sound.md)"},
+    {"sounds", "file", 0, 0, 0, "-", "the level's own sound bank"},
+    {"scripts", "table", 0, 0, 0, "-", "the scene's scripts (the systems must list scripting)"},
+    {"scripts.preset", "string", 0, 0, 0, "-", "\"game\": the game's rules, player and progression for any not named"},
+    {"scripts.rules", "script", 0, 0, 0, "-", "the contact rules"},
+    {"scripts.player", "script", 0, 0, 0, "-", "the player"},
+    {"scripts.progression", "script", 0, 0, 0, "-", "spawning, the goal, deaths, checkpoints"},
+    {"scripts.level", "script", 0, 0, 0, "-", "the level script"},
+    {"scripts.mods", "mods", 0, 0, 0, "-", "the level's mods, in order (always sandboxed)"},
+    {"limits", "table", 0, 0, 0, "-", "lowers the scripts' ceilings"},
+    {"limits.memory_mb", "whole number", 4, 4096, 128, "128", "MB of Lua memory"},
+    {"limits.steps", "whole number", 1000, 1'000'000'000, 10'000'000, "10000000", "steps of sandboxed work a frame"},
+    {"limits.deadline_ms", "number", 1, 60000, 2000, "2000", "ms of sandboxed script time a frame (the backstop)"},
+};
+
+const ManifestKey& manifestKey(std::string_view key) {
+  for (const ManifestKey& k : kManifestKeys)
+    if (key == k.key) return k;
+  throw std::logic_error("no manifest key " + std::string(key));
+}
+
+// The keys of the table `section` ("" the manifest's own, "limits"), for checkKeys.
+std::vector<std::string> manifestKeysUnder(std::string_view section) {
+  std::vector<std::string> out;
+  for (const ManifestKey& k : kManifestKeys) {
+    const std::string_view key = k.key;
+    const size_t dot = key.find('.');
+    if (section.empty() ? dot == std::string_view::npos
+                        : dot == section.size() && key.substr(0, dot) == section)
+      out.emplace_back(section.empty() ? key : key.substr(dot + 1));
+  }
+  return out;
+}
+
+// The number at `key` of `table` (its table's own name dropped), within the key's range.
+double manifestNumber(const std::string& path, const DataValue& table, const char* key) {
+  const ManifestKey& k = manifestKey(key);
+  const char* name = std::strrchr(key, '.') ? std::strrchr(key, '.') + 1 : key;
+  return std::string_view(k.holds) == "whole number" ? wholeField(path, table, name, k.fallback, k.low, k.high)
+                                                     : numberField(path, table, name, k.fallback, k.low, k.high);
+}
+
+// The one path rule of a manifest: every file it names is a relative path inside the scene's
+// folder once every link is resolved (no "..", not absolute, no link out); a script or a mod ends
+// in .lua; "scripts/..." names an engine script only where a script goes (kept as written, found
+// under the engine's root, trusted) and never a mod. Returns the path kept, and says in `engine`
+// whether it is the engine's.
+std::string manifestFilePath(const std::string& path, const DataValue& v, const char* key, SceneManifest& m,
+                         bool& engine) {
+  const std::string_view holds = manifestKey(key).holds;
+  const bool script = holds == "script", mod = holds == "mods";
+  const char* what = mod ? "a mod" : script ? "a script" : holds == "file" && std::strstr(key, "sounds") ? "a sound bank" : "a level file";
+  const std::string p = v.isString() ? v.text : "";
+  engine = script && p.rfind("scripts/", 0) == 0;
+  const bool lua = script || mod;
+  if (p.empty() || p.find("..") != std::string::npos || p[0] == '/' ||
+      (lua && (p.size() < 5 || p.substr(p.size() - 4) != ".lua")) || (mod && p.rfind("scripts/", 0) == 0))
+    fieldError(path, v,
+               (v.isString() ? "'" + p + "': " : std::string()) + what + " is a " + (lua ? ".lua " : "") +
+                   "path inside the scene's folder" + (script ? " or under scripts/" : "") + " (no '..', not absolute" +
+                   (mod ? ", not under scripts/" : "") + ")");
+  std::string kept = engine ? p : insideFolder(path, m.directory, v, p);
+  m.placeOf[kept] = placeText(path, v);
+  return kept;
+}
+
 // systems = { "scripting", ... }: each one a system the engine knows.
 void readManifestSystems(const std::string& path, const DataValue& systems, SceneManifest& m) {
   if (!systems.isTable()) fieldError(path, systems, "'systems' must be a list of names");
@@ -51,41 +129,30 @@ void readManifestSystems(const std::string& path, const DataValue& systems, Scen
 // stage = { solid =, edge = } or { level = }: a level file names its solid and size itself.
 void readManifestStage(const std::string& path, const DataValue& stage, SceneManifest& m) {
   if (!stage.isTable()) fieldError(path, stage, "'stage' must be a table {solid =, edge =} or {level =}");
-  checkKeys(path, stage, {"solid", "edge", "level"});
+  checkKeys(path, stage, manifestKeysUnder("stage"));
   if (const DataValue* level = stage.field("level")) {
     if (stage.field("solid") || stage.field("edge"))
       fieldError(path, *level, "a level file gives the solid and its size: no 'solid' or 'edge' beside 'level'");
-    const std::string p = stringField(path, stage, "level", "");
-    if (p.empty() || p.find("..") != std::string::npos || p[0] == '/')
-      fieldError(path, *level, "'" + p + "': a level file is a path inside the scene's folder (no '..', not absolute)");
-    m.levelFile = insideFolder(path, m.directory, *level, p);
-    m.placeOf[m.levelFile] = placeText(path, *level);
+    bool engine = false;
+    m.levelFile = manifestFilePath(path, *level, "stage.level", m, engine);
   }
-  m.solid = stringField(path, stage, "solid", m.solid);
+  m.solid = stringField(path, stage, "solid", manifestKey("stage.solid").shown);
   if (!solidOfManifest(m.solid))
     fieldError(path, *stage.field("solid"),
                "unknown solid '" + m.solid + "' (known: tetrahedron, cube, octahedron, dodecahedron, icosahedron)");
-  m.edge = static_cast<int32_t>(wholeField(path, stage, "edge", m.edge, 64, 1 << 24));
+  m.edge = static_cast<int32_t>(manifestNumber(path, stage, "stage.edge"));
 }
 
 // One of scripts' rules, player, progression or level: "" when not given. Trust is decided here,
-// once, from what the manifest wrote: "scripts/..." names an engine script (trusted; the script
-// system finds it under the engine's root), anything else is the level's own (sandboxed),
-// resolved inside the manifest's folder.
+// once, from what the manifest wrote (manifestFilePath).
 std::string manifestScript(const std::string& path, const DataValue& scripts, const char* key, bool& trusted,
                            SceneManifest& m) {
-  std::string p = stringField(path, scripts, key, "");
   trusted = false;
-  if (p.empty()) return p;
-  const bool engine = p.rfind("scripts/", 0) == 0;
-  if (p.find("..") != std::string::npos || p[0] == '/' || p.size() < 5 || p.substr(p.size() - 4) != ".lua")
-    fieldError(
-        path, *scripts.field(key),
-        "'" + p + "': a script is a .lua path inside the level's folder or under scripts/ (no '..', not absolute)");
-  trusted = engine;
-  std::string kept = engine ? p : insideFolder(path, m.directory, *scripts.field(key), p);
-  m.placeOf[kept] = placeText(path, *scripts.field(key));
-  return kept;
+  const DataValue* v = scripts.field(std::strchr(key, '.') + 1);
+  if (!v) return "";
+  if (!v->isString()) (void)stringField(path, scripts, std::strchr(key, '.') + 1, "");  // its type's error
+  if (v->text.empty()) return "";
+  return manifestFilePath(path, *v, key, m, trusted);
 }
 
 // preset = "game": the game's own rules, player and progression, for any of the three the
@@ -102,15 +169,10 @@ void readManifestMods(const std::string& path, const DataValue& mods, SceneManif
   if (!mods.isTable()) fieldError(path, mods, "'mods' must be a list of paths");
   double index = 0;
   for (const DataEntry& e : mods.entries) {
-    const DataValue& v = e.value;
     if (!e.key.isNumber() || e.key.number != ++index)
-      fieldError(path, v, "'mods' must be a list of paths ({ \"a.lua\", \"b.lua\" }), not keyed");
-    const std::string* p = v.isString() ? &v.text : nullptr;
-    if (!p || p->size() < 5 || p->substr(p->size() - 4) != ".lua" || p->find("..") != std::string::npos ||
-        p->rfind("scripts/", 0) == 0 || (*p)[0] == '/')
-      fieldError(path, v, "a mod is a .lua path inside the level's folder (no '..', not absolute, not under scripts/)");
-    m.mods.push_back(insideFolder(path, m.directory, v, *p));
-    m.placeOf[m.mods.back()] = placeText(path, v);
+      fieldError(path, e.value, "'mods' must be a list of paths ({ \"a.lua\", \"b.lua\" }), not keyed");
+    bool engine = false;
+    m.mods.push_back(manifestFilePath(path, e.value, "scripts.mods", m, engine));
   }
 }
 
@@ -118,12 +180,12 @@ void readManifestMods(const std::string& path, const DataValue& mods, SceneManif
 // systems, which must then list "scripting".
 void readManifestScripts(const std::string& path, const DataValue& scripts, SceneManifest& m) {
   if (!scripts.isTable()) fieldError(path, scripts, "'scripts' must be a table");
-  checkKeys(path, scripts, {"preset", "rules", "player", "progression", "level", "mods"});
-  m.rules = manifestScript(path, scripts, "rules", m.rulesTrusted, m);
-  m.player = manifestScript(path, scripts, "player", m.playerTrusted, m);
-  m.progression = manifestScript(path, scripts, "progression", m.progressionTrusted, m);
+  checkKeys(path, scripts, manifestKeysUnder("scripts"));
+  m.rules = manifestScript(path, scripts, "scripts.rules", m.rulesTrusted, m);
+  m.player = manifestScript(path, scripts, "scripts.player", m.playerTrusted, m);
+  m.progression = manifestScript(path, scripts, "scripts.progression", m.progressionTrusted, m);
   if (const DataValue* preset = scripts.field("preset")) applyManifestPreset(path, *preset, m);
-  m.level = manifestScript(path, scripts, "level", m.levelTrusted, m);
+  m.level = manifestScript(path, scripts, "scripts.level", m.levelTrusted, m);
   if (const DataValue* mods = scripts.field("mods")) readManifestMods(path, *mods, m);
   if (!m.rules.empty() || !m.player.empty() || !m.progression.empty() || !m.level.empty() || !m.mods.empty())
     if (!m.needs("scripting"))
@@ -133,13 +195,15 @@ void readManifestScripts(const std::string& path, const DataValue& scripts, Scen
 // limits = { memory_mb =, steps =, deadline_ms = }: the scripts' budgets, each within its range.
 void readManifestLimits(const std::string& path, const DataValue& limits, SceneManifest& m) {
   if (!limits.isTable()) fieldError(path, limits, "'limits' must be a table {memory_mb =, steps =, deadline_ms =}");
-  checkKeys(path, limits, {"memory_mb", "steps", "deadline_ms"});
-  m.memoryMegabytes = static_cast<size_t>(wholeField(path, limits, "memory_mb", 128, 4, 4096));
-  m.frameSteps = static_cast<int64_t>(wholeField(path, limits, "steps", 10'000'000, 1000, 1'000'000'000));
-  m.deadlineMilliseconds = numberField(path, limits, "deadline_ms", 2000, 1, 60000);
+  checkKeys(path, limits, manifestKeysUnder("limits"));
+  m.memoryMegabytes = static_cast<size_t>(manifestNumber(path, limits, "limits.memory_mb"));
+  m.frameSteps = static_cast<int64_t>(manifestNumber(path, limits, "limits.steps"));
+  m.deadlineMilliseconds = manifestNumber(path, limits, "limits.deadline_ms");
 }
 
 }  // namespace
+
+const std::vector<ManifestKey>& manifestKeys() { return kManifestKeys; }
 
 bool SceneManifest::needs(std::string_view system) const {
   for (const auto& s : systems)
@@ -156,7 +220,7 @@ SceneManifest loadManifest(const std::string& path) {
   }
   const DataValue root = readLuaData(text, path);
   if (!root.isTable()) fieldError(path, root, "a manifest is a table: return { ... }");
-  checkKeys(path, root, {"name", "systems", "stage", "gravity", "scripts", "limits", "seed", "music", "sounds"});
+  checkKeys(path, root, manifestKeysUnder(""));
 
   SceneManifest m;
   m.path = path;
@@ -165,19 +229,15 @@ SceneManifest loadManifest(const std::string& path) {
   m.name = stringField(path, root, "name", path);
   if (const DataValue* systems = root.field("systems")) readManifestSystems(path, *systems, m);
   if (const DataValue* stage = root.field("stage")) readManifestStage(path, *stage, m);
-  m.gravity = numberField(path, root, "gravity", m.gravity, 0, 1000);
-  m.seed = static_cast<uint32_t>(wholeField(path, root, "seed", m.seed, 0, 4294967295.0));
+  m.gravity = manifestNumber(path, root, "gravity");
+  m.seed = static_cast<uint32_t>(manifestNumber(path, root, "seed"));
   if (const DataValue* music = root.field("music")) {
     m.music = stringField(path, root, "music", "");
     m.musicPlace = placeText(path, *music);
   }
   if (const DataValue* sounds = root.field("sounds")) {
-    const std::string p = stringField(path, root, "sounds", "");
-    if (p.empty() || p.find("..") != std::string::npos || p[0] == '/')
-      fieldError(path, *sounds,
-                 "'" + p + "': a sound bank is a path inside the scene's folder (no '..', not absolute)");
-    m.soundBank = insideFolder(path, m.directory, *sounds, p);
-    m.placeOf[m.soundBank] = placeText(path, *sounds);
+    bool engine = false;
+    m.soundBank = manifestFilePath(path, *sounds, "sounds", m, engine);
   }
   if (const DataValue* scripts = root.field("scripts")) readManifestScripts(path, *scripts, m);
   if (const DataValue* limits = root.field("limits")) readManifestLimits(path, *limits, m);

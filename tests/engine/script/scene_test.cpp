@@ -5,6 +5,7 @@
 #include <dlfcn.h>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <sstream>
 
 #include <gtest/gtest.h>
@@ -33,6 +34,56 @@ std::string manifestError(const std::string& text) {
   return "";
 }
 
+// One table of the manifest's keys: the reader's known keys, ranges and defaults, the struct's
+// defaults and docs/scripting.md's table are all it.
+TEST(Manifest, TheKeysAreOneTableTheReaderTheStructAndTheDocsShare) {
+  const core::SceneManifest defaults;
+  for (const core::ManifestKey& k : core::manifestKeys()) {
+    const std::string key = k.key;
+    if (key == "stage.edge") EXPECT_EQ(defaults.edge, k.fallback);
+    if (key == "gravity") EXPECT_EQ(defaults.gravity, k.fallback);
+    if (key == "seed") EXPECT_EQ(defaults.seed, k.fallback);
+    if (key == "stage.solid") EXPECT_EQ(defaults.solid, k.shown);
+    if (key == "limits.memory_mb") EXPECT_EQ(defaults.memoryMegabytes, k.fallback);
+    if (key == "limits.steps") EXPECT_EQ(defaults.frameSteps, k.fallback);
+    if (key == "limits.deadline_ms") EXPECT_EQ(defaults.deadlineMilliseconds, k.fallback);
+    // Each number's range is the reader's: one past either end is refused, naming the key.
+    const std::string holds = k.holds;
+    if (holds != "number" && holds != "whole number") continue;
+    const size_t dot = key.find('.');
+    const std::string name = dot == std::string::npos ? key : key.substr(dot + 1);
+    auto at = [&](double v) {
+      std::ostringstream value;
+      value.precision(17);
+      value << v;
+      return dot == std::string::npos ? "return { " + name + " = " + value.str() + " }"
+                                      : "return { " + key.substr(0, dot) + " = { " + name + " = " + value.str() + " } }";
+    };
+    for (const double outside : {k.low - 1, k.high + 1})
+      EXPECT_NE(manifestError(at(outside)).find("'" + name + "' must be within"), std::string::npos)
+          << key << " = " << outside << ": " << manifestError(at(outside));
+    EXPECT_EQ(manifestError(at(k.high)), "") << key;
+  }
+  // The docs' table, row by row.
+  std::ifstream in(std::string(PLATON_SOURCE_ROOT) + "/docs/scripting.md");
+  std::vector<std::string> rows;
+  bool inScene = false;
+  for (std::string line; std::getline(in, line);) {
+    if (line == "## A scene") inScene = true;
+    else if (inScene && line.rfind("## ", 0) == 0) break;
+    if (inScene && line.rfind("| `", 0) == 0) rows.push_back(line);
+  }
+  ASSERT_EQ(rows.size(), core::manifestKeys().size());
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const core::ManifestKey& k = core::manifestKeys()[i];
+    const std::string holds = k.holds;
+    std::ostringstream range;
+    if (holds == "number" || holds == "whole number") range << k.low << ".." << std::fixed << std::setprecision(0) << k.high;
+    EXPECT_EQ(rows[i], "| `" + std::string(k.key) + "` | " + holds + " | " + (range.str().empty() ? "-" : range.str()) +
+                           " | " + k.shown + " | " + k.does + " |");
+  }
+}
+
 TEST(Manifest, ErrorsNameFileLineColumn) {
   EXPECT_EQ(manifestError("return {\n  name = 'x',\n  gravity = os.time(),\n}"),
             "scene.lua:3:13: 'os': a data file holds only strings, numbers, booleans, nil and tables (no names, "
@@ -40,7 +91,7 @@ TEST(Manifest, ErrorsNameFileLineColumn) {
   EXPECT_EQ(manifestError("return { stage = { solid = 'torus' } }"),
             "scene.lua:1:28: unknown solid 'torus' (known: tetrahedron, cube, octahedron, dodecahedron, icosahedron)");
   EXPECT_EQ(manifestError("return { systems = { 'scripting' }, scripts = { level = '../../etc/passwd.lua' } }"),
-            "scene.lua:1:57: '../../etc/passwd.lua': a script is a .lua path inside the level's folder or under "
+            "scene.lua:1:57: '../../etc/passwd.lua': a script is a .lua path inside the scene's folder or under "
             "scripts/ (no '..', not absolute)");
   EXPECT_EQ(manifestError("return { scripts = { level = 'level.lua' } }"),
             "scene.lua:1:20: the scene has scripts but does not list \"scripting\" in its systems");
@@ -62,11 +113,14 @@ TEST(Manifest, WholeNumbersModsAndLongBrackets) {
   const std::string mod = "return { systems = { 'scripting' }, scripts = { mods = { ";
   EXPECT_EQ(
       manifestError(mod + "'/etc/passwd' } } }"),
-      "scene.lua:1:58: a mod is a .lua path inside the level's folder (no '..', not absolute, not under scripts/)");
-  EXPECT_EQ(manifestError(mod + "'cube_intro.level' } } }").substr(0, 60),
-            "scene.lua:1:58: a mod is a .lua path inside the level's fold");
-  EXPECT_EQ(manifestError(mod + "'' } } }").substr(0, 60),
-            "scene.lua:1:58: a mod is a .lua path inside the level's fold");
+      "scene.lua:1:58: '/etc/passwd': a mod is a .lua path inside the scene's folder (no '..', not absolute, not "
+      "under scripts/)");
+  EXPECT_EQ(manifestError(mod + "'cube_intro.level' } } }").substr(0, 55),
+            "scene.lua:1:58: 'cube_intro.level': a mod is a .lua pat");
+  EXPECT_EQ(manifestError(mod + "'scripts/player.lua' } } }").substr(0, 56),
+            "scene.lua:1:58: 'scripts/player.lua': a mod is a .lua p");
+  EXPECT_EQ(manifestError(mod + "'' } } }").substr(0, 50), "scene.lua:1:58: '': a mod is a .lua path inside th");
+  EXPECT_EQ(manifestError(mod + "5 } } }").substr(0, 46), "scene.lua:1:58: a mod is a .lua path inside th");
   EXPECT_EQ(manifestError(mod + "a = 'level.lua' } } }"),
             "scene.lua:1:62: 'mods' must be a list of paths ({ \"a.lua\", \"b.lua\" }), not keyed");
   Folder folder("manifest_long");

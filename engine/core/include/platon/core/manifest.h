@@ -51,6 +51,18 @@ struct SceneManifest {
   bool needs(std::string_view system) const;
 };
 
+// One key a manifest may have: one table (engine/core/src/manifest.cpp) for the reader, its lists
+// of known keys, its ranges and defaults, and docs/scripting.md's table of them (a test compares).
+struct ManifestKey {
+  const char* key;       // "gravity", "limits.steps": a table's keys after its own name and a dot
+  const char* holds;     // "number", "whole number", "string", "file", "script", "mods", "systems", "table"
+  double low, high;      // a number's range
+  double fallback;       // a number's default
+  const char* shown;     // the default as the docs show it ("-": none)
+  const char* does;
+};
+const std::vector<ManifestKey>& manifestKeys();
+
 // Reads and checks a manifest file; throws std::runtime_error "file:line:column: reason".
 // A manifest is a regular file of at most this.
 inline constexpr size_t kMaxManifestBytes = size_t{1} << 20;
