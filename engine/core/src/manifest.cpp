@@ -1,9 +1,9 @@
 #include "platon/core/manifest.h"
 
 #include <cmath>
-#include <cstring>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <limits.h>
 #include <sstream>
@@ -74,8 +74,7 @@ std::vector<std::string> manifestKeysUnder(std::string_view section) {
   for (const ManifestKey& k : kManifestKeys) {
     const std::string_view key = k.key;
     const size_t dot = key.find('.');
-    if (section.empty() ? dot == std::string_view::npos
-                        : dot == section.size() && key.substr(0, dot) == section)
+    if (section.empty() ? dot == std::string_view::npos : dot == section.size() && key.substr(0, dot) == section)
       out.emplace_back(section.empty() ? key : key.substr(dot + 1));
   }
   return out;
@@ -95,10 +94,13 @@ double manifestNumber(const std::string& path, const DataValue& table, const cha
 // under the engine's root, trusted) and never a mod. Returns the path kept, and says in `engine`
 // whether it is the engine's.
 std::string manifestFilePath(const std::string& path, const DataValue& v, const char* key, SceneManifest& m,
-                         bool& engine) {
+                             bool& engine) {
   const std::string_view holds = manifestKey(key).holds;
   const bool script = holds == "script", mod = holds == "mods";
-  const char* what = mod ? "a mod" : script ? "a script" : holds == "file" && std::strstr(key, "sounds") ? "a sound bank" : "a level file";
+  const char* what = mod                                             ? "a mod"
+                     : script                                        ? "a script"
+                     : holds == "file" && std::strstr(key, "sounds") ? "a sound bank"
+                                                                     : "a level file";
   const std::string p = v.isString() ? v.text : "";
   engine = script && p.rfind("scripts/", 0) == 0;
   const bool lua = script || mod;

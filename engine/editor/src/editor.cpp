@@ -43,8 +43,10 @@ stage::Level editorBuiltLevel(const stage::Level& level, const stage::Stage& sol
   const int32_t h = stage::goalHalfSide(built);
   for (int step = 0; step < 20; ++step) {
     const physics::Vec2 g = built.goal.position;
-    if (editor::insideExactly(goalCorners, {g.x - h, g.y - h}) && editor::insideExactly(goalCorners, {g.x + h, g.y - h}) &&
-        editor::insideExactly(goalCorners, {g.x + h, g.y + h}) && editor::insideExactly(goalCorners, {g.x - h, g.y + h}))
+    if (editor::insideExactly(goalCorners, {g.x - h, g.y - h}) &&
+        editor::insideExactly(goalCorners, {g.x + h, g.y - h}) &&
+        editor::insideExactly(goalCorners, {g.x + h, g.y + h}) &&
+        editor::insideExactly(goalCorners, {g.x - h, g.y + h}))
       break;
     int64_t cx = 0, cy = 0;
     for (const physics::Vec2 c : goalCorners) cx += c.x, cy += c.y;
@@ -93,7 +95,8 @@ void markSegmentsOffFaces(const stage::Level& level, const stage::Stage& solid, 
   for (size_t f = 0; f < level.faces.size(); ++f)
     for (size_t i = 0; i < level.faces[f].lines.size(); ++i) {
       const stage::LevelLine& l = level.faces[f].lines[i];
-      if (editor::insideExactly(solid.faces[f].corners, l.a) && editor::insideExactly(solid.faces[f].corners, l.b)) continue;
+      if (editor::insideExactly(solid.faces[f].corners, l.a) && editor::insideExactly(solid.faces[f].corners, l.b))
+        continue;
       const SegmentRef ref{static_cast<int>(f), static_cast<int>(i)};
       if (std::none_of(markers.begin(), markers.end(), [&](const Marker& m) { return m.segment == ref; }))
         markers.push_back(

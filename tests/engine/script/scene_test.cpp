@@ -40,13 +40,27 @@ TEST(Manifest, TheKeysAreOneTableTheReaderTheStructAndTheDocsShare) {
   const core::SceneManifest defaults;
   for (const core::ManifestKey& k : core::manifestKeys()) {
     const std::string key = k.key;
-    if (key == "stage.edge") EXPECT_EQ(defaults.edge, k.fallback);
-    if (key == "gravity") EXPECT_EQ(defaults.gravity, k.fallback);
-    if (key == "seed") EXPECT_EQ(defaults.seed, k.fallback);
-    if (key == "stage.solid") EXPECT_EQ(defaults.solid, k.shown);
-    if (key == "limits.memory_mb") EXPECT_EQ(defaults.memoryMegabytes, k.fallback);
-    if (key == "limits.steps") EXPECT_EQ(defaults.frameSteps, k.fallback);
-    if (key == "limits.deadline_ms") EXPECT_EQ(defaults.deadlineMilliseconds, k.fallback);
+    if (key == "stage.edge") {
+      EXPECT_EQ(defaults.edge, k.fallback);
+    }
+    if (key == "gravity") {
+      EXPECT_EQ(defaults.gravity, k.fallback);
+    }
+    if (key == "seed") {
+      EXPECT_EQ(defaults.seed, k.fallback);
+    }
+    if (key == "stage.solid") {
+      EXPECT_EQ(defaults.solid, k.shown);
+    }
+    if (key == "limits.memory_mb") {
+      EXPECT_EQ(defaults.memoryMegabytes, k.fallback);
+    }
+    if (key == "limits.steps") {
+      EXPECT_EQ(defaults.frameSteps, k.fallback);
+    }
+    if (key == "limits.deadline_ms") {
+      EXPECT_EQ(defaults.deadlineMilliseconds, k.fallback);
+    }
     // Each number's range is the reader's: one past either end is refused, naming the key.
     const std::string holds = k.holds;
     if (holds != "number" && holds != "whole number") continue;
@@ -56,8 +70,9 @@ TEST(Manifest, TheKeysAreOneTableTheReaderTheStructAndTheDocsShare) {
       std::ostringstream value;
       value.precision(17);
       value << v;
-      return dot == std::string::npos ? "return { " + name + " = " + value.str() + " }"
-                                      : "return { " + key.substr(0, dot) + " = { " + name + " = " + value.str() + " } }";
+      return dot == std::string::npos
+                 ? "return { " + name + " = " + value.str() + " }"
+                 : "return { " + key.substr(0, dot) + " = { " + name + " = " + value.str() + " } }";
     };
     for (const double outside : {k.low - 1, k.high + 1})
       EXPECT_NE(manifestError(at(outside)).find("'" + name + "' must be within"), std::string::npos)
@@ -69,8 +84,10 @@ TEST(Manifest, TheKeysAreOneTableTheReaderTheStructAndTheDocsShare) {
   std::vector<std::string> rows;
   bool inScene = false;
   for (std::string line; std::getline(in, line);) {
-    if (line == "## A scene") inScene = true;
-    else if (inScene && line.rfind("## ", 0) == 0) break;
+    if (line == "## A scene")
+      inScene = true;
+    else if (inScene && line.rfind("## ", 0) == 0)
+      break;
     if (inScene && line.rfind("| `", 0) == 0) rows.push_back(line);
   }
   ASSERT_EQ(rows.size(), core::manifestKeys().size());
@@ -78,7 +95,8 @@ TEST(Manifest, TheKeysAreOneTableTheReaderTheStructAndTheDocsShare) {
     const core::ManifestKey& k = core::manifestKeys()[i];
     const std::string holds = k.holds;
     std::ostringstream range;
-    if (holds == "number" || holds == "whole number") range << k.low << ".." << std::fixed << std::setprecision(0) << k.high;
+    if (holds == "number" || holds == "whole number")
+      range << k.low << ".." << std::fixed << std::setprecision(0) << k.high;
     EXPECT_EQ(rows[i], "| `" + std::string(k.key) + "` | " + holds + " | " + (range.str().empty() ? "-" : range.str()) +
                            " | " + k.shown + " | " + k.does + " |");
   }
@@ -111,14 +129,13 @@ TEST(Manifest, WholeNumbersModsAndLongBrackets) {
   EXPECT_EQ(manifestError("return { seed = 1.5 }"), "scene.lua:1:17: 'seed' must be a whole number, not 1.5");
   EXPECT_EQ(manifestError("return { gravity = -1 }"), "scene.lua:1:20: 'gravity' must be within [0, 1000], not -1");
   const std::string mod = "return { systems = { 'scripting' }, scripts = { mods = { ";
-  EXPECT_EQ(
-      manifestError(mod + "'/etc/passwd' } } }"),
-      "scene.lua:1:58: '/etc/passwd': a mod is a .lua path inside the scene's folder (no '..', not absolute, not "
-      "under scripts/)");
+  EXPECT_EQ(manifestError(mod + "'/etc/passwd' } } }"),
+            "scene.lua:1:58: '/etc/passwd': a mod is a .lua path inside the scene's folder (no '..', not absolute, not "
+            "under scripts/)");
   EXPECT_EQ(manifestError(mod + "'cube_intro.level' } } }").substr(0, 55),
             "scene.lua:1:58: 'cube_intro.level': a mod is a .lua pat");
-  EXPECT_EQ(manifestError(mod + "'scripts/player.lua' } } }").substr(0, 56),
-            "scene.lua:1:58: 'scripts/player.lua': a mod is a .lua p");
+  EXPECT_EQ(
+      manifestError(mod + "'scripts/player.lua' } } }").rfind("scene.lua:1:58: 'scripts/player.lua': a mod is", 0), 0u);
   EXPECT_EQ(manifestError(mod + "'' } } }").substr(0, 50), "scene.lua:1:58: '': a mod is a .lua path inside th");
   EXPECT_EQ(manifestError(mod + "5 } } }").substr(0, 46), "scene.lua:1:58: a mod is a .lua path inside th");
   EXPECT_EQ(manifestError(mod + "a = 'level.lua' } } }"),

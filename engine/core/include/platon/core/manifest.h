@@ -54,11 +54,11 @@ struct SceneManifest {
 // One key a manifest may have: one table (engine/core/src/manifest.cpp) for the reader, its lists
 // of known keys, its ranges and defaults, and docs/scripting.md's table of them (a test compares).
 struct ManifestKey {
-  const char* key;       // "gravity", "limits.steps": a table's keys after its own name and a dot
-  const char* holds;     // "number", "whole number", "string", "file", "script", "mods", "systems", "table"
-  double low, high;      // a number's range
-  double fallback;       // a number's default
-  const char* shown;     // the default as the docs show it ("-": none)
+  const char* key;    // "gravity", "limits.steps": a table's keys after its own name and a dot
+  const char* holds;  // "number", "whole number", "string", "file", "script", "mods", "systems", "table"
+  double low, high;   // a number's range
+  double fallback;    // a number's default
+  const char* shown;  // the default as the docs show it ("-": none)
   const char* does;
 };
 const std::vector<ManifestKey>& manifestKeys();
