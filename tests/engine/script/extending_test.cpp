@@ -464,8 +464,8 @@ TEST(Actions, TheDocumentedDashDashes) {
     core::Run run(live);
     if (recorded) run.record({"scene.lua", 10, std::nullopt, std::nullopt, 100});
     for (int f = 1; f <= 60; ++f) {
-      const core::Buttons held = core::InputFrame::bit(core::Button::Right) |
-                                 (dash && bit && f >= 20 && f < 23 ? core::Buttons(1u << *bit) : core::Buttons(0));
+      const auto held = static_cast<core::Buttons>(core::InputFrame::bit(core::Button::Right) |
+                                                   (dash && bit && f >= 20 && f < 23 ? 1u << *bit : 0u));
       const std::optional<std::string> error = run.step(held);
       EXPECT_FALSE(error.has_value()) << *error;
     }
