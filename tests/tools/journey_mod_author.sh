@@ -42,6 +42,7 @@ sed -n '/^## Actions$/,/^## The player$/p' docs/scripting.md | sed -n '/^```lua 
 grep -q "Player.move" "$level/player.lua" || { echo "the docs' dash player is gone"; exit 1; }
 # The player says when it dashes (its game's message).
 sed -i 's/^    self.dashed = not self.grounded.*/&\n    game.message = "dashed"/' "$level/player.lua"
+sed -i 's/^local _, Player = .*/local game, Player = .../' "$level/player.lua"
 cat > "$level/scene.lua" <<'LUA'
 return { name = "belt", systems = { "scripting", "rendering", "audio" }, stage = { level = "belt.level" },
   gravity = 0.35, scripts = { preset = "game", player = "player.lua", mods = { "belt.lua" } } }
