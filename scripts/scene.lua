@@ -32,23 +32,38 @@ local HOOKS = { "build", "tick", "draw", "save", "onReload" }
 local TAG_HANDLERS = { "contact", "beginContact", "overContact", "endContact", "touchContact" }
 local MAX_TAGS = 64  -- a mod's own words
 
-local function tagsOf(m, tags, path)
-  if tags == nil then return end
-  if type(tags) ~= "table" then error(path .. ": tags: expected a table of tag words, got a " .. type(tags), 0) end
-  local words = {}
-  for word in next, tags do
-    if type(word) ~= "string" then error(path .. ": tags: the keys are tag words, got a " .. type(word), 0) end
-    words[#words + 1] = word
-    if #words > MAX_TAGS then error(path .. ": tags: more than " .. MAX_TAGS .. " words", 0) end
+-- A mod's table of declarations (`tags`, `actions`), read raw: its keys, strings, in sorted order
+-- (a table's own order differs between runs), at most `max`; nil when it has none.
+local function declaredNames(t, path, section, keys, max, many)
+  if t == nil then return nil end
+  local at = path .. ": " .. section .. ": "
+  if type(t) ~= "table" then error(at .. "expected a table of " .. keys .. ", got a " .. type(t), 0) end
+  local names = {}
+  for name in next, t do
+    if type(name) ~= "string" then error(at .. "the keys are " .. keys .. ", got a " .. type(name), 0) end
+    names[#names + 1] = name
+    if #names > max then error(at .. "more than " .. max .. " " .. many, 0) end
   end
-  table.sort(words)
+  table.sort(names)
+  return names
+end
+
+-- The error of a declaration's field: "mod.lua: tags.spring.color: expected ..., got ...".
+local function badField(path, section, name)
+  return function(field, expected, v)
+    local got = type(v) == "string" and string.format("%q", v:sub(1, 40)) or "a " .. type(v)
+    error(path .. ": " .. section .. "." .. name .. (field and "." .. field or "") .. ": expected " .. expected
+          .. ", got " .. got, 0)
+  end
+end
+
+local function tagsOf(m, tags, path)
+  local words = declaredNames(tags, path, "tags", "tag words", MAX_TAGS, "words")
+  if not words then return end
   m.declared, m.handlers = {}, {}
   for _, word in ipairs(words) do
     local t = rawget(tags, word)
-    local function bad(field, expected, v)
-      error(path .. ": tags." .. word .. (field and "." .. field or "") .. ": expected " .. expected .. ", got "
-            .. (type(v) == "string" and string.format("%q", v:sub(1, 40)) or "a " .. type(v)), 0)
-    end
+    local bad = badField(path, "tags", word)
     if type(t) ~= "table" then bad(nil, "a table { color =, passable =, contact = ... }", t) end
     local d = { owner = path, word = word, look = false, passage = "wall", r = 204, g = 121, b = 167 }
     local h = {}
@@ -103,24 +118,12 @@ local function namesOf(v, bad, field)
 end
 
 local function actionsOf(m, actions, path)
-  if actions == nil then return end
-  if type(actions) ~= "table" then
-    error(path .. ": actions: expected a table of action names, got a " .. type(actions), 0)
-  end
-  local names = {}
-  for name in next, actions do
-    if type(name) ~= "string" then error(path .. ": actions: the keys are action names, got a " .. type(name), 0) end
-    names[#names + 1] = name
-    if #names > MAX_ACTIONS then error(path .. ": actions: more than " .. MAX_ACTIONS .. " actions", 0) end
-  end
-  table.sort(names)
+  local names = declaredNames(actions, path, "actions", "action names", MAX_ACTIONS, "actions")
+  if not names then return end
   m.actions = {}
   for _, name in ipairs(names) do
     local t = rawget(actions, name)
-    local function bad(field, expected, v)
-      error(path .. ": actions." .. name .. (field and "." .. field or "") .. ": expected " .. expected .. ", got "
-            .. (type(v) == "string" and string.format("%q", v:sub(1, 40)) or "a " .. type(v)), 0)
-    end
+    local bad = badField(path, "actions", name)
     if type(t) ~= "table" then bad(nil, "a table { keys =, pad =, label =, does = }", t) end
     local a = { owner = path, name = name, label = name, does = "", keys = {}, pad = {} }
     for field, v in next, t do

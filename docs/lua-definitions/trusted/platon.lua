@@ -426,14 +426,16 @@ function Player.draw(self, draw) end
 
 ---@param self platon.Player
 ---@param along number
----@return number along, number fall
+---@return number along
+---@return number fall
 function Player.jump(self, along) end
 
 ---@param self platon.Player
 ---@param input platon.Input
 ---@param along number
 ---@param fall number
----@return number along, number fall
+---@return number along
+---@return number fall
 function Player.move(self, input, along, fall) end
 
 ---@param game platon.Game

@@ -31,6 +31,22 @@ local function split(text)
   return parts
 end
 
+-- One function's definition: `params` "a: T, b?: U", `returns` "T1 name, T2" (each its own line).
+local function emitFunction(owner, name, params, returns, doc)
+  emit("")
+  if doc then emit("--- " .. doc) end
+  local names = {}
+  for _, p in ipairs(split(params)) do
+    local n, optional, t = p:match("^([%w_]+)(%??):%s*(.+)$")
+    if n then
+      emit("---@param " .. n .. optional .. " " .. t)
+      names[#names + 1] = n
+    end
+  end
+  for _, r in ipairs(split(returns)) do emit("---@return " .. r) end
+  emit("function " .. owner .. "." .. name .. "(" .. table.concat(names, ", ") .. ") end")
+end
+
 local function functionOf(path, owner, name)
   local s = signatures[path]
   if not s then
@@ -38,18 +54,7 @@ local function functionOf(path, owner, name)
     return
   end
   seen[path] = true
-  emit("")
-  emit("--- " .. s[3])
-  local names = {}
-  for _, p in ipairs(split(s[1])) do
-    local n, optional, t = p:match("^([%w_]+)(%??):%s*(.+)$")
-    if n then
-      emit("---@param " .. n .. optional .. " " .. t)
-      names[#names + 1] = n
-    end
-  end
-  for _, r in ipairs(split(s[2])) do emit("---@return " .. r) end
-  emit("function " .. owner .. "." .. name .. "(" .. table.concat(names, ", ") .. ") end")
+  emitFunction(owner, name, s[1], s[2], s[3])
 end
 
 emit("---@meta")
@@ -182,18 +187,7 @@ local OPTIONAL = {
 }
 for _, name in ipairs(sortedKeys(OPTIONAL)) do
   local f = OPTIONAL[name]
-  if data.player[name] == nil then
-    emit("")
-    emit("--- Optional: " .. f[3] .. ".")
-    local names = {}
-    for _, p in ipairs(split(f[1])) do
-      local n, t = p:match("^([%w_]+):%s*(.+)$")
-      emit("---@param " .. n .. " " .. t)
-      names[#names + 1] = n
-    end
-    if f[2] ~= "" then emit("---@return " .. f[2]) end
-    emit("function Player." .. name .. "(" .. table.concat(names, ", ") .. ") end")
-  end
+  if data.player[name] == nil then emitFunction("Player", name, f[1], f[2], "Optional: " .. f[3] .. ".") end
 end
 for _, name in ipairs(sortedKeys(data.player)) do
   if type(data.player[name]) == "function" then
@@ -201,15 +195,7 @@ for _, name in ipairs(sortedKeys(data.player)) do
     if not f then
       problems[#problems + 1] = "Player." .. name .. ": a player function with no definition (definitions.lua)"
     else
-      emit("")
-      local names = {}
-      for _, p in ipairs(split(f[1])) do
-        local n, optional, t = p:match("^([%w_]+)(%??):%s*(.+)$")
-        emit("---@param " .. n .. optional .. " " .. t)
-        names[#names + 1] = n
-      end
-      if f[2] ~= "" then emit("---@return " .. f[2]) end
-      emit("function Player." .. name .. "(" .. table.concat(names, ", ") .. ") end")
+      emitFunction("Player", name, f[1], f[2])
     end
   end
 end

@@ -34,15 +34,15 @@ void Session::replace(std::unique_ptr<core::LiveScene> live) {
   consoleLog_.clear();
   lastError_.clear();
   hold();
+  rebind_ = true;
 }
 
 std::vector<std::string> Session::bindKeys(const core::BindingChoices& choices) {
   choices_ = choices;
-  boundActions_.clear();
   core::Display* d = display();
   if (!d) return {};
-  boundActions_ = scene().actions();
-  return d->setBindings(core::bindingsFor(boundActions_, choices_));
+  rebind_ = false;
+  return d->setBindings(core::bindingsFor(scene().actions(), choices_));
 }
 
 bool Session::isToolKey(const std::string& name) {
@@ -50,17 +50,13 @@ bool Session::isToolKey(const std::string& name) {
   return std::any_of(std::begin(kTools), std::end(kTools), [&](const char* k) { return name == k; });
 }
 
-// Binds the window for the scene's actions when it is not yet (the first poll, a scene with a
-// mod's dash after one without).
+// Binds the window for the scene's actions when a scene came since it was bound (the first poll;
+// a reload or another level, which may have other actions: a mod's dash, or none now).
 void Session::applyBindings() {
   core::Display* d = display();
-  const std::vector<core::Action>& now = scene().actions();
-  const auto sameName = [](const core::Action& a, const core::Action& b) { return a.name == b.name; };
-  if (!d || (!boundActions_.empty() &&
-             std::equal(now.begin(), now.end(), boundActions_.begin(), boundActions_.end(), sameName)))
-    return;
-  boundActions_ = scene().actions();
-  (void)d->setBindings(core::bindingsFor(boundActions_, choices_));  // unknown names were said at bindKeys
+  if (!d || !rebind_) return;
+  rebind_ = false;
+  (void)d->setBindings(core::bindingsFor(scene().actions(), choices_));  // unknown names were said at bindKeys
 }
 
 core::Display* Session::display() { return windowless_ ? nullptr : displayOf(scene()); }
@@ -70,7 +66,7 @@ script::GameStatus Session::status() { return statusOf(scene()); }
 core::WindowInput Session::poll() {
   core::Display* d = display();
   if (!d) return {};
-  applyBindings();  // a scene with other actions (a mod's dash; another level) than the window's
+  applyBindings();
   core::WindowInput input = d->pollEvents();
   const bool typing = consoleOpen_;  // letters typed into the console are not the game's buttons
   if (consoleOpen_)
@@ -183,6 +179,7 @@ void Session::reload(const std::string& because) { afterReload(live_->reload({be
 void Session::afterReload(const core::ReloadReport& report) {
   if (report.ok) {
     view_.step(scene(), status(), 1.0 / clock_.hz());  // the new version's stage drawn from now on
+    rebind_ = true;
     say("reloaded");
   } else {
     say("reload refused: " + report.error);

@@ -109,7 +109,7 @@ class Session {
   std::unique_ptr<core::LiveScene> live_;
   std::optional<core::Run> run_;
   core::BindingChoices choices_;
-  std::vector<core::Action> boundActions_;  // what the window was last bound for (none yet)
+  bool rebind_ = true;  // a scene came since the window's keys were bound for its actions
   GameView view_;
   core::FixedStep clock_{60};
   core::TapCarry taps_;
