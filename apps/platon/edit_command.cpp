@@ -276,11 +276,12 @@ int editCommand(int argc, char** argv) {
   return result == kWindowClosed ? 0 : result;
 }
 
-int editLevel(const LevelArgument& level, core::SystemRegistry& registry, core::System* shown,
-              const std::string& shotPath, bool newLevel) {
-  const std::string scenePath = core::resolveDataPath(level.scene);
-  core::Scene host;  // the editor's own scene: its window and, for a mesh, its meshes system
-  std::optional<editor::Editor> editor;
+namespace {
+
+// The editor over the level's file, its solid built by the scene's systems in `host` (made in
+// place: it is not moved); false (said why) when the level cannot be opened.
+bool openEditor(const LevelArgument& level, core::SystemRegistry& registry, const std::string& scenePath,
+                core::Scene& host, bool newLevel, std::optional<editor::Editor>& editor) {
   try {
     host.setManifest(core::loadManifest(scenePath));
     std::string text = stage::readLevelFile(level.levelFile);
@@ -296,9 +297,36 @@ int editLevel(const LevelArgument& level, core::SystemRegistry& registry, core::
     editor.emplace(std::move(document), std::move(solid), std::llround(host.manifest().gravity * 65536.0));
     if (newLevel && !parsed.solid) placeOnFaceZero(*editor);
     if (newLevel && editor->document().modified()) editor->document().save();  // a new level is valid from the start
+    return true;
   } catch (const std::exception& e) {
-    return std::fprintf(stderr, "platon edit: %s\n", core::visibleText(core::errorReport(e), true).c_str()), 1;
+    std::fprintf(stderr, "platon edit: %s\n", core::visibleText(core::errorReport(e), true).c_str());
+    return false;
   }
+}
+
+// What happened this frame, in the terminal too (and for the window tests): each press's point,
+// each screenshot, each message.
+void echoFrame(const core::WindowInput& input, editor::Editor& editor, core::Display& display) {
+  for (const core::MouseEvent& e : input.mouse)
+    if (e.kind == core::MouseEvent::Kind::Down && e.button == 1)
+      if (const auto p = editor.pointAt(e.x, e.y))
+        std::printf("press at pixel (%.0f, %.0f): face %d (%.1f, %.1f)\n", double(e.x), double(e.y), p->face, p->x,
+                    p->y);
+  for (const core::KeyPress& key : input.keys)
+    if (key.name == "F12") std::printf("%s\n", saveScreenshot(display).c_str());  // after this frame is shown
+  for (const std::string& message : editor.takeMessages())
+    std::printf("editor: %s\n", core::visibleText(message).c_str());
+  std::fflush(stdout);
+}
+
+}  // namespace
+
+int editLevel(const LevelArgument& level, core::SystemRegistry& registry, core::System* shown,
+              const std::string& shotPath, bool newLevel) {
+  const std::string scenePath = core::resolveDataPath(level.scene);
+  core::Scene host;  // the editor's own scene: its window and, for a mesh, its meshes system
+  std::optional<editor::Editor> editor;
+  if (!openEditor(level, registry, scenePath, host, newLevel, editor)) return 1;
   std::unique_ptr<core::System> own = registry.create("rendering", host);
   if (own && shown) own->carryOver(host, *shown);  // the game's window, when the game opened the editor
   core::System* window = own.get();
@@ -318,17 +346,7 @@ int editLevel(const LevelArgument& level, core::SystemRegistry& registry, core::
   for (;;) {
     const core::WindowInput input = display->pollEvents();
     const editor::Editor::Request request = editor->handle(input);
-    // What happens, in the terminal too (and for the window tests): each message, each press's point.
-    for (const core::MouseEvent& e : input.mouse)
-      if (e.kind == core::MouseEvent::Kind::Down && e.button == 1)
-        if (const auto p = editor->pointAt(e.x, e.y))
-          std::printf("press at pixel (%.0f, %.0f): face %d (%.1f, %.1f)\n", double(e.x), double(e.y), p->face, p->x,
-                      p->y);
-    for (const core::KeyPress& key : input.keys)
-      if (key.name == "F12") std::printf("%s\n", saveScreenshot(*display).c_str());  // after this frame is shown
-    for (const std::string& message : editor->takeMessages())
-      std::printf("editor: %s\n", core::visibleText(message).c_str());
-    std::fflush(stdout);
+    echoFrame(input, *editor, *display);
     if (request == editor::Editor::Request::Quit) {
       closed = input.closed;  // the window closed (or SIGTERM, which SDL turns into the same): all quit
       break;

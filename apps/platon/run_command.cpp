@@ -323,6 +323,33 @@ std::optional<int> makeRecordFolder(const std::string& recordDir) {
   return std::nullopt;
 }
 
+// The options whose value is a word kept as it is: where it goes; null for any other.
+std::string* wordOption(const std::string& a, RunArgs& args) {
+  if (a == "--junit") return &args.junit;
+  if (a == "--shard") return &args.shardFlag;
+  if (a == "--shards") return &args.shardsFlag;
+  if (a == "--durations") return &args.durationsPath;
+  return nullptr;
+}
+
+// The options whose value is checked as it is read.
+bool isCheckedOption(const std::string& a) {
+  return a == "--timeout" || a == "--trace" || a == "--record" || a == "--hash-every";
+}
+
+// A checked option's value: nothing, or the exit status once it said why the value is wrong.
+std::optional<int> readCheckedOption(const std::string& a, const char* value, RunArgs& args) {
+  if (a == "--timeout" && !seconds(value, args.timeout))
+    return badValue("--timeout", value, "a number of seconds above 0");
+  if (a == "--trace" && !wholeNumber(value, 1, UINT64_MAX, args.options.traceEvery))
+    return badValue("--trace", value, "a whole number of frames from 1");
+  if (a == "--hash-every" && !wholeNumber(value, 0, UINT64_MAX, args.options.hashEvery))
+    return badValue("--hash-every", value, "a whole number of frames (0: only the last frame's hash)");
+  if (a != "--record") return std::nullopt;
+  args.recordDir = value, args.options.record = true;
+  return makeRecordFolder(args.recordDir);
+}
+
 // The command line into `args`, in one pass (an option's value is the next word, or -jN's own
 // digits): nothing, or the exit status once the first wrong word was said.
 std::optional<int> readRunArgs(int argc, char** argv, RunArgs& args) {
@@ -332,27 +359,12 @@ std::optional<int> readRunArgs(int argc, char** argv, RunArgs& args) {
     if ((a == "-j" && hasValue) || (a.rfind("-j", 0) == 0 && a.size() > 2)) {
       const char* value = a == "-j" ? argv[++i] : argv[i] + 2;
       if (!wholeNumber(value, 1, 256, args.jobs)) return badValue("-j", value, "a whole number from 1 to 256");
-    } else if (a == "--junit" && hasValue) {
-      args.junit = argv[++i];
-    } else if (a == "--timeout" && hasValue) {
-      if (!seconds(argv[++i], args.timeout)) return badValue("--timeout", argv[i], "a number of seconds above 0");
-    } else if (a == "--trace" && hasValue) {
-      if (!wholeNumber(argv[++i], 1, UINT64_MAX, args.options.traceEvery))
-        return badValue("--trace", argv[i], "a whole number of frames from 1");
-    } else if (a == "--record" && hasValue) {
-      args.recordDir = argv[++i], args.options.record = true;
-      if (const std::optional<int> status = makeRecordFolder(args.recordDir)) return status;
-    } else if (a == "--shard" && hasValue) {
-      args.shardFlag = argv[++i];
-    } else if (a == "--shards" && hasValue) {
-      args.shardsFlag = argv[++i];
-    } else if (a == "--durations" && hasValue) {
-      args.durationsPath = argv[++i];
+    } else if (std::string* word = hasValue ? wordOption(a, args) : nullptr) {
+      *word = argv[++i];
+    } else if (hasValue && isCheckedOption(a)) {
+      if (const std::optional<int> status = readCheckedOption(a, argv[++i], args)) return status;
     } else if (a == "--list") {
       args.list = true;
-    } else if (a == "--hash-every" && hasValue) {
-      if (!wholeNumber(argv[++i], 0, UINT64_MAX, args.options.hashEvery))
-        return badValue("--hash-every", argv[i], "a whole number of frames (0: only the last frame's hash)");
     } else if (!a.empty() && a[0] == '-') {
       return runUsage();
     } else {

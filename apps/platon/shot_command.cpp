@@ -4,6 +4,7 @@
 // the same picture on every run and machine with the same GL driver.
 #include "shot_command.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -26,40 +27,56 @@ namespace {
 
 int shotUsage() { return usageError("shot"); }
 
-}  // namespace
-
-int shotCommand(int argc, char** argv) {
+struct ShotOptions {
   std::string level, out, inputPath;
   uint64_t frames = 0;
   int width = 1280, height = 720;
   bool debug = false;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--frame" && i + 1 < argc) {
-      const std::string n = argv[++i];
-      if (n.empty() || n.size() > 9 || n.find_first_not_of("0123456789") != std::string::npos) {
-        std::fprintf(stderr, "--frame %s: want a frame number, 0 to 999999999\n", n.c_str());
-        return 2;
-      }
-      frames = std::stoull(n);
-    } else if (a == "--size" && i + 1 < argc) {
-      if (std::sscanf(argv[++i], "%dx%d", &width, &height) != 2 || width < 16 || height < 16 || width > 8192 ||
-          height > 8192) {
-        std::fprintf(stderr, "--size %s: want WxH, 16 to 8192 pixels each way\n", argv[i]);
-        return 2;
-      }
-    } else if (a == "--input" && i + 1 < argc)
-      inputPath = argv[++i];
-    else if (a == "--out" && i + 1 < argc)
-      out = argv[++i];
-    else if (a == "--debug")
-      debug = true;
-    else if (level.empty() && !a.empty() && a[0] != '-')
-      level = a;
-    else
-      return shotUsage();
+};
+
+// One option and its value at argv[i] (i moves past the value): 0, or the exit code of a bad one.
+int readShotOption(int argc, char** argv, int& i, ShotOptions& o) {
+  const std::string a = argv[i];
+  const bool valued = i + 1 < argc;
+  if (a == "--frame" && valued) {
+    const std::string n = argv[++i];
+    if (n.empty() || n.size() > 9 || n.find_first_not_of("0123456789") != std::string::npos) {
+      std::fprintf(stderr, "--frame %s: want a frame number, 0 to 999999999\n", n.c_str());
+      return 2;
+    }
+    o.frames = std::stoull(n);
+  } else if (a == "--size" && valued) {
+    int& w = o.width;
+    int& h = o.height;
+    if (std::sscanf(argv[++i], "%dx%d", &w, &h) != 2 || std::min(w, h) < 16 || std::max(w, h) > 8192) {
+      std::fprintf(stderr, "--size %s: want WxH, 16 to 8192 pixels each way\n", argv[i]);
+      return 2;
+    }
+  } else if (a == "--input" && valued) {
+    o.inputPath = argv[++i];
+  } else if (a == "--out" && valued) {
+    o.out = argv[++i];
+  } else if (a == "--debug") {
+    o.debug = true;
+  } else if (o.level.empty() && !a.empty() && a[0] != '-') {
+    o.level = a;
+  } else {
+    return shotUsage();
   }
-  if (level.empty() || out.empty()) return shotUsage();
+  return 0;
+}
+
+}  // namespace
+
+int shotCommand(int argc, char** argv) {
+  ShotOptions o;
+  for (int i = 1; i < argc; ++i)
+    if (const int code = readShotOption(argc, argv, i, o)) return code;
+  if (o.level.empty() || o.out.empty()) return shotUsage();
+  const std::string &level = o.level, &out = o.out, &inputPath = o.inputPath;
+  const uint64_t frames = o.frames;
+  const int width = o.width, height = o.height;
+  const bool debug = o.debug;
   setenv("SDL_VIDEODRIVER", "offscreen", 0);
   try {
     core::Replay input;

@@ -87,11 +87,9 @@ void WorldImpl::entityOverlapEvents(Entity& e, const Path& path, std::vector<Pat
       if (moved) s = sweep(path.start[i], path.steps[i], other);
       if (!was && !is && !(moved && s.hitsWithinFrame())) return;  // never met
       if (was && is) return;
-      const Fraction enter = moved && s.hasEnter && s.enter > Fraction::zero() ? s.enter : Fraction::zero();
-      const Fraction exit = moved && s.hasExit && s.exit < Fraction::one() ? s.exit : Fraction::one();
       const uint64_t order = (uint64_t{1} << 32) | o.id.index;
-      if (!was) events.push_back({enter, i, order, true, moved ? s.normal() : Vec2w{}, {}, o.id});
-      if (!is) events.push_back({exit, i, order, false, {}, {}, o.id});
+      if (!was) events.push_back({enterTime(moved, s), i, order, true, moved ? s.normal() : Vec2w{}, {}, o.id});
+      if (!is) events.push_back({exitTime(moved, s), i, order, false, {}, {}, o.id});
       if (is && !was) entityOverlaps.insert(at, key);
       if (!is && was) entityOverlaps.erase(at);
     });

@@ -33,42 +33,48 @@ Contact WorldImpl::makeContact(const Entity& e, MapPartId partId, LineIndex line
 
 void WorldImpl::firePierceEvents(Entity& e, const Path& path) {
   std::vector<PathEvent> events;
-  for (size_t i = 0; i < e.instances.size(); ++i) {
-    Instance& inst = e.instances[i];
-    if (pierceQuiet(e, path, i)) continue;
-    const MapPart& p = part(inst.part);
-    std::vector<Vec2>& now = scratch.now;
-    worldVertices(inst, now);
-    const bool moved = i < path.start.size() && path.steps[i] != Vec2w{};
-    if (!moved) coverMotion(inst, {});  // after a move the region still covers the whole path
-    std::vector<LineIndex> overlapping;
-    const auto lines = inst.region.lines();
-    for (size_t k = 0; k < lines.size(); ++k) {
-      if (!isPierceable(e, inst, k) && inst.region.flags()[k] != 2) continue;
-      const LineIndex line = lines[k];
-      const Segment seg = p.segments()[line];
-      const bool was = std::binary_search(inst.overlapping.begin(), inst.overlapping.end(), line);
-      const bool is = overlapsInterior(now, seg);
-      if (is) overlapping.push_back(line);
-      if (was && is) continue;
-      Sweep s;
-      if (moved) s = sweep(path.start[i], path.steps[i], seg);
-      if (!was && !is && !(moved && s.hitsWithinFrame())) continue;  // never met
-      const Fraction enter = moved && s.hasEnter && s.enter > Fraction::zero() ? s.enter : Fraction::zero();
-      const Fraction exit = moved && s.hasExit && s.exit < Fraction::one() ? s.exit : Fraction::one();
-      if (!was) {
-        ContactPoints pts;
-        if (moved && s.hitsWithinFrame()) pts = contactPoints(path.start[i], path.steps[i], seg, s);
-        events.push_back({enter, i, line, true, moved ? s.normal() : Vec2w{}, pts, {}});
-      }
-      if (!is) events.push_back({exit, i, line, false, {}, {}, {}});
-    }
-    std::sort(overlapping.begin(), overlapping.end());
-    inst.overlapping = std::move(overlapping);
-  }
+  for (size_t i = 0; i < e.instances.size(); ++i)
+    if (!pierceQuiet(e, path, i)) instancePierceEvents(e, path, i, events);
   entityOverlapEvents(e, path, events);
-  // Time order; ties in a fixed order (instance, line before entity, begin before end), never
-  // region order.
+  firePathEvents(e, events);
+}
+
+// Instance i's begin and end events with the pierceable lines it meets along its path, and the
+// lines it overlaps at the end of it.
+void WorldImpl::instancePierceEvents(Entity& e, const Path& path, size_t i, std::vector<PathEvent>& events) {
+  Instance& inst = e.instances[i];
+  const MapPart& p = part(inst.part);
+  std::vector<Vec2>& now = scratch.now;
+  worldVertices(inst, now);
+  const bool moved = i < path.start.size() && path.steps[i] != Vec2w{};
+  if (!moved) coverMotion(inst, {});  // after a move the region still covers the whole path
+  std::vector<LineIndex> overlapping;
+  const auto lines = inst.region.lines();
+  for (size_t k = 0; k < lines.size(); ++k) {
+    if (!isPierceable(e, inst, k) && inst.region.flags()[k] != 2) continue;
+    const LineIndex line = lines[k];
+    const Segment seg = p.segments()[line];
+    const bool was = std::binary_search(inst.overlapping.begin(), inst.overlapping.end(), line);
+    const bool is = overlapsInterior(now, seg);
+    if (is) overlapping.push_back(line);
+    if (was && is) continue;
+    Sweep s;
+    if (moved) s = sweep(path.start[i], path.steps[i], seg);
+    const bool hits = moved && s.hitsWithinFrame();
+    if (!was && !is && !hits) continue;  // never met
+    if (!was) {
+      const ContactPoints pts = hits ? contactPoints(path.start[i], path.steps[i], seg, s) : ContactPoints{};
+      events.push_back({enterTime(moved, s), i, line, true, moved ? s.normal() : Vec2w{}, pts, {}});
+    }
+    if (!is) events.push_back({exitTime(moved, s), i, line, false, {}, {}, {}});
+  }
+  std::sort(overlapping.begin(), overlapping.end());
+  inst.overlapping = std::move(overlapping);
+}
+
+// The events in time order, ties in a fixed order (instance, line before entity, begin before
+// end; never region order), each told to the rules.
+void WorldImpl::firePathEvents(Entity& e, std::vector<PathEvent>& events) {
   std::sort(events.begin(), events.end(), [](const PathEvent& a, const PathEvent& b) {
     if (a.t != b.t) return a.t < b.t;
     if (a.instance != b.instance) return a.instance < b.instance;

@@ -120,20 +120,14 @@ bool WorldImpl::anyBodyIn(const PlatformCopy& c) {
   return firstBodyIn(c, [](const Entity&) { return true; }).has_value();
 }
 
-std::optional<WorldImpl::PlatformHit> WorldImpl::updatePlatformCopies(uint32_t slot, Vec2w motion,
-                                                                      CopyPlacing placing) {
-  Platform& pl = platforms[slot];
+// The face edge the platform's one copy goes over this frame, if any. Across it its lines come
+// furthest over (the one it has is kept unless another is further over by more than kCopyReach: a
+// line over a vertex does not make copies come and go). Over two edges at once (beside a vertex)
+// the faces beyond each would hold copies carried over different edges, which disagree by the angle
+// the faces leave there; the bodies there would meet two platforms a few units apart. A turning
+// platform's reach is the square about its pivot that its turns stay in.
+std::optional<LineIndex> WorldImpl::copyEdgeOf(const Platform& pl, Vec2w motion) {
   const MapPart& home = part(pl.part);
-  // One copy at most: across the edge its lines come furthest over (the one it has is kept unless
-  // another is further over by more than kCopyReach: a line over a vertex does not make copies
-  // come and go). Over two edges at once (beside a vertex) the faces beyond each would hold copies
-  // carried over different edges, which disagree by the angle the faces leave there; the bodies
-  // there would meet two platforms a few units apart. A turning platform's reach is the square
-  // about its pivot that its turns stay in.
-  auto targetOf = [&](LineIndex line) { return home.warps()[home.lines()[line].warp].target; };
-  std::optional<LineIndex> chosen;
-  std::optional<EdgeReach> furthest;
-  bool chosenHeld = false;
   // The ends now, and where the frame takes them: moved by its motion, and a turning platform turned
   // by all of its spin too (and half of it on the way: a sub-step's lines stray a few units from
   // those at most).
@@ -150,13 +144,25 @@ std::optional<WorldImpl::PlatformHit> WorldImpl::updatePlatformCopies(uint32_t s
       for (const PlatformLine& l : turned) points->insert(points->end(), {wide(l.segment.a), wide(l.segment.b)});
     }
   }
+  std::optional<LineIndex> chosen;
+  std::optional<EdgeReach> furthest;
+  bool chosenHeld = false;
   for (const LineIndex line : home.faceLoop()) {
     const std::optional<EdgeReach> r = reachOver(now, between, then, home.segments()[line]);
     if (!r) continue;
-    const bool held = platformCopyIn(pl, targetOf(line)) != nullptr;
+    const bool held = platformCopyIn(pl, home.warps()[home.lines()[line].warp].target) != nullptr;
     const int64_t margin = held ? -kCopyReach : chosenHeld ? kCopyReach : 0;  // what `r` must beat `furthest` by
     if (!chosen || r->beyond(*furthest, margin)) chosen = line, furthest = r, chosenHeld = held;
   }
+  return chosen;
+}
+
+std::optional<WorldImpl::PlatformHit> WorldImpl::updatePlatformCopies(uint32_t slot, Vec2w motion,
+                                                                      CopyPlacing placing) {
+  Platform& pl = platforms[slot];
+  const MapPart& home = part(pl.part);
+  auto targetOf = [&](LineIndex line) { return home.warps()[home.lines()[line].warp].target; };
+  const std::optional<LineIndex> chosen = copyEdgeOf(pl, motion);
   std::optional<PlatformCopy> made;
   if (chosen && !platformCopyIn(pl, targetOf(*chosen)) && targetOf(*chosen) != pl.part &&
       part(targetOf(*chosen)).initialized()) {

@@ -32,63 +32,9 @@ bool WorldImpl::rotateBy(Entity& e, int64_t delta) {
   bool blocked = false;
   for (int64_t j = 1; j <= steps && !blocked; ++j) {
     const Angle angle = static_cast<Angle>(e.angle + static_cast<Angle>(delta * j / steps - delta * (j - 1) / steps));
-    std::vector<std::vector<Vec2>> shapes;
-    for (size_t i = 0; i < e.instances.size() && !blocked; ++i) {
-      Instance& inst = e.instances[i];
-      std::vector<Vec2> next;
-      try {
-        const Convex c = e.shape.rotated(static_cast<Angle>(angle + inst.frame));
-        next.assign(c.vertices().begin(), c.vertices().end());
-      } catch (const Error&) {
-        blocked = true;
-        break;
-      }
-      std::vector<Vec2> both = inst.shape;
-      both.insert(both.end(), next.begin(), next.end());
-      std::vector<Vec2> hull = convexHull(both);
-      for (Vec2& v : hull) v = {inst.position.x + v.x, inst.position.y + v.y};
-      for (const Vec2 v : hull)
-        if (!inRange(v)) blocked = true;
-      if (blocked) break;
-      coverBox(inst, sweptBox(hull, {}));  // the lines near the swept hull
-      const MapPart& p = part(inst.part);
-      const auto lines = inst.region.lines();
-      const std::vector<Vec2> before = worldVertices(inst);
-      for (size_t k = 0; k < lines.size() && !blocked; ++k) {
-        if (!blocks(e, inst, k, before)) continue;
-        if (!overlapsInterior(hull, p.segments()[lines[k]])) continue;
-        blocked = true;
-        const Contact c = makeContact(e, inst, lines[k], Fraction::zero(), {}, {});
-        callRules([&](Rules& r) { r.touchContact(c); });
-      }
-      if (!blocked) {
-        LineIndex met = 0;
-        forEachPlatformLine(inst.part, sweptBox(hull, {}), [&](const PlatformLine& l, LineIndex key) {
-          if (blocked || (l.kind == LineKind::OneWay && !wholyInFront(before, l.segment))) return;
-          if (overlapsInterior(hull, l.segment)) blocked = true, met = key;
-        });
-        if (blocked) {
-          const Contact c = makeContact(e, inst, met, Fraction::zero(), {}, {});
-          callRules([&](Rules& r) { r.touchContact(c); });
-        }
-      }
-      if (!blocked) {
-        std::vector<Vec2> other;
-        std::optional<EntityId> met;
-        forEachSolidNear(e, inst.part, sweptBox(hull, {}), [&](const Entity& o, const Instance& oi) {
-          if (met) return;
-          worldVertices(oi, other);
-          if (overlapsInterior(hull, other)) met = o.id;
-        });
-        if (met) {
-          blocked = true;
-          Contact c = makeContact(e, inst, kNoLine, Fraction::zero(), {}, {});
-          c.other = *met;
-          callRules([&](Rules& r) { r.touchContact(c); });
-        }
-      }
-      shapes.push_back(std::move(next));
-    }
+    std::vector<std::vector<Vec2>> shapes(e.instances.size());
+    for (size_t i = 0; i < e.instances.size() && !blocked; ++i)
+      blocked = !rotationStepFits(e, e.instances[i], angle, shapes[i]);
     if (blocked) break;
     for (size_t i = 0; i < e.instances.size(); ++i)
       setShape(e.instances[i], std::move(shapes[i]), e.shape, static_cast<Angle>(angle + e.instances[i].frame));
@@ -100,6 +46,64 @@ bool WorldImpl::rotateBy(Entity& e, int64_t delta) {
   updateLinks(none);
   reindex(e);
   return !blocked;
+}
+
+// Whether one sub-step of a turn, to `angle`, is free for the instance: the hull of its shape before
+// and after meets no line that blocks it, no platform's line and no solid body (what it meets is
+// told to the rules as a touch). `next` is the turned shape.
+bool WorldImpl::rotationStepFits(Entity& e, Instance& inst, Angle angle, std::vector<Vec2>& next) {
+  try {
+    const Convex c = e.shape.rotated(static_cast<Angle>(angle + inst.frame));
+    next.assign(c.vertices().begin(), c.vertices().end());
+  } catch (const Error&) {
+    return false;
+  }
+  std::vector<Vec2> both = inst.shape;
+  both.insert(both.end(), next.begin(), next.end());
+  std::vector<Vec2> hull = convexHull(both);
+  for (Vec2& v : hull) {
+    v = {inst.position.x + v.x, inst.position.y + v.y};
+    if (!inRange(v)) return false;
+  }
+  coverBox(inst, sweptBox(hull, {}));  // the lines near the swept hull
+  const std::vector<Vec2> before = worldVertices(inst);
+  std::optional<Contact> met = rotationLineHit(e, inst, hull, before);
+  if (!met) met = rotationBodyHit(e, inst, hull);
+  if (!met) return true;
+  callRules([&](Rules& r) { r.touchContact(*met); });
+  return false;
+}
+
+// The first line of the part, or of a platform, that the swept hull overlaps: its contact.
+std::optional<Contact> WorldImpl::rotationLineHit(Entity& e, Instance& inst, const std::vector<Vec2>& hull,
+                                                  const std::vector<Vec2>& before) {
+  const MapPart& p = part(inst.part);
+  const auto lines = inst.region.lines();
+  for (size_t k = 0; k < lines.size(); ++k)
+    if (blocks(e, inst, k, before) && overlapsInterior(hull, p.segments()[lines[k]]))
+      return makeContact(e, inst, lines[k], Fraction::zero(), {}, {});
+  std::optional<LineIndex> met;
+  forEachPlatformLine(inst.part, sweptBox(hull, {}), [&](const PlatformLine& l, LineIndex key) {
+    if (met || (l.kind == LineKind::OneWay && !wholyInFront(before, l.segment))) return;
+    if (overlapsInterior(hull, l.segment)) met = key;
+  });
+  if (!met) return std::nullopt;
+  return makeContact(e, inst, *met, Fraction::zero(), {}, {});
+}
+
+// The first solid body the swept hull overlaps: its contact.
+std::optional<Contact> WorldImpl::rotationBodyHit(Entity& e, const Instance& inst, const std::vector<Vec2>& hull) {
+  std::vector<Vec2> other;
+  std::optional<EntityId> met;
+  forEachSolidNear(e, inst.part, sweptBox(hull, {}), [&](const Entity& o, const Instance& oi) {
+    if (met) return;
+    worldVertices(oi, other);
+    if (overlapsInterior(hull, other)) met = o.id;
+  });
+  if (!met) return std::nullopt;
+  Contact c = makeContact(e, inst, kNoLine, Fraction::zero(), {}, {});
+  c.other = *met;
+  return c;
 }
 
 }  // namespace platon::physics

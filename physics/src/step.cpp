@@ -126,65 +126,82 @@ class SubMove {
   void findFirstEvent() {
     uint32_t tested = 0;
     for (size_t i = 0; i < n_; ++i) {
-      Instance& inst = e_.instances[i];
-      const MapPart& part = w_.part(inst.part);
-      const auto lines = inst.region.lines();
-      const Box box = sweptBox(inst, moves_[i]);  // verts_[i] are where the instance is
-      tested += static_cast<uint32_t>(lines.size());
-      for (size_t k = 0; k < lines.size(); ++k) {
-        const Segment& seg = part.segments()[lines[k]];
-        if (outside(seg, box)) continue;
-        const bool pierce = w_.isPierceable(e_, inst, k);
-        pierceNear_[i] |= pierce;
-        if (moves_[i] == Vec2w{}) continue;
-        const Line& line = part.lines()[lines[k]];
-        if (!pierce && !w_.blocks(e_, inst, k, verts_[i])) continue;  // a one-way line, from behind
-        if (pierce && (line.kind != LineKind::Warp || e_.instanceIn(part.warps()[line.warp].target) != nullptr))
-          continue;
-        const Sweep s = sweep(verts_[i], moves_[i], seg);
-        if (line.kind == LineKind::Warp && !pierce && s.startsInside()) {
-          // A warp that cannot be crossed this frame (no room on the far side) already overlapped:
-          // it still holds, so the instance may not go any further across it. Its face lies to the
-          // left of the warp line.
-          const Vec2w into{-(seg.b.y - seg.a.y), seg.b.x - seg.a.x};
-          if (dot(moves_[i], into) < 0 && hit_.improvedBy(Fraction::zero(), HitKind::Solid, i, lines[k]))
-            hit_ = {HitKind::Solid, Fraction::zero(), i, lines[k], s, {0, -into}};
-          continue;
-        }
-        if (!s.hitsWithinFrame()) continue;
-        const HitKind kind = pierce ? HitKind::Warp : HitKind::Solid;
-        if (hit_.improvedBy(s.enter, kind, i, lines[k])) hit_ = {kind, s.enter, i, lines[k], s, s.enterAxis};
-      }
-      Constraint bounds[4];
-      for (const Constraint& c : boundConstraints(verts_[i], box, bounds)) {
-        const int64_t rate = dot(c.c, moves_[i]);
-        if (rate <= 0 || rate <= c.slack) continue;  // not reached within the frame (t = slack / rate >= 1)
-        const Fraction when{c.slack, rate};
-        if (hit_.improvedBy(when, HitKind::Bound, i, kWorldBoundLine))
-          hit_ = {HitKind::Bound, when, i, kWorldBoundLine, {}, c};
-      }
-      if (moves_[i] == Vec2w{}) continue;
-      w_.forEachPlatformLine(inst.part, box, [&](const PlatformLine& l, LineIndex key) {
-        ++tested;
-        if ((l.kind == LineKind::OneWay && !wholyInFront(verts_[i], l.segment)) || w_.inPocket(e_, key)) return;
-        const Sweep s = sweep(verts_[i], moves_[i], l.segment);
-        if (s.hitsWithinFrame() && hit_.improvedBy(s.enter, HitKind::Solid, i, key))
-          hit_ = {HitKind::Solid, s.enter, i, key, s, s.enterAxis};
-      });
-      std::vector<Vec2>& other = w_.scratch.probe;
-      w_.forEachSolidNear(e_, inst.part, box, [&](const Entity& o, const Instance& oi) {
-        ++tested;
-        worldVertices(oi, other);
-        const Sweep s = sweep(verts_[i], moves_[i], other);
-        if (!s.hitsWithinFrame()) return;
-        if (!w_.steppedThisFrame(o)) unsteppedMet_ = std::min(unsteppedMet_, o.id.index);
-        const LineIndex key = kEntityKey | o.id.index;
-        if (hit_.improvedBy(s.enter, HitKind::Entity, i, key))
-          hit_ = {HitKind::Entity, s.enter, i, key, s, s.enterAxis, o.id.index};
-      });
+      const Box box = sweptBox(e_.instances[i], moves_[i]);  // verts_[i] are where the instance is
+      tested += firstLineHit(i, box);
+      firstBoundHit(i, box);
+      if (moves_[i] != Vec2w{}) tested += firstMovingHit(i, box);
     }
     e_.work += tested;
     w_.report.tested += tested;
+  }
+
+  // Instance i's first hit of its part's own lines (and which pierceable lines are near it): the
+  // lines tested.
+  uint32_t firstLineHit(size_t i, const Box& box) {
+    Instance& inst = e_.instances[i];
+    const MapPart& part = w_.part(inst.part);
+    const auto lines = inst.region.lines();
+    for (size_t k = 0; k < lines.size(); ++k) {
+      const Segment& seg = part.segments()[lines[k]];
+      if (outside(seg, box)) continue;
+      const bool pierce = w_.isPierceable(e_, inst, k);
+      pierceNear_[i] |= pierce;
+      if (moves_[i] == Vec2w{}) continue;
+      const Line& line = part.lines()[lines[k]];
+      if (!pierce && !w_.blocks(e_, inst, k, verts_[i])) continue;  // a one-way line, from behind
+      if (pierce && (line.kind != LineKind::Warp || e_.instanceIn(part.warps()[line.warp].target) != nullptr)) continue;
+      const Sweep s = sweep(verts_[i], moves_[i], seg);
+      if (line.kind == LineKind::Warp && !pierce && s.startsInside()) {
+        // A warp that cannot be crossed this frame (no room on the far side) already overlapped:
+        // it still holds, so the instance may not go any further across it. Its face lies to the
+        // left of the warp line.
+        const Vec2w into{-(seg.b.y - seg.a.y), seg.b.x - seg.a.x};
+        if (dot(moves_[i], into) < 0 && hit_.improvedBy(Fraction::zero(), HitKind::Solid, i, lines[k]))
+          hit_ = {HitKind::Solid, Fraction::zero(), i, lines[k], s, {0, -into}};
+        continue;
+      }
+      if (!s.hitsWithinFrame()) continue;
+      const HitKind kind = pierce ? HitKind::Warp : HitKind::Solid;
+      if (hit_.improvedBy(s.enter, kind, i, lines[k])) hit_ = {kind, s.enter, i, lines[k], s, s.enterAxis};
+    }
+    return static_cast<uint32_t>(lines.size());
+  }
+
+  // Instance i reaching the world's edge.
+  void firstBoundHit(size_t i, const Box& box) {
+    Constraint bounds[4];
+    for (const Constraint& c : boundConstraints(verts_[i], box, bounds)) {
+      const int64_t rate = dot(c.c, moves_[i]);
+      if (rate <= 0 || rate <= c.slack) continue;  // not reached within the frame (t = slack / rate >= 1)
+      const Fraction when{c.slack, rate};
+      if (hit_.improvedBy(when, HitKind::Bound, i, kWorldBoundLine))
+        hit_ = {HitKind::Bound, when, i, kWorldBoundLine, {}, c};
+    }
+  }
+
+  // Instance i's first hit of what moves: platforms' lines and solid bodies; the ones tested.
+  uint32_t firstMovingHit(size_t i, const Box& box) {
+    uint32_t tested = 0;
+    const Instance& inst = e_.instances[i];
+    w_.forEachPlatformLine(inst.part, box, [&](const PlatformLine& l, LineIndex key) {
+      ++tested;
+      if ((l.kind == LineKind::OneWay && !wholyInFront(verts_[i], l.segment)) || w_.inPocket(e_, key)) return;
+      const Sweep s = sweep(verts_[i], moves_[i], l.segment);
+      if (s.hitsWithinFrame() && hit_.improvedBy(s.enter, HitKind::Solid, i, key))
+        hit_ = {HitKind::Solid, s.enter, i, key, s, s.enterAxis};
+    });
+    std::vector<Vec2>& other = w_.scratch.probe;
+    w_.forEachSolidNear(e_, inst.part, box, [&](const Entity& o, const Instance& oi) {
+      ++tested;
+      worldVertices(oi, other);
+      const Sweep s = sweep(verts_[i], moves_[i], other);
+      if (!s.hitsWithinFrame()) return;
+      if (!w_.steppedThisFrame(o)) unsteppedMet_ = std::min(unsteppedMet_, o.id.index);
+      const LineIndex key = kEntityKey | o.id.index;
+      if (hit_.improvedBy(s.enter, HitKind::Entity, i, key))
+        hit_ = {HitKind::Entity, s.enter, i, key, s, s.enterAxis, o.id.index};
+    });
+    return tested;
   }
 
   // At the instant of a solid hit, the lines the polygon touches decide where it slides
@@ -193,12 +210,20 @@ class SubMove {
   void resolveContactNormal() {
     if (hit_.kind != HitKind::Solid && hit_.kind != HitKind::Entity) return;
     const size_t i = hit_.instance;
+    const Box box = sweptBox(e_.instances[i], moves_[i]);  // where verts_[i] are: a lift that failed moved nothing
+    OpenDirections& open = w_.scratch.open;
+    open.clear();
+    addTouchingLines(i, box, open);
+    addTouchingBodies(i, box, open);
+    chooseSlide(i, open);
+  }
+
+  // Each line instance i touches at the hit's instant, its normals found once, then added to `open`
+  // in line index order, so the choice never depends on the region's order.
+  void addTouchingLines(size_t i, const Box& box, OpenDirections& open) {
     Instance& inst = e_.instances[i];
     const MapPart& part = w_.part(inst.part);
     const auto lines = inst.region.lines();
-    const Box box = sweptBox(inst, moves_[i]);  // where verts_[i] are: a lift that failed moved nothing
-    // Each touching line's normals, found once; then added in line index order, so the choice never
-    // depends on the region's order.
     std::vector<WorldImpl::TouchingLine>& touchingLines = w_.scratch.touchingLines;
     std::vector<Vec2w>& normals = w_.scratch.lineNormals;
     touchingLines.clear();
@@ -223,35 +248,43 @@ class SubMove {
       if ((l.kind != LineKind::OneWay || wholyInFront(verts_[i], l.segment)) && !w_.inPocket(e_, key))
         touches(key, l.segment);
     });
-    std::sort(touchingLines.begin(), touchingLines.end(),
-              [](const WorldImpl::TouchingLine& a, const WorldImpl::TouchingLine& b) { return a.key < b.key; });
-    OpenDirections& open = w_.scratch.open;
-    open.clear();
-    for (const WorldImpl::TouchingLine& t : touchingLines) {
-      open.beginLine();
-      for (uint32_t k = t.begin; k < t.end; ++k) open.addNormal(normals[k]);
-    }
-    // Entities touched at that instant are obstacles too (in slot order: the index's order is not
-    // part of the result).
+    addInKeyOrder(touchingLines, normals, open);
+  }
+
+  // Bodies touched at that instant are obstacles too (in slot order: the index's order is not part
+  // of the result). One that can be pushed closes nothing unless it is the one met: sliding into it
+  // pushes it.
+  void addTouchingBodies(size_t i, const Box& box, OpenDirections& open) {
+    std::vector<WorldImpl::TouchingLine>& touching = w_.scratch.touchingLines;
+    std::vector<Vec2w>& normals = w_.scratch.lineNormals;
     std::vector<Vec2>& other = w_.scratch.probe;
-    touchingLines.clear();  // now the entities' slots
-    // One that can be pushed closes nothing unless it is the one met: sliding into it pushes it.
-    w_.forEachSolidNear(e_, inst.part, box, [&](const Entity& o, const Instance& oi) {
+    touching.clear();  // now the entities' slots
+    w_.forEachSolidNear(e_, e_.instances[i].part, box, [&](const Entity& o, const Instance& oi) {
       if (o.filter.pushable && !(hit_.kind == HitKind::Entity && hit_.otherSlot == o.id.index)) return;
       worldVertices(oi, other);
       const uint32_t begin = static_cast<uint32_t>(normals.size());
       if (touchingNormals(verts_[i], moves_[i], hit_.t, other, normals))
-        touchingLines.push_back({o.id.index, begin, static_cast<uint32_t>(normals.size())});
+        touching.push_back({o.id.index, begin, static_cast<uint32_t>(normals.size())});
     });
-    std::sort(touchingLines.begin(), touchingLines.end(),
+    addInKeyOrder(touching, normals, open);
+  }
+
+  static void addInKeyOrder(std::vector<WorldImpl::TouchingLine>& touching, const std::vector<Vec2w>& normals,
+                            OpenDirections& open) {
+    std::sort(touching.begin(), touching.end(),
               [](const WorldImpl::TouchingLine& a, const WorldImpl::TouchingLine& b) { return a.key < b.key; });
-    for (const WorldImpl::TouchingLine& t : touchingLines) {
+    for (const WorldImpl::TouchingLine& t : touching) {
       open.beginLine();
       for (uint32_t k = t.begin; k < t.end; ++k) open.addNormal(normals[k]);
     }
+  }
+
+  // Where instance i slides, given the directions its contacts leave open: along the open
+  // direction that keeps the most of its motion; none is a crease, and it stops.
+  void chooseSlide(size_t i, OpenDirections& open) {
     // Which way it wants to go: its exact motion (a copy's integer step is the anchor's turned and
     // rounded, and may point straight into a floor the exact motion slides along).
-    const Vec2w wanted = i == 0 ? moves_[0] : shortDirection(rotateQ30(inst.rotation, move_.motion));
+    const Vec2w wanted = i == 0 ? moves_[0] : shortDirection(rotateQ30(e_.instances[i].rotation, move_.motion));
     if (open.empty() || open.open(wanted)) return;
     int best = open.slideNormal(wanted);
     // Rounded down to whole units, a slow slide along a line can point a unit straight into it (its

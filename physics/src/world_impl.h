@@ -276,6 +276,14 @@ struct WorldImpl {
     EntityId other;
   };
   void entityOverlapEvents(Entity& e, const Path& path, std::vector<PathEvent>& events);
+  // When along its path an instance entered and left what it met: the sweep's times within the
+  // frame; the frame's start and end when it did not move or the sweep says no more.
+  static Fraction enterTime(bool moved, const Sweep& s) {
+    return moved && s.hasEnter && s.enter > Fraction::zero() ? s.enter : Fraction::zero();
+  }
+  static Fraction exitTime(bool moved, const Sweep& s) {
+    return moved && s.hasExit && s.exit < Fraction::one() ? s.exit : Fraction::one();
+  }
   void endEntityOverlaps(Entity& e, MapPartId part);
 
   // platforms.cpp
@@ -305,6 +313,7 @@ struct WorldImpl {
   // start decides, where the body may have gone).
   enum class CopyPlacing { Frame, Create, Crossed };
   std::optional<PlatformHit> updatePlatformCopies(uint32_t slot, Vec2w motion, CopyPlacing placing);
+  std::optional<LineIndex> copyEdgeOf(const Platform& pl, Vec2w motion);
   template <class Meets>
   std::optional<PlatformHit> firstBodyIn(const PlatformCopy& c, Meets&& meets);
   bool anyBodyIn(const PlatformCopy& c);
@@ -480,6 +489,10 @@ struct WorldImpl {
 
   // rotation.cpp
   bool rotateBy(Entity& e, int64_t delta);
+  bool rotationStepFits(Entity& e, Instance& inst, Angle angle, std::vector<Vec2>& next);
+  std::optional<Contact> rotationLineHit(Entity& e, Instance& inst, const std::vector<Vec2>& hull,
+                                         const std::vector<Vec2>& before);
+  std::optional<Contact> rotationBodyHit(Entity& e, const Instance& inst, const std::vector<Vec2>& hull);
 
   // warps.cpp
   // A new instance across the warp `warpLine` of instance `from`, where the point `fromQ30` maps;
@@ -539,6 +552,8 @@ struct WorldImpl {
     return i < path.pierceNear.size() && !path.pierceNear[i] && e.instances[i].overlapping.empty();
   }
   void firePierceEvents(Entity& e, const Path& path);
+  void instancePierceEvents(Entity& e, const Path& path, size_t i, std::vector<PathEvent>& events);
+  void firePathEvents(Entity& e, std::vector<PathEvent>& events);
   void fireOverContacts();
   Contact makeContact(const Entity& e, MapPartId part, LineIndex line, Fraction t, Vec2w normal,
                       ContactPoints points) const;

@@ -362,70 +362,76 @@ class Reader {
         advance();
         continue;
       }
-      const int escapeLine = line_, escapeColumn = column_;
-      advance();
-      const char e = peek();
-      auto bad = [&](const std::string& why) { failAt(escapeLine, escapeColumn, "escape: " + why); };
-      switch (e) {
-        // clang-format off
-        case 'a': out += '\a'; advance(); break;
-        case 'b': out += '\b'; advance(); break;
-        case 'f': out += '\f'; advance(); break;
-        case 'n': out += '\n'; advance(); break;
-        case 'r': out += '\r'; advance(); break;
-        case 't': out += '\t'; advance(); break;
-        case 'v': out += '\v'; advance(); break;
-        case '\\': case '"': case '\'': out += e; advance(); break;
-        // clang-format on
-        case '\n':
-        case '\r':
-          out += '\n';
-          advance();
-          break;
-        case 'x': {
-          advance();
-          if (!isHex(peek()) || !isHex(peek(1))) bad("\\x takes two hex digits");
-          out += static_cast<char>(hexValue(peek()) * 16 + hexValue(peek(1)));
-          skip(2);
-          break;
-        }
-        case 'z':
-          advance();
-          while (!atEnd() && isSpace(peek())) advance();
-          break;
-        case 'u': {
-          advance();
-          if (peek() != '{' || !isHex(peek(1))) bad("\\u takes {hex digits}");
-          advance();
-          uint32_t code = 0;
-          while (isHex(peek())) {
-            code = code * 16 + static_cast<uint32_t>(hexValue(peek()));
-            if (code > 0x10FFFF) bad("\\u{...} is past 10FFFF");
-            advance();
-          }
-          if (peek() != '}') bad("\\u{...} has no '}'");
-          if (code >= 0xD800 && code <= 0xDFFF) bad("\\u{...} is a UTF-16 surrogate");
-          advance();
-          appendUtf8(out, code);
-          break;
-        }
-        default: {
-          if (!isDigit(e))
-            bad(atEnd() ? "unfinished string" : "unknown escape '\\" + visibleText(std::string(1, e)) + "'");
-          int byte = 0;
-          for (int k = 0; k < 3 && isDigit(peek()); ++k) byte = byte * 10 + (peek() - '0'), advance();
-          if (byte > 255) bad("\\ddd is past 255");
-          out += static_cast<char>(byte);
-        }
+      escape(out);
+    }
+  }
+
+  // One escape after a '\\' (the reader is at the backslash): appended to `out`, as Lua reads it.
+  void escape(std::string& out) {
+    const int escapeLine = line_, escapeColumn = column_;
+    advance();
+    const char e = peek();
+    auto bad = [&](const std::string& why) { failAt(escapeLine, escapeColumn, "escape: " + why); };
+    switch (e) {
+      // clang-format off
+      case 'a': out += '\a'; advance(); break;
+      case 'b': out += '\b'; advance(); break;
+      case 'f': out += '\f'; advance(); break;
+      case 'n': out += '\n'; advance(); break;
+      case 'r': out += '\r'; advance(); break;
+      case 't': out += '\t'; advance(); break;
+      case 'v': out += '\v'; advance(); break;
+      case '\\': case '"': case '\'': out += e; advance(); break;
+      // clang-format on
+      case '\n':
+      case '\r':
+        out += '\n';
+        advance();
+        break;
+      case 'x':
+        advance();
+        if (!isHex(peek()) || !isHex(peek(1))) bad("\\x takes two hex digits");
+        out += static_cast<char>(hexValue(peek()) * 16 + hexValue(peek(1)));
+        skip(2);
+        break;
+      case 'z':
+        advance();
+        while (!atEnd() && isSpace(peek())) advance();
+        break;
+      case 'u':
+        appendUtf8(out, unicodeEscape(bad));
+        break;
+      default: {
+        if (!isDigit(e))
+          bad(atEnd() ? "unfinished string" : "unknown escape '\\" + visibleText(std::string(1, e)) + "'");
+        int byte = 0;
+        for (int k = 0; k < 3 && isDigit(peek()); ++k) byte = byte * 10 + (peek() - '0'), advance();
+        if (byte > 255) bad("\\ddd is past 255");
+        out += static_cast<char>(byte);
       }
     }
   }
 
-  // A number token as LuaJIT's lexer cuts it (name characters, '.', and a sign after an
-  // exponent's letter), then read exactly: decimal or hex, with an optional fraction and exponent.
-  double number() {
-    const bool hex = peek() == '0' && (peek(1) | 0x20) == 'x';
-    const char exponent = hex ? 'p' : 'e';
+  // \u{XXX} (the reader is at the 'u'): the code point, which must be one UTF-8 can hold.
+  template <class Bad>
+  uint32_t unicodeEscape(const Bad& bad) {
+    advance();
+    if (peek() != '{' || !isHex(peek(1))) bad("\\u takes {hex digits}");
+    advance();
+    uint32_t code = 0;
+    while (isHex(peek())) {
+      code = code * 16 + static_cast<uint32_t>(hexValue(peek()));
+      if (code > 0x10FFFF) bad("\\u{...} is past 10FFFF");
+      advance();
+    }
+    if (peek() != '}') bad("\\u{...} has no '}'");
+    if (code >= 0xD800 && code <= 0xDFFF) bad("\\u{...} is a UTF-16 surrogate");
+    advance();
+    return code;
+  }
+
+  // The end of the number token at pos_: name characters, '.', and a sign after the exponent's letter.
+  size_t numberEnd(char exponent) const {
     size_t end = pos_;
     while (end < text_.size()) {
       const char c = text_[end];
@@ -434,10 +440,14 @@ class Reader {
       else
         break;
     }
-    const std::string_view token = text_.substr(pos_, end - pos_);
-    const size_t start = hex ? 2 : 0;
-    // The digits, one optional '.', at least one digit, then an optional exponent with digits.
-    size_t i = start, digits = 0;
+    return end;
+  }
+
+  // Whether the token starts as a number: digits with one optional '.', at least one digit, then an
+  // optional exponent with digits. `end` is where that number ends (the token's size if it is all).
+  static bool numberPrefix(std::string_view token, bool hex, size_t& end) {
+    const char exponent = hex ? 'p' : 'e';
+    size_t i = hex ? 2 : 0, digits = 0;
     bool dot = false;
     for (; i < token.size(); ++i) {
       if (token[i] == '.' && !dot)
@@ -447,15 +457,27 @@ class Reader {
       else
         break;
     }
-    bool ok = digits > 0;
-    if (ok && i < token.size() && (token[i] | 0x20) == exponent) {
+    end = i;
+    if (digits == 0) return false;
+    if (i < token.size() && (token[i] | 0x20) == exponent) {
       ++i;
       if (i < token.size() && (token[i] == '+' || token[i] == '-')) ++i;
       const size_t first = i;
       while (i < token.size() && isDigit(token[i])) ++i;
-      ok = i > first;
+      end = i;
+      if (i == first) return false;
     }
-    if (!ok || i != token.size()) {
+    return true;
+  }
+
+  // A number token as LuaJIT's lexer cuts it, then read exactly: decimal or hex, with an optional
+  // fraction and exponent.
+  double number() {
+    const bool hex = peek() == '0' && (peek(1) | 0x20) == 'x';
+    const std::string_view token = text_.substr(pos_, numberEnd(hex ? 'p' : 'e') - pos_);
+    size_t end = 0;
+    const bool ok = numberPrefix(token, hex, end);
+    if (!ok || end != token.size()) {
       const std::string shown = visibleText(std::string(token.substr(0, 40)));
       if (ok && (token.back() | 0x20) == 'l') fail("'" + shown + "' is a 64-bit integer (a cdata), not a number");
       if (ok && (token.back() | 0x20) == 'i') fail("'" + shown + "' is a complex number (a cdata), not a number");

@@ -234,45 +234,56 @@ Editor::Request Editor::handle(const core::WindowInput& input) {
   return request;
 }
 
-void Editor::onKey(const core::KeyPress& key) {
-  const std::string& k = key.name;
-  if (key.ctrl) {
-    if (k == "Z" && !key.shift) {
-      if (!document_.undo()) return say("nothing to undo");
-      selection_.clear();  // the indices it held may name other segments now
-      rebuild();
-      say("undone: " + (document_.redoName()));
-    } else if (k == "Y" || (k == "Z" && key.shift)) {
-      if (!document_.redo()) return say("nothing to redo");
-      selection_.clear();
-      rebuild();
-      say("redone: " + document_.undoName());
-    } else if (k == "S") {
-      if (!loads_ && !key.shift) {
-        say("not saved: the level would not load (Ctrl+Shift+S saves it anyway): " +
-            (report_.errors.empty() ? std::string("see the check") : report_.errors[0].message));
-        return;
-      }
-      try {
-        document_.save();
-        say("saved " + document_.path() + (report_.errors.empty() ? "" : " (with errors: see the check)"));
-      } catch (const std::exception& e) {
-        say(std::string("not saved: ") + e.what());
-      }
-    } else if (k == "C") {
-      copySelection();
-    } else if (k == "V") {
-      paste();
-    } else if (k == "A" && cursor_) {
-      selection_.clear();
-      const int f = cursor_->point.face;
-      for (size_t i = 0; i < document_.level().faces[static_cast<size_t>(f)].lines.size(); ++i)
-        selection_.push_back({f, static_cast<int>(i)});
-      tool_ = Tool::Select;
-      say("selected the " + std::to_string(selection_.size()) + " segments of face " + std::to_string(f));
-    }
+void Editor::undoOrRedo(bool redo) {
+  if (!(redo ? document_.redo() : document_.undo())) return say(redo ? "nothing to redo" : "nothing to undo");
+  selection_.clear();  // the indices it held may name other segments now
+  rebuild();
+  say(redo ? "redone: " + document_.undoName() : "undone: " + document_.redoName());
+}
+
+void Editor::saveDocument(bool anyway) {
+  if (!loads_ && !anyway) {
+    say("not saved: the level would not load (Ctrl+Shift+S saves it anyway): " +
+        (report_.errors.empty() ? std::string("see the check") : report_.errors[0].message));
     return;
   }
+  try {
+    document_.save();
+    say("saved " + document_.path() + (report_.errors.empty() ? "" : " (with errors: see the check)"));
+  } catch (const std::exception& e) {
+    say(std::string("not saved: ") + e.what());
+  }
+}
+
+void Editor::selectFace() {
+  selection_.clear();
+  const int f = cursor_->point.face;
+  for (size_t i = 0; i < document_.level().faces[static_cast<size_t>(f)].lines.size(); ++i)
+    selection_.push_back({f, static_cast<int>(i)});
+  tool_ = Tool::Select;
+  say("selected the " + std::to_string(selection_.size()) + " segments of face " + std::to_string(f));
+}
+
+void Editor::onCtrlKey(const core::KeyPress& key) {
+  const std::string& k = key.name;
+  if (k == "Z" || k == "Y") undoOrRedo(k == "Y" || key.shift);
+  if (k == "S") saveDocument(key.shift);
+  if (k == "C") copySelection();
+  if (k == "V") paste();
+  if (k == "A" && cursor_) selectFace();
+}
+
+void Editor::moveMarkToCursor(bool start) {
+  const stage::LevelPoint at{cursor_->point.face, whole(cursor_->point)};
+  apply(start ? "move the start" : "move the goal", [&](stage::Level& l) {
+    stage::LevelPoint& p = start ? l.start : l.goal;
+    p.face = at.face, p.position = at.position;
+  });
+}
+
+void Editor::onKey(const core::KeyPress& key) {
+  const std::string& k = key.name;
+  if (key.ctrl) return onCtrlKey(key);
   if (k == "D") tool_ = Tool::Draw, drag_ = {};
   if (k == "S") tool_ = Tool::Select, drag_ = {};
   if (k == "T" || k == "Tab") {
@@ -287,14 +298,7 @@ void Editor::onKey(const core::KeyPress& key) {
     applyTag();
   }
   if (k == "O") toggleOneWay();
-  if ((k == "P" || k == "G") && cursor_) {
-    const stage::LevelPoint at{cursor_->point.face, whole(cursor_->point)};
-    const bool start = k == "P";
-    apply(start ? "move the start" : "move the goal", [&](stage::Level& l) {
-      stage::LevelPoint& p = start ? l.start : l.goal;
-      p.face = at.face, p.position = at.position;
-    });
-  }
+  if ((k == "P" || k == "G") && cursor_) moveMarkToCursor(k == "P");
   if (k == "V") cycleGravity();
   if (k == "F" && cursor_) faceHeadOn(cursor_->point.face);
   if (k == "Home") {
@@ -326,6 +330,12 @@ void Editor::onMouse(const core::MouseEvent& event, bool shift, bool alt) {
     if (cursor_) drag_ = {Drag::What::Draw, cursor_->point, {}, false, x, y};  // onMove placed it
     return;
   }
+  pressToSelect(x, y, shift, alt);
+}
+
+// A press of the select tool: on the start or the goal it takes that mark; on a segment it selects
+// it (Shift adds or takes away) and takes it, or its end; elsewhere it clears the selection.
+void Editor::pressToSelect(float x, float y, bool shift, bool alt) {
   const stage::Level& level = document_.level();
   const std::optional<Snapped> at = cursor_;
   if (nearPoint(x, y, level.start, kMarkPixels)) {
@@ -375,6 +385,52 @@ void Editor::onMove(float x, float y, bool shift, bool alt) {
   dragTo_ = onDragFace && cursor_ ? std::optional(cursor_->point) : std::nullopt;
 }
 
+void Editor::endDraw(const Drag& drag, physics::Vec2 a, physics::Vec2 b, FacePoint to, float x, float y) {
+  if (a == b) return;
+  const stage::LevelLine line{a, b, oneWay_, currentTag()};
+  const int face = drag.from.face;
+  if (apply("draw a segment", [&](stage::Level& l) { l.faces[static_cast<size_t>(face)].lines.push_back(line); })) {
+    selection_ = {{face, static_cast<int>(document_.level().faces[static_cast<size_t>(face)].lines.size()) - 1}};
+    if (drag.chain) drag_ = {Drag::What::Draw, to, {}, false, x, y, true};  // go on from its end
+  }
+}
+
+// Every end at that point on the face moves with it (a joint stays a joint); Alt moves the dragged
+// end alone. An end that would meet its segment's other end stays.
+void Editor::endMoveEnd(const Drag& drag, physics::Vec2 a, physics::Vec2 b) {
+  apply("move an end point", [&](stage::Level& l) {
+    auto& lines = l.faces[static_cast<size_t>(drag.segment.face)].lines;
+    for (size_t i = 0; i < lines.size(); ++i) {
+      stage::LevelLine& line = lines[i];
+      const bool dragged = static_cast<int>(i) == drag.segment.index;
+      if (!dragged && drag.alone) continue;
+      const bool moveA = dragged ? !drag.endB : line.a == a, moveB = dragged ? drag.endB : line.b == a;
+      if (moveA && line.b != b) line.a = b;
+      if (moveB && line.a != b) line.b = b;
+    }
+  });
+}
+
+void Editor::endMoveSegments(const Drag& drag, physics::Vec2 a, physics::Vec2 b) {
+  const stage::Level& level = document_.level();
+  const physics::Vec2 d{b.x - a.x, b.y - a.y};
+  const auto& corners = solid_.faces[static_cast<size_t>(drag.from.face)].corners;
+  for (const SegmentRef s : selection_) {
+    if (s.face != drag.from.face) continue;
+    const stage::LevelLine& l = level.faces[static_cast<size_t>(s.face)].lines[static_cast<size_t>(s.index)];
+    if (!insideExactly(corners, {l.a.x + d.x, l.a.y + d.y}) || !insideExactly(corners, {l.b.x + d.x, l.b.y + d.y}))
+      return say("not moved: it would take a segment off its face");
+  }
+  apply(selection_.size() == 1 ? "move a segment" : "move " + std::to_string(selection_.size()) + " segments",
+        [&](stage::Level& l) {
+          for (const SegmentRef s : selection_) {
+            if (s.face != drag.from.face) continue;
+            stage::LevelLine& line = l.faces[static_cast<size_t>(s.face)].lines[static_cast<size_t>(s.index)];
+            line.a = {line.a.x + d.x, line.a.y + d.y}, line.b = {line.b.x + d.x, line.b.y + d.y};
+          }
+        });
+}
+
 void Editor::endDrag(float x, float y) {
   const Drag drag = drag_;
   const bool moved = std::hypot(x - drag.mouseX, y - drag.mouseY) >= kClickPixels;
@@ -386,67 +442,15 @@ void Editor::endDrag(float x, float y) {
   if (drag.what == Drag::What::None || drag.what == Drag::What::Orbit || !dragTo_) return;
   const FacePoint to = *dragTo_;
   const physics::Vec2 a = whole(drag.from), b = whole(to);
-  const stage::Level& level = document_.level();
-  switch (drag.what) {
-    case Drag::What::Draw: {
-      if (a == b) return;
-      const stage::LevelLine line{a, b, oneWay_, currentTag()};
-      const int face = drag.from.face;
-      if (apply("draw a segment", [&](stage::Level& l) { l.faces[static_cast<size_t>(face)].lines.push_back(line); })) {
-        selection_ = {{face, static_cast<int>(level.faces[static_cast<size_t>(face)].lines.size()) - 1}};
-        if (drag.chain) drag_ = {Drag::What::Draw, to, {}, false, x, y, true};  // go on from its end
-      }
-      return;
-    }
-    case Drag::What::MoveEnd:
-      if (!moved) return;
-      // Every end at that point on the face moves with it (a joint stays a joint); Alt moves the
-      // dragged end alone. An end that would meet its segment's other end stays.
-      apply("move an end point", [&](stage::Level& l) {
-        auto& lines = l.faces[static_cast<size_t>(drag.segment.face)].lines;
-        for (size_t i = 0; i < lines.size(); ++i) {
-          stage::LevelLine& line = lines[i];
-          const bool dragged = static_cast<int>(i) == drag.segment.index;
-          if (!dragged && drag.alone) continue;
-          const bool moveA = dragged ? !drag.endB : line.a == a, moveB = dragged ? drag.endB : line.b == a;
-          if (moveA && line.b != b) line.a = b;
-          if (moveB && line.a != b) line.b = b;
-        }
-      });
-      return;
-    case Drag::What::MoveSegments: {
-      if (!moved) return;
-      const physics::Vec2 d{b.x - a.x, b.y - a.y};
-      const auto& corners = solid_.faces[static_cast<size_t>(drag.from.face)].corners;
-      for (const SegmentRef s : selection_) {
-        if (s.face != drag.from.face) continue;
-        const stage::LevelLine& l = level.faces[static_cast<size_t>(s.face)].lines[static_cast<size_t>(s.index)];
-        if (!insideExactly(corners, {l.a.x + d.x, l.a.y + d.y}) || !insideExactly(corners, {l.b.x + d.x, l.b.y + d.y}))
-          return say("not moved: it would take a segment off its face");
-      }
-      apply(selection_.size() == 1 ? "move a segment" : "move " + std::to_string(selection_.size()) + " segments",
-            [&](stage::Level& l) {
-              for (const SegmentRef s : selection_) {
-                if (s.face != drag.from.face) continue;
-                stage::LevelLine& line = l.faces[static_cast<size_t>(s.face)].lines[static_cast<size_t>(s.index)];
-                line.a = {line.a.x + d.x, line.a.y + d.y}, line.b = {line.b.x + d.x, line.b.y + d.y};
-              }
-            });
-      return;
-    }
-    case Drag::What::MoveStart:
-    case Drag::What::MoveGoal: {
-      if (!moved) return;
-      const bool start = drag.what == Drag::What::MoveStart;
-      apply(start ? "move the start" : "move the goal", [&](stage::Level& l) {
-        stage::LevelPoint& p = start ? l.start : l.goal;
-        p.face = to.face, p.position = b;
-      });
-      return;
-    }
-    default:
-      return;
-  }
+  if (drag.what == Drag::What::Draw) return endDraw(drag, a, b, to, x, y);
+  if (!moved) return;  // a click on a segment or a mark selects it and moves nothing
+  if (drag.what == Drag::What::MoveEnd) return endMoveEnd(drag, a, b);
+  if (drag.what == Drag::What::MoveSegments) return endMoveSegments(drag, a, b);
+  const bool start = drag.what == Drag::What::MoveStart;
+  apply(start ? "move the start" : "move the goal", [&](stage::Level& l) {
+    stage::LevelPoint& p = start ? l.start : l.goal;
+    p.face = to.face, p.position = b;
+  });
 }
 
 std::optional<Snapped> Editor::snapAt(float x, float y, int onFace, bool shift, bool alt) const {

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <set>
 #include <unistd.h>
 
 #include "package_paths.h"
@@ -54,6 +55,42 @@ void writeNew(const fs::path& path, const std::string& bytes) {
   if (!ok) throw PackageError(path.string() + ": cannot write it");
 }
 
+// The manifest, read from the package's first entry (which must be it).
+PackageManifest firstEntryManifest(archive* a, const std::string& name, mode_t type, const std::string& archivePath) {
+  const std::string at = archivePath + ": ";
+  if (name != "package.lua" || type != AE_IFREG)
+    throw PackageError(at + "not a package: its first entry is '" + name.substr(0, 80) + "', not package.lua");
+  PackageManifest manifest = parseManifest(readData(a, 1 << 20, at + "package.lua"), archivePath + ":package.lua");
+  uint64_t total = 0;
+  std::set<std::string> paths;
+  for (const PackageFile& f : manifest.files) total += f.bytes, paths.insert(f.path);
+  if (total > kMaxTotalBytes) throw PackageError(at + "its files add up to more than a package holds");
+  if (!paths.count("scene.lua") || !paths.count("finish.replay"))
+    throw PackageError(at + "a package holds its level's scene.lua and finish.replay, a run to its goal");
+  return manifest;
+}
+
+// The path inside the package's folder of an entry after the manifest, which must be a regular
+// file there; "" for a folder there (made as its files need it).
+std::string entryPath(archive_entry* entry, const std::string& name, mode_t type, const std::string& folder,
+                      const std::string& at) {
+  const std::string prefix = folder + "/";
+  if (type == AE_IFDIR && (name == prefix || name.rfind(prefix, 0) == 0)) return "";
+  if (name.rfind(prefix, 0) != 0)
+    throw PackageError(at + "'" + name.substr(0, 80) + "' lies outside the package's folder " + prefix);
+  const std::string path = name.substr(prefix.size());
+  if (const std::string why = pathProblem(path); !why.empty())
+    throw PackageError(at + "'" + name.substr(0, 80) + "': " + why);
+  if (type != AE_IFREG)
+    throw PackageError(at + "'" + name + "' is " +
+                       (type == AE_IFLNK   ? "a link"
+                        : type == AE_IFDIR ? "a folder"
+                                           : "not a regular file") +
+                       ": a package holds regular files only");
+  if (archive_entry_hardlink(entry)) throw PackageError(at + "'" + name + "' is a hard link: regular files only");
+  return path;
+}
+
 PackageManifest unpack(const std::string& archivePath, const fs::path& into) {
   Reader r;
   archive_read_support_filter_gzip(r.a);
@@ -74,30 +111,12 @@ PackageManifest unpack(const std::string& archivePath, const fs::path& into) {
     const std::string name = raw ? raw : "";
     const mode_t type = archive_entry_filetype(entry);
     if (!manifest) {
-      if (name != "package.lua" || type != AE_IFREG)
-        throw PackageError(at + "not a package: its first entry is '" + name.substr(0, 80) + "', not package.lua");
-      manifest = parseManifest(readData(r.a, 1 << 20, at + "package.lua"), archivePath + ":package.lua");
-      uint64_t total = 0;
-      for (const PackageFile& f : manifest->files) total += f.bytes, expected[f.path] = &f;
-      if (total > kMaxTotalBytes) throw PackageError(at + "its files add up to more than a package holds");
-      if (!expected.count("scene.lua") || !expected.count("finish.replay"))
-        throw PackageError(at + "a package holds its level's scene.lua and finish.replay, a run to its goal");
+      manifest = firstEntryManifest(r.a, name, type, archivePath);
+      for (const PackageFile& f : manifest->files) expected[f.path] = &f;
       continue;
     }
-    const std::string prefix = manifest->folder + "/";
-    if (type == AE_IFDIR && (name == prefix || name.rfind(prefix, 0) == 0)) continue;  // made as files need them
-    if (name.rfind(prefix, 0) != 0)
-      throw PackageError(at + "'" + name.substr(0, 80) + "' lies outside the package's folder " + prefix);
-    const std::string path = name.substr(prefix.size());
-    if (const std::string why = pathProblem(path); !why.empty())
-      throw PackageError(at + "'" + name.substr(0, 80) + "': " + why);
-    if (type != AE_IFREG)
-      throw PackageError(at + "'" + name + "' is " +
-                         (type == AE_IFLNK   ? "a link"
-                          : type == AE_IFDIR ? "a folder"
-                                             : "not a regular file") +
-                         ": a package holds regular files only");
-    if (archive_entry_hardlink(entry)) throw PackageError(at + "'" + name + "' is a hard link: regular files only");
+    const std::string path = entryPath(entry, name, type, manifest->folder, at);
+    if (path.empty()) continue;
     const auto found = expected.find(path);
     if (found == expected.end()) throw PackageError(at + "'" + name + "' is not in its manifest");
     if (!found->second) throw PackageError(at + "'" + name + "' is in it twice");

@@ -215,6 +215,42 @@ core::Buttons Window::padButtons(SDL_GameController* pad) const {
   return held;
 }
 
+void Window::keyDown(const SDL_KeyboardEvent& key, core::WindowInput& input) {
+  input.keys.push_back({SDL_GetScancodeName(key.keysym.scancode), (key.keysym.mod & KMOD_CTRL) != 0,
+                        (key.keysym.mod & KMOD_SHIFT) != 0, (key.keysym.mod & KMOD_ALT) != 0});
+  if (key.repeat && key.keysym.sym == SDLK_BACKSPACE) input.pressed.push_back(core::Key::Backspace);
+  if (key.repeat) return;
+  input.tapped |= buttonOf(key.keysym.scancode);
+  input.lastKey = SDL_GetScancodeName(key.keysym.scancode);
+  if (key.keysym.sym == SDLK_F11) {
+    const bool full = SDL_GetWindowFlags(window_) & SDL_WINDOW_FULLSCREEN_DESKTOP;
+    SDL_SetWindowFullscreen(window_, full ? 0 : SDL_WINDOW_FULLSCREEN_DESKTOP);
+  } else if (const auto k = keyOf(key.keysym.sym)) {
+    input.pressed.push_back(*k);
+  }
+}
+
+// A pad plugged in is opened (no restart); one unplugged is let go.
+void Window::padPlugged(const SDL_ControllerDeviceEvent& device) {
+  if (device.type == SDL_CONTROLLERDEVICEADDED) {
+    if (SDL_GameController* pad = SDL_GameControllerOpen(device.which)) pads_.push_back(pad);
+    return;
+  }
+  for (size_t i = 0; i < pads_.size(); ++i)
+    if (SDL_JoystickInstanceID(SDL_GameControllerGetJoystick(pads_[i])) == device.which) {
+      SDL_GameControllerClose(pads_[i]);
+      pads_.erase(pads_.begin() + static_cast<std::ptrdiff_t>(i));
+      return;
+    }
+}
+
+void Window::padButtonDown(const SDL_ControllerButtonEvent& button, core::WindowInput& input) {
+  const auto b = static_cast<SDL_GameControllerButton>(button.button);
+  if (button.button < SDL_CONTROLLER_BUTTON_MAX) input.tapped |= padButtons_[button.button];
+  if (const char* name = SDL_GameControllerGetStringForButton(b)) input.lastPadButton = name;
+  if (const auto key = keyOf(b)) input.pressed.push_back(*key);
+}
+
 core::WindowInput Window::pollEvents() {
   core::WindowInput input;
   const float dpi = pixelsPerPoint();
@@ -246,37 +282,14 @@ core::WindowInput Window::pollEvents() {
         break;
       }
       case SDL_KEYDOWN:
-        input.keys.push_back({SDL_GetScancodeName(event.key.keysym.scancode), (event.key.keysym.mod & KMOD_CTRL) != 0,
-                              (event.key.keysym.mod & KMOD_SHIFT) != 0, (event.key.keysym.mod & KMOD_ALT) != 0});
-        if (event.key.repeat && event.key.keysym.sym == SDLK_BACKSPACE) input.pressed.push_back(core::Key::Backspace);
-        if (event.key.repeat) break;
-        input.tapped |= buttonOf(event.key.keysym.scancode);
-        input.lastKey = SDL_GetScancodeName(event.key.keysym.scancode);
-        if (event.key.keysym.sym == SDLK_F11) {
-          const bool full = SDL_GetWindowFlags(window_) & SDL_WINDOW_FULLSCREEN_DESKTOP;
-          SDL_SetWindowFullscreen(window_, full ? 0 : SDL_WINDOW_FULLSCREEN_DESKTOP);
-        } else if (const auto key = keyOf(event.key.keysym.sym)) {
-          input.pressed.push_back(*key);
-        }
+        keyDown(event.key, input);
         break;
       case SDL_CONTROLLERDEVICEADDED:
-        if (SDL_GameController* pad = SDL_GameControllerOpen(event.cdevice.which)) pads_.push_back(pad);
-        break;
       case SDL_CONTROLLERDEVICEREMOVED:
-        for (size_t i = 0; i < pads_.size(); ++i)
-          if (SDL_JoystickInstanceID(SDL_GameControllerGetJoystick(pads_[i])) == event.cdevice.which) {
-            SDL_GameControllerClose(pads_[i]);
-            pads_.erase(pads_.begin() + static_cast<std::ptrdiff_t>(i));
-            break;
-          }
+        padPlugged(event.cdevice);
         break;
       case SDL_CONTROLLERBUTTONDOWN:
-        if (event.cbutton.button < SDL_CONTROLLER_BUTTON_MAX) input.tapped |= padButtons_[event.cbutton.button];
-        if (const char* name =
-                SDL_GameControllerGetStringForButton(static_cast<SDL_GameControllerButton>(event.cbutton.button)))
-          input.lastPadButton = name;
-        if (const auto key = keyOf(static_cast<SDL_GameControllerButton>(event.cbutton.button)))
-          input.pressed.push_back(*key);
+        padButtonDown(event.cbutton, input);
         break;
       default:
         break;

@@ -47,6 +47,9 @@ class Window {
  private:
   core::Buttons buttonOf(SDL_Scancode key) const { return key >= 0 && key < SDL_NUM_SCANCODES ? buttons_[key] : 0; }
   core::Buttons heldButtons() const;
+  void keyDown(const SDL_KeyboardEvent& key, core::WindowInput& input);
+  void padPlugged(const SDL_ControllerDeviceEvent& device);
+  void padButtonDown(const SDL_ControllerButtonEvent& button, core::WindowInput& input);
   core::Buttons padButtons(SDL_GameController* pad) const;
 
   core::Buttons buttons_[SDL_NUM_SCANCODES] = {};             // by scancode: the InputFrame bits it holds

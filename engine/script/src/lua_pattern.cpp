@@ -283,27 +283,8 @@ class Matcher {
           if (p + 1 == patternEnd_) return s == subjectEnd_ ? s : nullptr;
           break;
         case '%':
-          if (p + 1 < patternEnd_ && p[1] == 'b') {
-            s = balanced(s, p + 2);
+          if (special(s, p)) {
             if (!s) return nullptr;
-            p += 4;
-            continue;
-          }
-          if (p + 1 < patternEnd_ && p[1] == 'f') {
-            const char* set = p + 2;
-            if (set >= patternEnd_ || *set != '[') throw Refusal{"missing '[' after '%f' in pattern"};
-            const CompiledSet& frontier = setAt(set);
-            const int before = s == subject_ ? 0 : uc(s[-1]);
-            const int here = s < subjectEnd_ ? uc(*s) : 0;
-            step();
-            if (frontier.chars.has(before) || !frontier.chars.has(here)) return nullptr;
-            p = frontier.end;
-            continue;
-          }
-          if (p + 1 < patternEnd_ && isDigit(uc(p[1]))) {
-            s = backReference(s, uc(p[1]));
-            if (!s) return nullptr;
-            p += 2;
             continue;
           }
           break;
@@ -334,6 +315,38 @@ class Matcher {
           continue;
       }
     }
+  }
+
+  // A '%b', '%f' or back-reference item at p: true with s past what it matched (null if it failed)
+  // and p past the item; false when p holds none of them (a class such as %d: a single character).
+  bool special(const char*& s, const char*& p) {
+    if (p + 1 >= patternEnd_) return false;
+    if (p[1] == 'b') {
+      s = balanced(s, p + 2);
+      p += 4;
+      return true;
+    }
+    if (p[1] == 'f') {
+      s = frontier(s, p);
+      return true;
+    }
+    if (!isDigit(uc(p[1]))) return false;
+    s = backReference(s, uc(p[1]));
+    p += 2;
+    return true;
+  }
+
+  // '%f[set]' at p: s if the character before s is outside the set and the one at s inside it
+  // (the subject's ends count as '\0'), else null; p moves past the set.
+  const char* frontier(const char* s, const char*& p) {
+    const char* set = p + 2;
+    if (set >= patternEnd_ || *set != '[') throw Refusal{"missing '[' after '%f' in pattern"};
+    const CompiledSet& compiled = setAt(set);
+    const int before = s == subject_ ? 0 : uc(s[-1]);
+    const int here = s < subjectEnd_ ? uc(*s) : 0;
+    step();
+    p = compiled.end;
+    return compiled.chars.has(before) || !compiled.chars.has(here) ? nullptr : s;
   }
 
   // The longest run of the class at p, then shorter ones until the rest matches.

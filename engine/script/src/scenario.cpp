@@ -599,70 +599,94 @@ std::string traceText(const GameStatus& s) {
   return out;
 }
 
+// --trace's lines for frame f: the game's state every `traceEvery` frames, and the sounds on the
+// frame they play, whatever the trace's period (a scenario expects them there).
+void traceFrame(uint64_t f, const core::Scene& scene, ScriptSystem* scripts, uint64_t traceEvery,
+                const std::string& path) {
+  if (traceEvery == 0) return;
+  if (scripts && f % traceEvery == 0)
+    std::fprintf(stderr, "%s: frame %llu: %s\n", path.c_str(), static_cast<unsigned long long>(f),
+                 traceText(scripts->status()).c_str());
+  if (!scene.sounds().thisFrame().empty())
+    std::fprintf(stderr, "%s: frame %llu: sounds %s\n", path.c_str(), static_cast<unsigned long long>(f),
+                 heardText(scene).c_str());
+}
+
+std::string checkSwitches(const std::vector<uint32_t>& expected, const GameStatus& s) {
+  std::vector<uint32_t> on;
+  for (const uint32_t tag : s.openTags)
+    if (tag > 1000 && tag < 2000) on.push_back(tag - 1000);
+  std::sort(on.begin(), on.end());
+  auto text = [](const std::vector<uint32_t>& ids) {
+    std::string out = "{";
+    for (size_t i = 0; i < ids.size(); ++i) out += (i ? ", " : " ") + std::to_string(ids[i]);
+    return out + (ids.empty() ? "}" : " }");
+  };
+  return on == expected ? "" : "switches on " + text(on) + ", expected " + text(expected);
+}
+
+template <class Want>
+std::string checkCheckpoint(const Want& want, const GameStatus& s) {
+  auto text = [](bool has, int64_t face, int64_t x, int64_t y) {
+    return has ? "face " + std::to_string(face) + " (" + std::to_string(x) + ", " + std::to_string(y) + ")"
+               : std::string("none");
+  };
+  const bool same = want ? s.hasCheckpoint && s.checkpointFace == (*want)[0] && s.checkpointX == (*want)[1] &&
+                               s.checkpointY == (*want)[2]
+                         : !s.hasCheckpoint;
+  if (same) return "";
+  return "checkpoint " + text(s.hasCheckpoint, s.checkpointFace, s.checkpointX, s.checkpointY) + ", expected " +
+         (want ? text(true, (*want)[0], (*want)[1], (*want)[2]) : "none");
+}
+
+std::string checkSounds(const std::vector<std::string>& expected, const core::Scene& scene) {
+  const auto& heard = scene.sounds().thisFrame();
+  for (const std::string& name : expected)
+    if (std::none_of(heard.begin(), heard.end(), [&](const core::SoundEvent& e) { return e.name == name; }))
+      return "expected the sound '" + name + "', heard " + heardText(scene);
+  return "";
+}
+
+// Where the player must be at frame f: on a face, inside a box.
+// The game's status is read only on a frame that checks it.
+std::string checkPlace(const Plan& plan, uint64_t f, ScriptSystem& scripts) {
+  if (auto face = plan.faceAt.find(f); face != plan.faceAt.end()) {
+    const GameStatus s = scripts.status();
+    if (s.face != face->second)
+      return "player on face " + std::to_string(s.face) + ", expected face " + std::to_string(face->second);
+  }
+  for (const Box& b : plan.inside) {
+    if (b.frame != f) continue;
+    const GameStatus s = scripts.status();
+    if (s.face != b.face || s.x < b.x0 || s.x > b.x1 || s.y < b.y0 || s.y > b.y1)
+      return "player at face " + std::to_string(s.face) + " (" + std::to_string(s.x) + ", " + std::to_string(s.y) +
+             "), expected inside face " + std::to_string(b.face) + " [" + std::to_string(b.x0) + ", " +
+             std::to_string(b.y0) + "]-[" + std::to_string(b.x1) + ", " + std::to_string(b.y1) + "]";
+  }
+  return "";
+}
+
 // The checks of frame f; "" when they pass.
 // `filesNote`: said before a hash mismatch ("" or why the recorded hashes may no longer hold).
 std::string checkFrame(const Plan& plan, uint64_t f, core::Scene& scene, ScriptSystem* scripts, uint64_t traceEvery,
                        const std::string& path, const std::string& filesNote) {
   const std::string at = "frame " + std::to_string(f) + ": ";
-  if (traceEvery > 0 && scripts && f % traceEvery == 0) {
-    std::fprintf(stderr, "%s: frame %llu: %s\n", path.c_str(), static_cast<unsigned long long>(f),
-                 traceText(scripts->status()).c_str());
-  }
-  // Sounds are traced on the frame they play, whatever the trace's period: a scenario expects them there.
-  if (traceEvery > 0 && !scene.sounds().thisFrame().empty())
-    std::fprintf(stderr, "%s: frame %llu: sounds %s\n", path.c_str(), static_cast<unsigned long long>(f),
-                 heardText(scene).c_str());
-  if (auto expected = plan.switchesAt.find(f); expected != plan.switchesAt.end() && scripts) {
-    std::vector<uint32_t> on;
-    for (const uint32_t tag : scripts->status().openTags)
-      if (tag > 1000 && tag < 2000) on.push_back(tag - 1000);
-    std::sort(on.begin(), on.end());
-    auto text = [](const std::vector<uint32_t>& ids) {
-      std::string out = "{";
-      for (size_t i = 0; i < ids.size(); ++i) out += (i ? ", " : " ") + std::to_string(ids[i]);
-      return out + (ids.empty() ? "}" : " }");
-    };
-    if (on != expected->second) return at + "switches on " + text(on) + ", expected " + text(expected->second);
-  }
-  if (auto expected = plan.checkpointAt.find(f); expected != plan.checkpointAt.end() && scripts) {
-    const GameStatus s = scripts->status();
-    auto text = [](bool has, int64_t face, int64_t x, int64_t y) {
-      return has ? "face " + std::to_string(face) + " (" + std::to_string(x) + ", " + std::to_string(y) + ")"
-                 : std::string("none");
-    };
-    const auto& want = expected->second;
-    const bool same = want ? s.hasCheckpoint && s.checkpointFace == (*want)[0] && s.checkpointX == (*want)[1] &&
-                                 s.checkpointY == (*want)[2]
-                           : !s.hasCheckpoint;
-    if (!same)
-      return at + "checkpoint " + text(s.hasCheckpoint, s.checkpointFace, s.checkpointX, s.checkpointY) +
-             ", expected " + (want ? text(true, (*want)[0], (*want)[1], (*want)[2]) : "none");
-  }
-  if (auto expected = plan.soundsAt.find(f); expected != plan.soundsAt.end())
-    for (const std::string& name : expected->second) {
-      const auto& heard = scene.sounds().thisFrame();
-      if (std::none_of(heard.begin(), heard.end(), [&](const core::SoundEvent& e) { return e.name == name; }))
-        return at + "expected the sound '" + name + "', heard " + heardText(scene);
-    }
+  traceFrame(f, scene, scripts, traceEvery, path);
+  std::string failed;
+  if (auto expected = plan.switchesAt.find(f); expected != plan.switchesAt.end() && scripts)
+    failed = checkSwitches(expected->second, scripts->status());
+  if (auto expected = plan.checkpointAt.find(f); failed.empty() && expected != plan.checkpointAt.end() && scripts)
+    failed = checkCheckpoint(expected->second, scripts->status());
+  if (auto expected = plan.soundsAt.find(f); failed.empty() && expected != plan.soundsAt.end())
+    failed = checkSounds(expected->second, scene);
+  if (!failed.empty()) return at + failed;
   if (const size_t overlaps = scene.world().countOverlaps(); overlaps != 0)
     return at + std::to_string(overlaps) + " instance(s) overlap a solid line";
   if (auto h = plan.hashAt.find(f); h != plan.hashAt.end() && hex(scene.world().stateHash()) != h->second)
     return filesNote + at + "state hash " + hex(scene.world().stateHash()) + ", expected " + h->second;
   if (!scripts) return "";
-  if (auto face = plan.faceAt.find(f); face != plan.faceAt.end()) {
-    const GameStatus s = scripts->status();
-    if (s.face != face->second)
-      return at + "player on face " + std::to_string(s.face) + ", expected face " + std::to_string(face->second);
-  }
-  for (const Box& b : plan.inside) {
-    if (b.frame != f) continue;
-    const GameStatus s = scripts->status();
-    if (s.face != b.face || s.x < b.x0 || s.x > b.x1 || s.y < b.y0 || s.y > b.y1)
-      return at + "player at face " + std::to_string(s.face) + " (" + std::to_string(s.x) + ", " + std::to_string(s.y) +
-             "), expected inside face " + std::to_string(b.face) + " [" + std::to_string(b.x0) + ", " +
-             std::to_string(b.y0) + "]-[" + std::to_string(b.x1) + ", " + std::to_string(b.y1) + "]";
-  }
-  return "";
+  failed = checkPlace(plan, f, *scripts);
+  return failed.empty() ? "" : at + failed;
 }
 }  // namespace
 

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <optional>
 #include <span>
 
 #include "platon/stage/level.h"
@@ -130,35 +131,42 @@ class LineReader {
   bool plainSegment(std::array<int32_t, 4>& values, int& lineNumber, int& column, int& endColumn) {
     const char* const lineStart = text_.data() + at_;
     const char* const end = text_.data() + text_.size();
-    const char* p = lineStart;
-    auto blanks = [&] {
-      while (p < end && (*p == ' ' || *p == '\t')) ++p;
-    };
-    blanks();
+    const char* p = skipBlanks(lineStart, end);
     const char* const first = p;
     const char* third = p;  // where b's x is written
-    for (int32_t& v : values) {
-      if (&v != &values[0]) {
+    for (size_t i = 0; i < values.size(); ++i) {
+      if (i > 0) {
         if (p == end || (*p != ' ' && *p != '\t')) return false;
-        blanks();
+        p = skipBlanks(p, end);
       }
-      if (&v == &values[2]) third = p;
-      const bool negative = p < end && *p == '-';
-      if (p < end && (*p == '-' || *p == '+')) ++p;
-      const char* const digits = p;
-      int64_t value = 0;
-      for (unsigned d; p < end && p - digits < 10 && (d = static_cast<unsigned>(*p - '0')) < 10; ++p)
-        value = value * 10 + d;
-      if (p == digits || (p < end && kValueByte[static_cast<unsigned char>(*p)]) || value > (1 << 29)) return false;
-      v = static_cast<int32_t>(negative ? -value : value);
+      if (i == 2) third = p;
+      if (!plainValue(p, end, values[i])) return false;
     }
-    blanks();
+    p = skipBlanks(p, end);
     if (p < end && *p == '\r' && p + 1 < end && p[1] == '\n') ++p;
     if (p < end && *p != '\n') return false;
     at_ = static_cast<size_t>(p - text_.data()) + 1;
     lineNumber = ++number_;
     column = static_cast<int>(first - lineStart) + 1;
     endColumn = static_cast<int>(third - lineStart) + 1;
+    return true;
+  }
+
+  static const char* skipBlanks(const char* p, const char* end) {
+    while (p < end && (*p == ' ' || *p == '\t')) ++p;
+    return p;
+  }
+
+  // A whole number within +-2^29 at p, ended by a byte that is no part of a value: true with p past it.
+  static bool plainValue(const char*& p, const char* end, int32_t& v) {
+    const bool negative = p < end && *p == '-';
+    if (p < end && (*p == '-' || *p == '+')) ++p;
+    const char* const digits = p;
+    int64_t value = 0;
+    for (unsigned d; p < end && p - digits < 10 && (d = static_cast<unsigned>(*p - '0')) < 10; ++p)
+      value = value * 10 + d;
+    if (p == digits || (p < end && kValueByte[static_cast<unsigned char>(*p)]) || value > (1 << 29)) return false;
+    v = static_cast<int32_t>(negative ? -value : value);
     return true;
   }
 
@@ -261,40 +269,45 @@ class Parser {
       fail(line, line.tokens[hi], std::string(what) + ": unexpected " + quoted(line.tokens[hi].text));
   }
 
-  // A decimal number: digits with an optional sign, point and exponent; nothing else.
-  double number(const TextLine& line, const Token& t, double lo, double hi, const char* what) const {
-    // Most numbers in a level are plain integers: read those directly.
-    const std::string_view text = t.text;
-    if (!text.empty() && text.size() <= 10) {
-      size_t k = text[0] == '-' || text[0] == '+' ? 1 : 0;
-      int64_t value = 0;
-      bool digits = k < text.size();
-      for (; k < text.size() && digits; ++k) {
-        digits = text[k] >= '0' && text[k] <= '9';
-        value = value * 10 + (text[k] - '0');
-      }
-      if (digits) {
-        const double v = static_cast<double>(text[0] == '-' ? -value : value);
-        if (v >= lo && v <= hi) return v;
-      }
+  // A plain integer of at most 10 characters (most numbers in a level), read directly; none for
+  // anything else.
+  static std::optional<double> plainInteger(std::string_view text) {
+    if (text.empty() || text.size() > 10) return std::nullopt;
+    size_t k = text[0] == '-' || text[0] == '+' ? 1 : 0;
+    if (k == text.size()) return std::nullopt;
+    int64_t value = 0;
+    for (; k < text.size(); ++k) {
+      if (text[k] < '0' || text[k] > '9') return std::nullopt;
+      value = value * 10 + (text[k] - '0');
     }
-    const std::string s(t.text);
+    return static_cast<double>(text[0] == '-' ? -value : value);
+  }
+
+  // Digits with an optional sign, point and exponent, and nothing else.
+  static bool decimalForm(const std::string& s) {
+    auto digitsAt = [&](size_t& i) {
+      const size_t first = i;
+      while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) ++i;
+      return i - first;
+    };
     size_t i = 0;
     if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
-    size_t digits = 0;
-    while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) ++i, ++digits;
-    if (i < s.size() && s[i] == '.') {
-      ++i;
-      while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) ++i, ++digits;
-    }
-    if (digits > 0 && i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
+    size_t digits = digitsAt(i);
+    if (i < s.size() && s[i] == '.') digits += digitsAt(++i);
+    if (digits == 0) return false;
+    if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
       ++i;
       if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
-      size_t exponent = 0;
-      while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) ++i, ++exponent;
-      if (exponent == 0) digits = 0;
+      if (digitsAt(i) == 0) return false;
     }
-    if (digits == 0 || i != s.size())
+    return i == s.size();
+  }
+
+  // A decimal number: digits with an optional sign, point and exponent; nothing else.
+  double number(const TextLine& line, const Token& t, double lo, double hi, const char* what) const {
+    if (const std::optional<double> v = plainInteger(t.text); v && *v >= lo && *v <= hi) return *v;
+    const std::string s(t.text);
+    if (!decimalForm(s))
       fail(line, t, std::string(what) + ": '" + shown(s) + "' is not a number" + hiddenSeparatorNote(s));
     const double v = std::strtod(s.c_str(), nullptr);
     if (!(v >= lo && v <= hi))

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numeric>
+#include <optional>
 #include <tuple>
 
 #include "face_geometry.h"
@@ -47,40 +48,33 @@ class Joins {
 // then no path reaches the goal, none would with the finest cells either).
 enum class Open { Free, FreeOrUndecided };
 
-// Walls on one line that overlap or touch are one wall to the search (a level may draw a floor as
-// thousands of short pieces, or the same piece many times): merged exactly, for the walls with
-// whole-unit ends (the face's own; its neighbours' laid out are kept as they are).
-std::vector<FlatWall> mergedWalls(std::vector<FlatWall> walls) {
+// A wall with whole-unit ends as a stretch of its line.
+struct WallStretch {
+  int64_t offset, from, to;  // the line's offset; the wall's stretch of it
+  int32_t dx, dy;            // the line's reduced direction
+  uint32_t wall;
+};
+
+// Wall i on its line; none for a wall whose ends are not whole units, or that is a point (levels
+// refuse them; one made in code may have it).
+std::optional<WallStretch> onLineOf(const FlatWall& w, uint32_t i) {
   auto whole = [](double v) { return v == std::floor(v) && std::abs(v) < (1 << 30); };
-  struct OnLine {
-    int64_t offset, from, to;  // the line's offset; the wall's stretch of it
-    int32_t dx, dy;            // the line's reduced direction
-    uint32_t wall;
-  };
-  std::vector<OnLine> lines;
-  lines.reserve(walls.size());
-  std::vector<FlatWall> out;
-  for (size_t i = 0; i < walls.size(); ++i) {
-    const FlatWall& w = walls[i];
-    if (!(whole(w.ax) && whole(w.ay) && whole(w.bx) && whole(w.by))) {
-      out.push_back(w);
-      continue;
-    }
-    const int64_t ax = int64_t(w.ax), ay = int64_t(w.ay), bx = int64_t(w.bx), by = int64_t(w.by);
-    int64_t dx = bx - ax, dy = by - ay;
-    if (dx == 0 && dy == 0) {  // a point (levels refuse them; one made in code may have it)
-      out.push_back(w);
-      continue;
-    }
-    const int64_t g = std::gcd(dx, dy);
-    dx /= g, dy /= g;
-    if (dx < 0 || (dx == 0 && dy < 0)) dx = -dx, dy = -dy;
-    const int64_t ta = dx * ax + dy * ay, tb = dx * bx + dy * by;
-    lines.push_back({dx * ay - dy * ax, std::min(ta, tb), std::max(ta, tb), int32_t(dx), int32_t(dy), uint32_t(i)});
-  }
-  // By line, then along it: first by a hash of the line (a radix sort, linear: a level of 10^6
-  // walls must not wait for a comparison sort), then each run of one hash by line and stretch.
-  auto lineHash = [](const OnLine& l) {
+  if (!(whole(w.ax) && whole(w.ay) && whole(w.bx) && whole(w.by))) return std::nullopt;
+  const int64_t ax = int64_t(w.ax), ay = int64_t(w.ay), bx = int64_t(w.bx), by = int64_t(w.by);
+  int64_t dx = bx - ax, dy = by - ay;
+  if (dx == 0 && dy == 0) return std::nullopt;
+  const int64_t g = std::gcd(dx, dy);
+  dx /= g, dy /= g;
+  if (dx < 0 || (dx == 0 && dy < 0)) dx = -dx, dy = -dy;
+  const int64_t ta = dx * ax + dy * ay, tb = dx * bx + dy * by;
+  return WallStretch{dx * ay - dy * ax, std::min(ta, tb), std::max(ta, tb), int32_t(dx), int32_t(dy), i};
+}
+
+// The walls' order by line, then along it: first by a hash of the line (a radix sort, linear: a
+// level of 10^6 walls must not wait for a comparison sort), then each run of one hash by line and
+// stretch. Each entry is (hash, index into `lines`).
+std::vector<std::pair<uint32_t, uint32_t>> wallsByLine(const std::vector<WallStretch>& lines) {
+  auto lineHash = [](const WallStretch& l) {
     const uint64_t h = uint64_t(int64_t(l.dx)) * 0x9e3779b97f4a7c15ULL ^
                        uint64_t(int64_t(l.dy)) * 0xbf58476d1ce4e5b9ULL ^ uint64_t(l.offset) * 0x94d049bb133111ebULL;
     return uint32_t((h ^ (h >> 29)) >> 32);
@@ -94,26 +88,45 @@ std::vector<FlatWall> mergedWalls(std::vector<FlatWall> walls) {
     for (const auto& e : order) spare[start[(e.first >> shift) & 0xffff]++] = e;
     order.swap(spare);
   }
-  auto sameLine = [](const OnLine& a, const OnLine& b) { return a.dx == b.dx && a.dy == b.dy && a.offset == b.offset; };
   for (size_t i = 0; i < order.size();) {
     size_t j = i + 1;
     while (j < order.size() && order[j].first == order[i].first) ++j;
     if (j - i > 1)
       std::sort(order.begin() + std::ptrdiff_t(i), order.begin() + std::ptrdiff_t(j),
                 [&](const auto& a, const auto& b) {
-                  const OnLine &p = lines[a.second], &q = lines[b.second];
+                  const WallStretch &p = lines[a.second], &q = lines[b.second];
                   return std::tie(p.dx, p.dy, p.offset, p.from) < std::tie(q.dx, q.dy, q.offset, q.from);
                 });
     i = j;
   }
-  auto endAt = [&](const OnLine& l, int64_t t, double& x, double& y) {  // the wall's end at stretch t
+  return order;
+}
+
+// Walls on one line that overlap or touch are one wall to the search (a level may draw a floor as
+// thousands of short pieces, or the same piece many times): merged exactly, for the walls with
+// whole-unit ends (the face's own; its neighbours' laid out are kept as they are).
+std::vector<FlatWall> mergedWalls(std::vector<FlatWall> walls) {
+  std::vector<WallStretch> lines;
+  lines.reserve(walls.size());
+  std::vector<FlatWall> out;
+  for (size_t i = 0; i < walls.size(); ++i) {
+    if (const std::optional<WallStretch> l = onLineOf(walls[i], uint32_t(i)))
+      lines.push_back(*l);
+    else
+      out.push_back(walls[i]);
+  }
+  const std::vector<std::pair<uint32_t, uint32_t>> order = wallsByLine(lines);
+  auto sameLine = [](const WallStretch& a, const WallStretch& b) {
+    return a.dx == b.dx && a.dy == b.dy && a.offset == b.offset;
+  };
+  auto endAt = [&](const WallStretch& l, int64_t t, double& x, double& y) {  // the wall's end at stretch t
     const FlatWall& w = walls[l.wall];
     const bool a = int64_t(l.dx) * int64_t(w.ax) + int64_t(l.dy) * int64_t(w.ay) == t;
     x = a ? w.ax : w.bx, y = a ? w.ay : w.by;
   };
   for (size_t i = 0; i < order.size();) {
-    const OnLine& first = lines[order[i].second];
-    const OnLine* last = &first;  // the wall reaching farthest along the line so far
+    const WallStretch& first = lines[order[i].second];
+    const WallStretch* last = &first;  // the wall reaching farthest along the line so far
     size_t j = i + 1;
     for (; j < order.size() && sameLine(lines[order[j].second], first) && lines[order[j].second].from <= last->to; ++j)
       if (lines[order[j].second].to > last->to) last = &lines[order[j].second];

@@ -122,9 +122,18 @@ class Editor {
   };
 
   void onKey(const core::KeyPress& key);
+  void onCtrlKey(const core::KeyPress& key);
+  void undoOrRedo(bool redo);
+  void saveDocument(bool anyway);
+  void selectFace();
+  void moveMarkToCursor(bool start);
   void onMouse(const core::MouseEvent& event, bool shift, bool alt);
+  void pressToSelect(float x, float y, bool shift, bool alt);
   void onMove(float x, float y, bool shift, bool alt);
   void endDrag(float x, float y);
+  void endDraw(const Drag& drag, physics::Vec2 a, physics::Vec2 b, FacePoint to, float x, float y);
+  void endMoveEnd(const Drag& drag, physics::Vec2 a, physics::Vec2 b);
+  void endMoveSegments(const Drag& drag, physics::Vec2 a, physics::Vec2 b);
   bool apply(const std::string& name, const std::function<void(stage::Level&)>& change);
   std::optional<Snapped> snapAt(float x, float y, int onFace, bool shift, bool alt) const;
   std::optional<SegmentRef> segmentNear(float x, float y, bool& nearEnd, bool& endB) const;
