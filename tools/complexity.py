@@ -4,6 +4,9 @@ parse of each translation unit (libclang, Debian's python3-clang-14), not from a
 
   tools/complexity.py BUILD_DIR LIMIT FILE...    (the .cpp files to read; their headers come with them)
 
+A file that is not in BUILD_DIR's compile_commands.json is read as C++20 with no include paths (the
+tests' fixtures).
+
 A function's complexity is 1 + its decisions: each if, for, range-for, while, do, case, catch, ?:, &&
 and || (what lizard counts; `else if` is one if, `default:` is no decision). A lambda's decisions
 count in the function that holds it: a long function cannot hide its branches in closures.
@@ -63,16 +66,16 @@ def decisions(cursor):
     return count
 
 
-def functions(cursor, found):
+def functions(cursor, found, within):
     for child in cursor.get_children():
         location = child.location
-        if location.file is None or not os.path.realpath(location.file.name).startswith(ROOT + os.sep):
+        if location.file is None or not os.path.realpath(location.file.name).startswith(within):
             continue
         if child.kind in FUNCTIONS and child.is_definition():
             path = os.path.relpath(os.path.realpath(location.file.name), ROOT)
             found[(path, location.line, child.spelling)] = 1 + decisions(child)
         else:
-            functions(child, found)
+            functions(child, found, within)
 
 
 def arguments_of(entry):
@@ -91,19 +94,22 @@ def arguments_of(entry):
 def measure(job):
     entry, = job
     os.chdir(entry["directory"])
-    unit = ci.Index.create().parse(entry["file"], args=arguments_of(entry))
+    arguments = arguments_of(entry) if "command" in entry or "arguments" in entry else ["-xc++", "-std=c++20"]
+    unit = ci.Index.create().parse(entry["file"], args=arguments)
     errors = [d for d in unit.diagnostics if d.severity >= ci.Diagnostic.Error]
     if errors:
         return {}, ["%s: clang could not parse it: %s" % (entry["file"], errors[0])]
     found = {}
-    functions(unit.cursor, found)
+    # The project's functions (its headers' too, not the system's); a fixture's own, outside it.
+    real = os.path.realpath(entry["file"])
+    functions(unit.cursor, found, ROOT + os.sep if real.startswith(ROOT + os.sep) else real)
     return found, []
 
 
 def main():
     build, limit, files = sys.argv[1], int(sys.argv[2]), sys.argv[3:]
     entries = {e["file"]: e for e in json.load(open(os.path.join(build, "compile_commands.json")))}
-    jobs = [(entries[f],) for f in files if f in entries]
+    jobs = [(entries.get(f, {"file": os.path.abspath(f), "directory": os.getcwd()}),) for f in files]
     found, problems = {}, []
     with multiprocessing.Pool(os.cpu_count()) as pool:
         for part, trouble in pool.imap_unordered(measure, jobs):

@@ -18,6 +18,7 @@ checks=(libgtest-dev libgmock-dev libbenchmark-dev
   libbox2d-dev libchipmunk-dev        # the peers of the benchmarks
   clang libclang-rt-14-dev            # the fuzz stage: libFuzzer and the sanitizer runtimes
   clang-format clang-tidy             # tools/style.sh
+  python3-clang-14                    # tools/complexity.py: clang's own parse, for the complexity limit
   lua-check                           # luacheck: the Lua lint (.luacheckrc)
   xvfb xauth xdotool                  # the real-window tests
   dpkg-dev desktop-file-utils appstream  # the package stage: cpack's dpkg-shlibdeps, the desktop entry and AppStream checks

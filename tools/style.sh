@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The repository's declared style, checked: every C and C++ file as .clang-format writes it, and the
-# clang-tidy checks of .clang-tidy (bugprone, performance, function size) clean on the code that ships.
+# clang-tidy checks of .clang-tidy (bugprone, performance, function size) clean on the code that ships,
+# and no function there over cyclomatic complexity 25 (tools/complexity.py).
 #   tools/style.sh [BUILD_DIR]      (default build/: its compile_commands.json tells clang-tidy how
 #                                    each file is compiled)
 # `tools/style.sh --fix` rewrites the files clang-format would change instead of failing.
@@ -57,3 +58,9 @@ if ! run-clang-tidy -p "$build" -quiet -j "$(nproc)" -extra-arg=-Wno-unknown-war
 fi
 rm -f "$log"
 echo "style: clang-tidy clean on ${#units[@]} files (.clang-tidy)"
+# Cyclomatic complexity (if, loops, case, catch, ?:, && and ||, which clang-tidy's branch count
+# leaves out) at most 25 in every function of the code that ships.
+if ! "$root/tools/complexity.py" "$build" 25 "${units[@]}"; then
+  echo "style: the functions above are over cyclomatic complexity 25: split them by what they do"
+  exit 1
+fi

@@ -78,7 +78,7 @@ std::string entryPath(archive_entry* entry, const std::string& name, mode_t type
   if (type == AE_IFDIR && (name == prefix || name.rfind(prefix, 0) == 0)) return "";
   if (name.rfind(prefix, 0) != 0)
     throw PackageError(at + "'" + name.substr(0, 80) + "' lies outside the package's folder " + prefix);
-  const std::string path = name.substr(prefix.size());
+  std::string path = name.substr(prefix.size());
   if (const std::string why = pathProblem(path); !why.empty())
     throw PackageError(at + "'" + name.substr(0, 80) + "': " + why);
   if (type != AE_IFREG)
