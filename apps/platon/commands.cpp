@@ -48,7 +48,7 @@ const Command kCommands[] = {
      "                   $XDG_DATA_HOME/platon/levels: platon install puts them there)\n"
      "keys: arrows or WASD move, Space jumps, R restarts, Esc pauses, Tab settings, F5 reloads,\n"
      "      F2 debug view, ` console (Lua in the level's sandbox), F3 frame rate, F11 fullscreen,\n"
-     "      F12 screenshot; a gamepad works too\n",
+     "      F12 screenshot; a gamepad works too (A jumps and chooses, Start pauses, Y settings)\n",
      gameCommand},
     {"play", "one level in a window (or headless), with hot reload",
      "usage: platon play LEVEL [--frames N] [--input run.replay] [--record out.replay]\n"

@@ -342,8 +342,9 @@ std::vector<std::string> Game::titleLines() const {
     lines.push_back(levelLine(i));
   }
   lines.push_back("");
-  lines.push_back(progress_.open(levels_, selected_) ? "Up/Down choose, Enter play, Tab settings, Esc quit"
-                                                     : "Finish the level before it to open this one");
+  lines.push_back(progress_.open(levels_, selected_)
+                      ? "Up/Down choose, Enter play, Tab settings, Esc quit (pad: A, Y, Start)"
+                      : "Finish the level before it to open this one");
   return lines;
 }
 
@@ -488,13 +489,15 @@ void Game::leaveSettings() {
   sound("menu_select");
 }
 
-// While a key is being bound, the next key pressed is it (Escape keeps the old keys).
+// While a key is being bound, the next key or pad button pressed is it (Escape, and the pad's
+// Start, its Escape, keep the old ones).
 bool Game::bindKey(const core::WindowInput& input) {
   const bool pad = input.lastKey.empty() && !input.lastPadButton.empty();
   if (screen_ != Screen::Settings || binding_ < 0 || (input.lastKey.empty() && !pad)) return false;
   if (session::Session::isToolKey(input.lastKey)) return false;  // it did its tool's work (F12: a screenshot)
   const std::vector<const core::Action*> rows = keyRows();
-  if (input.lastKey != "Escape" && binding_ < static_cast<int>(rows.size())) {
+  const bool kept = pad ? input.lastPadButton == "start" : input.lastKey == "Escape";
+  if (!kept && binding_ < static_cast<int>(rows.size())) {
     const core::Action& action = *rows[static_cast<size_t>(binding_)];
     const std::string& name = pad ? input.lastPadButton : input.lastKey;
     (pad ? settings_.keys.pad : settings_.keys.keys)[action.name] = {name};
@@ -513,7 +516,7 @@ std::vector<std::string> Game::settingsLines() const {
   auto keys = [&](size_t row) {
     const auto i = static_cast<size_t>(rows[row] - session_->actions().data());
     const std::string list = joined(bound.keys[i]) + "   pad " + (bound.pad[i].empty() ? "-" : joined(bound.pad[i]));
-    return binding_ == static_cast<int>(row) ? "press a key or pad button (Esc: keep " + list + ")" : list;
+    return binding_ == static_cast<int>(row) ? "press a key or pad button (Esc or Start: keep " + list + ")" : list;
   };
   std::vector<std::string> items = {"Music volume   < " + std::to_string(settings_.musicVolume) + "% >",
                                     "Effects volume   < " + std::to_string(settings_.effectsVolume) + "% >",
@@ -533,7 +536,7 @@ std::vector<std::string> Game::settingsLines() const {
     lines.push_back((i == settingsItem_ ? "> " : "  ") + items[static_cast<size_t>(i)] +
                     (i == settingsItem_ ? " <" : ""));
   lines.push_back("");
-  lines.push_back("Up/Down choose, Left/Right change, Enter sets a key or pad button, Esc back");
+  lines.push_back("Up/Down choose, Left/Right change, Enter sets a key or pad button, Esc back (pad: A, Start)");
   return lines;
 }
 

@@ -152,6 +152,8 @@ std::optional<core::Key> keyOf(SDL_GameControllerButton button) {
       return core::Key::Right;
     case SDL_CONTROLLER_BUTTON_BACK:
       return core::Key::Restart;
+    case SDL_CONTROLLER_BUTTON_Y:  // the title's settings, as Tab (a pad player never needs the keyboard)
+      return core::Key::Settings;
     default:
       return std::nullopt;
   }
