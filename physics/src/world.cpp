@@ -7,6 +7,7 @@
 #include <span>
 #include <utility>
 
+#include "faces.h"
 #include "world_impl.h"
 
 namespace platon::physics {
@@ -193,6 +194,33 @@ void World::refreshPierce(uint32_t tag) {
   }
 }
 
+namespace {
+
+// On a face (a part whose warp edges close into a loop) a body's middle is on the face, or over an
+// edge by no more than the body's reach and the rounding two copies of it differ by (as while it
+// crosses one). Farther out it would be taken for a body gone through a vertex and put back by a
+// corner on its first step, hundreds of units from where it was put: refused instead.
+void checkOnFace(const MapPart& part, MapPartId partId, const Instance& inst, Vec2 origin) {
+  if (part.faceLoop().empty()) return;
+  const Vec2 middle = centreOf(inst);
+  if (insideFace(part, middle)) return;
+  int64_t reach2 = 0;
+  for (const Vec2 v : inst.shape) {
+    const Vec2w d{int64_t{v.x} - inst.centre.x, int64_t{v.y} - inst.centre.y};
+    reach2 = std::max(reach2, d.x * d.x + d.y * d.y);
+  }
+  const auto reach = static_cast<int64_t>(isqrt(static_cast<u128>(reach2))) + 1;
+  constexpr int64_t kRounding = 6;  // insideFace's 4 units, and 2 for the middle's own rounding
+  const int64_t out = unitsOutside(part, middle);
+  if (out <= reach + kRounding) return;
+  throw Error("insert: the entity at " + toString(origin) + " in map part " + std::to_string(partId) +
+              " has its middle " + toString(middle) + " " + std::to_string(out) +
+              " units off the face, farther than its size (" + std::to_string(reach) +
+              "): a body's middle goes on its face, or over an edge by at most its size");
+}
+
+}  // namespace
+
 void World::insert(EntityId id, MapPartId partId, Vec2 origin, Angle angle) {
   WorldImpl& w = *impl_;
   w.checkUnlocked("insert");
@@ -219,6 +247,7 @@ void World::insert(EntityId id, MapPartId partId, Vec2 origin, Angle angle) {
     if (const std::optional<EntityId> other = w.entityOverlap(e, inst, verts))
       throw Error("insert: the entity at " + toString(origin) + " in map part " + std::to_string(partId) +
                   " would overlap entity " + std::to_string(other->index) + ", which it is solid to");
+    checkOnFace(part, partId, inst, origin);
   } catch (...) {
     e.angle = angleBefore;
     throw;

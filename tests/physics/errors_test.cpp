@@ -82,6 +82,68 @@ TEST(Errors, InsertChecksPlacement) {
   expectError([&] { world.setVelocity(box, {int64_t{1} << 47, 0}); }, "exceeds the largest move");
 }
 
+// A cube's six faces joined edge to edge (2000 units a side), as the golden cube: each face's
+// four edges are warps that close into a loop.
+void buildCube(World& world) {
+  const int32_t s = 2000;
+  const Vec2 c[4] = {{0, 0}, {s, 0}, {s, s}, {0, s}};
+  const int faces[6][4] = {{5, 4, 6, 7}, {2, 0, 1, 3}, {6, 2, 3, 7}, {1, 0, 4, 5}, {3, 1, 5, 7}, {4, 0, 2, 6}};
+  for (int f = 0; f < 6; ++f) world.createMapPart(static_cast<MapPartId>(f));
+  for (int f = 0; f < 6; ++f)
+    for (int i = 0; i < 4; ++i) {
+      const int u = faces[f][i], v = faces[f][(i + 1) % 4];
+      for (int g = 0; g < 6; ++g)
+        for (int j = 0; j < 4; ++j)
+          if (faces[g][j] == v && faces[g][(j + 1) % 4] == u)
+            world.mapPart(static_cast<MapPartId>(f))
+                .warp(c[i], c[(i + 1) % 4], static_cast<MapPartId>(g), c[(j + 1) % 4], c[j]);
+    }
+  for (int f = 0; f < 6; ++f) world.mapPart(static_cast<MapPartId>(f)).initialize();
+}
+
+// On a face, a body's middle is on it, or over an edge by at most the body's size (as while it
+// crosses): farther out the first step would put it back by a corner, hundreds of units away
+// (a body 55 units out was moved 368). The family: each face, each edge, bodies of several sizes,
+// just inside the allowance and just past it; past it is refused and the world is unchanged.
+TEST(Errors, InsertRefusesABodyOffItsFace) {
+  World world;
+  buildCube(world);
+  const int32_t s = 2000;
+  for (const int32_t half : {5, 20, 60}) {  // a box's half size: its reach is about 1.42 times it
+    const int32_t reach = half * 1414 / 1000 + 1;
+    for (MapPartId face = 0; face < 6; ++face)
+      for (int edge = 0; edge < 4; ++edge) {
+        // Out from the edge's middle by `out` units (the box's middle is its origin).
+        auto at = [&](int32_t out) -> Vec2 {
+          switch (edge) {
+            case 0: return {s / 2, -out};
+            case 1: return {s + out, s / 2};
+            case 2: return {s / 2, s + out};
+            default: return {-out, s / 2};
+          }
+        };
+        const EntityId inside = world.createEntity(Convex::box(half, half));
+        EXPECT_NO_THROW(world.insert(inside, face, at(reach), 0)) << "face " << face << " edge " << edge << " half " << half;
+        world.destroyEntity(inside);
+        const EntityId far = world.createEntity(Convex::box(half, half));
+        const uint64_t before = world.stateHash();
+        expectError([&] { world.insert(far, face, at(reach + 10), 0); }, "units off the face");
+        EXPECT_FALSE(world.entity(far).inserted());
+        EXPECT_EQ(world.stateHash(), before) << "a refused insert changed the world";
+        world.destroyEntity(far);
+      }
+  }
+  // The case: a small body 55 units out.
+  const EntityId small = world.createEntity(Convex::box(4, 4));
+  expectError([&] { world.insert(small, 0, {1000, -55}, 0); }, "insert: the entity at (1000, -55) in map part 0");
+  // A part that is no face (its warps close no loop) takes any point.
+  MapPart& open = world.createMapPart(9);
+  open.line({0, 0}, {100, 0});
+  open.initialize();
+  world.insert(small, 9, {50000, 50000}, 0);
+  EXPECT_TRUE(world.entity(small).inserted());
+}
+
 TEST(Errors, StaleHandlesAreDetected) {
   World world;
   const EntityId a = world.createEntity(Convex::box(3, 3));

@@ -137,7 +137,9 @@ class World {
 
   // Places an instance of the entity in a part (the seed's MapPart::insert). The first instance
   // sets the entity's position and angle; later ones follow it. Throws if the part is not
-  // initialized, already holds the entity, or a solid line would overlap the instance.
+  // initialized, already holds the entity, a solid line or a body it is solid to would overlap the
+  // instance, or (on a face: a part whose warps close into a loop) its middle lies off the face by
+  // more than its size.
   void insert(EntityId id, MapPartId part, Vec2 origin, Angle angle);
   void erase(EntityId id, MapPartId part);
   // Turns the entity towards `angle` (the short way round) until a solid line stops it; returns
