@@ -30,7 +30,8 @@ void write(const std::filesystem::path& path, const std::string& text) { std::of
 // The level: the cube's first face with a long floor; the player starts on face 2, away from it.
 // Crates of 20 units, 100 a frame, in 99 rows of 100 a unit apart, fall a little and pile.
 std::filesystem::path makeLevel() {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("platon_crowd_" + std::to_string(getpid()));
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("platon_crowd_" + std::to_string(getpid()));
   std::filesystem::create_directories(dir);
   std::string level = "HEXAHEDRON\n2 600 700\n2 3000 700\n4096\n%\n100 400 4000 400\n";
   for (int face = 1; face < 6; ++face) level += "%\n256 512 3840 512\n";

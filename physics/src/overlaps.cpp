@@ -77,7 +77,8 @@ size_t bodyPairs(const std::vector<Body>& bodies, size_t& count) {
   // apart below, where a pair counts only if both entries are in the pair's own cell.
   const size_t buckets = std::bit_ceil(std::max<size_t>(2 * filed.size(), 16));
   auto bucketOf = [&](const Filed& f) {
-    const uint64_t h = static_cast<uint64_t>(f.cx) * 0x9E3779B97F4A7C15ull ^ static_cast<uint64_t>(f.cy) * 0xC2B2AE3D27D4EB4Full;
+    const uint64_t h =
+        static_cast<uint64_t>(f.cx) * 0x9E3779B97F4A7C15ull ^ static_cast<uint64_t>(f.cy) * 0xC2B2AE3D27D4EB4Full;
     return static_cast<size_t>(h >> 32) & (buckets - 1);
   };
   std::vector<uint32_t> start(buckets + 1, 0);

@@ -11,6 +11,7 @@
 #include <condition_variable>
 #include <cstdio>
 #include <cstdlib>
+#include <deque>
 #include <fstream>
 #include <mutex>
 #include <sstream>
@@ -88,6 +89,9 @@ class StdoutLines {
 };
 
 // SDL's virtual gamepad, plugged in before the game starts (the window opens it as it finds it).
+// Its buttons change in SDL's own update of the pad (on the game's thread, as the game polls), one
+// queued change an update: a press and its release are never both set between two updates, where
+// the game would see neither (a loaded machine's slow frame lost presses that way).
 class VirtualPad {
  public:
   VirtualPad() {
@@ -100,6 +104,8 @@ class VirtualPad {
     desc.button_mask = (1u << 15) - 1;  // virtual button i is controller button i
     desc.axis_mask = (1u << SDL_CONTROLLER_AXIS_MAX) - 1;
     desc.name = "journey pad";
+    desc.userdata = this;
+    desc.Update = [](void* self) { static_cast<VirtualPad*>(self)->applyNext(); };
     device_ = SDL_JoystickAttachVirtualEx(&desc);
     if (device_ >= 0) pad_ = SDL_JoystickOpen(device_);
   }
@@ -110,20 +116,35 @@ class VirtualPad {
   VirtualPad& operator=(const VirtualPad&) = delete;
 
   bool ready() const { return pad_ != nullptr; }
-  void hold(SDL_GameControllerButton b, bool down) { SDL_JoystickSetVirtualButton(pad_, b, down ? 1 : 0); }
-  // A press as a person makes one: down for a tenth of a second (several frames), then up.
+  // The button down or up from the pad's next update on; returns once the game's updates took it.
+  void hold(SDL_GameControllerButton b, bool down) {
+    std::unique_lock lock(mutex_);
+    changes_.push_back({b, down});
+    taken_.wait_for(lock, 60s, [&] { return changes_.empty(); });
+  }
+  // A press as a person makes one: down, up, and a tenth of a second before the next.
   void press(SDL_GameControllerButton b, int times = 1) {
     for (int i = 0; i < times; ++i) {
       hold(b, true);
-      std::this_thread::sleep_for(100ms);
       hold(b, false);
       std::this_thread::sleep_for(100ms);
     }
   }
 
  private:
+  void applyNext() {  // in SDL's update of the pad, on the game's thread
+    std::lock_guard lock(mutex_);
+    if (changes_.empty()) return;
+    SDL_JoystickSetVirtualButton(pad_, changes_.front().first, changes_.front().second ? 1 : 0);
+    changes_.pop_front();
+    taken_.notify_all();
+  }
+
   int device_ = -1;
   SDL_Joystick* pad_ = nullptr;
+  std::mutex mutex_;
+  std::condition_variable taken_;
+  std::deque<std::pair<SDL_GameControllerButton, bool>> changes_;
 };
 
 std::string fileText(const std::string& path) {

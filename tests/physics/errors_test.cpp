@@ -116,14 +116,19 @@ TEST(Errors, InsertRefusesABodyOffItsFace) {
         // Out from the edge's middle by `out` units (the box's middle is its origin).
         auto at = [&](int32_t out) -> Vec2 {
           switch (edge) {
-            case 0: return {s / 2, -out};
-            case 1: return {s + out, s / 2};
-            case 2: return {s / 2, s + out};
-            default: return {-out, s / 2};
+            case 0:
+              return {s / 2, -out};
+            case 1:
+              return {s + out, s / 2};
+            case 2:
+              return {s / 2, s + out};
+            default:
+              return {-out, s / 2};
           }
         };
         const EntityId inside = world.createEntity(Convex::box(half, half));
-        EXPECT_NO_THROW(world.insert(inside, face, at(reach), 0)) << "face " << face << " edge " << edge << " half " << half;
+        EXPECT_NO_THROW(world.insert(inside, face, at(reach), 0))
+            << "face " << face << " edge " << edge << " half " << half;
         world.destroyEntity(inside);
         const EntityId far = world.createEntity(Convex::box(half, half));
         const uint64_t before = world.stateHash();
