@@ -15,11 +15,12 @@
 // spread (min-max) over the runs, and the ratio of the medians. This machine's timings move by up
 // to 30% between runs: read the spread before the ratio.
 //
-// Usage: entities_vs_box2d [--quick]
+// Usage: entities_vs_box2d [--quick] [--only N]
 #include <algorithm>
 #include <box2d/box2d.h>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <functional>
 #include <string>
@@ -143,7 +144,12 @@ double timeScene(S& s, int settle, int frames) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  bool quick = false;
+  int only = 0;  // --only N: that many entities alone
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--quick") == 0) quick = true;
+    if (std::strcmp(argv[i], "--only") == 0 && i + 1 < argc) only = std::atoi(argv[++i]);
+  }
   const int settle = 300, frames = quick ? 100 : 600;
   std::printf("Frame cost with N entities: median ns per frame over %d runs of %d frames (min-max)\n\n", kRuns, frames);
   std::printf(
@@ -152,6 +158,7 @@ int main(int argc, char** argv) {
   std::printf("|---|---|---|---|---|---|---|---|\n");
   for (const Scene scene : {Scene::Resting, Scene::Walking, Scene::Stacks})
     for (const int n : {1, 100, 1000, 10000}) {
+      if (only != 0 && n != only) continue;
       std::vector<double> platon, tested, asleep, awake;
       for (int run = 0; run < kRuns; ++run) {
         uint64_t keptHash = 0, testedHash = 0;

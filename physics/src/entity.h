@@ -122,8 +122,11 @@ struct Entity {
   std::vector<Instance> instances;
   std::vector<WarpLink> links;
   std::vector<Contact> contacts;  // solid contacts of the latest solve(), in the order they happened
-  uint32_t work = 0;              // lines and bodies its moves were tested against in the latest solve()
-  uint64_t steppedFrame = 0;      // the world frame it last stepped in (or began to)
+  // The latest solve() kept its rest: its contacts are restContacts, read there (contactsOf), not
+  // copied into `contacts` every frame.
+  bool contactsAreRest = false;
+  uint32_t work = 0;          // lines and bodies its moves were tested against in the latest solve()
+  uint64_t steppedFrame = 0;  // the world frame it last stepped in (or began to)
   // Waiting, before its own move, for the entities that hold it to step first (step.cpp's
   // stepHoldersFirst): to a move that meets it meanwhile it has not stepped yet, and it takes its
   // step then, from the state it had when the frame's step began (kept here).
@@ -143,6 +146,8 @@ struct Entity {
   uint64_t restPlatformEpoch = 0;     // the platforms of its parts had moved this often
   std::vector<Contact> restContacts;  // the contacts that held it
   std::vector<uint32_t> restHolders;  // the slots of the entities among them it is pressed onto
+
+  const std::vector<Contact>& contactsOf() const { return contactsAreRest ? restContacts : contacts; }
 
   Instance* instanceIn(MapPartId part) {
     for (Instance& i : instances)

@@ -15,7 +15,7 @@ bool EntityView::gravityEnabled() const { return entity_->gravity; }
 uint64_t EntityView::userData() const { return entity_->userData; }
 const EntityFilter& EntityView::filter() const { return entity_->filter; }
 size_t EntityView::instanceCount() const { return entity_->instances.size(); }
-std::span<const Contact> EntityView::contacts() const { return entity_->contacts; }
+std::span<const Contact> EntityView::contacts() const { return entity_->contactsOf(); }
 uint32_t EntityView::work() const { return entity_->work; }
 
 namespace {

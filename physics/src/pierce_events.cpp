@@ -70,6 +70,7 @@ void WorldImpl::instancePierceEvents(Entity& e, const Path& path, size_t i, std:
   }
   std::sort(overlapping.begin(), overlapping.end());
   inst.overlapping = std::move(overlapping);
+  if (!inst.overlapping.empty()) overlappingSlots.push_back(e.id.index);
 }
 
 // The events in time order, ties in a fixed order (instance, line before entity, begin before
@@ -103,15 +104,23 @@ void WorldImpl::fireOverContacts() {
     c.other = b->id;
     callRules([&](Rules& r) { r.overContact(c); });
   }
-  for (const Slot& slot : slots) {
-    const Entity* e = slot.entity.get();
+  // In slot order, as a walk over every body would be.
+  std::sort(overlappingSlots.begin(), overlappingSlots.end());
+  overlappingSlots.erase(std::unique(overlappingSlots.begin(), overlappingSlots.end()), overlappingSlots.end());
+  size_t still = 0;
+  for (const uint32_t slot : overlappingSlots) {
+    const Entity* e = slots[slot].entity.get();
     if (!e) continue;
+    bool any = false;
     for (const Instance& inst : e->instances)
       for (const LineIndex line : inst.overlapping) {
+        any = true;
         const Contact c = makeContact(*e, inst, line, Fraction::one(), {}, {});
         callRules([&](Rules& r) { r.overContact(c); });
       }
+    if (any) overlappingSlots[still++] = slot;
   }
+  overlappingSlots.resize(still);
 }
 
 }  // namespace platon::physics

@@ -495,6 +495,7 @@ class SubMove {
     const bool withEntity = hit_.kind == HitKind::Entity;
     Contact contact = w_.makeContact(e_, hitPart_, withEntity ? kNoLine : hit_.line, hit_.t, partNormal, points);
     if (withEntity) contact.other = w_.slots[hit_.otherSlot].entity->id;
+    if (e_.contactsAreRest) e_.contacts = e_.restContacts, e_.contactsAreRest = false;  // kept, then pushed
     e_.contacts.push_back(contact);
     ContactResponse response;
     w_.callRules([&](Rules& r) { r.contact(contact, response); });
@@ -906,7 +907,7 @@ void WorldImpl::stepEntity(Entity& e) {
   if (e.resting && !kept) wake(e);
   if (kept && !restCheck) {  // the rest test's answer, as it would give it again
     e.velocityQ16 = {};
-    e.contacts = e.restContacts;
+    e.contactsAreRest = true;  // read through contactsOf: a crowd at rest copies no contacts
     ++report.restsKept;
     return;
   }

@@ -182,6 +182,7 @@ bool WorldImpl::placeOnFace(Move& move, const FacePlace& c) {
     e.instances.push_back(std::move(inst));
   } else {
     inst.overlapping = std::move(e.instances[k].overlapping);
+    if (!inst.overlapping.empty()) overlappingSlots.push_back(e.id.index);
     e.instances[k] = std::move(inst);
   }
   rebase(move, k);

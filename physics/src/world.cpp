@@ -304,6 +304,7 @@ void World::setRestMode(RestMode mode) {
 void WorldImpl::stepInFrame(Entity& e) {
   e.steppedFrame = frame;
   e.contacts.clear();
+  e.contactsAreRest = false;
   e.work = 0;
   if (e.instances.empty()) return;
   e.work = kBodyStepWork;

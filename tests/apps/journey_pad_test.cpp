@@ -193,7 +193,8 @@ std::string padJourney(StdoutLines& out, VirtualPad& pad, const std::string& set
   if (!out.await("screen> > 2. ")) return "Start on the complete screen: the title, level 2 chosen";
   pad.press(SDL_CONTROLLER_BUTTON_START);
   if (!out.await("screen> Quit the game?")) return "Start on the title: the quit question";
-  pad.hold(SDL_CONTROLLER_BUTTON_A, true);  // yes: the game ends (its release would wait for an update that never comes)
+  pad.hold(SDL_CONTROLLER_BUTTON_A,
+           true);  // yes: the game ends (its release would wait for an update that never comes)
   return "";
 }
 
