@@ -68,6 +68,7 @@ core::WindowInput Session::poll() {
   if (!d) return {};
   applyBindings();
   core::WindowInput input = d->pollEvents();
+  typedThisPoll_ = input.text;
   const bool typing = consoleOpen_;  // letters typed into the console are not the game's buttons
   if (consoleOpen_)
     for (const char c : input.text)
@@ -134,6 +135,9 @@ bool Session::consoleKey(core::Key key) {
     }
     consoleOpen_ = true;
     consoleLine_.clear();
+    if (const size_t at = typedThisPoll_.find('`'); at != std::string::npos)
+      for (const char c : typedThisPoll_.substr(at + 1))
+        if (c != '`' && consoleLine_.size() < kConsoleLineBytes) consoleLine_ += c;
     return true;
   }
   if (key == core::Key::Screenshot || key == core::Key::ShowFps || key == core::Key::Debug) return false;

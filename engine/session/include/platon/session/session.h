@@ -119,6 +119,9 @@ class Session {
   bool windowless_ = false;
   bool consoleOpen_ = false;
   std::string consoleLine_;
+  // The text typed since the last poll: the console opened by its key in a poll takes what was typed
+  // after the key in the same poll (fast typing, or a slow frame, put "`6 * 7" in one poll and lost the 6).
+  std::string typedThisPoll_;
   std::vector<std::string> consoleLog_;  // the lines typed and their answers, the latest last
   struct Notice {
     std::string text;
