@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "platon/physics/world.h"
+#include "platon/testing/cube_faces.h"
 
 using namespace platon::physics;
 
@@ -171,20 +172,7 @@ uint64_t runCube(uint64_t seed) {
   std::mt19937_64 rng(seed);
   World world;
   const int32_t s = 2000;
-  const Vec2 c[4] = {{0, 0}, {s, 0}, {s, s}, {0, s}};
-  // Faces of a cube as vertex cycles (counter-clockwise from outside); edge u->v of one face is
-  // v->u of its neighbour.
-  const int faces[6][4] = {{5, 4, 6, 7}, {2, 0, 1, 3}, {6, 2, 3, 7}, {1, 0, 4, 5}, {3, 1, 5, 7}, {4, 0, 2, 6}};
-  for (int f = 0; f < 6; ++f) world.createMapPart(static_cast<MapPartId>(f));
-  for (int f = 0; f < 6; ++f)
-    for (int i = 0; i < 4; ++i) {
-      const int u = faces[f][i], v = faces[f][(i + 1) % 4];
-      for (int g = 0; g < 6; ++g)
-        for (int j = 0; j < 4; ++j)
-          if (faces[g][j] == v && faces[g][(j + 1) % 4] == u)
-            world.mapPart(static_cast<MapPartId>(f))
-                .warp(c[i], c[(i + 1) % 4], static_cast<MapPartId>(g), c[(j + 1) % 4], c[j]);
-    }
+  platon::testing::addCubeFaces(world, s);
   for (int f = 0; f < 6; ++f) {
     MapPart& part = world.mapPart(static_cast<MapPartId>(f));
     for (int i = 0; i < 6; ++i) {
